@@ -1,0 +1,19 @@
+// `vkmc bench-kernels`: per scene, the set-up split and the medians of samples/s and Mrays/s over runs.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace vkmc {
+
+struct BenchOptions {
+  std::vector<std::string> scenes;
+  int runs = 5;
+  int spp = 4;
+  int width = 256;
+  int height = 256;
+  std::string jsonPath;
+};
+
+int runBenchKernels(const BenchOptions& options);
+
+}  // namespace vkmc

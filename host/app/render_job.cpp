@@ -1,0 +1,180 @@
+// Render job: the stages in order, each timed; the report and the human summary.
+#include "app/render_job.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "bvh/bvh.h"
+#include "error.h"
+#include "render/gpu_scene.h"
+#include "scene/camera_rig.h"
+#include "scene/gltf_loader.h"
+
+namespace vkmc {
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+constexpr uint32_t kMaxImageSide = 16384;
+constexpr uint32_t kMaxSpp = 1u << 24;
+constexpr uint32_t kMaxDepthLimit = 100000;
+}  // namespace
+
+void validateOptions(const RenderOptions& o) {
+  if (o.spp == 0 || o.spp > kMaxSpp) throw Error("--spp must be between 1 and " + std::to_string(kMaxSpp));
+  for (auto side : {o.width, o.height})
+    if (side && (*side == 0 || *side > kMaxImageSide))
+      throw Error("--width and --height must be between 1 and " + std::to_string(kMaxImageSide));
+  if (o.maxDepth > kMaxDepthLimit) throw Error("--max-depth must be at most " + std::to_string(kMaxDepthLimit) + " (0 = no cap)");
+  if (o.lookFrom.has_value() != o.lookAt.has_value()) throw Error("--look-from and --look-at go together");
+  if (!(o.fovDegrees > 0.0f && o.fovDegrees < 179.0f)) throw Error("--fov must be in (0, 179) degrees");
+  for (int c = 0; c < 3; ++c)
+    if (!(o.background[c] >= 0.0f) || !std::isfinite(o.background[c])) throw Error("--background must be finite and non-negative");
+}
+
+RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options) {
+  validateOptions(options);
+  RenderOutcome out;
+  out.device = ctx.deviceName();
+
+  auto t = Clock::now();
+  Scene scene = loadGltf(options.scenePath);
+  out.setup.load = since(t);
+  out.degenerateTriangles = scene.degenerateTriangles;
+  out.warnings = scene.warnings;
+
+  Camera camera;
+  std::optional<float> aspect;
+  if (options.lookFrom) {
+    camera = lookAtCamera(*options.lookFrom, *options.lookAt, options.fovDegrees);
+  } else if (options.cameraIndex || !scene.cameras.empty()) {
+    uint32_t index = options.cameraIndex.value_or(0);
+    if (index >= scene.cameras.size())
+      throw Error("--camera " + std::to_string(index) + " out of range: the scene has " + std::to_string(scene.cameras.size()) +
+                  " camera(s)");
+    camera = scene.cameras[index];
+    aspect = camera.aspectRatio;
+    if (camera.name.empty()) camera.name = "camera " + std::to_string(index);
+  }
+  // Unset sides follow the camera's aspect ratio (square when it has none); 256 pixels wide by default.
+  double a = aspect.value_or(1.0f);
+  uint32_t width, height;
+  if (options.width && options.height) {
+    width = *options.width, height = *options.height;
+  } else if (options.height) {
+    height = *options.height, width = static_cast<uint32_t>(std::max(1.0, std::round(height * a)));
+  } else {
+    width = options.width.value_or(256), height = static_cast<uint32_t>(std::max(1.0, std::round(width / a)));
+  }
+  if (width > kMaxImageSide || height > kMaxImageSide) throw Error("image size from the camera's aspect ratio is too large");
+  if (!options.lookFrom && scene.cameras.empty()) camera = autoCamera(scene.bounds, float(width) / float(height));
+  out.cameraName = camera.name;
+  out.width = width;
+  out.height = height;
+
+  t = Clock::now();
+  std::vector<Aabb> bounds(scene.triangleCount());
+  for (size_t i = 0; i < bounds.size(); ++i)
+    for (int k = 0; k < 3; ++k) bounds[i].grow(scene.positions[3 * i + k]);
+  Bvh bvh = buildBvh(bounds);
+  out.setup.bvh = since(t);
+  out.bvh = bvh.stats;
+
+  t = Clock::now();
+  GpuScene gpuScene(ctx, scene, bvh);
+  out.setup.upload = since(t);
+  out.sceneInfo = gpuScene.info();
+
+  RenderSettings settings;
+  settings.width = width;
+  settings.height = height;
+  settings.spp = options.spp;
+  settings.maxDepth = options.maxDepth;
+  settings.seed = options.seed;
+  settings.background = options.background;
+  settings.camera = makeCameraRig(camera, width, height);
+  settings.progress = options.progress;
+  WavefrontRenderer renderer(ctx, gpuScene, settings);
+  out.setup.pipelines = renderer.pipelineSeconds();
+  out.film = renderer.render(out.stats);
+  return out;
+}
+
+nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
+  using nlohmann::json;
+  const RenderStats& s = r.stats;
+  glm::dvec3 mean = r.film.imageMean();
+  glm::dvec3 var = r.film.imageMeanVarianceOfMean();
+  json j;
+  j["scene"] = o.scenePath;
+  j["width"] = r.width;
+  j["height"] = r.height;
+  j["spp"] = o.spp;
+  j["seed"] = o.seed;
+  j["camera"] = r.cameraName;
+  j["seconds"] = s.seconds;
+  j["setup_seconds"] = r.setup.total();
+  j["setup"] = {{"load", r.setup.load}, {"bvh", r.setup.bvh}, {"upload", r.setup.upload}, {"pipelines", r.setup.pipelines}};
+  j["gpu_seconds"] = s.gpuSeconds;
+  j["stage_gpu_seconds"] = s.stageSeconds;
+  j["rays"] = s.rays();
+  j["ray_counts"] = {{"camera", s.cameraRays}, {"extension", s.extensionRays}, {"shadow", s.shadowRays}};
+  j["mrays_per_second"] = s.seconds > 0.0 ? static_cast<double>(s.rays()) / s.seconds * 1e-6 : 0.0;
+  j["nonfinite_samples"] = r.film.totalNonfinite();
+  j["samples"] = r.film.totalSamples();
+  j["mean"] = {mean.x, mean.y, mean.z};
+  j["mean_variance"] = {var.x, var.y, var.z};
+  j["device"] = r.device;
+  j["estimator"] = {{"max_depth", o.maxDepth},
+                    {"russian_roulette", "throughput"},
+                    {"roulette_depth", 3},
+                    {"roulette_max_survival", 0.95},
+                    {"nee", true},
+                    {"mis", "power"},
+                    {"bsdf_sampling", "cosine"},
+                    {"light_select", "power"},
+                    {"unbiased", o.maxDepth == 0},
+                    {"bias", o.maxDepth == 0 ? "none: paths end by Russian roulette only"
+                                             : "truncation: paths are cut after " + std::to_string(o.maxDepth) +
+                                                   " scattering events, so the image is biased low"}};
+  j["scene_info"] = {{"triangles", r.sceneInfo.triangles},
+                     {"emissive_triangles", r.sceneInfo.emissiveTriangles},
+                     {"materials", r.sceneInfo.materials},
+                     {"degenerate_triangles_skipped", r.degenerateTriangles}};
+  j["bvh"] = {{"inner_nodes", r.bvh.innerNodes}, {"leaves", r.bvh.leaves},           {"max_depth", r.bvh.maxDepth},
+              {"max_leaf_size", r.bvh.maxLeafSize}, {"sah_cost", r.bvh.sahCost}, {"build_seconds", r.bvh.buildSeconds}};
+  j["max_bounces"] = s.maxBounces;
+  j["warnings"] = r.warnings;
+  return j;
+}
+
+std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
+  const RenderStats& s = r.stats;
+  glm::dvec3 mean = r.film.imageMean();
+  glm::dvec3 var = r.film.imageMeanVarianceOfMean();
+  char buf[2048];
+  std::snprintf(buf, sizeof(buf),
+                "scene       %s (%u triangles, %u emissive)\n"
+                "device      %s\n"
+                "image       %ux%u, %u spp, camera: %s\n"
+                "estimator   %s\n"
+                "time        %.3f s render (GPU %.3f s), set-up %.3f s (load %.3f, BVH %.3f, upload %.3f, pipelines %.3f)\n"
+                "rays        %llu (camera %llu, extension %llu, shadow %llu): %.2f Mrays/s\n"
+                "mean        %.6g %.6g %.6g\n"
+                "variance    %.3g %.3g %.3g (image mean of the per-pixel variance of the mean)\n"
+                "non-finite  %llu samples\n",
+                o.scenePath.c_str(), r.sceneInfo.triangles, r.sceneInfo.emissiveTriangles, r.device.c_str(), r.width, r.height,
+                o.spp, r.cameraName.c_str(),
+                o.maxDepth == 0 ? "NEE + cosine sampling, power-heuristic MIS, throughput roulette (unbiased)"
+                                : ("NEE + cosine sampling, MIS, depth cap " + std::to_string(o.maxDepth) + " (biased by truncation)").c_str(),
+                s.seconds, s.gpuSeconds, r.setup.total(), r.setup.load, r.setup.bvh, r.setup.upload, r.setup.pipelines,
+                (unsigned long long)s.rays(), (unsigned long long)s.cameraRays, (unsigned long long)s.extensionRays,
+                (unsigned long long)s.shadowRays, s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z,
+                var.x, var.y, var.z, (unsigned long long)r.film.totalNonfinite());
+  std::string text = buf;
+  for (const auto& w : r.warnings) text += "warning     " + w + "\n";
+  return text;
+}
+
+}  // namespace vkmc

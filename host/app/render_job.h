@@ -1,0 +1,53 @@
+// One render from options to outputs: load, BVH, upload, pipelines, passes. Shared by the CLI and tests.
+#pragma once
+#include <glm/glm.hpp>
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "render/film.h"
+#include "render/wavefront_renderer.h"
+#include "scene/scene.h"
+#include "vk/context.h"
+
+namespace vkmc {
+
+struct RenderOptions {
+  std::string scenePath;
+  std::optional<uint32_t> width, height;  // default 256 wide, height from the camera's aspect (else 256)
+  uint32_t spp = 64;
+  uint32_t maxDepth = 0;
+  uint32_t seed = 1;
+  std::optional<uint32_t> cameraIndex;
+  std::optional<glm::vec3> lookFrom, lookAt;
+  float fovDegrees = 45.0f;
+  glm::vec3 background{0.0f};
+  bool progress = true;
+};
+
+struct SetupTimes {
+  double load = 0.0, bvh = 0.0, upload = 0.0, pipelines = 0.0;
+  double total() const { return load + bvh + upload + pipelines; }
+};
+
+struct RenderOutcome {
+  Film film;
+  RenderStats stats;
+  SetupTimes setup;
+  BvhStats bvh;
+  GpuSceneInfo sceneInfo;
+  uint64_t degenerateTriangles = 0;
+  std::vector<std::string> warnings;
+  std::string cameraName;
+  std::string device;
+  uint32_t width = 0, height = 0;
+};
+
+// Throws vkmc::Error on bad options or input, before anything is written.
+void validateOptions(const RenderOptions& options);
+RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options);
+nlohmann::json makeReport(const RenderOptions& options, const RenderOutcome& outcome);
+std::string summaryText(const RenderOptions& options, const RenderOutcome& outcome);
+
+}  // namespace vkmc

@@ -1,0 +1,241 @@
+// Binned SAH build (Wald 2007): centroid bins on all three axes, in-place partition, explicit work stack.
+#include "bvh/bvh.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <chrono>
+#include <cstring>
+#include <limits>
+
+#include "../shaders/shared/geometry.h"
+
+namespace vkmc {
+namespace {
+
+constexpr uint32_t kMaxDepth = 60;  // the GPU traversal stack holds 64 entries
+
+struct BuildNode {
+  Aabb bounds;
+  uint32_t first = 0, count = 0;  // leaf range, count > 0
+  uint32_t child[2] = {0, 0};     // inner node
+};
+
+float asFloat(uint32_t u) { return std::bit_cast<float>(u); }
+uint32_t asUint(float f) { return std::bit_cast<uint32_t>(f); }
+
+class Builder {
+ public:
+  Builder(std::span<const Aabb> bounds, const BvhOptions& options) : bounds_(bounds), options_(options) {
+    centroids_.resize(bounds.size());
+    for (size_t i = 0; i < bounds.size(); ++i) centroids_[i] = bounds[i].center();
+    order_.resize(bounds.size());
+    for (uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
+  }
+
+  std::vector<BuildNode> nodes;
+  std::vector<uint32_t> order_;
+  uint32_t maxDepth = 0;
+
+  void build() {
+    nodes.reserve(2 * bounds_.size() / std::max(1u, options_.maxLeafSize / 2) + 1);
+    nodes.push_back({});
+    struct Task {
+      uint32_t node, first, count, depth;
+    };
+    std::vector<Task> stack{{0, 0, static_cast<uint32_t>(order_.size()), 0}};
+    while (!stack.empty()) {
+      Task task = stack.back();
+      stack.pop_back();
+      maxDepth = std::max(maxDepth, task.depth);
+      Aabb box, centroidBox;
+      for (uint32_t i = task.first; i < task.first + task.count; ++i) {
+        box.grow(bounds_[order_[i]]);
+        centroidBox.grow(centroids_[order_[i]]);
+      }
+      nodes[task.node].bounds = box;
+      uint32_t mid = split(task.first, task.count, box, centroidBox, task.depth);
+      if (mid == 0) {
+        nodes[task.node].first = task.first;
+        nodes[task.node].count = task.count;
+        continue;
+      }
+      uint32_t left = static_cast<uint32_t>(nodes.size());
+      nodes.push_back({});
+      nodes.push_back({});
+      nodes[task.node].child[0] = left;
+      nodes[task.node].child[1] = left + 1;
+      stack.push_back({left + 1, task.first + mid, task.count - mid, task.depth + 1});
+      stack.push_back({left, task.first, mid, task.depth + 1});
+    }
+  }
+
+ private:
+  // Returns the size of the left part, or 0 to make a leaf.
+  uint32_t split(uint32_t first, uint32_t count, const Aabb& box, const Aabb& centroidBox, uint32_t depth) {
+    if (count <= 1) return 0;
+    bool mustSplit = count > options_.maxLeafSize;
+    if (depth >= kMaxDepth) return 0;
+    const uint32_t bins = options_.bins;
+    glm::vec3 extent = centroidBox.extent();
+    float bestCost = std::numeric_limits<float>::infinity();
+    int bestAxis = -1;
+    uint32_t bestBin = 0;
+    std::array<Aabb, 64> binBox;
+    std::array<uint32_t, 64> binCount;
+    std::array<float, 64> rightArea;
+    std::array<uint32_t, 64> rightCount;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!(extent[axis] > 0.0f)) continue;
+      float scale = static_cast<float>(bins) / extent[axis];
+      std::fill_n(binBox.begin(), bins, Aabb{});
+      std::fill_n(binCount.begin(), bins, 0u);
+      for (uint32_t i = first; i < first + count; ++i) {
+        uint32_t tri = order_[i];
+        uint32_t b = std::min(bins - 1, static_cast<uint32_t>((centroids_[tri][axis] - centroidBox.min[axis]) * scale));
+        binBox[b].grow(bounds_[tri]);
+        ++binCount[b];
+      }
+      Aabb acc;
+      uint32_t n = 0;
+      for (uint32_t b = bins - 1; b > 0; --b) {
+        acc.grow(binBox[b]);
+        n += binCount[b];
+        rightArea[b] = acc.halfArea();
+        rightCount[b] = n;
+      }
+      acc = Aabb{};
+      n = 0;
+      for (uint32_t b = 0; b + 1 < bins; ++b) {
+        acc.grow(binBox[b]);
+        n += binCount[b];
+        if (n == 0 || rightCount[b + 1] == 0) continue;
+        float cost = acc.halfArea() * static_cast<float>(n) + rightArea[b + 1] * static_cast<float>(rightCount[b + 1]);
+        if (cost < bestCost) {
+          bestCost = cost;
+          bestAxis = axis;
+          bestBin = b + 1;
+        }
+      }
+    }
+    float parentArea = box.halfArea();
+    float leafCost = options_.triangleCost * static_cast<float>(count);
+    float splitCost = options_.traversalCost + options_.triangleCost * bestCost / std::max(parentArea, 1e-30f);
+    if (bestAxis < 0) {
+      if (!mustSplit) return 0;
+      return count / 2;  // all centroids coincide: split by index
+    }
+    if (!mustSplit && splitCost >= leafCost) return 0;
+    float scale = static_cast<float>(bins) / extent[bestAxis];
+    auto mid = std::partition(order_.begin() + first, order_.begin() + first + count, [&](uint32_t tri) {
+      uint32_t b = std::min(bins - 1, static_cast<uint32_t>((centroids_[tri][bestAxis] - centroidBox.min[bestAxis]) * scale));
+      return b < bestBin;
+    });
+    uint32_t left = static_cast<uint32_t>(mid - (order_.begin() + first));
+    return (left == 0 || left == count) ? count / 2 : left;
+  }
+
+  std::span<const Aabb> bounds_;
+  BvhOptions options_;
+  std::vector<glm::vec3> centroids_;
+};
+
+void writeChild(BvhGpuNode& gpu, int c, const Aabb& box, uint32_t ref, uint32_t count) {
+  gpu.texels[2 * c] = glm::vec4(box.min, asFloat(ref));
+  gpu.texels[2 * c + 1] = glm::vec4(box.max, asFloat(count));
+}
+
+}  // namespace
+
+Bvh buildBvh(std::span<const Aabb> bounds, const BvhOptions& options) {
+  auto start = std::chrono::steady_clock::now();
+  Builder builder(bounds, options);
+  builder.build();
+  const std::vector<BuildNode>& nodes = builder.nodes;
+
+  Bvh bvh;
+  bvh.triangleOrder = std::move(builder.order_);
+  // Inner build nodes become GPU nodes in depth-first order; a root leaf gets a node with one empty child.
+  std::vector<uint32_t> gpuIndex(nodes.size(), 0);
+  std::vector<uint32_t> stack{0};
+  std::vector<uint32_t> innerOrder;
+  while (!stack.empty()) {
+    uint32_t n = stack.back();
+    stack.pop_back();
+    if (nodes[n].count > 0 && n != 0) continue;
+    gpuIndex[n] = static_cast<uint32_t>(innerOrder.size());
+    innerOrder.push_back(n);
+    if (nodes[n].count == 0) {
+      stack.push_back(nodes[n].child[1]);
+      stack.push_back(nodes[n].child[0]);
+    }
+  }
+  bvh.nodes.resize(innerOrder.size());
+  BvhStats& s = bvh.stats;
+  double rootArea = std::max(nodes[0].bounds.halfArea(), 1e-30f);
+  for (size_t g = 0; g < innerOrder.size(); ++g) {
+    const BuildNode& node = nodes[innerOrder[g]];
+    BvhGpuNode& gpu = bvh.nodes[g];
+    if (node.count > 0) {  // root leaf
+      writeChild(gpu, 0, node.bounds, node.first, node.count);
+      writeChild(gpu, 1, Aabb{}, 0, 0xffffffffu);
+      s.leaves = 1;
+      s.maxLeafSize = node.count;
+      s.sahCost = options.triangleCost * node.count;
+      continue;
+    }
+    ++s.innerNodes;
+    s.sahCost += options.traversalCost * node.bounds.halfArea() / rootArea;
+    for (int c = 0; c < 2; ++c) {
+      const BuildNode& child = nodes[node.child[c]];
+      if (child.count > 0) {
+        writeChild(gpu, c, child.bounds, child.first, child.count);
+        ++s.leaves;
+        s.maxLeafSize = std::max(s.maxLeafSize, child.count);
+        s.sahCost += options.triangleCost * child.count * child.bounds.halfArea() / rootArea;
+      } else {
+        writeChild(gpu, c, child.bounds, gpuIndex[node.child[c]], 0);
+      }
+    }
+  }
+  s.maxDepth = builder.maxDepth;
+  s.averageLeafSize = s.leaves ? static_cast<double>(bounds.size()) / s.leaves : 0.0;
+  s.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return bvh;
+}
+
+HostHit traceHost(const Bvh& bvh, std::span<const glm::vec3> pos, glm::vec3 origin, glm::vec3 dir, float tMax, bool anyHit) {
+  gpu::RayShear shear = gpu::makeRayShear(origin, dir);
+  glm::vec3 inv = gpu::safeInverse(dir);
+  HostHit best;
+  float tBest = tMax;
+  std::vector<uint32_t> stack{0};
+  while (!stack.empty()) {
+    const BvhGpuNode& node = bvh.nodes[stack.back()];
+    stack.pop_back();
+    for (int c = 0; c < 2; ++c) {
+      glm::vec3 lo = glm::vec3(node.texels[2 * c]), hi = glm::vec3(node.texels[2 * c + 1]);
+      glm::vec3 t0 = (lo - origin) * inv, t1 = (hi - origin) * inv;
+      glm::vec3 tn = glm::min(t0, t1), tf = glm::max(t0, t1);
+      float near = std::max(std::max(tn.x, tn.y), std::max(tn.z, 0.0f));
+      float far = std::min(std::min(tf.x, tf.y) * gpu::kSlabWiden, std::min(tf.z * gpu::kSlabWiden, tBest));
+      if (!(near <= far)) continue;
+      uint32_t ref = asUint(node.texels[2 * c].w), count = asUint(node.texels[2 * c + 1].w);
+      if (count == 0) {
+        stack.push_back(ref);
+        continue;
+      }
+      for (uint32_t tri = ref; tri < ref + count; ++tri) {
+        glm::vec3 h = gpu::intersectTriangle(shear, pos[3 * tri], pos[3 * tri + 1], pos[3 * tri + 2], tBest);
+        if (h.x > 0.0f) {
+          tBest = h.x;
+          best = {h.x, h.y, h.z, tri};
+          if (anyHit) return best;
+        }
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace vkmc

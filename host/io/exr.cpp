@@ -1,0 +1,117 @@
+// EXR through OpenEXR's C++ API (float channels, ZIP compression).
+#include "io/exr.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "error.h"
+
+namespace vkmc {
+
+std::string temporaryPathFor(const std::string& path) {
+  static std::atomic<int> counter{0};
+  return path + ".tmp-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
+}
+
+void writeFileAtomically(const std::string& path, const std::string& bytes) {
+  std::string tmp = temporaryPathFor(path);
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) {
+      std::remove(tmp.c_str());
+      throw Error("cannot write '" + path + "'");
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::remove(tmp.c_str());
+    throw Error("cannot write '" + path + "': " + ec.message());
+  }
+}
+
+void writeExr(const std::string& path, const ExrImage& image) {
+  std::string tmp = temporaryPathFor(path);
+  try {
+    Imf::Header header(image.width, image.height);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    Imf::FrameBuffer fb;
+    for (const auto& [name, data] : image.channels) {
+      if (data.size() != static_cast<size_t>(image.width) * image.height) throw Error("EXR channel " + name + " has the wrong size");
+      header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+      fb.insert(name, Imf::Slice(Imf::FLOAT, (char*)data.data(), sizeof(float), sizeof(float) * image.width));
+    }
+    Imf::OutputFile file(tmp.c_str(), header);
+    file.setFrameBuffer(fb);
+    file.writePixels(image.height);
+  } catch (const Error&) {
+    std::remove(tmp.c_str());
+    throw;
+  } catch (const std::exception& e) {
+    std::remove(tmp.c_str());
+    throw Error("cannot write '" + path + "': " + e.what());
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::remove(tmp.c_str());
+    throw Error("cannot write '" + path + "': " + ec.message());
+  }
+}
+
+void writeFilmExr(const std::string& path, const Film& film) {
+  ExrImage img;
+  img.width = static_cast<int>(film.width);
+  img.height = static_cast<int>(film.height);
+  const char* rgb[3] = {"R", "G", "B"};
+  const char* var[3] = {"variance.R", "variance.G", "variance.B"};
+  for (int c = 0; c < 3; ++c) {
+    auto& m = img.channels[rgb[c]];
+    auto& v = img.channels[var[c]];
+    m.resize(film.pixels());
+    v.resize(film.pixels());
+    for (size_t p = 0; p < film.pixels(); ++p) {
+      m[p] = static_cast<float>(film.mean(p, c));
+      v[p] = static_cast<float>(film.varianceOfMean(p, c));
+    }
+  }
+  auto& n = img.channels["samples"];
+  n.resize(film.pixels());
+  for (size_t p = 0; p < film.pixels(); ++p) n[p] = static_cast<float>(film.count[p]);
+  writeExr(path, img);
+}
+
+ExrImage readExr(const std::string& path) {
+  try {
+    Imf::InputFile file(path.c_str());
+    Imath::Box2i dw = file.header().dataWindow();
+    ExrImage img;
+    img.width = dw.max.x - dw.min.x + 1;
+    img.height = dw.max.y - dw.min.y + 1;
+    Imf::FrameBuffer fb;
+    for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) {
+      auto& data = img.channels[it.name()];
+      data.resize(static_cast<size_t>(img.width) * img.height);
+      char* base = (char*)(data.data() - dw.min.x - static_cast<ptrdiff_t>(dw.min.y) * img.width);
+      fb.insert(it.name(), Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * img.width));
+    }
+    file.setFrameBuffer(fb);
+    file.readPixels(dw.min.y, dw.max.y);
+    return img;
+  } catch (const std::exception& e) {
+    throw Error("cannot read EXR '" + path + "': " + e.what());
+  }
+}
+
+}  // namespace vkmc

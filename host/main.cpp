@@ -1,0 +1,131 @@
+// vkmc command line: arguments -> scene -> renderer -> outputs. Exit 0 on success, 1 on an error, 2 on bad usage.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "app/bench_kernels.h"
+#include "app/render_job.h"
+#include "error.h"
+#include "io/exr.h"
+#include "io/png.h"
+#include "vk/context.h"
+
+namespace {
+
+glm::vec3 parseVec3(const std::string& text, const char* flag) {
+  glm::vec3 v;
+  char extra;
+  if (std::sscanf(text.c_str(), "%f,%f,%f%c", &v.x, &v.y, &v.z, &extra) != 3 || !std::isfinite(v.x) || !std::isfinite(v.y) ||
+      !std::isfinite(v.z))
+    throw vkmc::Error(std::string(flag) + " expects three finite numbers x,y,z, got '" + text + "'");
+  return v;
+}
+
+// Output folders are checked before rendering, so a bad path fails in a second, not after the render.
+void checkWritable(const std::string& path, const char* flag) {
+  if (path.empty()) return;
+  std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (parent.empty()) parent = ".";
+  std::error_code ec;
+  if (!std::filesystem::is_directory(parent, ec)) throw vkmc::Error(std::string(flag) + ": folder '" + parent.string() + "' does not exist");
+  if (std::filesystem::is_directory(path, ec)) throw vkmc::Error(std::string(flag) + ": '" + path + "' is a folder");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"vkmc: a Vulkan compute Monte Carlo path tracer whose efficiency is measured"};
+  app.require_subcommand(1);
+
+  vkmc::RenderOptions ro;
+  std::string out = "out.exr", png, report, lookFrom, lookAt, background;
+  float exposure = 0.0f;
+  bool quiet = false;
+  int spp = 64, maxDepth = 0;
+  long long seed = 1;
+  int width = -1, height = -1, cameraIndex = -1;
+  CLI::App* render = app.add_subcommand("render", "render a glTF scene to OpenEXR and print the report");
+  render->add_option("scene", ro.scenePath, "scene (.gltf or .glb)")->required();
+  render->add_option("-o,--output", out, "OpenEXR output (mean, variance.*, samples)")->capture_default_str();
+  render->add_option("--spp", spp, "samples per pixel")->capture_default_str();
+  render->add_option("--width", width, "image width (default 256)");
+  render->add_option("--height", height, "image height (default from the camera's aspect ratio)");
+  render->add_option("--max-depth", maxDepth, "cap on scattering events (biased); 0 = no cap, Russian roulette only")->capture_default_str();
+  render->add_option("--seed", seed, "random seed")->capture_default_str();
+  render->add_option("--camera", cameraIndex, "index of the glTF camera instance (default 0)");
+  render->add_option("--look-from", lookFrom, "camera position x,y,z (overrides the file's camera)");
+  render->add_option("--look-at", lookAt, "camera target x,y,z");
+  render->add_option("--fov", ro.fovDegrees, "vertical field of view in degrees with --look-from")->capture_default_str();
+  render->add_option("--background", background, "uniform radiance r,g,b of escaped rays (default 0,0,0)");
+  render->add_option("--report", report, "JSON report file");
+  render->add_option("--png", png, "sRGB PNG preview");
+  render->add_option("--exposure", exposure, "PNG exposure in stops")->capture_default_str();
+  render->add_flag("-q,--quiet", quiet, "no summary on stdout, no progress line");
+
+  vkmc::BenchOptions bo;
+  CLI::App* bench = app.add_subcommand("bench-kernels", "set-up split, samples/s and Mrays/s per scene (medians)");
+  bench->add_option("scenes", bo.scenes, "scenes (default: the Cornell box and ../shared/scenes benchmark models)");
+  bench->add_option("--runs", bo.runs, "timed runs per scene")->capture_default_str();
+  bench->add_option("--spp", bo.spp, "samples per pixel per run")->capture_default_str();
+  bench->add_option("--width", bo.width, "image width")->capture_default_str();
+  bench->add_option("--height", bo.height, "image height")->capture_default_str();
+  bench->add_option("--json", bo.jsonPath, "write the results as JSON");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string msg = e.what();
+    std::fprintf(stderr, "vkmc: error: %s (see vkmc --help)\n", msg.c_str());
+    return 2;
+  }
+
+  try {
+    if (render->parsed()) {
+      if (spp <= 0) throw vkmc::Error("--spp must be between 1 and 16777216");
+      if (maxDepth < 0) throw vkmc::Error("--max-depth must be >= 0 (0 = no cap)");
+      if ((render->count("--width") && width <= 0) || (render->count("--height") && height <= 0))
+        throw vkmc::Error("--width and --height must be between 1 and 16384");
+      if (seed < 0 || seed > 0xffffffffLL) throw vkmc::Error("--seed must be between 0 and 4294967295");
+      if (render->count("--camera") && cameraIndex < 0) throw vkmc::Error("--camera must be >= 0");
+      ro.spp = static_cast<uint32_t>(spp);
+      ro.maxDepth = static_cast<uint32_t>(maxDepth);
+      ro.seed = static_cast<uint32_t>(seed);
+      if (width > 0) ro.width = static_cast<uint32_t>(width);
+      if (height > 0) ro.height = static_cast<uint32_t>(height);
+      if (cameraIndex >= 0) ro.cameraIndex = static_cast<uint32_t>(cameraIndex);
+      if (!lookFrom.empty()) ro.lookFrom = parseVec3(lookFrom, "--look-from");
+      if (!lookAt.empty()) ro.lookAt = parseVec3(lookAt, "--look-at");
+      if (!background.empty()) ro.background = parseVec3(background, "--background");
+      ro.progress = !quiet;
+      vkmc::validateOptions(ro);
+      checkWritable(out, "--output");
+      checkWritable(png, "--png");
+      checkWritable(report, "--report");
+
+      vkmc::vk::Context ctx;
+      vkmc::RenderOutcome result = vkmc::runRender(ctx, ro);
+      vkmc::writeFilmExr(out, result.film);
+      if (!png.empty()) vkmc::writeFilmPng(png, result.film, exposure);
+      nlohmann::json j = vkmc::makeReport(ro, result);
+      j["output"] = out;
+      if (!report.empty()) vkmc::writeFileAtomically(report, j.dump(2) + "\n");
+      if (!quiet) std::cout << vkmc::summaryText(ro, result) << "output      " << out << "\n";
+      for (const auto& w : result.warnings)
+        if (quiet) std::fprintf(stderr, "vkmc: warning: %s\n", w.c_str());
+      return 0;
+    }
+    if (bench->parsed()) return vkmc::runBenchKernels(bo);
+  } catch (const vkmc::Error& e) {
+    std::fprintf(stderr, "vkmc: error: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "vkmc: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

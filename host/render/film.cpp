@@ -1,0 +1,45 @@
+// Film statistics.
+#include "render/film.h"
+
+#include <algorithm>
+
+namespace vkmc {
+
+Film::Film(uint32_t w, uint32_t h)
+    : width(w), height(h), sum(3 * pixels(), 0.0), sumSq(3 * pixels(), 0.0), count(pixels(), 0), nonfinite(pixels(), 0) {}
+
+double Film::mean(size_t p, int c) const { return count[p] ? sum[3 * p + c] / static_cast<double>(count[p]) : 0.0; }
+
+double Film::varianceOfMean(size_t p, int c) const {
+  double n = static_cast<double>(count[p]);
+  if (n < 2.0) return 0.0;
+  double m = sum[3 * p + c] / n;
+  double var = std::max(0.0, (sumSq[3 * p + c] - n * m * m) / (n - 1.0));
+  return var / n;
+}
+
+glm::dvec3 Film::imageMean() const {
+  glm::dvec3 acc(0.0);
+  for (size_t p = 0; p < pixels(); ++p) acc += glm::dvec3(mean(p, 0), mean(p, 1), mean(p, 2));
+  return pixels() ? acc / static_cast<double>(pixels()) : acc;
+}
+
+glm::dvec3 Film::imageMeanVarianceOfMean() const {
+  glm::dvec3 acc(0.0);
+  for (size_t p = 0; p < pixels(); ++p) acc += glm::dvec3(varianceOfMean(p, 0), varianceOfMean(p, 1), varianceOfMean(p, 2));
+  return pixels() ? acc / static_cast<double>(pixels()) : acc;
+}
+
+uint64_t Film::totalNonfinite() const {
+  uint64_t n = 0;
+  for (uint64_t v : nonfinite) n += v;
+  return n;
+}
+
+uint64_t Film::totalSamples() const {
+  uint64_t n = 0;
+  for (uint64_t v : count) n += v;
+  return n;
+}
+
+}  // namespace vkmc

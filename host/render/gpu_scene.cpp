@@ -1,0 +1,108 @@
+// Builds the device buffers from the scene in BVH leaf order and checks them against device limits.
+#include "render/gpu_scene.h"
+
+#include <bit>
+#include <glm/gtc/packing.hpp>
+
+#include "../shaders/shared/layout.h"
+#include "../shaders/shared/sampling.h"
+#include "error.h"
+#include "render/alias_table.h"
+
+namespace vkmc {
+namespace {
+
+uint32_t encodeOctahedral(glm::vec3 n) {
+  n /= (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
+  glm::vec2 e(n.x, n.y);
+  if (n.z < 0.0f) {
+    glm::vec2 s(n.x >= 0.0f ? 1.0f : -1.0f, n.y >= 0.0f ? 1.0f : -1.0f);
+    e = (1.0f - glm::abs(glm::vec2(n.y, n.x))) * s;
+  }
+  return glm::packSnorm2x16(e);
+}
+
+vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, VkFormat format, const char* name) {
+  uint64_t texels = bytes / 16;
+  if (texels > ctx.properties().limits.maxTexelBufferElements)
+    throw Error(std::string("scene too big for the device: ") + name + " needs " + std::to_string(texels) +
+                " texels, the device allows " + std::to_string(ctx.properties().limits.maxTexelBufferElements));
+  vk::Buffer b(ctx, std::max<size_t>(bytes, 16), VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+  b.upload(data, bytes);
+  b.createView(format);
+  return b;
+}
+
+}  // namespace
+
+GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh) {
+  const size_t n = scene.triangleCount();
+  info_.triangles = static_cast<uint32_t>(n);
+  info_.materials = static_cast<uint32_t>(scene.materials.size());
+
+  std::vector<double> power;
+  std::vector<uint32_t> lightTriangles;
+  std::vector<float> triangleArea(n);
+  for (uint32_t i = 0; i < n; ++i) {
+    uint32_t src = bvh.triangleOrder[i];
+    const glm::vec3* p = &scene.positions[3 * src];
+    triangleArea[i] = 0.5f * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
+    const Material& m = scene.materials[scene.materialIds[src]];
+    if (m.isEmissive() && triangleArea[i] > 0.0f) {
+      double sides = m.doubleSided ? 2.0 : 1.0;
+      power.push_back(gpu::luminance(m.emission) * triangleArea[i] * gpu::kPi * sides);
+      lightTriangles.push_back(i);
+    }
+  }
+  info_.emissiveTriangles = static_cast<uint32_t>(lightTriangles.size());
+  std::vector<glm::uvec4> lightTexels;
+  std::vector<float> lightPdfArea(n, 0.0f);
+  if (!lightTriangles.empty()) {
+    // A light whose luminance is 0 but whose color is not (pure blue at tiny levels) still gets a chance.
+    double total = 0.0;
+    for (double w : power) total += w;
+    for (double& w : power) w = std::max(w, total * 1e-12);
+    for (double w : power) info_.emittedPower += w;
+    std::vector<AliasEntry> table = buildAliasTable(power);
+    for (size_t k = 0; k < table.size(); ++k) {
+      lightTexels.emplace_back(std::bit_cast<uint32_t>(table[k].probability), table[k].alias, lightTriangles[k],
+                               std::bit_cast<uint32_t>(table[k].pmf));
+      lightPdfArea[lightTriangles[k]] = table[k].pmf / triangleArea[lightTriangles[k]];
+    }
+  } else {
+    lightTexels.emplace_back(0u, 0u, 0u, 0u);  // bound but never read (SPEC_HAS_LIGHTS = 0)
+  }
+
+  std::vector<glm::vec4> triTexels(3 * n);
+  std::vector<glm::uvec4> infoTexels(n);
+  for (uint32_t i = 0; i < n; ++i) {
+    uint32_t src = bvh.triangleOrder[i];
+    for (int k = 0; k < 3; ++k) triTexels[3 * i + k] = glm::vec4(scene.positions[3 * src + k], 0.0f);
+    triTexels[3 * i + 1].w = lightPdfArea[i];
+    infoTexels[i] = glm::uvec4(encodeOctahedral(scene.normals[3 * src]), encodeOctahedral(scene.normals[3 * src + 1]),
+                               encodeOctahedral(scene.normals[3 * src + 2]), scene.materialIds[src]);
+  }
+
+  std::vector<gpu::Material> mats;
+  for (const Material& m : scene.materials) {
+    gpu::Material g{};
+    g.baseColor = glm::vec4(m.baseColor, m.alpha);
+    g.emission = glm::vec4(m.emission, std::bit_cast<float>(m.doubleSided ? gpu::kMaterialDoubleSided : 0u));
+    g.params = glm::vec4(m.metallic, m.roughness, m.specular, 0.0f);
+    mats.push_back(g);
+  }
+
+  triangles_ = makeTexelBuffer(ctx, triTexels.data(), triTexels.size() * 16, VK_FORMAT_R32G32B32A32_SFLOAT, "triangles");
+  triangleInfo_ = makeTexelBuffer(ctx, infoTexels.data(), infoTexels.size() * 16, VK_FORMAT_R32G32B32A32_UINT, "triangle info");
+  bvhNodes_ = makeTexelBuffer(ctx, bvh.nodes.data(), bvh.nodes.size() * 64, VK_FORMAT_R32G32B32A32_SFLOAT, "BVH nodes");
+  lights_ = makeTexelBuffer(ctx, lightTexels.data(), lightTexels.size() * 16, VK_FORMAT_R32G32B32A32_UINT, "lights");
+  materials_ = vk::Buffer(ctx, mats.size() * sizeof(gpu::Material), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+  materials_.upload(mats.data(), mats.size() * sizeof(gpu::Material));
+  info_.bufferBytes = {{"triangles", triTexels.size() * 16},
+                       {"triangle_info", infoTexels.size() * 16},
+                       {"bvh_nodes", bvh.nodes.size() * 64},
+                       {"lights", lightTexels.size() * 16},
+                       {"materials", mats.size() * sizeof(gpu::Material)}};
+}
+
+}  // namespace vkmc

@@ -1,0 +1,37 @@
+// The scene on the device: reordered triangles, per-triangle info, BVH nodes, light table, materials.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bvh/bvh.h"
+#include "scene/scene.h"
+#include "vk/buffer.h"
+#include "vk/context.h"
+
+namespace vkmc {
+
+struct GpuSceneInfo {
+  uint32_t triangles = 0;
+  uint32_t emissiveTriangles = 0;
+  uint32_t materials = 0;
+  double emittedPower = 0.0;  // sum over lights of luminance(Le) * area * pi * sides
+  std::vector<std::pair<std::string, uint64_t>> bufferBytes;
+};
+
+class GpuScene {
+ public:
+  GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh);
+  const GpuSceneInfo& info() const { return info_; }
+  const vk::Buffer& triangles() const { return triangles_; }
+  const vk::Buffer& triangleInfo() const { return triangleInfo_; }
+  const vk::Buffer& bvhNodes() const { return bvhNodes_; }
+  const vk::Buffer& lights() const { return lights_; }
+  const vk::Buffer& materials() const { return materials_; }
+
+ private:
+  GpuSceneInfo info_;
+  vk::Buffer triangles_, triangleInfo_, bvhNodes_, lights_, materials_;
+};
+
+}  // namespace vkmc

@@ -1,0 +1,53 @@
+// Ray-array tracing with the trace_rays kernel.
+#include "render/ray_tracer.h"
+
+#include <cstring>
+#include <map>
+
+#include "spirv/trace_rays_spv.h"
+
+namespace vkmc {
+
+RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene) : ctx_(ctx), scene_(scene) {
+  layout_ = std::make_unique<vk::KernelLayout>(ctx);
+  layout_->bindTexel(BINDING_TRIANGLES, scene.triangles());
+  layout_->bindTexel(BINDING_TRIANGLE_INFO, scene.triangleInfo());
+  layout_->bindTexel(BINDING_BVH_NODES, scene.bvhNodes());
+  layout_->bindTexel(BINDING_LIGHTS, scene.lights());
+  layout_->bindStorage(BINDING_MATERIALS, scene.materials());
+  // The kernel declares every binding of the shared set; those it never touches still need a buffer.
+  dummy_ = vk::Buffer(ctx, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+  for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_CONTROL, BINDING_FILM})
+    layout_->bindStorage(b, dummy_);
+  closest_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest", kSpirv_trace_rays,
+                                          std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 0}});
+  any_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any", kSpirv_trace_rays,
+                                      std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 1}});
+}
+
+RayTracer::~RayTracer() = default;
+
+std::vector<glm::vec4> RayTracer::trace(std::span<const gpu::TestRay> rays, bool anyHit, double* gpuSeconds) {
+  size_t n = rays.size();
+  vk::Buffer in(ctx_, std::max<size_t>(n, 1) * sizeof(gpu::TestRay), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
+  vk::Buffer out(ctx_, std::max<size_t>(n, 1) * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
+  if (n) std::memcpy(in.mapped(), rays.data(), n * sizeof(gpu::TestRay));
+  layout_->bindStorage(BINDING_TEST_RAYS, in);
+  layout_->bindStorage(BINDING_TEST_HITS, out);
+  gpu::PushConstants pc{};
+  pc.pathCount = static_cast<uint32_t>(n);
+  vk::GpuTimer timer(ctx_, 2);
+  ctx_.runCommands([&](VkCommandBuffer cmd) {
+    timer.reset(cmd);
+    vk::dispatch(cmd, *layout_, anyHit ? *any_ : *closest_, &pc, sizeof(pc),
+                 static_cast<uint32_t>((n + gpu::kWorkgroupSize - 1) / gpu::kWorkgroupSize), &timer);
+  });
+  std::map<std::string, double> seconds;
+  timer.collect(seconds);
+  if (gpuSeconds) *gpuSeconds = seconds.empty() ? 0.0 : seconds.begin()->second;
+  std::vector<glm::vec4> hits(n);
+  if (n) std::memcpy(hits.data(), out.mapped(), n * 16);
+  return hits;
+}
+
+}  // namespace vkmc

@@ -1,0 +1,210 @@
+// The depth loop. One submit per pass in the common case: camera rays, a chunk of bounces recorded with
+// indirect dispatches (an empty queue costs an empty dispatch), and an accumulate that the device arms only
+// once every path has ended. Survivors past the chunk get further chunks.
+#include "render/wavefront_renderer.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "../shaders/shared/layout.h"
+#include "error.h"
+#include "spirv/accumulate_spv.h"
+#include "spirv/camera_rays_spv.h"
+#include "spirv/intersect_spv.h"
+#include "spirv/prepare_bounce_spv.h"
+#include "spirv/prepare_shadow_spv.h"
+#include "spirv/shade_spv.h"
+#include "spirv/shadow_spv.h"
+
+namespace vkmc {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+constexpr uint32_t kFirstChunkBounces = 24;
+constexpr uint32_t kLaterChunkBounces = 16;
+constexpr uint32_t kSamplesPerBatch = 32;  // float batch sums stay exact to ~1e-6 relative
+uint32_t groupsFor(uint32_t n) { return (n + gpu::kWorkgroupSize - 1) / gpu::kWorkgroupSize; }
+}  // namespace
+
+struct WavefrontRenderer::Kernels {
+  std::unique_ptr<vk::Kernel> camera, prepareBounce, intersect, shade, prepareShadow, shadow, accumulate;
+};
+
+WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings)
+    : ctx_(ctx), scene_(scene), settings_(settings) {
+  const auto& limits = ctx.properties().limits;
+  uint64_t pixels = static_cast<uint64_t>(settings.width) * settings.height;
+  uint64_t filmBytes = pixels * sizeof(gpu::FilmPixel);
+  if (filmBytes > limits.maxStorageBufferRange)
+    throw Error("image " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + " is too large: its film needs " +
+                std::to_string(filmBytes >> 20) + " MiB, the device's storage-buffer limit is " +
+                std::to_string(limits.maxStorageBufferRange >> 20) + " MiB");
+  capacity_ = static_cast<uint32_t>(std::min<uint64_t>(pixels, settings.maxPathsPerPass));
+  capacity_ = std::min<uint32_t>(capacity_, limits.maxStorageBufferRange / sizeof(gpu::PathState));
+
+  auto storage = [&](VkDeviceSize bytes, vk::MemoryKind kind = vk::MemoryKind::DeviceLocal, VkBufferUsageFlags extra = 0) {
+    deviceBytes_ += bytes;
+    return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | extra, kind);
+  };
+  paths_ = storage(uint64_t(capacity_) * sizeof(gpu::PathState));
+  hits_ = storage(uint64_t(capacity_) * 16);
+  queues_ = storage(uint64_t(capacity_) * 8);
+  shadowQueue_ = storage(uint64_t(capacity_) * sizeof(gpu::ShadowRay));
+  control_ = storage(sizeof(gpu::Control), vk::MemoryKind::HostVisible, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+  film_ = storage(filmBytes, vk::MemoryKind::HostVisible);
+
+  layout_ = std::make_unique<vk::KernelLayout>(ctx);
+  layout_->bindTexel(BINDING_TRIANGLES, scene.triangles());
+  layout_->bindTexel(BINDING_TRIANGLE_INFO, scene.triangleInfo());
+  layout_->bindTexel(BINDING_BVH_NODES, scene.bvhNodes());
+  layout_->bindTexel(BINDING_LIGHTS, scene.lights());
+  layout_->bindStorage(BINDING_MATERIALS, scene.materials());
+  layout_->bindStorage(BINDING_PATHS, paths_);
+  layout_->bindStorage(BINDING_HITS, hits_);
+  layout_->bindStorage(BINDING_RAY_QUEUES, queues_);
+  layout_->bindStorage(BINDING_SHADOW_QUEUE, shadowQueue_);
+  layout_->bindStorage(BINDING_CONTROL, control_);
+  layout_->bindStorage(BINDING_FILM, film_);
+
+  auto start = Clock::now();
+  std::vector<vk::SpecConstant> specs{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize},
+                                      {SPEC_MAX_DEPTH, settings.maxDepth},
+                                      {SPEC_RR_DEPTH, settings.rouletteDepth},
+                                      {SPEC_HAS_LIGHTS, scene.info().emissiveTriangles > 0 ? 1u : 0u}};
+  auto make = [&](const char* name, std::span<const uint32_t> spirv) {
+    return std::make_unique<vk::Kernel>(ctx, *layout_, name, spirv, specs);
+  };
+  kernels_ = std::make_unique<Kernels>();
+  kernels_->camera = make("camera_rays", kSpirv_camera_rays);
+  kernels_->prepareBounce = make("prepare_bounce", kSpirv_prepare_bounce);
+  kernels_->intersect = make("intersect", kSpirv_intersect);
+  kernels_->shade = make("shade", kSpirv_shade);
+  kernels_->prepareShadow = make("prepare_shadow", kSpirv_prepare_shadow);
+  kernels_->shadow = make("shadow", kSpirv_shadow);
+  kernels_->accumulate = make("accumulate", kSpirv_accumulate);
+  timer_ = std::make_unique<vk::GpuTimer>(ctx, 2 * (8 + 5 * kFirstChunkBounces));
+
+  // Warm-up: every kernel once on empty queues, so the driver's compile is not timed as rendering.
+  std::memset(control_.mapped(), 0, sizeof(gpu::Control));
+  std::memset(film_.mapped(), 0, filmBytes);
+  gpu::PushConstants pc{};
+  pc.width = settings.width;
+  pc.height = settings.height;
+  pc.queueCapacity = capacity_;
+  ctx.runCommands([&](VkCommandBuffer cmd) {
+    for (const auto* k : {&kernels_->camera, &kernels_->prepareBounce, &kernels_->intersect, &kernels_->shade,
+                          &kernels_->prepareShadow, &kernels_->shadow, &kernels_->accumulate})
+      vk::dispatch(cmd, *layout_, **k, &pc, sizeof(pc), 1);
+  });
+  pipelineSeconds_ = since(start);
+}
+
+WavefrontRenderer::~WavefrontRenderer() = default;
+
+uint32_t WavefrontRenderer::renderPass(uint32_t firstPixel, uint32_t count, uint32_t sampleIndex, RenderStats& stats) {
+  gpu::PushConstants pc{};
+  pc.pathCount = count;
+  pc.firstPixel = firstPixel;
+  pc.sampleIndex = sampleIndex;
+  pc.width = settings_.width;
+  pc.height = settings_.height;
+  pc.seed = settings_.seed;
+  pc.queueCapacity = capacity_;
+  const CameraRig& cam = settings_.camera;
+  pc.cameraOrigin = glm::vec4(cam.origin, cam.orthographic ? float(gpu::kCameraOrthographic) : float(gpu::kCameraPerspective));
+  pc.cameraForward = glm::vec4(cam.forward, 0.0f);
+  pc.cameraRight = glm::vec4(cam.right, 0.0f);
+  pc.cameraUp = glm::vec4(cam.up, 0.0f);
+  pc.background = glm::vec4(settings_.background, 0.0f);
+
+  auto* control = static_cast<gpu::Control*>(control_.mapped());
+  std::memset(control, 0, sizeof(gpu::Control));
+  const uint32_t depthCap = settings_.maxDepth == 0 ? UINT32_MAX : settings_.maxDepth + 1;  // +1: the last hit's emission
+  uint32_t bounce = 0;
+  bool first = true;
+  while (true) {
+    uint32_t chunk = std::min(first ? kFirstChunkBounces : kLaterChunkBounces, depthCap - std::min(depthCap, bounce));
+    chunk = std::max(chunk, 1u);
+    VkCommandBuffer cmd = ctx_.beginCommands();
+    timer_->reset(cmd);
+    vk::GpuTimer* timer = timer_.get();
+    if (first) vk::dispatch(cmd, *layout_, *kernels_->camera, &pc, sizeof(pc), groupsFor(count), timer);
+    for (uint32_t b = bounce; b < bounce + chunk; ++b) {
+      pc.bounce = b;
+      // The chunk-end prepare of the previous chunk already prepared this bounce.
+      if (first || b != bounce) vk::dispatch(cmd, *layout_, *kernels_->prepareBounce, &pc, sizeof(pc), 1, timer);
+      if (timer) timer->begin(cmd, b == 0 ? "intersect_primary" : "intersect");
+      vk::dispatchIndirect(cmd, *layout_, *kernels_->intersect, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs));
+      if (timer) timer->end(cmd);
+      vk::dispatchIndirect(cmd, *layout_, *kernels_->shade, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs), timer);
+      vk::dispatch(cmd, *layout_, *kernels_->prepareShadow, &pc, sizeof(pc), 1, timer);
+      vk::dispatchIndirect(cmd, *layout_, *kernels_->shadow, &pc, sizeof(pc), control_, offsetof(gpu::Control, shadowArgs), timer);
+    }
+    bounce += chunk;
+    pc.bounce = bounce;
+    vk::dispatch(cmd, *layout_, *kernels_->prepareBounce, &pc, sizeof(pc), 1, timer);
+    vk::dispatchIndirect(cmd, *layout_, *kernels_->accumulate, &pc, sizeof(pc), control_,
+                         offsetof(gpu::Control, accumulateArgs), timer);
+    ctx_.submitAndWait(cmd);
+    timer_->collect(stats.stageSeconds);
+    first = false;
+    uint32_t alive = (bounce & 1u) == 0u ? control->counts.x : control->counts.y;
+    if (alive == 0) break;
+    if (bounce >= depthCap) throw Error("internal error: paths alive past the depth cap");
+  }
+  stats.cameraRays += control->totals.x;
+  stats.extensionRays += control->totals.y;
+  stats.shadowRays += control->totals.z;
+  stats.primaryRays += control->totals.x;
+  return bounce;
+}
+
+void WavefrontRenderer::foldFilm(Film& film) {
+  auto* px = static_cast<gpu::FilmPixel*>(film_.mapped());
+  for (size_t p = 0; p < film.pixels(); ++p) {
+    for (int c = 0; c < 3; ++c) {
+      film.sum[3 * p + c] += px[p].sum[c];
+      film.sumSq[3 * p + c] += px[p].sumSq[c];
+    }
+    film.count[p] += static_cast<uint64_t>(px[p].sum.w);
+    film.nonfinite[p] += static_cast<uint64_t>(px[p].sumSq.w);
+  }
+  std::memset(film_.mapped(), 0, film.pixels() * sizeof(gpu::FilmPixel));
+}
+
+Film WavefrontRenderer::render(RenderStats& stats) {
+  Film film(settings_.width, settings_.height);
+  const uint32_t pixels = settings_.width * settings_.height;
+  bool showProgress = settings_.progress && isatty(STDERR_FILENO);
+  auto start = Clock::now();
+  double lastProgress = 0.0;
+  for (uint32_t s = 0; s < settings_.spp; ++s) {
+    for (uint32_t first = 0; first < pixels; first += capacity_) {
+      uint32_t bounces = renderPass(first, std::min(capacity_, pixels - first), s, stats);
+      stats.maxBounces = std::max(stats.maxBounces, bounces);
+      ++stats.passes;
+    }
+    if ((s + 1) % kSamplesPerBatch == 0 || s + 1 == settings_.spp) foldFilm(film);
+    double elapsed = since(start);
+    if (showProgress && (elapsed - lastProgress > 0.25 || s + 1 == settings_.spp)) {
+      lastProgress = elapsed;
+      double eta = elapsed / (s + 1) * (settings_.spp - s - 1);
+      std::fprintf(stderr, "\rvkmc: %u/%u spp  %.2f Mrays/s  ETA %.1f s   ", s + 1, settings_.spp,
+                   stats.rays() / std::max(elapsed, 1e-9) * 1e-6, eta);
+      std::fflush(stderr);
+    }
+  }
+  if (showProgress) std::fprintf(stderr, "\n");
+  stats.seconds = since(start);
+  for (const auto& [name, secs] : stats.stageSeconds) stats.gpuSeconds += secs;
+  stats.primarySeconds = stats.stageSeconds["intersect_primary"];
+  stats.incoherentSeconds = stats.stageSeconds["intersect"];
+  return film;
+}
+
+}  // namespace vkmc

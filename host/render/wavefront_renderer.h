@@ -1,0 +1,69 @@
+// The wavefront path tracer: camera rays -> (intersect -> shade -> shadow)* -> accumulate, stage by stage,
+// paths kept on the device between stages, queues sized on the device and dispatched indirectly.
+#pragma once
+#include <glm/glm.hpp>
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "render/film.h"
+#include "render/gpu_scene.h"
+#include "scene/camera_rig.h"
+#include "vk/kernel.h"
+
+namespace vkmc {
+
+struct RenderSettings {
+  uint32_t width = 256;
+  uint32_t height = 256;
+  uint32_t spp = 64;
+  uint32_t maxDepth = 0;       // scattering events; 0 = no cap, paths end by Russian roulette only (unbiased)
+  uint32_t rouletteDepth = 3;  // roulette from this many scattering events on
+  uint32_t seed = 1;
+  glm::vec3 background{0.0f};
+  CameraRig camera{};
+  bool progress = false;       // progress line on stderr
+  uint32_t maxPathsPerPass = 1u << 20;
+};
+
+struct RenderStats {
+  double seconds = 0.0;          // wall time of the sample passes
+  double gpuSeconds = 0.0;       // sum of kernel timestamps
+  uint64_t cameraRays = 0, extensionRays = 0, shadowRays = 0;
+  uint64_t primaryRays = 0;      // rays of bounce 0 (= camera rays)
+  double primarySeconds = 0.0;   // GPU time of bounce-0 intersection
+  double incoherentSeconds = 0.0;  // GPU time of later closest-hit intersections
+  std::map<std::string, double> stageSeconds;
+  uint32_t passes = 0;
+  uint32_t maxBounces = 0;
+  uint64_t rays() const { return cameraRays + extensionRays + shadowRays; }
+};
+
+class WavefrontRenderer {
+ public:
+  // Creates the pipelines and warms them up (the driver compiles at first dispatch); see pipelineSeconds().
+  WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings);
+  ~WavefrontRenderer();
+  Film render(RenderStats& stats);
+  double pipelineSeconds() const { return pipelineSeconds_; }
+  uint64_t deviceBytes() const { return deviceBytes_; }
+
+ private:
+  struct Kernels;
+  uint32_t renderPass(uint32_t firstPixel, uint32_t count, uint32_t sampleIndex, RenderStats& stats);
+  void foldFilm(Film& film);
+
+  vk::Context& ctx_;
+  const GpuScene& scene_;
+  RenderSettings settings_;
+  uint32_t capacity_ = 0;
+  std::unique_ptr<vk::KernelLayout> layout_;
+  std::unique_ptr<Kernels> kernels_;
+  std::unique_ptr<vk::GpuTimer> timer_;
+  vk::Buffer paths_, hits_, queues_, shadowQueue_, control_, film_;
+  double pipelineSeconds_ = 0.0;
+  uint64_t deviceBytes_ = 0;
+};
+
+}  // namespace vkmc

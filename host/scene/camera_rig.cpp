@@ -1,0 +1,56 @@
+// Camera bases from glTF cameras, automatic framing and look-at overrides.
+#include "scene/camera_rig.h"
+
+#include <cmath>
+
+#include "error.h"
+
+namespace vkmc {
+
+Camera lookAtCamera(glm::vec3 from, glm::vec3 at, float yfovDegrees) {
+  glm::vec3 f = at - from;
+  if (!(glm::length(f) > 0.0f) || !std::isfinite(glm::length(f))) throw Error("--look-from and --look-at must differ");
+  if (!(yfovDegrees > 0.0f && yfovDegrees < 179.0f)) throw Error("--fov must be in (0, 179) degrees");
+  Camera c;
+  c.position = from;
+  c.forward = glm::normalize(f);
+  glm::vec3 worldUp(0.0f, 1.0f, 0.0f);
+  if (std::abs(glm::dot(worldUp, c.forward)) > 0.999f) worldUp = glm::vec3(0.0f, 0.0f, -1.0f);
+  c.up = glm::normalize(glm::cross(glm::cross(c.forward, worldUp), c.forward));
+  c.yfov = glm::radians(yfovDegrees);
+  c.name = "look-at";
+  return c;
+}
+
+Camera autoCamera(const Aabb& bounds, float aspect) {
+  const float yfov = glm::radians(45.0f);
+  float radius = 0.5f * glm::length(bounds.extent());
+  if (!(radius > 0.0f)) radius = 1.0f;
+  float halfFov = 0.5f * yfov;
+  if (aspect < 1.0f) halfFov = std::atan(std::tan(halfFov) * aspect);
+  float distance = radius / std::sin(halfFov);
+  Camera c = lookAtCamera(bounds.center() + glm::vec3(0.0f, 0.0f, distance), bounds.center(), glm::degrees(yfov));
+  c.name = "auto";
+  return c;
+}
+
+CameraRig makeCameraRig(const Camera& camera, uint32_t width, uint32_t height) {
+  CameraRig rig;
+  float aspect = static_cast<float>(width) / static_cast<float>(height);
+  rig.origin = camera.position;
+  rig.forward = glm::normalize(camera.forward);
+  glm::vec3 right = glm::normalize(glm::cross(rig.forward, camera.up));
+  glm::vec3 up = glm::cross(right, rig.forward);
+  if (camera.kind == CameraKind::Orthographic) {
+    rig.orthographic = true;
+    rig.right = right * (camera.ymag * aspect);
+    rig.up = up * camera.ymag;
+  } else {
+    float tanY = std::tan(0.5f * camera.yfov);
+    rig.right = right * (tanY * aspect);
+    rig.up = up * tanY;
+  }
+  return rig;
+}
+
+}  // namespace vkmc

@@ -1,0 +1,318 @@
+// glTF loading through tinygltf, with every accessor bounds-checked before it is read.
+#include "scene/gltf_loader.h"
+
+#include <tiny_gltf.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <limits>
+
+#include "error.h"
+
+namespace vkmc {
+namespace {
+
+// Textures are not used yet; skipping the decode keeps loading fast (DamagedHelmet has 5 large JPEGs).
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+  return true;
+}
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+struct AccessorView {
+  const unsigned char* data = nullptr;
+  size_t count = 0;
+  size_t stride = 0;
+  int componentType = 0;
+  int type = 0;
+};
+
+size_t componentSize(int componentType) {
+  switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_INT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+    default: return 0;
+  }
+}
+
+size_t componentCount(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return 1;
+    case TINYGLTF_TYPE_VEC2: return 2;
+    case TINYGLTF_TYPE_VEC3: return 3;
+    case TINYGLTF_TYPE_VEC4: return 4;
+    default: return 0;
+  }
+}
+
+AccessorView viewAccessor(const tinygltf::Model& model, int index, const char* what) {
+  std::string name = std::string(what) + " accessor " + std::to_string(index);
+  if (index < 0 || index >= static_cast<int>(model.accessors.size())) throw Error(name + " does not exist");
+  const tinygltf::Accessor& a = model.accessors[index];
+  if (a.sparse.isSparse) throw Error(name + " is sparse (not supported)");
+  size_t elemSize = componentSize(a.componentType) * componentCount(a.type);
+  if (elemSize == 0) throw Error(name + " has an invalid type");
+  if (a.bufferView < 0 || a.bufferView >= static_cast<int>(model.bufferViews.size()))
+    throw Error(name + " has no valid buffer view");
+  const tinygltf::BufferView& v = model.bufferViews[a.bufferView];
+  if (v.buffer < 0 || v.buffer >= static_cast<int>(model.buffers.size())) throw Error(name + " refers to a missing buffer");
+  const tinygltf::Buffer& b = model.buffers[v.buffer];
+  size_t stride = v.byteStride ? v.byteStride : elemSize;
+  if (stride < elemSize) throw Error(name + " has a byte stride smaller than its element");
+  if (v.byteOffset + v.byteLength > b.data.size()) throw Error(name + ": buffer view runs past the end of its buffer");
+  if (a.count > 0 && a.byteOffset + (a.count - 1) * stride + elemSize > v.byteLength)
+    throw Error(name + ": accessor runs past the end of its buffer view");
+  AccessorView out;
+  out.data = b.data.data() + v.byteOffset + a.byteOffset;
+  out.count = a.count;
+  out.stride = stride;
+  out.componentType = a.componentType;
+  out.type = a.type;
+  return out;
+}
+
+glm::vec3 readVec3(const AccessorView& v, size_t i) {
+  glm::vec3 r;
+  std::memcpy(&r, v.data + i * v.stride, sizeof(r));
+  return r;
+}
+
+uint32_t readIndex(const AccessorView& v, size_t i) {
+  const unsigned char* p = v.data + i * v.stride;
+  switch (v.componentType) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t x; std::memcpy(&x, p, 2); return x; }
+    default: { uint32_t x; std::memcpy(&x, p, 4); return x; }
+  }
+}
+
+glm::mat4 localTransform(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) {
+    glm::mat4 m;
+    for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = static_cast<float>(node.matrix[i]);
+    return m;
+  }
+  glm::mat4 m(1.0f);
+  if (node.translation.size() == 3)
+    m = glm::translate(m, glm::vec3(node.translation[0], node.translation[1], node.translation[2]));
+  if (node.rotation.size() == 4) {
+    glm::quat q(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
+                static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2]));
+    m *= glm::mat4_cast(glm::normalize(q));
+  }
+  if (node.scale.size() == 3) m = glm::scale(m, glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
+  return m;
+}
+
+double extensionNumber(const tinygltf::ExtensionMap& ext, const char* extension, const char* key, double fallback) {
+  auto it = ext.find(extension);
+  if (it == ext.end() || !it->second.Has(key)) return fallback;
+  const tinygltf::Value& v = it->second.Get(key);
+  return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
+}
+
+Material convertMaterial(const tinygltf::Material& m, int index, bool& usesTextures) {
+  Material out;
+  const auto& pbr = m.pbrMetallicRoughness;
+  std::string name = "material " + std::to_string(index);
+  if (pbr.baseColorFactor.size() == 4) {
+    out.baseColor = glm::vec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]);
+    out.alpha = static_cast<float>(pbr.baseColorFactor[3]);
+  }
+  out.metallic = static_cast<float>(pbr.metallicFactor);
+  out.roughness = static_cast<float>(pbr.roughnessFactor);
+  if (m.emissiveFactor.size() == 3) out.emission = glm::vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
+  double strength = extensionNumber(m.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
+  out.specular = static_cast<float>(extensionNumber(m.extensions, "KHR_materials_specular", "specularFactor", 1.0));
+  if (!std::isfinite(strength) || strength < 0.0) throw Error(name + ": emissiveStrength is not a finite non-negative number");
+  out.emission *= static_cast<float>(strength);
+  out.doubleSided = m.doubleSided;
+  if (!finite(out.baseColor) || !finite(out.emission) || !std::isfinite(out.alpha) || !std::isfinite(out.metallic) ||
+      !std::isfinite(out.roughness) || !std::isfinite(out.specular))
+    throw Error(name + ": a factor is NaN or infinite");
+  if (glm::any(glm::lessThan(out.emission, glm::vec3(0.0f))) || glm::any(glm::lessThan(out.baseColor, glm::vec3(0.0f))))
+    throw Error(name + ": negative color or emission factor");
+  usesTextures = usesTextures || pbr.baseColorTexture.index >= 0 || pbr.metallicRoughnessTexture.index >= 0 ||
+                 m.normalTexture.index >= 0 || m.emissiveTexture.index >= 0 || m.occlusionTexture.index >= 0;
+  return out;
+}
+
+class Flattener {
+ public:
+  Flattener(const tinygltf::Model& model, Scene& scene) : model_(model), scene_(scene) {}
+
+  void visit(int nodeIndex, const glm::mat4& parent, int depth) {
+    if (nodeIndex < 0 || nodeIndex >= static_cast<int>(model_.nodes.size()))
+      throw Error("node " + std::to_string(nodeIndex) + " does not exist");
+    if (depth > 256) throw Error("node hierarchy deeper than 256 levels (cyclic?)");
+    const tinygltf::Node& node = model_.nodes[nodeIndex];
+    glm::mat4 world = parent * localTransform(node);
+    if (node.mesh >= 0) addMesh(node.mesh, world);
+    if (node.camera >= 0) addCamera(node.camera, world);
+    for (int child : node.children) visit(child, world, depth + 1);
+  }
+
+  uint64_t nonTrianglePrimitives = 0;
+
+ private:
+  void addMesh(int meshIndex, const glm::mat4& world) {
+    if (meshIndex >= static_cast<int>(model_.meshes.size())) throw Error("mesh " + std::to_string(meshIndex) + " does not exist");
+    glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
+    bool flip = glm::determinant(glm::mat3(world)) < 0.0f;  // mirroring swaps the winding
+    for (const tinygltf::Primitive& prim : model_.meshes[meshIndex].primitives) {
+      if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1) {
+        ++nonTrianglePrimitives;
+        continue;
+      }
+      auto pos = prim.attributes.find("POSITION");
+      if (pos == prim.attributes.end()) throw Error("mesh " + std::to_string(meshIndex) + ": primitive without POSITION");
+      AccessorView positions = viewAccessor(model_, pos->second, "POSITION");
+      if (positions.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || positions.type != TINYGLTF_TYPE_VEC3)
+        throw Error("POSITION accessor " + std::to_string(pos->second) + " is not float VEC3");
+      std::optional<AccessorView> normals;
+      if (auto n = prim.attributes.find("NORMAL"); n != prim.attributes.end()) {
+        normals = viewAccessor(model_, n->second, "NORMAL");
+        if (normals->componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || normals->type != TINYGLTF_TYPE_VEC3 ||
+            normals->count != positions.count)
+          normals.reset();
+      }
+      std::optional<AccessorView> indices;
+      if (prim.indices >= 0) {
+        indices = viewAccessor(model_, prim.indices, "index");
+        int ct = indices->componentType;
+        if (indices->type != TINYGLTF_TYPE_SCALAR ||
+            (ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+             ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
+          throw Error("index accessor " + std::to_string(prim.indices) + " is not an unsigned integer scalar");
+      }
+      int materialIndex = prim.material;
+      if (materialIndex >= static_cast<int>(model_.materials.size()))
+        throw Error("primitive refers to missing material " + std::to_string(materialIndex));
+      uint32_t materialId = materialIndex < 0 ? static_cast<uint32_t>(scene_.materials.size() - 1)  // default material
+                                              : static_cast<uint32_t>(materialIndex);
+      size_t vertexCount = indices ? indices->count : positions.count;
+      for (size_t t = 0; t + 3 <= vertexCount; t += 3) {
+        uint32_t idx[3];
+        for (int k = 0; k < 3; ++k) {
+          idx[k] = indices ? readIndex(*indices, t + k) : static_cast<uint32_t>(t + k);
+          if (idx[k] >= positions.count)
+            throw Error("index " + std::to_string(idx[k]) + " out of range (" + std::to_string(positions.count) + " vertices)");
+        }
+        if (flip) std::swap(idx[1], idx[2]);
+        glm::vec3 p[3], n[3];
+        for (int k = 0; k < 3; ++k) {
+          glm::vec3 local = readVec3(positions, idx[k]);
+          if (!finite(local)) throw Error("vertex " + std::to_string(idx[k]) + " has a NaN or infinite position");
+          p[k] = glm::vec3(world * glm::vec4(local, 1.0f));
+          if (!finite(p[k])) throw Error("vertex " + std::to_string(idx[k]) + " is not finite after its node transform");
+        }
+        glm::vec3 geometric = glm::cross(p[1] - p[0], p[2] - p[0]);
+        float len = glm::length(geometric);
+        if (!(len > 0.0f) || !std::isfinite(len)) {
+          ++scene_.degenerateTriangles;
+          continue;
+        }
+        geometric /= len;
+        for (int k = 0; k < 3; ++k) {
+          glm::vec3 nk = normals ? normalMatrix * readVec3(*normals, idx[k]) : geometric;
+          float nl = glm::length(nk);
+          n[k] = (nl > 0.0f && std::isfinite(nl)) ? nk / nl : geometric;
+          scene_.positions.push_back(p[k]);
+          scene_.normals.push_back(n[k]);
+          scene_.bounds.grow(p[k]);
+        }
+        scene_.materialIds.push_back(materialId);
+      }
+    }
+  }
+
+  void addCamera(int cameraIndex, const glm::mat4& world) {
+    if (cameraIndex >= static_cast<int>(model_.cameras.size()))
+      throw Error("camera " + std::to_string(cameraIndex) + " does not exist");
+    const tinygltf::Camera& c = model_.cameras[cameraIndex];
+    Camera cam;
+    cam.name = c.name;
+    cam.position = glm::vec3(world[3]);
+    cam.forward = glm::normalize(-glm::vec3(world[2]));
+    cam.up = glm::normalize(glm::vec3(world[1]));
+    if (c.type == "orthographic") {
+      cam.kind = CameraKind::Orthographic;
+      cam.xmag = static_cast<float>(c.orthographic.xmag);
+      cam.ymag = static_cast<float>(c.orthographic.ymag);
+      if (!(cam.xmag > 0.0f) || !(cam.ymag > 0.0f)) throw Error("orthographic camera with non-positive magnification");
+      cam.aspectRatio = cam.xmag / cam.ymag;
+    } else {
+      cam.yfov = static_cast<float>(c.perspective.yfov);
+      if (!(cam.yfov > 0.0f && cam.yfov < 3.14f)) throw Error("perspective camera with yfov outside (0, pi)");
+      if (c.perspective.aspectRatio > 0.0) cam.aspectRatio = static_cast<float>(c.perspective.aspectRatio);
+    }
+    if (!finite(cam.position) || !finite(cam.forward) || !finite(cam.up)) throw Error("camera transform is not finite");
+    scene_.cameras.push_back(cam);
+  }
+
+  const tinygltf::Model& model_;
+  Scene& scene_;
+};
+
+}  // namespace
+
+Scene loadGltf(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw Error("cannot open scene '" + path + "'");
+  tinygltf::Model model;
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(skipImage, nullptr);
+  std::string err, warn;
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  bool ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                          : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+  if (!ok) {
+    std::string reason = err.empty() ? "unknown error" : err;
+    while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' ')) reason.pop_back();
+    for (char& c : reason) if (c == '\n') c = ';';
+    throw Error("cannot load '" + path + "': " + reason);
+  }
+
+  Scene scene;
+  scene.path = path;
+  bool usesTextures = false;
+  for (size_t i = 0; i < model.materials.size(); ++i)
+    scene.materials.push_back(convertMaterial(model.materials[i], static_cast<int>(i), usesTextures));
+  Material fallback;  // glTF default material: white, fully metallic and rough (Lambert here)
+  scene.materials.push_back(fallback);
+  if (usesTextures) scene.warnings.push_back("textures are not supported yet and were ignored");
+
+  Flattener flattener(model, scene);
+  if (!model.scenes.empty()) {
+    int sceneIndex = model.defaultScene >= 0 && model.defaultScene < static_cast<int>(model.scenes.size()) ? model.defaultScene : 0;
+    for (int root : model.scenes[sceneIndex].nodes) flattener.visit(root, glm::mat4(1.0f), 0);
+  } else {
+    std::vector<bool> isChild(model.nodes.size(), false);
+    for (const auto& n : model.nodes)
+      for (int c : n.children)
+        if (c >= 0 && c < static_cast<int>(isChild.size())) isChild[c] = true;
+    for (size_t i = 0; i < model.nodes.size(); ++i)
+      if (!isChild[i]) flattener.visit(static_cast<int>(i), glm::mat4(1.0f), 0);
+  }
+  scene.skippedPrimitives = flattener.nonTrianglePrimitives;
+  if (scene.skippedPrimitives > 0)
+    scene.warnings.push_back(std::to_string(scene.skippedPrimitives) + " non-triangle primitive(s) skipped");
+  if (scene.degenerateTriangles > 0)
+    scene.warnings.push_back(std::to_string(scene.degenerateTriangles) + " zero-area triangle(s) skipped");
+  if (scene.triangleCount() == 0) throw Error("scene '" + path + "' has no triangles");
+  return scene;
+}
+
+}  // namespace vkmc

@@ -1,0 +1,65 @@
+// The loaded scene as plain data: world-space triangles, materials, cameras. No Vulkan here.
+#pragma once
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vkmc {
+
+struct Material {
+  glm::vec3 baseColor{1.0f};
+  float alpha = 1.0f;
+  glm::vec3 emission{0.0f};  // emissiveFactor x KHR_materials_emissive_strength, W m^-2 sr^-1
+  float metallic = 1.0f;
+  float roughness = 1.0f;
+  float specular = 1.0f;     // KHR_materials_specular specularFactor
+  bool doubleSided = false;
+  bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
+};
+
+enum class CameraKind { Perspective, Orthographic };
+
+struct Camera {
+  CameraKind kind = CameraKind::Perspective;
+  glm::vec3 position{0.0f};
+  glm::vec3 forward{0.0f, 0.0f, -1.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float yfov = 0.7853982f;            // radians (perspective)
+  std::optional<float> aspectRatio;   // width / height, when the file gives one
+  float xmag = 1.0f, ymag = 1.0f;     // half extents (orthographic)
+  std::string name;
+};
+
+struct Aabb {
+  glm::vec3 min{std::numeric_limits<float>::infinity()};
+  glm::vec3 max{-std::numeric_limits<float>::infinity()};
+  void grow(const glm::vec3& p) { min = glm::min(min, p), max = glm::max(max, p); }
+  void grow(const Aabb& b) { min = glm::min(min, b.min), max = glm::max(max, b.max); }
+  bool valid() const { return min.x <= max.x && min.y <= max.y && min.z <= max.z; }
+  glm::vec3 extent() const { return max - min; }
+  glm::vec3 center() const { return 0.5f * (min + max); }
+  float halfArea() const {
+    glm::vec3 e = glm::max(extent(), glm::vec3(0.0f));
+    return e.x * e.y + e.y * e.z + e.z * e.x;
+  }
+};
+
+struct Scene {
+  std::vector<glm::vec3> positions;   // 3 per triangle, world space, counter-clockwise front faces
+  std::vector<glm::vec3> normals;     // 3 per triangle, world space (geometric normal where the file has none)
+  std::vector<uint32_t> materialIds;  // 1 per triangle
+  std::vector<Material> materials;
+  std::vector<Camera> cameras;        // camera instances in node order
+  Aabb bounds;
+  uint64_t degenerateTriangles = 0;   // zero-area triangles skipped
+  uint64_t skippedPrimitives = 0;     // non-triangle primitives skipped
+  std::vector<std::string> warnings;
+  std::string path;
+
+  size_t triangleCount() const { return materialIds.size(); }
+};
+
+}  // namespace vkmc

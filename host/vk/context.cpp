@@ -1,0 +1,128 @@
+// Instance and device creation: Vulkan 1.2, one compute queue, nothing else.
+#include "vk/context.h"
+
+#include <cstdlib>
+#include <vector>
+
+#include "error.h"
+
+namespace vkmc::vk {
+
+void check(VkResult result, const char* what) {
+  if (result != VK_SUCCESS) throw Error(std::string("Vulkan call failed: ") + what + " (VkResult " + std::to_string(result) + ")");
+}
+
+Context::Context(const ContextOptions& options) {
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = "vkmc";
+  app.apiVersion = VK_API_VERSION_1_2;
+  VkInstanceCreateInfo ici{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  ici.pApplicationInfo = &app;
+  if (vkCreateInstance(&ici, nullptr, &instance_) != VK_SUCCESS)
+    throw Error("no Vulkan 1.2 instance (is a Vulkan driver such as mesa-vulkan-drivers installed?)");
+
+  uint32_t count = 0;
+  vkEnumeratePhysicalDevices(instance_, &count, nullptr);
+  std::vector<VkPhysicalDevice> devices(count);
+  vkEnumeratePhysicalDevices(instance_, &count, devices.data());
+  if (devices.empty()) throw Error("no Vulkan device found");
+
+  int index = options.deviceIndex;
+  if (const char* env = std::getenv("VKMC_DEVICE"); env && index < 0) index = std::atoi(env);
+  if (index >= static_cast<int>(devices.size())) throw Error("device index " + std::to_string(index) + " out of range");
+  if (index < 0) {
+    index = 0;
+    for (size_t i = 0; i < devices.size(); ++i) {
+      VkPhysicalDeviceProperties p;
+      vkGetPhysicalDeviceProperties(devices[i], &p);
+      if (p.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU) { index = static_cast<int>(i); break; }
+    }
+  }
+  physical_ = devices[index];
+  vkGetPhysicalDeviceProperties(physical_, &properties_);
+  vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+  if (properties_.apiVersion < VK_API_VERSION_1_2) throw Error(std::string("device ") + properties_.deviceName + " lacks Vulkan 1.2");
+
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &count, families.data());
+  bool found = false;
+  for (uint32_t i = 0; i < count; ++i) {
+    if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) {
+      queueFamily_ = i;
+      timestampBits_ = families[i].timestampValidBits;
+      found = true;
+      break;
+    }
+  }
+  if (!found) throw Error("device has no compute queue");
+
+  float priority = 1.0f;
+  VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  qci.queueFamilyIndex = queueFamily_;
+  qci.queueCount = 1;
+  qci.pQueuePriorities = &priority;
+  VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  dci.queueCreateInfoCount = 1;
+  dci.pQueueCreateInfos = &qci;
+  check(vkCreateDevice(physical_, &dci, nullptr, &device_), "vkCreateDevice");
+  vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+
+  VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  pci.queueFamilyIndex = queueFamily_;
+  check(vkCreateCommandPool(device_, &pci, nullptr, &pool_), "vkCreateCommandPool");
+  VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  check(vkCreateFence(device_, &fci, nullptr, &fence_), "vkCreateFence");
+}
+
+Context::~Context() {
+  if (device_) {
+    vkDeviceWaitIdle(device_);
+    vkDestroyFence(device_, fence_, nullptr);
+    vkDestroyCommandPool(device_, pool_, nullptr);
+    vkDestroyDevice(device_, nullptr);
+  }
+  if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+uint32_t Context::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) const {
+  for (VkMemoryPropertyFlags want : {required | preferred, required}) {
+    for (uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
+      if ((typeBits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & want) == want) return i;
+    }
+  }
+  throw Error("no suitable Vulkan memory type");
+}
+
+VkCommandBuffer Context::beginCommands() {
+  VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  ai.commandPool = pool_;
+  ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  ai.commandBufferCount = 1;
+  VkCommandBuffer cmd;
+  check(vkAllocateCommandBuffers(device_, &ai, &cmd), "vkAllocateCommandBuffers");
+  VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  check(vkBeginCommandBuffer(cmd, &bi), "vkBeginCommandBuffer");
+  return cmd;
+}
+
+void Context::submitAndWait(VkCommandBuffer cmd) {
+  check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+  VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  si.commandBufferCount = 1;
+  si.pCommandBuffers = &cmd;
+  check(vkQueueSubmit(queue_, 1, &si, fence_), "vkQueueSubmit");
+  check(vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  check(vkResetFences(device_, 1, &fence_), "vkResetFences");
+  vkFreeCommandBuffers(device_, pool_, 1, &cmd);
+}
+
+void Context::runCommands(const std::function<void(VkCommandBuffer)>& record) {
+  VkCommandBuffer cmd = beginCommands();
+  record(cmd);
+  submitAndWait(cmd);
+}
+
+}  // namespace vkmc::vk

@@ -1,0 +1,53 @@
+// Vulkan instance, device, compute queue and one-shot command helpers. Headless: no surface, no window.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace vkmc::vk {
+
+void check(VkResult result, const char* what);
+
+struct ContextOptions {
+  int deviceIndex = -1;  // -1: prefer a discrete GPU, else the first device (VKMC_DEVICE overrides)
+};
+
+class Context {
+ public:
+  explicit Context(const ContextOptions& options = {});
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  VkDevice device() const { return device_; }
+  VkPhysicalDevice physicalDevice() const { return physical_; }
+  VkQueue queue() const { return queue_; }
+  const VkPhysicalDeviceProperties& properties() const { return properties_; }
+  std::string deviceName() const { return properties_.deviceName; }
+  bool hasTimestamps() const { return timestampBits_ > 0; }
+  double timestampPeriodNs() const { return properties_.limits.timestampPeriod; }
+
+  uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) const;
+
+  VkCommandBuffer beginCommands();
+  // Submits, waits for completion, frees the command buffer.
+  void submitAndWait(VkCommandBuffer cmd);
+  void runCommands(const std::function<void(VkCommandBuffer)>& record);
+
+ private:
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  uint32_t queueFamily_ = 0;
+  uint32_t timestampBits_ = 0;
+  VkCommandPool pool_ = VK_NULL_HANDLE;
+  VkFence fence_ = VK_NULL_HANDLE;
+  VkPhysicalDeviceProperties properties_{};
+  VkPhysicalDeviceMemoryProperties memory_{};
+};
+
+}  // namespace vkmc::vk

@@ -1,0 +1,198 @@
+// Pipelines, descriptors and timed dispatches.
+#include "vk/kernel.h"
+
+#include <array>
+
+#include "../shaders/shared/layout.h"
+#include "error.h"
+
+namespace vkmc::vk {
+
+namespace {
+bool isTexelBinding(uint32_t b) {
+  return b == BINDING_TRIANGLES || b == BINDING_TRIANGLE_INFO || b == BINDING_BVH_NODES || b == BINDING_LIGHTS;
+}
+}  // namespace
+
+KernelLayout::KernelLayout(Context& ctx) : ctx_(ctx) {
+  std::vector<VkDescriptorSetLayoutBinding> bindings;
+  for (uint32_t b = 0; b < BINDING_COUNT; ++b) {
+    VkDescriptorSetLayoutBinding lb{};
+    lb.binding = b;
+    lb.descriptorType = isTexelBinding(b) ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    lb.descriptorCount = 1;
+    lb.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+    bindings.push_back(lb);
+  }
+  VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  lci.bindingCount = static_cast<uint32_t>(bindings.size());
+  lci.pBindings = bindings.data();
+  check(vkCreateDescriptorSetLayout(ctx.device(), &lci, nullptr, &setLayout_), "vkCreateDescriptorSetLayout");
+
+  VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(gpu::PushConstants)};
+  VkPipelineLayoutCreateInfo pci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  pci.setLayoutCount = 1;
+  pci.pSetLayouts = &setLayout_;
+  pci.pushConstantRangeCount = 1;
+  pci.pPushConstantRanges = &range;
+  check(vkCreatePipelineLayout(ctx.device(), &pci, nullptr, &pipelineLayout_), "vkCreatePipelineLayout");
+
+  std::array<VkDescriptorPoolSize, 2> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 4},
+                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT}}};
+  VkDescriptorPoolCreateInfo dpci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  dpci.maxSets = 1;
+  dpci.poolSizeCount = static_cast<uint32_t>(sizes.size());
+  dpci.pPoolSizes = sizes.data();
+  check(vkCreateDescriptorPool(ctx.device(), &dpci, nullptr, &pool_), "vkCreateDescriptorPool");
+  VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  ai.descriptorPool = pool_;
+  ai.descriptorSetCount = 1;
+  ai.pSetLayouts = &setLayout_;
+  check(vkAllocateDescriptorSets(ctx.device(), &ai, &set_), "vkAllocateDescriptorSets");
+}
+
+KernelLayout::~KernelLayout() {
+  vkDestroyDescriptorPool(ctx_.device(), pool_, nullptr);
+  vkDestroyPipelineLayout(ctx_.device(), pipelineLayout_, nullptr);
+  vkDestroyDescriptorSetLayout(ctx_.device(), setLayout_, nullptr);
+}
+
+void KernelLayout::bindStorage(uint32_t binding, const Buffer& buffer) {
+  VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
+  VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  w.dstSet = set_;
+  w.dstBinding = binding;
+  w.descriptorCount = 1;
+  w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  w.pBufferInfo = &info;
+  vkUpdateDescriptorSets(ctx_.device(), 1, &w, 0, nullptr);
+}
+
+void KernelLayout::bindTexel(uint32_t binding, const Buffer& buffer) {
+  VkBufferView view = buffer.view();
+  VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  w.dstSet = set_;
+  w.dstBinding = binding;
+  w.descriptorCount = 1;
+  w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+  w.pTexelBufferView = &view;
+  vkUpdateDescriptorSets(ctx_.device(), 1, &w, 0, nullptr);
+}
+
+Kernel::Kernel(Context& ctx, const KernelLayout& layout, std::string name, std::span<const uint32_t> spirv,
+               std::vector<SpecConstant> specs)
+    : ctx_(ctx), name_(std::move(name)) {
+  VkShaderModuleCreateInfo smci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  smci.codeSize = spirv.size_bytes();
+  smci.pCode = spirv.data();
+  VkShaderModule module;
+  check(vkCreateShaderModule(ctx.device(), &smci, nullptr, &module), "vkCreateShaderModule");
+
+  std::vector<VkSpecializationMapEntry> entries;
+  std::vector<uint32_t> values;
+  for (const SpecConstant& s : specs) {
+    entries.push_back({s.id, static_cast<uint32_t>(values.size() * sizeof(uint32_t)), sizeof(uint32_t)});
+    values.push_back(s.value);
+  }
+  VkSpecializationInfo si{static_cast<uint32_t>(entries.size()), entries.data(), values.size() * sizeof(uint32_t),
+                          values.data()};
+  VkComputePipelineCreateInfo cpci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  cpci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  cpci.stage.module = module;
+  cpci.stage.pName = "main";
+  cpci.stage.pSpecializationInfo = &si;
+  cpci.layout = layout.pipelineLayout();
+  VkResult r = vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &cpci, nullptr, &pipeline_);
+  vkDestroyShaderModule(ctx.device(), module, nullptr);
+  check(r, ("vkCreateComputePipelines(" + name_ + ")").c_str());
+}
+
+Kernel::~Kernel() { vkDestroyPipeline(ctx_.device(), pipeline_, nullptr); }
+
+GpuTimer::GpuTimer(Context& ctx, uint32_t maxQueries) : ctx_(ctx), capacity_(maxQueries) {
+  if (!ctx.hasTimestamps()) return;
+  VkQueryPoolCreateInfo qci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  qci.queryType = VK_QUERY_TYPE_TIMESTAMP;
+  qci.queryCount = maxQueries;
+  check(vkCreateQueryPool(ctx.device(), &qci, nullptr, &pool_), "vkCreateQueryPool");
+}
+
+GpuTimer::~GpuTimer() {
+  if (pool_) vkDestroyQueryPool(ctx_.device(), pool_, nullptr);
+}
+
+void GpuTimer::reset(VkCommandBuffer cmd) {
+  names_.clear();
+  if (pool_) vkCmdResetQueryPool(cmd, pool_, 0, capacity_);
+}
+
+void GpuTimer::begin(VkCommandBuffer cmd, const std::string& name) {
+  if (!pool_ || 2 * (names_.size() + 1) > capacity_) return;
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_, static_cast<uint32_t>(2 * names_.size()));
+  names_.push_back(name);
+}
+
+void GpuTimer::end(VkCommandBuffer cmd) {
+  if (!pool_ || names_.empty()) return;
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, static_cast<uint32_t>(2 * names_.size() - 1));
+}
+
+void GpuTimer::collect(std::map<std::string, double>& totals) {
+  if (!pool_ || names_.empty()) return;
+  std::vector<uint64_t> ticks(2 * names_.size());
+  check(vkGetQueryPoolResults(ctx_.device(), pool_, 0, static_cast<uint32_t>(ticks.size()), ticks.size() * sizeof(uint64_t),
+                              ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+        "vkGetQueryPoolResults");
+  for (size_t i = 0; i < names_.size(); ++i) {
+    double ns = static_cast<double>(ticks[2 * i + 1] - ticks[2 * i]) * ctx_.timestampPeriodNs();
+    totals[names_[i]] += ns * 1e-9;
+  }
+  names_.clear();
+}
+
+void computeBarrier(VkCommandBuffer cmd) {
+  VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  mb.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+  mb.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT |
+                     VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT |
+                           VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
+                       0, 1, &mb, 0, nullptr, 0, nullptr);
+}
+
+namespace {
+void bindKernel(VkCommandBuffer cmd, const KernelLayout& layout, const Kernel& kernel, const void* push, uint32_t pushSize) {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, kernel.pipeline());
+  VkDescriptorSet set = layout.set();
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout.pipelineLayout(), 0, 1, &set, 0, nullptr);
+  vkCmdPushConstants(cmd, layout.pipelineLayout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, pushSize, push);
+}
+}  // namespace
+
+void dispatch(VkCommandBuffer cmd, const KernelLayout& layout, const Kernel& kernel, const void* push, uint32_t pushSize,
+              uint32_t groups, GpuTimer* timer) {
+  bindKernel(cmd, layout, kernel, push, pushSize);
+  if (timer) timer->begin(cmd, kernel.name());
+  // 1D grids beyond the 65535-group limit fold into 2D; kernels index with invocationIndex().
+  uint32_t x = groups, y = 1;
+  while (x > 65535) {
+    x = (x + 1) / 2;
+    y *= 2;
+  }
+  vkCmdDispatch(cmd, x, y, 1);
+  if (timer) timer->end(cmd);
+  computeBarrier(cmd);
+}
+
+void dispatchIndirect(VkCommandBuffer cmd, const KernelLayout& layout, const Kernel& kernel, const void* push,
+                      uint32_t pushSize, const Buffer& args, VkDeviceSize offset, GpuTimer* timer) {
+  bindKernel(cmd, layout, kernel, push, pushSize);
+  if (timer) timer->begin(cmd, kernel.name());
+  vkCmdDispatchIndirect(cmd, args.handle(), offset);
+  if (timer) timer->end(cmd);
+  computeBarrier(cmd);
+}
+
+}  // namespace vkmc::vk

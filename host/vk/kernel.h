@@ -1,0 +1,87 @@
+// Compute kernels: the one descriptor-set layout every kernel shares, pipelines built from embedded SPIR-V
+// with specialization constants, and named dispatches timed by timestamp queries.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "vk/buffer.h"
+#include "vk/context.h"
+
+namespace vkmc::vk {
+
+struct SpecConstant {
+  uint32_t id;
+  uint32_t value;
+};
+
+// Descriptor set layout (all bindings of layout.h), push-constant range, one descriptor set.
+class KernelLayout {
+ public:
+  explicit KernelLayout(Context& ctx);
+  ~KernelLayout();
+  KernelLayout(const KernelLayout&) = delete;
+  KernelLayout& operator=(const KernelLayout&) = delete;
+
+  void bindStorage(uint32_t binding, const Buffer& buffer);
+  void bindTexel(uint32_t binding, const Buffer& buffer);  // buffer must have a view
+  VkPipelineLayout pipelineLayout() const { return pipelineLayout_; }
+  VkDescriptorSet set() const { return set_; }
+
+ private:
+  Context& ctx_;
+  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+  VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+};
+
+class Kernel {
+ public:
+  Kernel(Context& ctx, const KernelLayout& layout, std::string name, std::span<const uint32_t> spirv,
+         std::vector<SpecConstant> specs);
+  ~Kernel();
+  Kernel(const Kernel&) = delete;
+  Kernel& operator=(const Kernel&) = delete;
+  const std::string& name() const { return name_; }
+  VkPipeline pipeline() const { return pipeline_; }
+
+ private:
+  Context& ctx_;
+  std::string name_;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
+
+// Timestamp pairs around named dispatches; collect() sums the seconds per name.
+class GpuTimer {
+ public:
+  GpuTimer(Context& ctx, uint32_t maxQueries);
+  ~GpuTimer();
+  GpuTimer(const GpuTimer&) = delete;
+  GpuTimer& operator=(const GpuTimer&) = delete;
+  void reset(VkCommandBuffer cmd);
+  void begin(VkCommandBuffer cmd, const std::string& name);
+  void end(VkCommandBuffer cmd);
+  // After the command buffer completed: adds each range's seconds to totals[name].
+  void collect(std::map<std::string, double>& totals);
+  bool enabled() const { return pool_ != VK_NULL_HANDLE; }
+
+ private:
+  Context& ctx_;
+  VkQueryPool pool_ = VK_NULL_HANDLE;
+  uint32_t capacity_ = 0;
+  std::vector<std::string> names_;
+};
+
+// Records one compute dispatch: bind, push constants, dispatch (direct or indirect), barrier after.
+void dispatch(VkCommandBuffer cmd, const KernelLayout& layout, const Kernel& kernel, const void* push, uint32_t pushSize,
+              uint32_t groups, GpuTimer* timer = nullptr);
+void dispatchIndirect(VkCommandBuffer cmd, const KernelLayout& layout, const Kernel& kernel, const void* push,
+                      uint32_t pushSize, const Buffer& args, VkDeviceSize offset, GpuTimer* timer = nullptr);
+void computeBarrier(VkCommandBuffer cmd);
+
+}  // namespace vkmc::vk

@@ -1,0 +1,44 @@
+// Declarations every kernel shares: version, spec constants, push constants, scene and queue bindings.
+#include "layout.h"
+#include "rng.h"
+#include "sampling.h"
+#include "geometry.h"
+
+layout(local_size_x_id = SPEC_WORKGROUP_SIZE) in;
+layout(constant_id = SPEC_MAX_DEPTH) const uint kMaxDepth = 0u;
+layout(constant_id = SPEC_RR_DEPTH) const uint kRouletteDepth = 3u;
+layout(constant_id = SPEC_HAS_LIGHTS) const uint kHasLights = 1u;
+layout(constant_id = SPEC_ANY_HIT) const uint kAnyHit = 0u;
+
+layout(push_constant, std430) uniform Push { PushConstants pc; };
+
+// Read-only scene data lives in texel buffers: on lavapipe a texelFetch is a vector gather, while an
+// SSBO load is scalarized per lane (see shared/LAVAPIPE.md).
+layout(binding = BINDING_TRIANGLES) uniform samplerBuffer triangles;
+layout(binding = BINDING_TRIANGLE_INFO) uniform usamplerBuffer triangleInfo;
+layout(binding = BINDING_BVH_NODES) uniform samplerBuffer bvhNodes;
+layout(binding = BINDING_LIGHTS) uniform usamplerBuffer lights;
+layout(binding = BINDING_MATERIALS, std430) readonly buffer Materials { Material materials[]; };
+layout(binding = BINDING_PATHS, std430) buffer Paths { PathState paths[]; };
+layout(binding = BINDING_HITS, std430) buffer Hits { vec4 hits[]; };
+layout(binding = BINDING_RAY_QUEUES, std430) buffer RayQueues { uint rayQueues[]; };
+layout(binding = BINDING_SHADOW_QUEUE, std430) buffer ShadowQueue { ShadowRay shadowRays[]; };
+layout(binding = BINDING_CONTROL, std430) buffer ControlBuffer { Control control; };
+layout(binding = BINDING_FILM, std430) buffer Film { FilmPixel film[]; };
+
+// Indirect dispatches may round up, and big ones use a 2D grid.
+uint invocationIndex() {
+  return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+}
+
+uint inQueueBase() { return (pc.bounce & 1u) * pc.queueCapacity; }
+uint outQueueBase() { return ((pc.bounce + 1u) & 1u) * pc.queueCapacity; }
+uint inQueueCount() { return (pc.bounce & 1u) == 0u ? control.counts.x : control.counts.y; }
+
+void triangleVertices(uint tri, out vec3 v0, out vec3 v1, out vec3 v2) {
+  v0 = texelFetch(triangles, int(3u * tri)).xyz;
+  v1 = texelFetch(triangles, int(3u * tri + 1u)).xyz;
+  v2 = texelFetch(triangles, int(3u * tri + 2u)).xyz;
+}
+
+bool allFinite(vec3 v) { return !any(isnan(v)) && !any(isinf(v)); }

@@ -1,0 +1,32 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Stage 1: one camera ray per path (one sample of one pixel), all pushed onto ray queue 0.
+#include "common.glsl"
+
+void main() {
+  uint id = invocationIndex();
+  if (id == 0u) control.counts.x = pc.pathCount;
+  if (id >= pc.pathCount) return;
+  uint pixel = pc.firstPixel + id;
+  uint key = pathKey(pc.seed, pixel, pc.sampleIndex);
+  vec2 jitter = vec2(randomUnit(key, 0u), randomUnit(key, 1u));
+  vec2 ndc = vec2(float(pixel % pc.width) + jitter.x, float(pixel / pc.width) + jitter.y) /
+             vec2(float(pc.width), float(pc.height));
+  vec2 screen = vec2(2.0 * ndc.x - 1.0, 1.0 - 2.0 * ndc.y);
+  vec3 origin = pc.cameraOrigin.xyz;
+  vec3 dir;
+  if (pc.cameraOrigin.w == float(kCameraOrthographic)) {
+    origin += screen.x * pc.cameraRight.xyz + screen.y * pc.cameraUp.xyz;
+    dir = pc.cameraForward.xyz;
+  } else {
+    dir = normalize(pc.cameraForward.xyz + screen.x * pc.cameraRight.xyz + screen.y * pc.cameraUp.xyz);
+  }
+  PathState p;
+  p.origin = vec4(origin, 0.0);
+  p.direction = vec4(dir, 0.0);
+  p.throughput = vec4(1.0, 1.0, 1.0, 0.0);
+  p.radiance = vec4(0.0);
+  p.info = uvec4(pixel, key, 0u, 0u);
+  paths[id] = p;
+  rayQueues[id] = id;
+}

@@ -1,0 +1,18 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// One invocation: turns the incoming ray queue's size into dispatch arguments, empties the outgoing queues,
+// counts rays, and arms the film accumulation once no path is alive.
+#include "common.glsl"
+
+void main() {
+  if (gl_GlobalInvocationID.x != 0u) return;
+  uint n = inQueueCount();
+  control.rayArgs = uvec4((n + kWorkgroupSize - 1u) / kWorkgroupSize, 1u, 1u, 0u);
+  if (pc.bounce == 0u) control.totals.x += n;
+  else control.totals.y += n;
+  if ((pc.bounce & 1u) == 0u) control.counts.y = 0u;
+  else control.counts.x = 0u;
+  control.counts.z = 0u;
+  uint accumulateGroups = (pc.pathCount + kWorkgroupSize - 1u) / kWorkgroupSize;
+  control.accumulateArgs = uvec4(n == 0u ? accumulateGroups : 0u, 1u, 1u, 0u);
+}

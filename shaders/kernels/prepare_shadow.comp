@@ -1,0 +1,11 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// One invocation: dispatch arguments of the shadow stage from the shadow queue's size.
+#include "common.glsl"
+
+void main() {
+  if (gl_GlobalInvocationID.x != 0u) return;
+  uint n = control.counts.z;
+  control.shadowArgs = uvec4((n + kWorkgroupSize - 1u) / kWorkgroupSize, 1u, 1u, 0u);
+  control.totals.z += n;
+}

@@ -1,0 +1,109 @@
+// Robust geometry: watertight ray/triangle intersection (Woop, Benthin, Wald 2013) and scale-aware ray
+// origins (pbrt-v4: offset along the normal past the rounding-error bound of the interpolated hit point).
+#ifndef VKMC_GEOMETRY_H
+#define VKMC_GEOMETRY_H
+#include "glsl_cpp.h"
+VKMC_BEGIN_NAMESPACE
+
+// Per-ray constants of the watertight test: the dominant axis becomes z, the ray is sheared onto +z.
+struct RayShear {
+  vec3 origin;
+  uvec3 axes;  // kx, ky, kz
+  vec3 shear;  // Sx, Sy, Sz
+};
+
+RayShear makeRayShear(vec3 origin, vec3 dir) {
+  vec3 a = abs(dir);
+  uint kz = (a.x > a.y) ? (a.x > a.z ? 0u : 2u) : (a.y > a.z ? 1u : 2u);
+  uint kx = (kz + 1u) % 3u;
+  uint ky = (kx + 1u) % 3u;
+  if (dir[kz] < 0.0f) {
+    uint tmp = kx;
+    kx = ky;
+    ky = tmp;
+  }
+  RayShear r;
+  r.origin = origin;
+  r.axes = uvec3(kx, ky, kz);
+  r.shear = vec3(dir[kx] / dir[kz], dir[ky] / dir[kz], 1.0f / dir[kz]);
+  return r;
+}
+
+vec3 permuteAxes(vec3 v, uvec3 k) { return vec3(v[k.x], v[k.y], v[k.z]); }
+
+// Returns (t, b1, b2) with b1, b2 the weights of v1, v2, or t < 0 when there is no hit in (0, tMax).
+// Edges are shared exactly between neighbours: no ray slips between two triangles.
+vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax) {
+  vec3 A = permuteAxes(v0 - r.origin, r.axes);
+  vec3 B = permuteAxes(v1 - r.origin, r.axes);
+  vec3 C = permuteAxes(v2 - r.origin, r.axes);
+  float ax = A.x - r.shear.x * A.z, ay = A.y - r.shear.y * A.z;
+  float bx = B.x - r.shear.x * B.z, by = B.y - r.shear.y * B.z;
+  float cx = C.x - r.shear.x * C.z, cy = C.y - r.shear.y * C.z;
+  float U = cx * by - cy * bx;
+  float V = ax * cy - ay * cx;
+  float W = bx * ay - by * ax;
+  vec3 miss = vec3(-1.0f, 0.0f, 0.0f);
+  if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return miss;
+  float det = U + V + W;
+  if (det == 0.0f) return miss;
+  float T = U * (r.shear.z * A.z) + V * (r.shear.z * B.z) + W * (r.shear.z * C.z);
+  if (det < 0.0f) {
+    T = -T;
+    det = -det;
+  }
+  if (T <= 0.0f || T >= tMax * det) return miss;
+  float inv = 1.0f / det;
+  return vec3(T * inv, V * inv, W * inv);
+}
+
+VKMC_CONST float kMachineEpsilon = 5.96046448e-08f;  // 2^-24
+float gammaBound(float n) { return (n * kMachineEpsilon) / (1.0f - n * kMachineEpsilon); }
+
+// Bound on the rounding error of b0*v0 + b1*v1 + b2*v2: relative to the coordinates, so scaling or
+// translating a scene scales the offset with it.
+vec3 barycentricError(vec3 b, vec3 v0, vec3 v1, vec3 v2) {
+  return gammaBound(7.0f) * (abs(b.x * v0) + abs(b.y * v1) + abs(b.z * v2));
+}
+
+float nextFloatUp(float v) {
+  if (isinf(v) && v > 0.0f) return v;
+  if (v == -0.0f) v = 0.0f;
+  uint bits = floatBitsToUint(v);
+  bits = v >= 0.0f ? bits + 1u : bits - 1u;
+  return uintBitsToFloat(bits);
+}
+float nextFloatDown(float v) {
+  if (isinf(v) && v < 0.0f) return v;
+  if (v == 0.0f) v = -0.0f;
+  uint bits = floatBitsToUint(v);
+  bits = v > 0.0f ? bits - 1u : bits + 1u;
+  return uintBitsToFloat(bits);
+}
+
+// Moves p off its surface to the side of w, past the error bound, rounding away from the surface.
+vec3 offsetRayOrigin(vec3 p, vec3 pError, vec3 n, vec3 w) {
+  float d = dot(abs(n), pError);
+  vec3 offset = d * n;
+  if (dot(w, n) < 0.0f) offset = -offset;
+  vec3 po = p + offset;
+  for (int i = 0; i < 3; ++i) {
+    if (offset[i] > 0.0f) po[i] = nextFloatUp(po[i]);
+    else if (offset[i] < 0.0f) po[i] = nextFloatDown(po[i]);
+  }
+  return po;
+}
+
+VKMC_CONST float kSlabWiden = 1.0000004f;  // 1 + 2 gamma(3), rounded up
+
+// Directions with a zero component would give 0 * inf = NaN in the slab test.
+vec3 safeInverse(vec3 d) {
+  const float tiny = 1e-30f;
+  vec3 s = vec3(abs(d.x) < tiny ? (d.x < 0.0f ? -tiny : tiny) : d.x,
+                abs(d.y) < tiny ? (d.y < 0.0f ? -tiny : tiny) : d.y,
+                abs(d.z) < tiny ? (d.z < 0.0f ? -tiny : tiny) : d.z);
+  return 1.0f / s;
+}
+
+VKMC_END_NAMESPACE
+#endif

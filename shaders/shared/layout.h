@@ -1,0 +1,113 @@
+// Every struct that crosses host <-> GPU, defined once (std430), with layout checks and binding numbers.
+#ifndef VKMC_LAYOUT_H
+#define VKMC_LAYOUT_H
+#include "glsl_cpp.h"
+
+// Descriptor bindings of the single set used by every kernel.
+#define BINDING_TRIANGLES 0       // samplerBuffer RGBA32F, 3 texels per triangle: v0|unused, v1|lightPdfArea, v2|unused
+#define BINDING_TRIANGLE_INFO 1   // usamplerBuffer RGBA32UI, 1 texel per triangle: octahedral n0, n1, n2, material id
+#define BINDING_BVH_NODES 2       // samplerBuffer RGBA32F, 4 texels per node (two child boxes, see BvhNode)
+#define BINDING_LIGHTS 3          // usamplerBuffer RGBA32UI, 1 texel per emissive triangle: alias entry
+#define BINDING_MATERIALS 4       // Material[]
+#define BINDING_PATHS 5           // PathState[]
+#define BINDING_HITS 6            // vec4[] (t, b1, b2, triangle bits)
+#define BINDING_RAY_QUEUES 7      // uint[2 * capacity]: path ids, ping-pong by bounce parity
+#define BINDING_SHADOW_QUEUE 8    // ShadowRay[]
+#define BINDING_CONTROL 9         // Control
+#define BINDING_FILM 10           // FilmPixel[]
+#define BINDING_TEST_RAYS 11      // TestRay[] (trace_rays kernel only)
+#define BINDING_TEST_HITS 12      // vec4[] (trace_rays kernel only)
+#define BINDING_COUNT 13
+
+// Specialization constant ids.
+#define SPEC_WORKGROUP_SIZE 0
+#define SPEC_MAX_DEPTH 1          // scattering events; 0 = no cap (Russian roulette only)
+#define SPEC_RR_DEPTH 2           // first depth at which roulette applies
+#define SPEC_HAS_LIGHTS 3         // 0: no emissive triangles, NEE code removed
+#define SPEC_ANY_HIT 4            // trace_rays: 1 = any-hit query
+
+VKMC_BEGIN_NAMESPACE
+
+VKMC_CONST uint kMissPrimitive = 0xffffffffu;
+VKMC_CONST uint kWorkgroupSize = 64u;
+VKMC_CONST uint kMaterialDoubleSided = 1u;   // Material.emission.w bit
+VKMC_CONST uint kCameraPerspective = 0u;
+VKMC_CONST uint kCameraOrthographic = 1u;
+VKMC_CONST float kRouletteMaxSurvival = 0.95f; // < 1: every path ends with probability 1, no hidden depth cap
+
+// A path between stages. direction.w is the solid-angle pdf of the sampling that produced the ray
+// (0 for camera rays: their emission hits are never MIS-weighted).
+struct PathState {
+  vec4 origin;      // xyz: ray origin, w: unused
+  vec4 direction;   // xyz: unit direction, w: pdf of the direction
+  vec4 throughput;  // rgb: path throughput, w: unused
+  vec4 radiance;    // rgb: radiance gathered so far, w: unused
+  uvec4 info;       // x: pixel, y: rng key, z: depth (scattering events so far), w: unused
+};
+
+struct ShadowRay {
+  vec4 origin;       // xyz, w: tmax in units of |direction|
+  vec4 direction;    // xyz: unnormalized (to the light point), w: path id as float bits
+  vec4 contribution; // rgb added to the path if unoccluded, w: unused
+};
+
+struct Material {
+  vec4 baseColor; // rgb, a: alpha factor
+  vec4 emission;  // rgb: emitted radiance (factor x strength), w: flag bits as float bits
+  vec4 params;    // x: metallic, y: roughness, z: specular factor, w: unused
+};
+
+// Film of one batch: float partial sums, folded into double on the host every batch.
+struct FilmPixel {
+  vec4 sum;   // rgb: sum of estimates, w: finite samples
+  vec4 sumSq; // rgb: sum of squares, w: non-finite samples (counted, excluded)
+};
+
+// Queue counters and indirect dispatch arguments (x,y,z used; w pads to 16 bytes).
+struct Control {
+  uvec4 counts;          // x, y: ray queue sizes (ping-pong), z: shadow queue size, w: unused
+  uvec4 rayArgs;         // dispatch of intersect and shade
+  uvec4 shadowArgs;      // dispatch of shadow
+  uvec4 accumulateArgs;  // dispatch of accumulate: non-zero only once no path is alive
+  uvec4 totals;          // x: camera rays, y: extension rays, z: shadow rays, w: non-finite in shade
+};
+
+struct TestRay {
+  vec4 origin;     // xyz, w: tmax
+  vec4 direction;  // xyz
+};
+
+// Push constants shared by every kernel (<= 128 bytes).
+struct PushConstants {
+  uint pathCount;   // paths in this pass
+  uint firstPixel;  // pixel of path 0
+  uint sampleIndex; // sample pass index (rng)
+  uint bounce;      // current bounce: selects the ping-pong queue
+  uint width;
+  uint height;
+  uint seed;
+  uint queueCapacity;
+  vec4 cameraOrigin;  // xyz, w: camera kind as float (0 perspective, 1 orthographic)
+  vec4 cameraForward; // xyz unit
+  vec4 cameraRight;   // xyz: scaled by tan(xfov/2), or half width for orthographic
+  vec4 cameraUp;      // xyz: scaled by tan(yfov/2), or half height
+  vec4 background;    // rgb: uniform radiance of escaped rays
+};
+
+VKMC_END_NAMESPACE
+
+#ifdef __cplusplus
+namespace vkmc::gpu {
+static_assert(sizeof(PathState) == 80);
+static_assert(offsetof(PathState, info) == 64);
+static_assert(sizeof(ShadowRay) == 48);
+static_assert(sizeof(Material) == 48);
+static_assert(sizeof(FilmPixel) == 32);
+static_assert(sizeof(Control) == 80);
+static_assert(offsetof(Control, rayArgs) == 16 && offsetof(Control, accumulateArgs) == 48);
+static_assert(sizeof(TestRay) == 32);
+static_assert(sizeof(PushConstants) == 112 && sizeof(PushConstants) <= 128);
+static_assert(offsetof(PushConstants, cameraOrigin) == 32);
+}
+#endif
+#endif

@@ -1,0 +1,37 @@
+// Counter-based random numbers: u = hash(path key, dimension). Stateless, so every path vertex uses a fixed
+// block of dimensions and runs are reproducible whatever the dispatch order.
+#ifndef VKMC_RNG_H
+#define VKMC_RNG_H
+#include "glsl_cpp.h"
+VKMC_BEGIN_NAMESPACE
+
+VKMC_CONST uint kDimsCamera = 2u;     // pixel jitter
+VKMC_CONST uint kDimsPerBounce = 8u;  // light select, light point (2), bsdf (2), roulette, spare (2)
+VKMC_CONST uint kDimLightSelect = 0u;
+VKMC_CONST uint kDimLightPoint = 1u;
+VKMC_CONST uint kDimBsdf = 3u;
+VKMC_CONST uint kDimRoulette = 5u;
+
+// lowbias32 (Chris Wellons): a well-mixed 32-bit permutation.
+uint hashU32(uint x) {
+  x ^= x >> 16u;
+  x *= 0x21f0aaadu;
+  x ^= x >> 15u;
+  x *= 0x735a2d97u;
+  x ^= x >> 15u;
+  return x;
+}
+
+uint pathKey(uint seed, uint pixel, uint sampleIndex) {
+  return hashU32(pixel ^ hashU32(sampleIndex ^ hashU32(seed + 0x632be5abu)));
+}
+
+// Uniform in [0, 1): 24 random bits, so 1 is never returned.
+float randomUnit(uint key, uint dim) {
+  return float(hashU32(key ^ hashU32(dim * 0x9e3779b9u + 0x7f4a7c15u)) >> 8u) * (1.0f / 16777216.0f);
+}
+
+uint bounceDim(uint depth, uint offset) { return kDimsCamera + depth * kDimsPerBounce + offset; }
+
+VKMC_END_NAMESPACE
+#endif

@@ -1,0 +1,71 @@
+// Pure sampling functions, each with its pdf; used by the kernels, the host and the statistical tests.
+#ifndef VKMC_SAMPLING_H
+#define VKMC_SAMPLING_H
+#include "glsl_cpp.h"
+VKMC_BEGIN_NAMESPACE
+
+VKMC_CONST float kPi = 3.14159265358979323846f;
+VKMC_CONST float kInvPi = 0.31830988618379067154f;
+
+// Shirley-Chiu concentric map: low distortion, so stratification survives.
+vec2 sampleUniformDiskConcentric(vec2 u) {
+  vec2 o = 2.0f * u - vec2(1.0f);
+  if (o.x == 0.0f && o.y == 0.0f) return vec2(0.0f);
+  float r, theta;
+  if (abs(o.x) > abs(o.y)) {
+    r = o.x;
+    theta = (kPi / 4.0f) * (o.y / o.x);
+  } else {
+    r = o.y;
+    theta = (kPi / 2.0f) - (kPi / 4.0f) * (o.x / o.y);
+  }
+  return r * vec2(cos(theta), sin(theta));
+}
+
+// Local frame: z is the normal.
+vec3 sampleCosineHemisphere(vec2 u) {
+  vec2 d = sampleUniformDiskConcentric(u);
+  float z = sqrt(max(0.0f, 1.0f - d.x * d.x - d.y * d.y));
+  return vec3(d.x, d.y, z);
+}
+float cosineHemispherePdf(float cosTheta) { return max(cosTheta, 0.0f) * kInvPi; }
+
+// Barycentrics (b0, b1, b2) uniform over the triangle's area; pdf = 1 / area.
+vec3 sampleUniformTriangle(vec2 u) {
+  float su = sqrt(u.x);
+  float b0 = 1.0f - su;
+  float b1 = u.y * su;
+  return vec3(b0, b1, 1.0f - b0 - b1);
+}
+
+// Duff et al. 2017: orthonormal basis without a branch on the normal's direction; columns are t, b, n.
+mat3 basisFromNormal(vec3 n) {
+  float s = n.z >= 0.0f ? 1.0f : -1.0f;
+  float a = -1.0f / (s + n.z);
+  float b = n.x * n.y * a;
+  vec3 t = vec3(1.0f + s * n.x * n.x * a, s * b, -s * n.x);
+  vec3 bt = vec3(b, s + n.y * n.y * a, -n.y);
+  return mat3(t, bt, n);
+}
+
+float powerHeuristic(float pdfA, float pdfB) {
+  float a = pdfA * pdfA;
+  float b = pdfB * pdfB;
+  return a + b > 0.0f ? a / (a + b) : 0.0f;
+}
+
+// Octahedral unit vectors (decode side; the host encodes).
+vec3 decodeOctahedral(vec2 e) {
+  vec3 v = vec3(e.x, e.y, 1.0f - abs(e.x) - abs(e.y));
+  if (v.z < 0.0f) {
+    vec2 s = vec2(v.x >= 0.0f ? 1.0f : -1.0f, v.y >= 0.0f ? 1.0f : -1.0f);
+    v = vec3((1.0f - abs(vec2(v.y, v.x))) * s, v.z);
+  }
+  return normalize(v);
+}
+
+float maxComponent(vec3 v) { return max(v.x, max(v.y, v.z)); }
+float luminance(vec3 c) { return dot(c, vec3(0.2126f, 0.7152f, 0.0722f)); }
+
+VKMC_END_NAMESPACE
+#endif

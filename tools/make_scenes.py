@@ -1,0 +1,170 @@
+#!/usr/bin/env python3
+"""Writes vkmc's canonical glTF scenes into scenes/ (embedded buffers, no dependencies beyond Python 3).
+
+Run from the project root: python3 tools/make_scenes.py. The outputs are committed; vkmc never runs this.
+"""
+import base64, json, math, os, struct
+
+def normalize(v):
+    l = math.sqrt(sum(c * c for c in v))
+    return [c / l for c in v]
+
+def cross(a, b):
+    return [a[1]*b[2]-a[2]*b[1], a[2]*b[0]-a[0]*b[2], a[0]*b[1]-a[1]*b[0]]
+
+def sub(a, b):
+    return [x - y for x, y in zip(a, b)]
+
+class Builder:
+    def __init__(self):
+        self.meshes, self.materials, self.nodes, self.blob = [], [], [], bytearray()
+        self.accessors, self.views, self.cameras = [], [], []
+
+    def material(self, name, base, emission=None, strength=1.0, double_sided=False):
+        m = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": list(base) + [1.0], "metallicFactor": 0.0,
+                                                    "roughnessFactor": 1.0}, "doubleSided": double_sided}
+        if emission:
+            m["emissiveFactor"] = list(emission)
+            if strength != 1.0:
+                m["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength": strength}}
+        self.materials.append(m)
+        return len(self.materials) - 1
+
+    def _accessor(self, data, fmt, count, type_, ctype, minmax=None, target=None):
+        while len(self.blob) % 4:
+            self.blob.append(0)
+        offset = len(self.blob)
+        self.blob += struct.pack("<" + fmt * (len(data)), *data)
+        view = {"buffer": 0, "byteOffset": offset, "byteLength": len(self.blob) - offset}
+        if target:
+            view["target"] = target
+        self.views.append(view)
+        acc = {"bufferView": len(self.views) - 1, "componentType": ctype, "count": count, "type": type_}
+        if minmax:
+            acc["min"], acc["max"] = minmax
+        self.accessors.append(acc)
+        return len(self.accessors) - 1
+
+    def mesh(self, name, triangles, material):
+        """triangles: list of (p0, p1, p2), counter-clockwise seen from the front."""
+        pos, nrm, idx = [], [], []
+        for tri in triangles:
+            n = normalize(cross(sub(tri[1], tri[0]), sub(tri[2], tri[0])))
+            for p in tri:
+                idx.append(len(pos) // 3)
+                pos += p
+                nrm += n
+        lo = [min(pos[i::3]) for i in range(3)]
+        hi = [max(pos[i::3]) for i in range(3)]
+        pa = self._accessor(pos, "f", len(pos) // 3, "VEC3", 5126, (lo, hi), 34962)
+        na = self._accessor(nrm, "f", len(nrm) // 3, "VEC3", 5126, None, 34962)
+        ia = self._accessor(idx, "I", len(idx), "SCALAR", 5125, None, 34963)
+        self.meshes.append({"name": name, "primitives": [{"attributes": {"POSITION": pa, "NORMAL": na}, "indices": ia,
+                                                          "material": material, "mode": 4}]})
+        self.nodes.append({"name": name, "mesh": len(self.meshes) - 1})
+
+    def camera(self, name, eye, target, yfov_deg, aspect=1.0):
+        f = normalize(sub(target, eye))
+        r = normalize(cross(f, [0, 1, 0]))
+        u = cross(r, f)
+        # Column-major node matrix: local x = right, y = up, -z = forward.
+        m = r + [0] + u + [0] + [-c for c in f] + [0] + list(eye) + [1]
+        self.cameras.append({"type": "perspective", "perspective": {"yfov": math.radians(yfov_deg), "aspectRatio": aspect,
+                                                                    "znear": 0.01}})
+        self.nodes.append({"name": name, "camera": len(self.cameras) - 1, "matrix": m})
+
+    def write(self, path, extensions_used=()):
+        doc = {"asset": {"version": "2.0", "generator": "vkmc tools/make_scenes.py"},
+               "scene": 0, "scenes": [{"nodes": list(range(len(self.nodes)))}], "nodes": self.nodes,
+               "meshes": self.meshes, "materials": self.materials, "accessors": self.accessors,
+               "bufferViews": self.views,
+               "buffers": [{"byteLength": len(self.blob),
+                            "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(self.blob)).decode()}]}
+        if self.cameras:
+            doc["cameras"] = self.cameras
+        if extensions_used:
+            doc["extensionsUsed"] = list(extensions_used)
+        with open(path, "w") as f:
+            json.dump(doc, f, indent=1)
+            f.write("\n")
+
+def quad(a, b, c, d):
+    """Two triangles of the quad a-b-c-d (counter-clockwise from the front)."""
+    return [(a, b, c), (a, c, d)]
+
+def box(center, size, angle_deg):
+    """Closed box rotated about +y, outward-facing."""
+    cx, cy, cz = center
+    sx, sy, sz = [s / 2 for s in size]
+    a = math.radians(angle_deg)
+    def p(x, y, z):
+        return [cx + x * math.cos(a) + z * math.sin(a), cy + y, cz - x * math.sin(a) + z * math.cos(a)]
+    v = {(i, j, k): p(i * sx, j * sy, k * sz) for i in (-1, 1) for j in (-1, 1) for k in (-1, 1)}
+    faces = []
+    faces += quad(v[1, -1, -1], v[1, 1, -1], v[1, 1, 1], v[1, -1, 1])        # +x
+    faces += quad(v[-1, -1, -1], v[-1, -1, 1], v[-1, 1, 1], v[-1, 1, -1])    # -x
+    faces += quad(v[-1, 1, -1], v[-1, 1, 1], v[1, 1, 1], v[1, 1, -1])        # +y
+    faces += quad(v[-1, -1, -1], v[1, -1, -1], v[1, -1, 1], v[-1, -1, 1])    # -y
+    faces += quad(v[-1, -1, 1], v[1, -1, 1], v[1, 1, 1], v[-1, 1, 1])        # +z
+    faces += quad(v[-1, -1, -1], v[-1, 1, -1], v[1, 1, -1], v[1, -1, -1])    # -z
+    return faces
+
+def cornell_box(path):
+    """The Cornell box: a 2 x 2 x 2 room (x, z in [-1, 1], y in [0, 2]) open towards +z, two blocks,
+    one downward-facing area light of radiance (17, 12, 4) just below the ceiling."""
+    b = Builder()
+    white = b.material("white", (0.725, 0.71, 0.68))
+    red = b.material("red", (0.63, 0.065, 0.05))
+    green = b.material("green", (0.14, 0.45, 0.091))
+    light = b.material("light", (0.0, 0.0, 0.0), emission=(1.0, 12 / 17, 4 / 17), strength=17.0)
+    b.mesh("floor", quad([-1, 0, -1], [-1, 0, 1], [1, 0, 1], [1, 0, -1]), white)
+    b.mesh("ceiling", quad([-1, 2, -1], [1, 2, -1], [1, 2, 1], [-1, 2, 1]), white)
+    b.mesh("back", quad([-1, 0, -1], [1, 0, -1], [1, 2, -1], [-1, 2, -1]), white)
+    b.mesh("left", quad([-1, 0, -1], [-1, 2, -1], [-1, 2, 1], [-1, 0, 1]), red)
+    b.mesh("right", quad([1, 0, -1], [1, 0, 1], [1, 2, 1], [1, 2, -1]), green)
+    b.mesh("short_block", box([0.33, 0.3, 0.3], [0.6, 0.6, 0.6], -17), white)
+    b.mesh("tall_block", box([-0.33, 0.6, -0.3], [0.6, 1.2, 0.6], 17), white)
+    b.mesh("light", quad([-0.24, 1.98, -0.19], [0.24, 1.98, -0.19], [0.24, 1.98, 0.19], [-0.24, 1.98, 0.19]), light)
+    b.camera("camera", [0, 1, 3.94], [0, 1, 0], 39.3)
+    b.write(path, ["KHR_materials_emissive_strength"])
+
+def icosphere(radius, levels, inward):
+    t = (1 + math.sqrt(5)) / 2
+    verts = [normalize(v) for v in [[-1, t, 0], [1, t, 0], [-1, -t, 0], [1, -t, 0], [0, -1, t], [0, 1, t], [0, -1, -t],
+                                    [0, 1, -t], [t, 0, -1], [t, 0, 1], [-t, 0, -1], [-t, 0, 1]]]
+    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2), (10, 7, 6),
+             (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10),
+             (8, 6, 7), (9, 8, 1)]
+    for _ in range(levels):
+        cache, new = {}, []
+        def mid(i, j):
+            key = (min(i, j), max(i, j))
+            if key not in cache:
+                verts.append(normalize([(a + b) / 2 for a, b in zip(verts[i], verts[j])]))
+                cache[key] = len(verts) - 1
+            return cache[key]
+        for a, b_, c in faces:
+            ab, bc, ca = mid(a, b_), mid(b_, c), mid(c, a)
+            new += [(a, ab, ca), (b_, bc, ab), (c, ca, bc), (ab, bc, ca)]
+        faces = new
+    tris = []
+    for a, b_, c in faces:
+        tri = [[radius * x for x in verts[i]] for i in (a, b_, c)]
+        tris.append((tri[0], tri[2], tri[1]) if inward else tuple(tri))
+    return tris
+
+def furnace(path, albedo, emission, name):
+    """A closed sphere seen from its centre; every surface has albedo a and emits Le on both sides, so the
+    radiance everywhere is L = Le / (1 - a), whatever the shape."""
+    b = Builder()
+    m = b.material(name, (albedo, albedo, albedo), emission=(1.0, 1.0, 1.0), strength=emission, double_sided=True)
+    b.mesh("sphere", icosphere(1.0, 3, inward=True), m)
+    b.camera("camera", [0, 0, 0], [0, 0, -1], 60.0)
+    b.write(path, ["KHR_materials_emissive_strength"] if emission != 1.0 else [])
+
+if __name__ == "__main__":
+    os.makedirs("scenes", exist_ok=True)
+    cornell_box("scenes/cornell_box.gltf")
+    furnace("scenes/furnace.gltf", 0.5, 1.0, "furnace_albedo_0.5")
+    furnace("scenes/furnace_stiff.gltf", 0.99, 1.0, "furnace_albedo_0.99")
+    print("wrote scenes/cornell_box.gltf, scenes/furnace.gltf, scenes/furnace_stiff.gltf")
