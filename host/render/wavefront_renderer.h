@@ -24,7 +24,7 @@ struct RenderSettings {
   glm::vec3 background{0.0f};
   CameraRig camera{};
   bool progress = false;       // progress line on stderr
-  uint32_t maxPathsPerPass = 1u << 20;
+  uint32_t maxPathsPerPass = 1u << 18;  // wavefront size: paths in flight per pass
 };
 
 struct RenderStats {
@@ -51,7 +51,7 @@ class WavefrontRenderer {
 
  private:
   struct Kernels;
-  uint32_t renderPass(uint32_t firstPixel, uint32_t count, uint32_t sampleIndex, RenderStats& stats);
+  uint32_t renderPass(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples, RenderStats& stats);
   void foldFilm(Film& film);
 
   vk::Context& ctx_;

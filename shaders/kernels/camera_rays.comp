@@ -1,14 +1,15 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Stage 1: one camera ray per path (one sample of one pixel), all pushed onto ray queue 0.
+// Path id = sample * pixelCount + pixel offset, so the accumulate stage can walk one pixel's samples.
 #include "common.glsl"
 
 void main() {
   uint id = invocationIndex();
   if (id == 0u) control.counts.x = pc.pathCount;
   if (id >= pc.pathCount) return;
-  uint pixel = pc.firstPixel + id;
-  uint key = pathKey(pc.seed, pixel, pc.sampleIndex);
+  uint pixel = pc.firstPixel + id % pc.pixelCount;
+  uint key = pathKey(pc.seed, pixel, pc.sampleIndex + id / pc.pixelCount);
   vec2 jitter = vec2(randomUnit(key, 0u), randomUnit(key, 1u));
   vec2 ndc = vec2(float(pixel % pc.width) + jitter.x, float(pixel / pc.width) + jitter.y) /
              vec2(float(pc.width), float(pc.height));

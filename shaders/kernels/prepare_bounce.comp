@@ -13,6 +13,6 @@ void main() {
   if ((pc.bounce & 1u) == 0u) control.counts.y = 0u;
   else control.counts.x = 0u;
   control.counts.z = 0u;
-  uint accumulateGroups = (pc.pathCount + kWorkgroupSize - 1u) / kWorkgroupSize;
+  uint accumulateGroups = (pc.pixelCount + kWorkgroupSize - 1u) / kWorkgroupSize;
   control.accumulateArgs = uvec4(n == 0u ? accumulateGroups : 0u, 1u, 1u, 0u);
 }

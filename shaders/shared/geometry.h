@@ -12,7 +12,7 @@ struct RayShear {
   vec3 shear;  // Sx, Sy, Sz
 };
 
-RayShear makeRayShear(vec3 origin, vec3 dir) {
+VKMC_FN RayShear makeRayShear(vec3 origin, vec3 dir) {
   vec3 a = abs(dir);
   uint kz = (a.x > a.y) ? (a.x > a.z ? 0u : 2u) : (a.y > a.z ? 1u : 2u);
   uint kx = (kz + 1u) % 3u;
@@ -29,11 +29,11 @@ RayShear makeRayShear(vec3 origin, vec3 dir) {
   return r;
 }
 
-vec3 permuteAxes(vec3 v, uvec3 k) { return vec3(v[k.x], v[k.y], v[k.z]); }
+VKMC_FN vec3 permuteAxes(vec3 v, uvec3 k) { return vec3(v[k.x], v[k.y], v[k.z]); }
 
 // Returns (t, b1, b2) with b1, b2 the weights of v1, v2, or t < 0 when there is no hit in (0, tMax).
 // Edges are shared exactly between neighbours: no ray slips between two triangles.
-vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax) {
+VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax) {
   vec3 A = permuteAxes(v0 - r.origin, r.axes);
   vec3 B = permuteAxes(v1 - r.origin, r.axes);
   vec3 C = permuteAxes(v2 - r.origin, r.axes);
@@ -58,22 +58,22 @@ vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax) {
 }
 
 VKMC_CONST float kMachineEpsilon = 5.96046448e-08f;  // 2^-24
-float gammaBound(float n) { return (n * kMachineEpsilon) / (1.0f - n * kMachineEpsilon); }
+VKMC_FN float gammaBound(float n) { return (n * kMachineEpsilon) / (1.0f - n * kMachineEpsilon); }
 
 // Bound on the rounding error of b0*v0 + b1*v1 + b2*v2: relative to the coordinates, so scaling or
 // translating a scene scales the offset with it.
-vec3 barycentricError(vec3 b, vec3 v0, vec3 v1, vec3 v2) {
+VKMC_FN vec3 barycentricError(vec3 b, vec3 v0, vec3 v1, vec3 v2) {
   return gammaBound(7.0f) * (abs(b.x * v0) + abs(b.y * v1) + abs(b.z * v2));
 }
 
-float nextFloatUp(float v) {
+VKMC_FN float nextFloatUp(float v) {
   if (isinf(v) && v > 0.0f) return v;
   if (v == -0.0f) v = 0.0f;
   uint bits = floatBitsToUint(v);
   bits = v >= 0.0f ? bits + 1u : bits - 1u;
   return uintBitsToFloat(bits);
 }
-float nextFloatDown(float v) {
+VKMC_FN float nextFloatDown(float v) {
   if (isinf(v) && v < 0.0f) return v;
   if (v == 0.0f) v = -0.0f;
   uint bits = floatBitsToUint(v);
@@ -82,7 +82,7 @@ float nextFloatDown(float v) {
 }
 
 // Moves p off its surface to the side of w, past the error bound, rounding away from the surface.
-vec3 offsetRayOrigin(vec3 p, vec3 pError, vec3 n, vec3 w) {
+VKMC_FN vec3 offsetRayOrigin(vec3 p, vec3 pError, vec3 n, vec3 w) {
   float d = dot(abs(n), pError);
   vec3 offset = d * n;
   if (dot(w, n) < 0.0f) offset = -offset;
@@ -97,7 +97,7 @@ vec3 offsetRayOrigin(vec3 p, vec3 pError, vec3 n, vec3 w) {
 VKMC_CONST float kSlabWiden = 1.0000004f;  // 1 + 2 gamma(3), rounded up
 
 // Directions with a zero component would give 0 * inf = NaN in the slab test.
-vec3 safeInverse(vec3 d) {
+VKMC_FN vec3 safeInverse(vec3 d) {
   const float tiny = 1e-30f;
   vec3 s = vec3(abs(d.x) < tiny ? (d.x < 0.0f ? -tiny : tiny) : d.x,
                 abs(d.y) < tiny ? (d.y < 0.0f ? -tiny : tiny) : d.y,

@@ -12,12 +12,14 @@ using uint = uint32_t;
 #define VKMC_BEGIN_NAMESPACE namespace vkmc::gpu {
 #define VKMC_END_NAMESPACE }
 #define VKMC_CONST inline constexpr
+#define VKMC_FN inline
 #define VKMC_STATIC_ASSERT(cond) static_assert(cond, #cond)
 #define INOUT(T) T&
 #else
 #define VKMC_BEGIN_NAMESPACE
 #define VKMC_END_NAMESPACE
 #define VKMC_CONST const
+#define VKMC_FN
 #define VKMC_STATIC_ASSERT(cond)
 #define INOUT(T) inout T
 #endif

@@ -81,7 +81,7 @@ struct TestRay {
 struct PushConstants {
   uint pathCount;   // paths in this pass
   uint firstPixel;  // pixel of path 0
-  uint sampleIndex; // sample pass index (rng)
+  uint sampleIndex; // sample index of the pass's first sample (rng)
   uint bounce;      // current bounce: selects the ping-pong queue
   uint width;
   uint height;
@@ -92,6 +92,9 @@ struct PushConstants {
   vec4 cameraRight;   // xyz: scaled by tan(xfov/2), or half width for orthographic
   vec4 cameraUp;      // xyz: scaled by tan(yfov/2), or half height
   vec4 background;    // rgb: uniform radiance of escaped rays
+  uint pixelCount;     // pixels in this pass; path id = sample * pixelCount + pixel offset
+  uint samplesPerPass; // samples of each pixel in this pass (pathCount = pixelCount * samplesPerPass)
+  uint unused0, unused1;
 };
 
 VKMC_END_NAMESPACE
@@ -106,7 +109,7 @@ static_assert(sizeof(FilmPixel) == 32);
 static_assert(sizeof(Control) == 80);
 static_assert(offsetof(Control, rayArgs) == 16 && offsetof(Control, accumulateArgs) == 48);
 static_assert(sizeof(TestRay) == 32);
-static_assert(sizeof(PushConstants) == 112 && sizeof(PushConstants) <= 128);
+static_assert(sizeof(PushConstants) == 128);
 static_assert(offsetof(PushConstants, cameraOrigin) == 32);
 }
 #endif

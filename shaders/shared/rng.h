@@ -22,16 +22,16 @@ uint hashU32(uint x) {
   return x;
 }
 
-uint pathKey(uint seed, uint pixel, uint sampleIndex) {
+VKMC_FN uint pathKey(uint seed, uint pixel, uint sampleIndex) {
   return hashU32(pixel ^ hashU32(sampleIndex ^ hashU32(seed + 0x632be5abu)));
 }
 
 // Uniform in [0, 1): 24 random bits, so 1 is never returned.
-float randomUnit(uint key, uint dim) {
+VKMC_FN float randomUnit(uint key, uint dim) {
   return float(hashU32(key ^ hashU32(dim * 0x9e3779b9u + 0x7f4a7c15u)) >> 8u) * (1.0f / 16777216.0f);
 }
 
-uint bounceDim(uint depth, uint offset) { return kDimsCamera + depth * kDimsPerBounce + offset; }
+VKMC_FN uint bounceDim(uint depth, uint offset) { return kDimsCamera + depth * kDimsPerBounce + offset; }
 
 VKMC_END_NAMESPACE
 #endif

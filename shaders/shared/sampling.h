@@ -8,7 +8,7 @@ VKMC_CONST float kPi = 3.14159265358979323846f;
 VKMC_CONST float kInvPi = 0.31830988618379067154f;
 
 // Shirley-Chiu concentric map: low distortion, so stratification survives.
-vec2 sampleUniformDiskConcentric(vec2 u) {
+VKMC_FN vec2 sampleUniformDiskConcentric(vec2 u) {
   vec2 o = 2.0f * u - vec2(1.0f);
   if (o.x == 0.0f && o.y == 0.0f) return vec2(0.0f);
   float r, theta;
@@ -23,15 +23,15 @@ vec2 sampleUniformDiskConcentric(vec2 u) {
 }
 
 // Local frame: z is the normal.
-vec3 sampleCosineHemisphere(vec2 u) {
+VKMC_FN vec3 sampleCosineHemisphere(vec2 u) {
   vec2 d = sampleUniformDiskConcentric(u);
   float z = sqrt(max(0.0f, 1.0f - d.x * d.x - d.y * d.y));
   return vec3(d.x, d.y, z);
 }
-float cosineHemispherePdf(float cosTheta) { return max(cosTheta, 0.0f) * kInvPi; }
+VKMC_FN float cosineHemispherePdf(float cosTheta) { return max(cosTheta, 0.0f) * kInvPi; }
 
 // Barycentrics (b0, b1, b2) uniform over the triangle's area; pdf = 1 / area.
-vec3 sampleUniformTriangle(vec2 u) {
+VKMC_FN vec3 sampleUniformTriangle(vec2 u) {
   float su = sqrt(u.x);
   float b0 = 1.0f - su;
   float b1 = u.y * su;
@@ -39,7 +39,7 @@ vec3 sampleUniformTriangle(vec2 u) {
 }
 
 // Duff et al. 2017: orthonormal basis without a branch on the normal's direction; columns are t, b, n.
-mat3 basisFromNormal(vec3 n) {
+VKMC_FN mat3 basisFromNormal(vec3 n) {
   float s = n.z >= 0.0f ? 1.0f : -1.0f;
   float a = -1.0f / (s + n.z);
   float b = n.x * n.y * a;
@@ -48,14 +48,14 @@ mat3 basisFromNormal(vec3 n) {
   return mat3(t, bt, n);
 }
 
-float powerHeuristic(float pdfA, float pdfB) {
+VKMC_FN float powerHeuristic(float pdfA, float pdfB) {
   float a = pdfA * pdfA;
   float b = pdfB * pdfB;
   return a + b > 0.0f ? a / (a + b) : 0.0f;
 }
 
 // Octahedral unit vectors (decode side; the host encodes).
-vec3 decodeOctahedral(vec2 e) {
+VKMC_FN vec3 decodeOctahedral(vec2 e) {
   vec3 v = vec3(e.x, e.y, 1.0f - abs(e.x) - abs(e.y));
   if (v.z < 0.0f) {
     vec2 s = vec2(v.x >= 0.0f ? 1.0f : -1.0f, v.y >= 0.0f ? 1.0f : -1.0f);
@@ -64,8 +64,8 @@ vec3 decodeOctahedral(vec2 e) {
   return normalize(v);
 }
 
-float maxComponent(vec3 v) { return max(v.x, max(v.y, v.z)); }
-float luminance(vec3 c) { return dot(c, vec3(0.2126f, 0.7152f, 0.0722f)); }
+VKMC_FN float maxComponent(vec3 v) { return max(v.x, max(v.y, v.z)); }
+VKMC_FN float luminance(vec3 c) { return dot(c, vec3(0.2126f, 0.7152f, 0.0722f)); }
 
 VKMC_END_NAMESPACE
 #endif

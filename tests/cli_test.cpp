@@ -1,0 +1,156 @@
+// The vkmc binary end to end: a render with its report, and every bad input ending in one clear line on
+// stderr, a non-zero exit and no output file (a good existing output is never clobbered).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "io/exr.h"
+#include "test_scenes.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RunResult {
+  int code;
+  std::string out, err;
+};
+
+fs::path workDir() {
+  static fs::path d = vkmc::test::makeTempDir("cli");
+  return d;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+RunResult runVkmc(const std::string& args) {
+  fs::path out = workDir() / "stdout.txt", err = workDir() / "stderr.txt";
+  std::string cmd = std::string(VKMC_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
+  int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+}
+
+std::string cornell() { return std::string(VKMC_SOURCE_DIR) + "/scenes/cornell_box.gltf"; }
+
+}  // namespace
+
+TEST(Cli, RenderWritesExrPngAndAConsistentReport) {
+  fs::path exr = workDir() / "ok.exr", png = workDir() / "ok.png", report = workDir() / "ok.json";
+  RunResult r = runVkmc("render " + cornell() + " --width 40 --height 30 --spp 4 -o " + exr.string() + " --png " + png.string() +
+               " --report " + report.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("Mrays/s"), std::string::npos);
+  ASSERT_TRUE(fs::exists(exr));
+  ASSERT_TRUE(fs::exists(png));
+  vkmc::ExrImage img = vkmc::readExr(exr.string());
+  EXPECT_EQ(img.width, 40);
+  EXPECT_EQ(img.height, 30);
+  EXPECT_EQ(img.channels.count("variance.G"), 1u);
+  EXPECT_EQ(img.channels["samples"][0], 4.0f);
+
+  auto j = nlohmann::json::parse(slurp(report));
+  for (const char* key : {"scene", "width", "height", "spp", "seconds", "setup_seconds", "gpu_seconds", "rays",
+                          "mrays_per_second", "nonfinite_samples", "mean", "mean_variance", "device"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["width"], 40);
+  EXPECT_EQ(j["spp"], 4);
+  EXPECT_EQ(j["nonfinite_samples"], 0);
+  double rays = j["rays"], seconds = j["seconds"], mrays = j["mrays_per_second"];
+  EXPECT_NEAR(rays / seconds * 1e-6, mrays, 1e-9 * mrays);
+  EXPECT_EQ(rays, double(j["ray_counts"]["camera"]) + double(j["ray_counts"]["extension"]) + double(j["ray_counts"]["shadow"]));
+  EXPECT_EQ(j["ray_counts"]["camera"], 40 * 30 * 4);
+  EXPECT_GT(double(j["gpu_seconds"]), 0.0);
+  EXPECT_LE(double(j["gpu_seconds"]), seconds * 1.05);
+  EXPECT_TRUE(j["estimator"]["unbiased"]);
+  EXPECT_GT(double(j["mean"][0]), 0.0);
+  // The EXR's image mean is the report's mean.
+  double sum = 0;
+  for (float v : img.channels["R"]) sum += v;
+  EXPECT_NEAR(sum / (40 * 30), double(j["mean"][0]), 1e-5);
+}
+
+TEST(Cli, DepthCapIsReportedAsBiased) {
+  fs::path report = workDir() / "capped.json";
+  RunResult r = runVkmc("render " + cornell() + " --width 16 --height 16 --spp 1 --max-depth 3 -q -o " + (workDir() / "capped.exr").string() +
+               " --report " + report.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto j = nlohmann::json::parse(slurp(report));
+  EXPECT_FALSE(j["estimator"]["unbiased"]);
+  EXPECT_NE(std::string(j["estimator"]["bias"]).find("truncation"), std::string::npos);
+}
+
+TEST(Cli, BadInputFailsCleanlyAndWritesNothing) {
+  fs::path d = workDir();
+  vkmc::test::GltfSpec nan = vkmc::test::quadSpec();
+  nan.positions[0] = std::numeric_limits<float>::infinity();
+  std::string nanScene = vkmc::test::writeGltf(d, "nan", nan);
+  vkmc::test::GltfSpec idx = vkmc::test::quadSpec();
+  idx.indices[0] = 77;
+  std::string idxScene = vkmc::test::writeGltf(d, "idx", idx);
+  vkmc::test::GltfSpec acc = vkmc::test::quadSpec();
+  acc.positionCountOverride = 1000;
+  std::string accScene = vkmc::test::writeGltf(d, "acc", acc);
+  vkmc::test::GltfSpec nobin = vkmc::test::quadSpec();
+  nobin.writeBin = false;
+  std::string nobinScene = vkmc::test::writeGltf(d, "nobin", nobin);
+  vkmc::test::GltfSpec empty = vkmc::test::quadSpec();
+  empty.positions = {0, 0, 0, 1, 1, 1, 2, 2, 2};
+  empty.indices = {0, 1, 2};
+  std::string emptyScene = vkmc::test::writeGltf(d, "empty", empty);
+  std::ofstream(d / "broken.gltf") << "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [";
+
+  struct Case {
+    std::string args, expect;
+    int code;
+  };
+  std::vector<Case> cases = {
+      {(d / "broken.gltf").string(), "cannot load", 1},
+      {(d / "missing.gltf").string(), "cannot open", 1},
+      {nobinScene, "cannot load", 1},
+      {accScene, "runs past the end", 1},
+      {idxScene, "out of range", 1},
+      {nanScene, "NaN or infinite position", 1},
+      {emptyScene, "no triangles", 1},
+      {cornell() + " --spp 0", "--spp", 1},
+      {cornell() + " --width -4", "--width", 1},
+      {cornell() + " --width 100000", "--width", 1},
+      {cornell() + " --width 16384 --height 16384", "too large", 1},
+      {cornell() + " --max-depth -1", "--max-depth", 1},
+      {cornell() + " --look-from 1,2,3", "--look-at", 1},
+      {cornell() + " --look-from 1,2 --look-at 0,0,0", "--look-from", 1},
+      {cornell() + " --camera 5", "out of range", 1},
+      {cornell() + " --fov 0 --look-from 0,0,5 --look-at 0,0,0", "--fov", 1},
+      {cornell() + " --background nan,0,0", "--background", 1},
+      {cornell() + " --spp abc", "spp", 2},
+      {cornell() + " --no-such-flag", "no-such-flag", 2},
+  };
+  const std::string good = "GOOD EXISTING FILE";
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    fs::path out = d / "out.exr";
+    std::ofstream(out) << good;
+    fs::path report = d / "bad_report.json";
+    fs::remove(report);
+    RunResult r = runVkmc("render " + c.args + " -q -o " + out.string() + " --report " + report.string());
+    EXPECT_EQ(r.code, c.code);
+    EXPECT_NE(r.err.find(c.expect), std::string::npos) << "stderr: " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "stderr: " << r.err;
+    EXPECT_EQ(slurp(out), good) << "a failed run touched the existing output";
+    EXPECT_FALSE(fs::exists(report));
+    for (const auto& f : fs::directory_iterator(d)) EXPECT_EQ(f.path().string().find(".tmp-"), std::string::npos);
+  }
+}
+
+TEST(Cli, MissingOutputFolderFailsBeforeRendering) {
+  RunResult r = runVkmc("render " + cornell() + " -q -o /nonexistent-folder/x.exr");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+}

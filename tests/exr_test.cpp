@@ -1,0 +1,55 @@
+// EXR round trip of every channel; writes are atomic.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "error.h"
+#include "io/exr.h"
+
+using namespace vkmc;
+
+TEST(Exr, FilmRoundTripsEveryChannel) {
+  Film film(7, 5);
+  for (size_t p = 0; p < film.pixels(); ++p) {
+    film.count[p] = 10 + p;
+    for (int c = 0; c < 3; ++c) {
+      double v = 0.25 * p + c + 1e-3 * p * p;
+      film.sum[3 * p + c] = v * film.count[p];
+      film.sumSq[3 * p + c] = (v * v + 0.5 + c) * film.count[p];
+    }
+  }
+  auto path = (std::filesystem::temp_directory_path() / "vkmc_exr_roundtrip.exr").string();
+  writeFilmExr(path, film);
+  ExrImage img = readExr(path);
+  ASSERT_EQ(img.width, 7);
+  ASSERT_EQ(img.height, 5);
+  const char* names[] = {"R", "G", "B", "variance.R", "variance.G", "variance.B", "samples"};
+  for (const char* n : names) ASSERT_TRUE(img.channels.count(n)) << n;
+  EXPECT_EQ(img.channels.size(), 7u);
+  for (size_t p = 0; p < film.pixels(); ++p) {
+    EXPECT_EQ(img.channels["samples"][p], float(film.count[p]));
+    const char* rgb[] = {"R", "G", "B"};
+    const char* var[] = {"variance.R", "variance.G", "variance.B"};
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(img.channels[rgb[c]][p], float(film.mean(p, c)));
+      EXPECT_EQ(img.channels[var[c]][p], float(film.varianceOfMean(p, c)));
+      EXPECT_GT(img.channels[var[c]][p], 0.0f);
+    }
+  }
+  std::filesystem::remove(path);
+}
+
+TEST(Exr, FailedWriteLeavesNothingBehind) {
+  Film film(4, 4);
+  auto dir = std::filesystem::temp_directory_path() / "vkmc_no_such_dir_for_exr";
+  std::filesystem::remove_all(dir);
+  EXPECT_THROW(writeFilmExr((dir / "x.exr").string(), film), Error);
+  EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
+TEST(Exr, ReadingGarbageIsAnError) {
+  auto path = (std::filesystem::temp_directory_path() / "vkmc_garbage.exr").string();
+  writeFileAtomically(path, "not an exr file");
+  EXPECT_THROW(readExr(path), Error);
+  std::filesystem::remove(path);
+}

@@ -1,0 +1,76 @@
+// The GPU traversal kernel returns the same closest and any hits as brute force on random rays.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "../shaders/shared/geometry.h"
+#include "bvh/bvh.h"
+#include "render/gpu_scene.h"
+#include "render/ray_tracer.h"
+
+using namespace vkmc;
+
+TEST(GpuTraversal, ClosestAndAnyHitAgreeWithBruteForce) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  Scene scene;
+  scene.materials.push_back(Material{});
+  for (int i = 0; i < 5000; ++i) {
+    glm::vec3 c(u(rng) * 5, u(rng) * 5, u(rng) * 5);
+    float size = 0.05f + 0.4f * std::abs(u(rng));
+    glm::vec3 p[3];
+    for (auto& v : p) v = c + size * glm::vec3(u(rng), u(rng), u(rng));
+    glm::vec3 n = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+    for (auto& v : p) {
+      scene.positions.push_back(v);
+      scene.normals.push_back(n);
+      scene.bounds.grow(v);
+    }
+    scene.materialIds.push_back(0);
+  }
+  std::vector<Aabb> bounds(scene.triangleCount());
+  for (size_t i = 0; i < bounds.size(); ++i)
+    for (int k = 0; k < 3; ++k) bounds[i].grow(scene.positions[3 * i + k]);
+  Bvh bvh = buildBvh(bounds);
+  std::vector<glm::vec3> ordered;
+  for (uint32_t t : bvh.triangleOrder)
+    for (int k = 0; k < 3; ++k) ordered.push_back(scene.positions[3 * t + k]);
+
+  vk::Context ctx;
+  GpuScene gpuScene(ctx, scene, bvh);
+  RayTracer tracer(ctx, gpuScene);
+  std::vector<gpu::TestRay> rays;
+  for (int r = 0; r < 20000; ++r) {
+    glm::vec3 o(u(rng) * 8, u(rng) * 8, u(rng) * 8);
+    glm::vec3 d = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)));
+    if (r % 97 == 0) d = glm::vec3(0.0f, 0.0f, r % 2 ? 1.0f : -1.0f);  // axis-aligned: zero components
+    rays.push_back({glm::vec4(o, r % 3 == 0 ? 3.0f : 1e30f), glm::vec4(d, 0.0f)});
+  }
+  std::vector<glm::vec4> closest = tracer.trace(rays, false);
+  std::vector<glm::vec4> any = tracer.trace(rays, true);
+  int mismatches = 0, anyMismatches = 0, hits = 0;
+  for (size_t r = 0; r < rays.size(); ++r) {
+    glm::vec3 o(rays[r].origin), d(rays[r].direction);
+    gpu::RayShear shear = gpu::makeRayShear(o, d);
+    float tBest = rays[r].origin.w;
+    uint32_t best = gpu::kMissPrimitive;
+    for (uint32_t i = 0; i < ordered.size() / 3; ++i) {
+      glm::vec3 h = gpu::intersectTriangle(shear, ordered[3 * i], ordered[3 * i + 1], ordered[3 * i + 2], tBest);
+      if (h.x > 0.0f) tBest = h.x, best = i;
+    }
+    uint32_t got = glm::floatBitsToUint(closest[r].w);
+    hits += best != gpu::kMissPrimitive;
+    if (got != best) {
+      // Two triangles within float rounding of each other along the ray are a tie, not an error.
+      bool tie = best != gpu::kMissPrimitive && got != gpu::kMissPrimitive && std::abs(closest[r].x - tBest) <= 1e-5f * tBest;
+      if (!tie) ++mismatches;
+    } else if (best != gpu::kMissPrimitive) {
+      EXPECT_NEAR(closest[r].x, tBest, 1e-5f * tBest);
+    }
+    bool anyHit = glm::floatBitsToUint(any[r].w) != gpu::kMissPrimitive;
+    if (anyHit != (best != gpu::kMissPrimitive)) ++anyMismatches;
+  }
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_EQ(anyMismatches, 0);
+  EXPECT_GT(hits, 2000);
+}

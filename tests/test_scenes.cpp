@@ -1,0 +1,68 @@
+// glTF writer for tests.
+#include "test_scenes.h"
+
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+namespace vkmc::test {
+
+std::filesystem::path makeTempDir(const std::string& tag) {
+  std::random_device rd;
+  auto dir = std::filesystem::temp_directory_path() / ("vkmc-" + tag + "-" + std::to_string(rd()));
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+GltfSpec quadSpec() {
+  GltfSpec s;
+  s.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  s.indices = {0, 1, 2, 0, 2, 3};
+  return s;
+}
+
+std::string writeGltf(const std::filesystem::path& dir, const std::string& name, const GltfSpec& spec) {
+  std::string bin;
+  auto append = [&](const void* p, size_t n) { bin.append(static_cast<const char*>(p), n); };
+  append(spec.positions.data(), spec.positions.size() * 4);
+  size_t posBytes = bin.size();
+  size_t indexBytes = 0;
+  if (!spec.indices.empty()) {
+    for (uint32_t i : spec.indices) {
+      if (spec.indexComponentType == 5121) { uint8_t v = static_cast<uint8_t>(i); append(&v, 1); }
+      else if (spec.indexComponentType == 5123) { uint16_t v = static_cast<uint16_t>(i); append(&v, 2); }
+      else append(&i, 4);
+    }
+    indexBytes = bin.size() - posBytes;
+  }
+  float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};
+  for (size_t i = 0; i < spec.positions.size(); ++i) {
+    if (!std::isfinite(spec.positions[i])) continue;  // min/max must stay valid JSON
+    lo[i % 3] = std::min(lo[i % 3], spec.positions[i]);
+    hi[i % 3] = std::max(hi[i % 3], spec.positions[i]);
+  }
+  size_t vertexCount = spec.positionCountOverride >= 0 ? spec.positionCountOverride : spec.positions.size() / 3;
+  std::ostringstream j;
+  j << R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)";
+  j << R"("nodes":[{"mesh":0)" << (spec.nodeExtra.empty() ? "" : "," + spec.nodeExtra) << "}],";
+  j << R"("materials":[)" << spec.materialJson << "],";
+  j << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0,"mode":)" << spec.mode;
+  if (!spec.indices.empty()) j << R"(,"indices":1)";
+  j << "}]}],";
+  j << R"("accessors":[{"bufferView":0,"componentType":5126,"type":"VEC3","count":)" << vertexCount << R"(,"min":[)"
+    << lo[0] << "," << lo[1] << "," << lo[2] << R"(],"max":[)" << hi[0] << "," << hi[1] << "," << hi[2] << "]}";
+  if (!spec.indices.empty())
+    j << R"(,{"bufferView":1,"componentType":)" << spec.indexComponentType << R"(,"type":"SCALAR","count":)" << spec.indices.size() << "}";
+  j << "],";
+  j << R"("bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)" << posBytes << "}";
+  if (!spec.indices.empty()) j << R"(,{"buffer":0,"byteOffset":)" << posBytes << R"(,"byteLength":)" << indexBytes << "}";
+  j << "],";
+  j << R"("buffers":[{"byteLength":)" << bin.size() << R"(,"uri":")" << name << R"(.bin"}]})";
+  auto gltf = dir / (name + ".gltf");
+  std::ofstream(gltf) << j.str();
+  if (spec.writeBin) std::ofstream(dir / (name + ".bin"), std::ios::binary) << bin;
+  return gltf.string();
+}
+
+}  // namespace vkmc::test
