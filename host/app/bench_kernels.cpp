@@ -7,8 +7,16 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "../shaders/shared/geometry.h"
+#include "../shaders/shared/rng.h"
+#include "../shaders/shared/sampling.h"
 #include "app/render_job.h"
+#include "bvh/bvh.h"
 #include "error.h"
+#include "render/gpu_scene.h"
+#include "render/ray_tracer.h"
+#include "scene/camera_rig.h"
+#include "scene/gltf_loader.h"
 #include "io/exr.h"
 #include "vk/context.h"
 
@@ -33,9 +41,65 @@ std::vector<std::string> defaultScenes() {
 }
 
 struct Samples {
-  std::vector<double> load, bvh, upload, pipelines, sps, primary, incoherent, total;
+  std::vector<double> load, bvh, upload, pipelines, sps, primary, incoherent, total, tracePrimary, traceDiffuse;
   uint32_t triangles = 0;
+  double diffuseRays = 0;
 };
+
+// The traversal alone, on ray arrays: camera rays through pixel centres (coherent), then from each of their
+// hits four cosine-distributed bounce rays about the geometric normal (incoherent, as in a diffuse bounce).
+// Returns (primary, diffuse) Mrays/s from the trace kernel's timestamps, medians over runs.
+std::pair<std::vector<double>, std::vector<double>> traceBenchmark(vk::Context& ctx, const std::string& path, int width,
+                                                                   int height, int runs, double& diffuseRayCount) {
+  Scene scene = loadGltf(path);
+  std::vector<Aabb> bounds(scene.triangleCount());
+  for (size_t i = 0; i < bounds.size(); ++i)
+    for (int k = 0; k < 3; ++k) bounds[i].grow(scene.positions[3 * i + k]);
+  Bvh bvh = buildBvh(bounds);
+  GpuScene gpuScene(ctx, scene, bvh);
+  RayTracer tracer(ctx, gpuScene);
+  Camera cam = scene.cameras.empty() ? autoCamera(scene.bounds, float(width) / height) : scene.cameras[0];
+  CameraRig rig = makeCameraRig(cam, width, height);
+  std::vector<gpu::TestRay> primary;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      glm::vec2 s(2.0f * (x + 0.5f) / width - 1.0f, 1.0f - 2.0f * (y + 0.5f) / height);
+      glm::vec3 o = rig.origin, d = rig.forward;
+      if (rig.orthographic) o += s.x * rig.right + s.y * rig.up;
+      else d = glm::normalize(rig.forward + s.x * rig.right + s.y * rig.up);
+      primary.push_back({glm::vec4(o, 3e38f), glm::vec4(d, 0.0f)});
+    }
+  std::vector<glm::vec4> hits = tracer.trace(primary, false);
+  std::vector<gpu::TestRay> diffuse;
+  for (size_t i = 0; i < hits.size(); ++i) {
+    uint32_t tri = glm::floatBitsToUint(hits[i].w);
+    if (tri == gpu::kMissPrimitive) continue;
+    const glm::vec3* v = &scene.positions[3 * bvh.triangleOrder[tri]];
+    glm::vec3 b(1.0f - hits[i].y - hits[i].z, hits[i].y, hits[i].z);
+    glm::vec3 p = b.x * v[0] + b.y * v[1] + b.z * v[2];
+    glm::vec3 n = glm::normalize(glm::cross(v[1] - v[0], v[2] - v[0]));
+    if (glm::dot(n, glm::vec3(primary[i].direction)) > 0.0f) n = -n;
+    for (uint32_t k = 0; k < 4; ++k) {
+      uint32_t key = gpu::pathKey(99u, static_cast<uint32_t>(i), k);
+      glm::vec3 w = gpu::basisFromNormal(n) * gpu::sampleCosineHemisphere(glm::vec2(gpu::randomUnit(key, 0), gpu::randomUnit(key, 1)));
+      glm::vec3 o = gpu::offsetRayOrigin(p, gpu::barycentricError(b, v[0], v[1], v[2]), n, w);
+      diffuse.push_back({glm::vec4(o, 3e38f), glm::vec4(w, 0.0f)});
+    }
+  }
+  diffuseRayCount = static_cast<double>(diffuse.size());
+  std::vector<double> p, d;
+  tracer.trace(primary, false);  // warm-up
+  for (int r = 0; r < runs; ++r) {
+    double secs = 0;
+    tracer.trace(primary, false, &secs);
+    p.push_back(secs > 0 ? primary.size() / secs * 1e-6 : 0.0);
+    if (!diffuse.empty()) {
+      tracer.trace(diffuse, false, &secs);
+      d.push_back(secs > 0 ? diffuse.size() / secs * 1e-6 : 0.0);
+    }
+  }
+  return {p, d};
+}
 
 }  // namespace
 
@@ -67,12 +131,17 @@ int runBenchKernels(const BenchOptions& o) {
       s.primary.push_back(st.primarySeconds > 0 ? st.primaryRays / st.primarySeconds * 1e-6 : 0.0);
       s.incoherent.push_back(st.incoherentSeconds > 0 ? st.extensionRays / st.incoherentSeconds * 1e-6 : 0.0);
       s.total.push_back(st.rays() / st.seconds * 1e-6);
+      auto [tp, td] = traceBenchmark(ctx, scenes[i], o.width, o.height, 1, s.diffuseRays);
+      s.tracePrimary.insert(s.tracePrimary.end(), tp.begin(), tp.end());
+      s.traceDiffuse.insert(s.traceDiffuse.end(), td.begin(), td.end());
     }
   }
   std::printf("device: %s; %dx%d, %d spp per run, %d runs, medians [min-max]\n", ctx.deviceName().c_str(), o.width, o.height,
               o.spp, o.runs);
-  std::printf("%-28s %9s %8s %7s %8s %9s | %10s %12s %14s %12s\n", "scene", "triangles", "load s", "bvh s", "upload s",
-              "pipes s", "samples/s", "primary Mr/s", "incoherent Mr/s", "total Mr/s");
+  std::printf("%-34s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s\n", "scene", "triangles", "load s", "bvh s",
+              "upload s", "pipes s", "samples/s", "primary", "bounces", "total", "trace 1st", "trace dif");
+  std::printf("%-34s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s\n", "", "", "", "", "", "", "", "Mrays/s",
+              "Mrays/s", "Mrays/s", "Mrays/s", "Mrays/s");
   nlohmann::json out = nlohmann::json::array();
   for (size_t i = 0; i < scenes.size(); ++i) {
     const Samples& s = samples[i];
@@ -81,9 +150,11 @@ int runBenchKernels(const BenchOptions& o) {
       return std::make_pair(*lo, *hi);
     };
     std::string name = std::filesystem::path(scenes[i]).filename().string();
-    std::printf("%-28s %9u %8.3f %7.3f %8.3f %9.3f | %10.0f %12.2f %14.2f %12.2f  [total %.2f-%.2f]\n", name.c_str(),
-                s.triangles, median(s.load), median(s.bvh), median(s.upload), median(s.pipelines), median(s.sps),
-                median(s.primary), median(s.incoherent), median(s.total), range(s.total).first, range(s.total).second);
+    std::printf("%-34s %9u %7.3f %7.3f %8.3f %7.3f | %10.0f %9.2f %9.2f %9.2f | %9.2f %9.2f  [dif %.2f-%.2f]\n",
+                name.c_str(), s.triangles, median(s.load), median(s.bvh), median(s.upload), median(s.pipelines),
+                median(s.sps), median(s.primary), median(s.incoherent), median(s.total), median(s.tracePrimary),
+                median(s.traceDiffuse), s.traceDiffuse.empty() ? 0.0 : range(s.traceDiffuse).first,
+                s.traceDiffuse.empty() ? 0.0 : range(s.traceDiffuse).second);
     out.push_back({{"scene", scenes[i]},
                    {"triangles", s.triangles},
                    {"load_seconds", median(s.load)},
@@ -94,9 +165,14 @@ int runBenchKernels(const BenchOptions& o) {
                    {"primary_mrays_per_second", median(s.primary)},
                    {"incoherent_mrays_per_second", median(s.incoherent)},
                    {"total_mrays_per_second", median(s.total)},
+                   {"trace_primary_mrays_per_second", median(s.tracePrimary)},
+                   {"trace_diffuse_mrays_per_second", median(s.traceDiffuse)},
+                   {"trace_diffuse_rays", s.diffuseRays},
                    {"pipeline_seconds_first_run", s.pipelines.front()}});
   }
-  std::printf("pipelines: creation plus first-dispatch compile; the first run may pay Mesa's cold disk cache (%.3f s here).\n",
+  std::printf("primary/bounces: wavefront intersection stages (GPU time); total: all rays over render wall time;\n"
+              "trace 1st/dif: the traversal kernel alone on camera rays and on 4 cosine bounce rays per primary hit.\n"
+              "pipelines: creation plus first-dispatch compile; the first run may pay Mesa's cold disk cache (%.3f s here).\n",
               samples.front().pipelines.front());
   if (!o.jsonPath.empty())
     writeFileAtomically(o.jsonPath, nlohmann::json{{"device", ctx.deviceName()}, {"results", out}}.dump(2) + "\n");

@@ -5,12 +5,19 @@
 #include "glsl_cpp.h"
 VKMC_BEGIN_NAMESPACE
 
-// Per-ray constants of the watertight test: the dominant axis becomes z, the ray is sheared onto +z.
+// Per-ray constants of the watertight test: the dominant axis becomes z and the ray is sheared onto +z.
+// Permutation and shear are folded into three rows, so a vertex is transformed by three dot products instead
+// of lane-varying component indexing (which llvmpipe turns into stack traffic). Every factor but the shear is
+// 0 or 1, so the transformed coordinates round exactly as in the paper's formulation, and a vertex shared by
+// two triangles transforms identically for both: edges stay watertight.
 struct RayShear {
   vec3 origin;
-  uvec3 axes;  // kx, ky, kz
-  vec3 shear;  // Sx, Sy, Sz
+  vec3 row0;  // e_kx - Sx e_kz
+  vec3 row1;  // e_ky - Sy e_kz
+  vec3 row2;  // Sz e_kz
 };
+
+VKMC_FN vec3 unitAxis(uint k) { return vec3(k == 0u ? 1.0f : 0.0f, k == 1u ? 1.0f : 0.0f, k == 2u ? 1.0f : 0.0f); }
 
 VKMC_FN RayShear makeRayShear(vec3 origin, vec3 dir) {
   vec3 a = abs(dir);
@@ -22,24 +29,22 @@ VKMC_FN RayShear makeRayShear(vec3 origin, vec3 dir) {
     kx = ky;
     ky = tmp;
   }
+  float dz = dir[kz];
   RayShear r;
   r.origin = origin;
-  r.axes = uvec3(kx, ky, kz);
-  r.shear = vec3(dir[kx] / dir[kz], dir[ky] / dir[kz], 1.0f / dir[kz]);
+  r.row0 = unitAxis(kx) - (dir[kx] / dz) * unitAxis(kz);
+  r.row1 = unitAxis(ky) - (dir[ky] / dz) * unitAxis(kz);
+  r.row2 = (1.0f / dz) * unitAxis(kz);
   return r;
 }
-
-VKMC_FN vec3 permuteAxes(vec3 v, uvec3 k) { return vec3(v[k.x], v[k.y], v[k.z]); }
 
 // Returns (t, b1, b2) with b1, b2 the weights of v1, v2, or t < 0 when there is no hit in (0, tMax).
 // Edges are shared exactly between neighbours: no ray slips between two triangles.
 VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax) {
-  vec3 A = permuteAxes(v0 - r.origin, r.axes);
-  vec3 B = permuteAxes(v1 - r.origin, r.axes);
-  vec3 C = permuteAxes(v2 - r.origin, r.axes);
-  float ax = A.x - r.shear.x * A.z, ay = A.y - r.shear.y * A.z;
-  float bx = B.x - r.shear.x * B.z, by = B.y - r.shear.y * B.z;
-  float cx = C.x - r.shear.x * C.z, cy = C.y - r.shear.y * C.z;
+  vec3 A = v0 - r.origin, B = v1 - r.origin, C = v2 - r.origin;
+  float ax = dot(r.row0, A), ay = dot(r.row1, A);
+  float bx = dot(r.row0, B), by = dot(r.row1, B);
+  float cx = dot(r.row0, C), cy = dot(r.row1, C);
   float U = cx * by - cy * bx;
   float V = ax * cy - ay * cx;
   float W = bx * ay - by * ax;
@@ -47,7 +52,7 @@ VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax
   if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return miss;
   float det = U + V + W;
   if (det == 0.0f) return miss;
-  float T = U * (r.shear.z * A.z) + V * (r.shear.z * B.z) + W * (r.shear.z * C.z);
+  float T = U * dot(r.row2, A) + V * dot(r.row2, B) + W * dot(r.row2, C);
   if (det < 0.0f) {
     T = -T;
     det = -det;
