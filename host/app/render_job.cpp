@@ -35,12 +35,18 @@ void validateOptions(const RenderOptions& o) {
 
 RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options) {
   validateOptions(options);
-  RenderOutcome out;
-  out.device = ctx.deviceName();
-
   auto t = Clock::now();
   Scene scene = loadGltf(options.scenePath);
-  out.setup.load = since(t);
+  double load = since(t);
+  RenderOutcome out = runRender(ctx, options, std::move(scene));
+  out.setup.load = load;
+  return out;
+}
+
+RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene scene) {
+  validateOptions(options);
+  RenderOutcome out;
+  out.device = ctx.deviceName();
   out.degenerateTriangles = scene.degenerateTriangles;
   out.warnings = scene.warnings;
 
@@ -73,7 +79,7 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options) {
   out.width = width;
   out.height = height;
 
-  t = Clock::now();
+  auto t = Clock::now();
   std::vector<Aabb> bounds(scene.triangleCount());
   for (size_t i = 0; i < bounds.size(); ++i)
     for (int k = 0; k < 3; ++k) bounds[i].grow(scene.positions[3 * i + k]);

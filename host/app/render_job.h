@@ -47,6 +47,8 @@ struct RenderOutcome {
 // Throws vkmc::Error on bad options or input, before anything is written.
 void validateOptions(const RenderOptions& options);
 RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options);
+// The same with a scene already in memory (options.scenePath only names it).
+RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene scene);
 nlohmann::json makeReport(const RenderOptions& options, const RenderOutcome& outcome);
 std::string summaryText(const RenderOptions& options, const RenderOutcome& outcome);
 
