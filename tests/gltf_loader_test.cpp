@@ -2,6 +2,7 @@
 // rejected with a clear message.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 
 #include "error.h"
@@ -141,4 +142,22 @@ TEST(GltfLoader, RejectsTruncatedFiles) {
   std::ofstream(glb, std::ios::binary) << std::string("glTF\x02\x00\x00\x00\xff\x00\x00\x00", 12);
   EXPECT_NE(errorOf(glb.string()).find("cannot load"), std::string::npos);
   EXPECT_NE(errorOf((dir() / "absent.gltf").string()).find("cannot open"), std::string::npos);
+}
+
+TEST(GltfLoader, RejectsExponentialInstancingQuickly) {
+  // 40 levels, each node referencing the next twice: 2^40 instances of one quad.
+  GltfSpec q = test::quadSpec();
+  std::string path = test::writeGltf(dir(), "bomb_base", q);
+  std::ifstream in(path);
+  std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string nodes = R"("nodes":[)";
+  for (int i = 0; i < 40; ++i) nodes += "{\"children\":[" + std::to_string(i + 1) + "," + std::to_string(i + 1) + "]},";
+  nodes += R"({"mesh":0}],)";
+  size_t a = json.find("\"nodes\":[{"), b = json.find("],", a) + 2;
+  json.replace(a, b - a, nodes);
+  auto bomb = dir() / "bomb.gltf";
+  std::ofstream(bomb) << json;
+  auto start = std::chrono::steady_clock::now();
+  EXPECT_NE(errorOf(bomb.string()).find("scene too big"), std::string::npos);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
 }

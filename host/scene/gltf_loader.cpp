@@ -22,6 +22,11 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
   return true;
 }
 
+// Instancing can multiply a small file into an enormous scene (a node graph that references one subtree many
+// times): stop with an error long before memory runs out. 2^25 triangles is over 10x the largest sample model.
+constexpr size_t kMaxTriangles = size_t(1) << 25;
+constexpr size_t kMaxNodeVisits = size_t(1) << 22;
+
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 struct AccessorView {
@@ -155,6 +160,8 @@ class Flattener {
     if (nodeIndex < 0 || nodeIndex >= static_cast<int>(model_.nodes.size()))
       throw Error("node " + std::to_string(nodeIndex) + " does not exist");
     if (depth > 256) throw Error("node hierarchy deeper than 256 levels (cyclic?)");
+    if (++visits_ > kMaxNodeVisits)
+      throw Error("scene too big: more than " + std::to_string(kMaxNodeVisits) + " node instances after instancing");
     const tinygltf::Node& node = model_.nodes[nodeIndex];
     glm::mat4 world = parent * localTransform(node);
     if (node.mesh >= 0) addMesh(node.mesh, world);
@@ -201,6 +208,8 @@ class Flattener {
       uint32_t materialId = materialIndex < 0 ? static_cast<uint32_t>(scene_.materials.size() - 1)  // default material
                                               : static_cast<uint32_t>(materialIndex);
       size_t vertexCount = indices ? indices->count : positions.count;
+      if (scene_.triangleCount() + vertexCount / 3 > kMaxTriangles)
+        throw Error("scene too big: more than " + std::to_string(kMaxTriangles) + " triangles after instancing");
       for (size_t t = 0; t + 3 <= vertexCount; t += 3) {
         uint32_t idx[3];
         for (int k = 0; k < 3; ++k) {
@@ -262,6 +271,7 @@ class Flattener {
 
   const tinygltf::Model& model_;
   Scene& scene_;
+  size_t visits_ = 0;
 };
 
 }  // namespace
