@@ -4,11 +4,16 @@ set(VKMC_SHADER_DIR ${CMAKE_SOURCE_DIR}/shaders)
 set(VKMC_SPIRV_DIR ${CMAKE_BINARY_DIR}/spirv)
 file(MAKE_DIRECTORY ${VKMC_SPIRV_DIR})
 
+# Extra arguments are preprocessor definitions (variants whose SPIR-V needs a capability, e.g. float atomics).
 function(add_kernel out_list name source)
   set(header ${VKMC_SPIRV_DIR}/${name}_spv.h)
+  set(defines)
+  foreach(d ${ARGN})
+    list(APPEND defines -D${d})
+  endforeach()
   add_custom_command(
     OUTPUT ${header}
-    COMMAND ${GLSLANG_VALIDATOR} --target-env vulkan1.2 -I${VKMC_SHADER_DIR}/shared -I${VKMC_SHADER_DIR}/include
+    COMMAND ${GLSLANG_VALIDATOR} --target-env vulkan1.2 ${defines} -I${VKMC_SHADER_DIR}/shared -I${VKMC_SHADER_DIR}/include
             --vn kSpirv_${name} --depfile ${header}.d -o ${header} ${source}
     DEPENDS ${source}
     DEPFILE ${header}.d

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 #include "app/bench_kernels.h"
@@ -44,7 +45,7 @@ int main(int argc, char** argv) {
   std::string out = "out.exr", png, report, lookFrom, lookAt, background;
   float exposure = 0.0f;
   bool quiet = false;
-  int spp = 64, maxDepth = 0;
+  int spp = 64;
   long long seed = 1;
   int width = -1, height = -1, cameraIndex = -1;
   CLI::App* render = app.add_subcommand("render", "render a glTF scene to OpenEXR and print the report");
@@ -53,7 +54,33 @@ int main(int argc, char** argv) {
   render->add_option("--spp", spp, "samples per pixel")->capture_default_str();
   render->add_option("--width", width, "image width (default 256)");
   render->add_option("--height", height, "image height (default from the camera's aspect ratio)");
-  render->add_option("--max-depth", maxDepth, "cap on scattering events (biased); 0 = no cap, Russian roulette only")->capture_default_str();
+  // Estimator flags: the keys of the JSON estimator file (host/estimators/estimator_config.h); flags override the file.
+  struct EstimatorFlag {
+    const char* flag;
+    const char* key;
+    bool numeric;
+    const char* help;
+  };
+  const std::vector<EstimatorFlag> estimatorFlags = {
+      {"--max-depth", "max_depth", true, "cap on scattering events (biased); 0 = no cap, Russian roulette only (default)"},
+      {"--rr", "rr", false, "Russian roulette: none|fixed|throughput (default throughput)"},
+      {"--rr-q", "rr_q", true, "fixed roulette: termination probability q (default 0.5)"},
+      {"--rr-c", "rr_c", true, "fixed roulette: value c returned on termination (default 0)"},
+      {"--rr-depth", "rr_depth", true, "first depth with roulette (default 3)"},
+      {"--shadow-rr", "shadow_rr", true, "shadow-ray roulette threshold x pixel estimate (default 0 = off)"},
+      {"--shadow-rr-q", "shadow_rr_q", true, "termination probability of tiny shadow rays (default 0.5)"},
+      {"--camera-rr", "camera_rr", true, "camera-ray roulette termination probability (default 0 = off)"},
+      {"--light-samples", "light_samples", true, "light samples per hit below --split-depth (default 1)"},
+      {"--split-depth", "split_depth", true, "light splitting applies at depths below this (default 1: first hit)"},
+      {"--bsdf-sampling", "bsdf_sampling", false, "uniform|cosine|bsdf (default bsdf)"},
+      {"--light-sampling", "light_sampling", false, "area|solid-angle (default area)"},
+      {"--light-select", "light_select", false, "uniform|power (default power)"},
+      {"--nee", "nee", false, "next-event estimation on|off (default on)"},
+      {"--mis", "mis", false, "none|balance|power (default power)"}};
+  std::map<std::string, std::string> estimatorValues;
+  std::string estimatorFile;
+  render->add_option("--estimator", estimatorFile, "JSON estimator file (the keys of the flags below)");
+  for (const auto& f : estimatorFlags) render->add_option(f.flag, estimatorValues[f.key], f.help);
   render->add_option("--seed", seed, "random seed")->capture_default_str();
   render->add_option("--camera", cameraIndex, "index of the glTF camera instance (default 0)");
   render->add_option("--look-from", lookFrom, "camera position x,y,z (overrides the file's camera)");
@@ -87,13 +114,30 @@ int main(int argc, char** argv) {
   try {
     if (render->parsed()) {
       if (spp <= 0) throw vkmc::Error("--spp must be between 1 and 16777216");
-      if (maxDepth < 0) throw vkmc::Error("--max-depth must be >= 0 (0 = no cap)");
       if ((render->count("--width") && width <= 0) || (render->count("--height") && height <= 0))
         throw vkmc::Error("--width and --height must be between 1 and 16384");
       if (seed < 0 || seed > 0xffffffffLL) throw vkmc::Error("--seed must be between 0 and 4294967295");
       if (render->count("--camera") && cameraIndex < 0) throw vkmc::Error("--camera must be >= 0");
       ro.spp = static_cast<uint32_t>(spp);
-      ro.maxDepth = static_cast<uint32_t>(maxDepth);
+      if (!estimatorFile.empty()) ro.estimator = vkmc::loadEstimatorFile(estimatorFile);
+      for (const auto& f : estimatorFlags) {
+        if (!render->count(f.flag)) continue;
+        const std::string& text = estimatorValues[f.key];
+        nlohmann::json one = nlohmann::json::object();
+        if (f.numeric) {
+          char* end = nullptr;
+          double v = std::strtod(text.c_str(), &end);
+          if (text.empty() || *end != '\0' || !std::isfinite(v)) throw vkmc::Error(std::string(f.flag) + " expects a number, got '" + text + "'");
+          one[f.key] = v;
+        } else {
+          one[f.key] = text;
+        }
+        try {
+          ro.estimator.applyJson(one);
+        } catch (const vkmc::Error& e) {
+          throw vkmc::Error(std::string(f.flag) + ": " + e.what());
+        }
+      }
       ro.seed = static_cast<uint32_t>(seed);
       if (width > 0) ro.width = static_cast<uint32_t>(width);
       if (height > 0) ro.height = static_cast<uint32_t>(height);

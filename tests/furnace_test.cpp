@@ -50,7 +50,7 @@ TEST(Furnace, EveryPixelIsTwoWithinFiveSigmaWithoutDepthCap) {
 TEST(Furnace, DepthCapTruncatesToTheGeometricSeries) {
   // D scattering events collect emission at D + 1 vertices: L = Le (1 - a^(D+1)) / (1 - a) = 1.75 for D = 2.
   RenderOptions o = furnaceOptions(64);
-  o.maxDepth = 2;
+  o.estimator.maxDepth = 2;
   RenderOutcome r = runRender(context(), o);
   glm::dvec3 mean = r.film.imageMean();
   glm::dvec3 var = r.film.imageMeanVarianceOfMean();

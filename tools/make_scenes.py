@@ -20,13 +20,20 @@ class Builder:
         self.meshes, self.materials, self.nodes, self.blob = [], [], [], bytearray()
         self.accessors, self.views, self.cameras = [], [], []
 
-    def material(self, name, base, emission=None, strength=1.0, double_sided=False):
-        m = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": list(base) + [1.0], "metallicFactor": 0.0,
-                                                    "roughnessFactor": 1.0}, "doubleSided": double_sided}
+    def material(self, name, base, emission=None, strength=1.0, double_sided=False, metallic=0.0, roughness=1.0,
+                 specular=0.0):
+        """specular: KHR_materials_specular specularFactor; 0 (the default here) is a pure Lambertian surface."""
+        m = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": list(base) + [1.0], "metallicFactor": metallic,
+                                                    "roughnessFactor": roughness}, "doubleSided": double_sided}
+        ext = {}
+        if specular != 1.0:
+            ext["KHR_materials_specular"] = {"specularFactor": specular}
         if emission:
             m["emissiveFactor"] = list(emission)
             if strength != 1.0:
-                m["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength": strength}}
+                ext["KHR_materials_emissive_strength"] = {"emissiveStrength": strength}
+        if ext:
+            m["extensions"] = ext
         self.materials.append(m)
         return len(self.materials) - 1
 
@@ -126,7 +133,7 @@ def cornell_box(path):
     b.mesh("tall_block", box([-0.33, 0.6, -0.3], [0.6, 1.2, 0.6], 17), white)
     b.mesh("light", quad([-0.24, 1.98, -0.19], [0.24, 1.98, -0.19], [0.24, 1.98, 0.19], [-0.24, 1.98, 0.19]), light)
     b.camera("camera", [0, 1, 3.94], [0, 1, 0], 39.3)
-    b.write(path, ["KHR_materials_emissive_strength"])
+    b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
 
 def icosphere(radius, levels, inward):
     t = (1 + math.sqrt(5)) / 2
@@ -154,13 +161,13 @@ def icosphere(radius, levels, inward):
     return tris
 
 def furnace(path, albedo, emission, name):
-    """A closed sphere seen from its centre; every surface has albedo a and emits Le on both sides, so the
-    radiance everywhere is L = Le / (1 - a), whatever the shape."""
+    """A closed sphere seen from its centre; every surface is Lambertian (specularFactor 0) with albedo a and
+    emits Le on both sides, so the radiance everywhere is L = Le / (1 - a), whatever the shape."""
     b = Builder()
     m = b.material(name, (albedo, albedo, albedo), emission=(1.0, 1.0, 1.0), strength=emission, double_sided=True)
     b.mesh("sphere", icosphere(1.0, 3, inward=True), m)
     b.camera("camera", [0, 0, 0], [0, 0, -1], 60.0)
-    b.write(path, ["KHR_materials_emissive_strength"] if emission != 1.0 else [])
+    b.write(path, ["KHR_materials_specular"] + (["KHR_materials_emissive_strength"] if emission != 1.0 else []))
 
 if __name__ == "__main__":
     os.makedirs("scenes", exist_ok=True)

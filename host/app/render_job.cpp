@@ -26,7 +26,8 @@ void validateOptions(const RenderOptions& o) {
   for (auto side : {o.width, o.height})
     if (side && (*side == 0 || *side > kMaxImageSide))
       throw Error("--width and --height must be between 1 and " + std::to_string(kMaxImageSide));
-  if (o.maxDepth > kMaxDepthLimit) throw Error("--max-depth must be at most " + std::to_string(kMaxDepthLimit) + " (0 = no cap)");
+  if (o.estimator.maxDepth > kMaxDepthLimit) throw Error("--max-depth must be at most " + std::to_string(kMaxDepthLimit) + " (0 = no cap)");
+  o.estimator.validate();
   if (o.lookFrom.has_value() != o.lookAt.has_value()) throw Error("--look-from and --look-at go together");
   if (!(o.fovDegrees > 0.0f && o.fovDegrees < 179.0f)) throw Error("--fov must be in (0, 179) degrees");
   for (int c = 0; c < 3; ++c)
@@ -88,7 +89,7 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
   out.bvh = bvh.stats;
 
   t = Clock::now();
-  GpuScene gpuScene(ctx, scene, bvh);
+  GpuScene gpuScene(ctx, scene, bvh, options.estimator.lightSelect == LightSelect::Uniform);
   out.setup.upload = since(t);
   out.sceneInfo = gpuScene.info();
 
@@ -96,7 +97,7 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
   settings.width = width;
   settings.height = height;
   settings.spp = options.spp;
-  settings.maxDepth = options.maxDepth;
+  settings.estimator = options.estimator;
   settings.seed = options.seed;
   settings.background = options.background;
   settings.camera = makeCameraRig(camera, width, height);
@@ -132,18 +133,12 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["mean"] = {mean.x, mean.y, mean.z};
   j["mean_variance"] = {var.x, var.y, var.z};
   j["device"] = r.device;
-  j["estimator"] = {{"max_depth", o.maxDepth},
-                    {"russian_roulette", "throughput"},
-                    {"roulette_depth", 3},
-                    {"roulette_max_survival", 0.95},
-                    {"nee", true},
-                    {"mis", "power"},
-                    {"bsdf_sampling", "cosine"},
-                    {"light_select", "power"},
-                    {"unbiased", o.maxDepth == 0},
-                    {"bias", o.maxDepth == 0 ? "none: paths end by Russian roulette only"
-                                             : "truncation: paths are cut after " + std::to_string(o.maxDepth) +
-                                                   " scattering events, so the image is biased low"}};
+  const EstimatorConfig& e = o.estimator;
+  j["estimator"] = e.toJson();
+  j["estimator"]["unbiased"] = e.unbiased();
+  j["estimator"]["bias"] = e.unbiased() ? "none: paths end by Russian roulette only"
+                                        : "truncation: paths are cut after " + std::to_string(e.maxDepth) +
+                                              " scattering events, so the image is biased low";
   j["scene_info"] = {{"triangles", r.sceneInfo.triangles},
                      {"emissive_triangles", r.sceneInfo.emissiveTriangles},
                      {"materials", r.sceneInfo.materials},
@@ -172,8 +167,7 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 "non-finite  %llu samples\n",
                 o.scenePath.c_str(), r.sceneInfo.triangles, r.sceneInfo.emissiveTriangles, r.device.c_str(), r.width, r.height,
                 o.spp, r.cameraName.c_str(),
-                o.maxDepth == 0 ? "NEE + cosine sampling, power-heuristic MIS, throughput roulette (unbiased)"
-                                : ("NEE + cosine sampling, MIS, depth cap " + std::to_string(o.maxDepth) + " (biased by truncation)").c_str(),
+                o.estimator.summary().c_str(),
                 s.seconds, s.gpuSeconds, r.setup.total(), r.setup.load, r.setup.bvh, r.setup.upload, r.setup.pipelines,
                 (unsigned long long)s.rays(), (unsigned long long)s.cameraRays, (unsigned long long)s.extensionRays,
                 (unsigned long long)s.shadowRays, s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z,

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "estimators/estimator_config.h"
 #include "render/film.h"
 #include "render/wavefront_renderer.h"
 #include "scene/scene.h"
@@ -17,7 +18,7 @@ struct RenderOptions {
   std::string scenePath;
   std::optional<uint32_t> width, height;  // default 256 wide, height from the camera's aspect (else 256)
   uint32_t spp = 64;
-  uint32_t maxDepth = 0;
+  EstimatorConfig estimator;  // includes the depth cap (max_depth)
   uint32_t seed = 1;
   std::optional<uint32_t> cameraIndex;
   std::optional<glm::vec3> lookFrom, lookAt;

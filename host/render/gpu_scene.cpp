@@ -35,7 +35,7 @@ vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, VkF
 
 }  // namespace
 
-GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh) {
+GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool uniformLightSelection) {
   const size_t n = scene.triangleCount();
   info_.triangles = static_cast<uint32_t>(n);
   info_.materials = static_cast<uint32_t>(scene.materials.size());
@@ -56,18 +56,19 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh) {
   }
   info_.emissiveTriangles = static_cast<uint32_t>(lightTriangles.size());
   std::vector<glm::uvec4> lightTexels;
-  std::vector<float> lightPdfArea(n, 0.0f);
+  std::vector<float> lightPmf(n, 0.0f);
   if (!lightTriangles.empty()) {
     // A light whose luminance is 0 but whose color is not (pure blue at tiny levels) still gets a chance.
     double total = 0.0;
     for (double w : power) total += w;
     for (double& w : power) w = std::max(w, total * 1e-12);
     for (double w : power) info_.emittedPower += w;
+    if (uniformLightSelection) std::fill(power.begin(), power.end(), 1.0);
     std::vector<AliasEntry> table = buildAliasTable(power);
     for (size_t k = 0; k < table.size(); ++k) {
       lightTexels.emplace_back(std::bit_cast<uint32_t>(table[k].probability), table[k].alias, lightTriangles[k],
                                std::bit_cast<uint32_t>(table[k].pmf));
-      lightPdfArea[lightTriangles[k]] = table[k].pmf / triangleArea[lightTriangles[k]];
+      lightPmf[lightTriangles[k]] = table[k].pmf;
     }
   } else {
     lightTexels.emplace_back(0u, 0u, 0u, 0u);  // bound but never read (SPEC_HAS_LIGHTS = 0)
@@ -78,7 +79,7 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh) {
   for (uint32_t i = 0; i < n; ++i) {
     uint32_t src = bvh.triangleOrder[i];
     for (int k = 0; k < 3; ++k) triTexels[3 * i + k] = glm::vec4(scene.positions[3 * src + k], 0.0f);
-    triTexels[3 * i + 1].w = lightPdfArea[i];
+    triTexels[3 * i + 1].w = lightPmf[i];
     infoTexels[i] = glm::uvec4(encodeOctahedral(scene.normals[3 * src]), encodeOctahedral(scene.normals[3 * src + 1]),
                                encodeOctahedral(scene.normals[3 * src + 2]), scene.materialIds[src]);
   }

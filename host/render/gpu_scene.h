@@ -21,7 +21,8 @@ struct GpuSceneInfo {
 
 class GpuScene {
  public:
-  GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh);
+  // uniformLightSelection: every emissive triangle equally likely; otherwise in proportion to emitted power.
+  GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool uniformLightSelection = false);
   const GpuSceneInfo& info() const { return info_; }
   const vk::Buffer& triangles() const { return triangles_; }
   const vk::Buffer& triangleInfo() const { return triangleInfo_; }

@@ -11,6 +11,7 @@
 #include <cstring>
 
 #include "../shaders/shared/layout.h"
+#include "../shaders/shared/sampling.h"
 #include "error.h"
 #include "spirv/accumulate_spv.h"
 #include "spirv/camera_rays_spv.h"
@@ -18,6 +19,7 @@
 #include "spirv/prepare_bounce_spv.h"
 #include "spirv/prepare_shadow_spv.h"
 #include "spirv/shade_spv.h"
+#include "spirv/shadow_atomic_spv.h"
 #include "spirv/shadow_spv.h"
 
 namespace vkmc {
@@ -46,6 +48,13 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
                 std::to_string(limits.maxStorageBufferRange >> 20) + " MiB");
   capacity_ = static_cast<uint32_t>(std::min<uint64_t>(pixels * settings.spp, settings.maxPathsPerPass));
   capacity_ = std::min<uint32_t>(capacity_, limits.maxStorageBufferRange / sizeof(gpu::PathState));
+  const EstimatorConfig& est = settings.estimator;
+  est.validate();
+  if (est.needsFloatAtomics() && !ctx.hasFloatAtomics())
+    throw Error("light_samples > 1 needs buffer float atomics (VK_EXT_shader_atomic_float), which this device lacks");
+  // Each path queues up to M shadow rays per bounce.
+  capacity_ = std::min<uint32_t>(capacity_, limits.maxStorageBufferRange / (sizeof(gpu::ShadowRay) * est.lightSamples));
+  capacity_ = std::max(capacity_, 1u);
 
   auto storage = [&](VkDeviceSize bytes, vk::MemoryKind kind = vk::MemoryKind::DeviceLocal, VkBufferUsageFlags extra = 0) {
     deviceBytes_ += bytes;
@@ -54,9 +63,11 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   paths_ = storage(uint64_t(capacity_) * sizeof(gpu::PathState));
   hits_ = storage(uint64_t(capacity_) * 16);
   queues_ = storage(uint64_t(capacity_) * 8);
-  shadowQueue_ = storage(uint64_t(capacity_) * sizeof(gpu::ShadowRay));
+  shadowQueue_ = storage(uint64_t(capacity_) * est.lightSamples * sizeof(gpu::ShadowRay));
   control_ = storage(sizeof(gpu::Control), vk::MemoryKind::HostVisible, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
   film_ = storage(filmBytes, vk::MemoryKind::HostVisible);
+  pixelEstimate_ = storage(pixels * sizeof(float), vk::MemoryKind::HostVisible);
+  std::memset(pixelEstimate_.mapped(), 0, pixels * sizeof(float));
 
   layout_ = std::make_unique<vk::KernelLayout>(ctx);
   layout_->bindTexel(BINDING_TRIANGLES, scene.triangles());
@@ -70,12 +81,12 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   layout_->bindStorage(BINDING_SHADOW_QUEUE, shadowQueue_);
   layout_->bindStorage(BINDING_CONTROL, control_);
   layout_->bindStorage(BINDING_FILM, film_);
+  layout_->bindStorage(BINDING_PIXEL_ESTIMATE, pixelEstimate_);
 
   auto start = Clock::now();
   std::vector<vk::SpecConstant> specs{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize},
-                                      {SPEC_MAX_DEPTH, settings.maxDepth},
-                                      {SPEC_RR_DEPTH, settings.rouletteDepth},
                                       {SPEC_HAS_LIGHTS, scene.info().emissiveTriangles > 0 ? 1u : 0u}};
+  for (const vk::SpecConstant& s : est.specConstants()) specs.push_back(s);
   auto make = [&](const char* name, std::span<const uint32_t> spirv) {
     return std::make_unique<vk::Kernel>(ctx, *layout_, name, spirv, specs);
   };
@@ -85,7 +96,7 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   kernels_->intersect = make("intersect", kSpirv_intersect);
   kernels_->shade = make("shade", kSpirv_shade);
   kernels_->prepareShadow = make("prepare_shadow", kSpirv_prepare_shadow);
-  kernels_->shadow = make("shadow", kSpirv_shadow);
+  kernels_->shadow = est.needsFloatAtomics() ? make("shadow", kSpirv_shadow_atomic) : make("shadow", kSpirv_shadow);
   kernels_->accumulate = make("accumulate", kSpirv_accumulate);
   timer_ = std::make_unique<vk::GpuTimer>(ctx, 2 * (8 + 5 * kFirstChunkBounces));
 
@@ -128,7 +139,8 @@ uint32_t WavefrontRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount,
 
   auto* control = static_cast<gpu::Control*>(control_.mapped());
   std::memset(control, 0, sizeof(gpu::Control));
-  const uint32_t depthCap = settings_.maxDepth == 0 ? UINT32_MAX : settings_.maxDepth + 1;  // +1: the last hit's emission
+  const uint32_t maxDepth = settings_.estimator.maxDepth;
+  const uint32_t depthCap = maxDepth == 0 ? UINT32_MAX : maxDepth + 1;  // +1: the last hit's emission
   uint32_t bounce = 0;
   bool first = true;
   while (true) {
@@ -178,6 +190,10 @@ void WavefrontRenderer::foldFilm(Film& film) {
     film.count[p] += static_cast<uint64_t>(px[p].sum.w);
     film.nonfinite[p] += static_cast<uint64_t>(px[p].sumSq.w);
   }
+  // The running pixel estimate that shadow-ray roulette compares tiny contributions against.
+  auto* estimate = static_cast<float*>(pixelEstimate_.mapped());
+  for (size_t p = 0; p < film.pixels(); ++p)
+    estimate[p] = static_cast<float>(gpu::luminance(glm::vec3(film.mean(p, 0), film.mean(p, 1), film.mean(p, 2))));
   std::memset(film_.mapped(), 0, film.pixels() * sizeof(gpu::FilmPixel));
 }
 

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "estimators/estimator_config.h"
 #include "render/film.h"
 #include "render/gpu_scene.h"
 #include "scene/camera_rig.h"
@@ -18,8 +19,7 @@ struct RenderSettings {
   uint32_t width = 256;
   uint32_t height = 256;
   uint32_t spp = 64;
-  uint32_t maxDepth = 0;       // scattering events; 0 = no cap, paths end by Russian roulette only (unbiased)
-  uint32_t rouletteDepth = 3;  // roulette from this many scattering events on
+  EstimatorConfig estimator;   // roulette, splitting, sampling, MIS, depth cap
   uint32_t seed = 1;
   glm::vec3 background{0.0f};
   CameraRig camera{};
@@ -61,7 +61,7 @@ class WavefrontRenderer {
   std::unique_ptr<vk::KernelLayout> layout_;
   std::unique_ptr<Kernels> kernels_;
   std::unique_ptr<vk::GpuTimer> timer_;
-  vk::Buffer paths_, hits_, queues_, shadowQueue_, control_, film_;
+  vk::Buffer paths_, hits_, queues_, shadowQueue_, control_, film_, pixelEstimate_;
   double pipelineSeconds_ = 0.0;
   uint64_t deviceBytes_ = 0;
 };

@@ -57,6 +57,24 @@ Context::Context(const ContextOptions& options) {
   }
   if (!found) throw Error("device has no compute queue");
 
+  // Float atomics (VK_EXT_shader_atomic_float) let split light samples add into one path; optional.
+  uint32_t extCount = 0;
+  vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extCount, nullptr);
+  std::vector<VkExtensionProperties> exts(extCount);
+  vkEnumerateDeviceExtensionProperties(physical_, nullptr, &extCount, exts.data());
+  bool hasAtomicExt = false;
+  for (const auto& e : exts) hasAtomicExt |= std::string(e.extensionName) == VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME;
+  VkPhysicalDeviceShaderAtomicFloatFeaturesEXT atomicFeatures{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_FLOAT_FEATURES_EXT};
+  if (hasAtomicExt) {
+    VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    f2.pNext = &atomicFeatures;
+    vkGetPhysicalDeviceFeatures2(physical_, &f2);
+    floatAtomics_ = atomicFeatures.shaderBufferFloat32AtomicAdd == VK_TRUE;
+  }
+  VkPhysicalDeviceShaderAtomicFloatFeaturesEXT enableAtomics{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_FLOAT_FEATURES_EXT};
+  enableAtomics.shaderBufferFloat32AtomicAdd = VK_TRUE;
+  const char* atomicExtName = VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME;
+
   float priority = 1.0f;
   VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   qci.queueFamilyIndex = queueFamily_;
@@ -65,6 +83,11 @@ Context::Context(const ContextOptions& options) {
   VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   dci.queueCreateInfoCount = 1;
   dci.pQueueCreateInfos = &qci;
+  if (floatAtomics_) {
+    dci.enabledExtensionCount = 1;
+    dci.ppEnabledExtensionNames = &atomicExtName;
+    dci.pNext = &enableAtomics;
+  }
   check(vkCreateDevice(physical_, &dci, nullptr, &device_), "vkCreateDevice");
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
 

@@ -28,6 +28,7 @@ class Context {
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   std::string deviceName() const { return properties_.deviceName; }
   bool hasTimestamps() const { return timestampBits_ > 0; }
+  bool hasFloatAtomics() const { return floatAtomics_; }  // shaderBufferFloat32AtomicAdd enabled
   double timestampPeriodNs() const { return properties_.limits.timestampPeriod; }
 
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) const;
@@ -44,6 +45,7 @@ class Context {
   VkQueue queue_ = VK_NULL_HANDLE;
   uint32_t queueFamily_ = 0;
   uint32_t timestampBits_ = 0;
+  bool floatAtomics_ = false;
   VkCommandPool pool_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
   VkPhysicalDeviceProperties properties_{};

@@ -9,6 +9,18 @@ layout(constant_id = SPEC_MAX_DEPTH) const uint kMaxDepth = 0u;
 layout(constant_id = SPEC_RR_DEPTH) const uint kRouletteDepth = 3u;
 layout(constant_id = SPEC_HAS_LIGHTS) const uint kHasLights = 1u;
 layout(constant_id = SPEC_ANY_HIT) const uint kAnyHit = 0u;
+layout(constant_id = SPEC_NEE) const uint kNee = 1u;
+layout(constant_id = SPEC_MIS) const uint kMis = 2u;
+layout(constant_id = SPEC_BSDF_SAMPLING) const uint kBsdfSampling = 2u;
+layout(constant_id = SPEC_LIGHT_SAMPLING) const uint kLightSampling = 0u;
+layout(constant_id = SPEC_RR_MODE) const uint kRouletteMode = 2u;
+layout(constant_id = SPEC_RR_Q) const float kRouletteQ = 0.5;
+layout(constant_id = SPEC_RR_C) const float kRouletteC = 0.0;
+layout(constant_id = SPEC_LIGHT_SAMPLES) const uint kLightSamples = 1u;
+layout(constant_id = SPEC_SPLIT_DEPTH) const uint kSplitDepth = 1u;
+layout(constant_id = SPEC_SHADOW_RR_THRESHOLD) const float kShadowRouletteThreshold = 0.0;
+layout(constant_id = SPEC_SHADOW_RR_Q) const float kShadowRouletteQ = 0.5;
+layout(constant_id = SPEC_CAMERA_RR_Q) const float kCameraRouletteQ = 0.0;
 
 layout(push_constant, std430) uniform Push { PushConstants pc; };
 
@@ -25,6 +37,7 @@ layout(binding = BINDING_RAY_QUEUES, std430) buffer RayQueues { uint rayQueues[]
 layout(binding = BINDING_SHADOW_QUEUE, std430) buffer ShadowQueue { ShadowRay shadowRays[]; };
 layout(binding = BINDING_CONTROL, std430) buffer ControlBuffer { Control control; };
 layout(binding = BINDING_FILM, std430) buffer Film { FilmPixel film[]; };
+layout(binding = BINDING_PIXEL_ESTIMATE, std430) readonly buffer PixelEstimate { float pixelEstimate[]; };
 
 // Indirect dispatches may round up, and big ones use a 2D grid.
 uint invocationIndex() {

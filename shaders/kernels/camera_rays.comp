@@ -1,12 +1,13 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Stage 1: one camera ray per path (one sample of one pixel), all pushed onto ray queue 0.
+// Stage 1: one camera ray per path (one sample of one pixel), pushed onto ray queue 0.
 // Path id = sample * pixelCount + pixel offset, so the accumulate stage can walk one pixel's samples.
+// Camera-ray roulette (the lecture's bad example): with probability q a sample is 0, survivors weigh 1/(1-q).
 #include "common.glsl"
 
 void main() {
   uint id = invocationIndex();
-  if (id == 0u) control.counts.x = pc.pathCount;
+  if (kCameraRouletteQ == 0.0 && id == 0u) control.counts.x = pc.pathCount;
   if (id >= pc.pathCount) return;
   uint pixel = pc.firstPixel + id % pc.pixelCount;
   uint key = pathKey(pc.seed, pixel, pc.sampleIndex + id / pc.pixelCount);
@@ -28,6 +29,13 @@ void main() {
   p.throughput = vec4(1.0, 1.0, 1.0, 0.0);
   p.radiance = vec4(0.0);
   p.info = uvec4(pixel, key, 0u, 0u);
+  if (kCameraRouletteQ > 0.0) {
+    bool survives = randomUnit(key, kDimCameraRoulette) >= kCameraRouletteQ;
+    p.throughput.rgb = vec3(survives ? 1.0 / (1.0 - kCameraRouletteQ) : 0.0);
+    paths[id] = p;
+    if (survives) rayQueues[atomicAdd(control.counts.x, 1u)] = id;
+    return;
+  }
   paths[id] = p;
   rayQueues[id] = id;
 }

@@ -1,15 +1,20 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Stage 3: at each hit, emission (MIS-weighted for BSDF-sampled rays), next-event estimation with one light
-// sample (shadow ray queued), cosine-weighted continuation, Russian roulette on throughput.
-// Escaped rays gather the uniform background. Lambertian surfaces; the glTF BRDF is its own issue.
+// Stage 3: at each hit, the estimator chosen by specialization constants:
+//   emission, MIS-weighted against light sampling for BSDF-sampled rays;
+//   next-event estimation with M light samples (M > 1 splits the first kSplitDepth bounces), each queued as a
+//   shadow ray, optionally rouletted when its contribution is tiny against the pixel's running estimate;
+//   the BSDF continuation (uniform, cosine or glTF BRDF sampling) and Russian roulette on it.
+// Escaped rays gather the uniform background.
 #include "common.glsl"
+#include "bsdf_gltf.h"
+#include "light_sampling.h"
 
 struct SurfacePoint {
   vec3 p;
   vec3 pError;
   vec3 ng;  // geometric normal, facing the incoming ray's side
-  vec3 ns;  // shading normal, same side as ng
+  mat3 frame;  // shading frame; column 2 is the shading normal, on the side of ng
   bool frontFace;
 };
 
@@ -27,14 +32,50 @@ SurfacePoint surfaceAt(uint tri, vec2 b12, vec3 wo) {
   vec3 n = b.x * decodeOctahedral(unpackSnorm2x16(info.x)) + b.y * decodeOctahedral(unpackSnorm2x16(info.y)) +
            b.z * decodeOctahedral(unpackSnorm2x16(info.z));
   float len = length(n);
-  s.ns = len > 0.0 ? n / len : s.ng;
-  if (dot(s.ns, s.ng) < 0.0) s.ns = -s.ns;
+  vec3 ns = len > 0.0 ? n / len : s.ng;
+  if (dot(ns, s.ng) < 0.0) ns = -ns;
+  s.frame = basisFromNormal(ns);
   return s;
 }
 
 bool emitsToward(Material m, bool frontFace) {
   return (frontFace || (floatBitsToUint(m.emission.w) & kMaterialDoubleSided) != 0u) &&
          maxComponent(m.emission.rgb) > 0.0;
+}
+
+GltfMaterial gltfMaterial(Material m) { return makeGltfMaterial(m.baseColor.rgb, m.params.x, m.params.y, m.params.z); }
+
+// The BSDF-sampling technique and its pdf (local frame).
+vec3 sampleTechnique(GltfMaterial gm, vec3 wo, vec3 u) {
+  if (kBsdfSampling == kBsdfSamplingUniform) return sampleUniformHemisphere(u.yz);
+  if (kBsdfSampling == kBsdfSamplingCosine) return sampleCosineHemisphere(u.yz);
+  return sampleGltfBsdf(gm, wo, u);
+}
+float techniquePdf(GltfMaterial gm, vec3 wo, vec3 wi) {
+  if (wi.z <= 0.0) return 0.0;
+  if (kBsdfSampling == kBsdfSamplingUniform) return uniformHemispherePdf(wi.z);
+  if (kBsdfSampling == kBsdfSamplingCosine) return cosineHemispherePdf(wi.z);
+  return gltfBsdfPdf(gm, wo, wi);
+}
+
+float misWeight(float pdfThis, float pdfOther) {
+  if (kMis == kMisBalance) return balanceHeuristic(pdfThis, pdfOther);
+  if (kMis == kMisPower) return powerHeuristic(pdfThis, pdfOther);
+  return 1.0;
+}
+
+uint lightSamplesAt(uint depth) { return depth < kSplitDepth ? kLightSamples : 1u; }
+
+// Solid-angle pdf with which light sampling from p picks this point of emitter `tri`; pmf = selection pmf.
+float lightPdf(uint tri, float pmf, vec3 p, float dist2, float cosLight) {
+  vec3 v0, v1, v2;
+  triangleVertices(tri, v0, v1, v2);
+  if (kLightSampling == kLightSamplingSolidAngle) {
+    float omega = triangleSolidAngle(p, v0, v1, v2);
+    if (useSphericalSampling(omega)) return pmf / omega;
+  }
+  float area = 0.5 * length(cross(v1 - v0, v2 - v0));
+  return pmf * dist2 / (area * cosLight);
 }
 
 // Alias-table pick of one emissive triangle: x = triangle, y = pmf bits.
@@ -48,35 +89,61 @@ uvec2 selectLight(float u) {
   return uvec2(chosen.z, chosen.w);
 }
 
-void queueLightSample(uint id, PathState path, SurfacePoint s, vec3 albedo) {
+void queueLightSample(uint id, PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo, uint j, uint samples) {
   uint depth = path.info.z;
   uint key = path.info.y;
-  uvec2 light = selectLight(randomUnit(key, bounceDim(depth, kDimLightSelect)));
+  uvec2 light = selectLight(randomUnit(key, lightDim(depth, j, 0u)));
+  float pmf = uintBitsToFloat(light.y);
   vec3 v0, v1, v2;
   triangleVertices(light.x, v0, v1, v2);
-  vec3 b = sampleUniformTriangle(vec2(randomUnit(key, bounceDim(depth, kDimLightPoint)),
-                                      randomUnit(key, bounceDim(depth, kDimLightPoint + 1u))));
-  vec3 pl = b.x * v0 + b.y * v1 + b.z * v2;
   vec3 cr = cross(v1 - v0, v2 - v0);
   float area = 0.5 * length(cr);
+  if (!(area > 0.0)) return;
   vec3 nl = cr / (2.0 * area);
+  vec2 u = vec2(randomUnit(key, lightDim(depth, j, 1u)), randomUnit(key, lightDim(depth, j, 2u)));
+  vec3 pl;
+  vec3 plError;
+  float pdf = 0.0;
+  bool spherical = false;
+  if (kLightSampling == kLightSamplingSolidAngle) {
+    float omega = triangleSolidAngle(s.p, v0, v1, v2);
+    spherical = useSphericalSampling(omega);
+    if (spherical) {
+      vec3 w = sampleSphericalTriangle(s.p, v0, v1, v2, u, omega);
+      pl = pointOnTrianglePlane(s.p, w, v0, nl);
+      plError = gammaBound(16.0) * (abs(pl) + abs(v0) + abs(v1) + abs(v2));
+      pdf = pmf / omega;
+    }
+  }
+  if (!spherical) {
+    vec3 b = sampleUniformTriangle(u);
+    pl = b.x * v0 + b.y * v1 + b.z * v2;
+    plError = barycentricError(b, v0, v1, v2);
+  }
   vec3 toLight = pl - s.p;
   float dist2 = dot(toLight, toLight);
-  if (!(dist2 > 0.0) || !(area > 0.0)) return;
+  if (!(dist2 > 0.0)) return;
   vec3 wi = toLight * inversesqrt(dist2);
   float cosLight = dot(nl, -wi);
   Material lm = materials[texelFetch(triangleInfo, int(light.x)).w];
   if (!emitsToward(lm, cosLight > 0.0)) return;
   cosLight = abs(cosLight);
-  float cosSurface = dot(s.ns, wi);
-  if (cosSurface <= 0.0 || dot(s.ng, wi) <= 0.0 || cosLight <= 0.0) return;
-  float lightPdf = uintBitsToFloat(light.y) / area * dist2 / cosLight;
-  float bsdfPdf = cosineHemispherePdf(cosSurface);
-  vec3 f = albedo * kInvPi;
-  vec3 contribution = path.throughput.rgb * f * lm.emission.rgb * (cosSurface * powerHeuristic(lightPdf, bsdfPdf) / lightPdf);
-  if (maxComponent(contribution) <= 0.0) return;
+  if (cosLight <= 0.0 || dot(s.ng, wi) <= 0.0) return;
+  if (!spherical) pdf = pmf * dist2 / (area * cosLight);
+  vec3 wiLocal = wi * s.frame;
+  vec3 woLocal = wo * s.frame;
+  if (wiLocal.z <= 0.0 || !(pdf > 0.0)) return;
+  vec3 f = gltfBsdfEval(gm, woLocal, wiLocal);
+  // MIS over one BSDF sample and `samples` light samples: the light technique's pdf counts samples times.
+  float weight = kMis == kMisNone ? 1.0 : misWeight(float(samples) * pdf, techniquePdf(gm, woLocal, wiLocal));
+  vec3 contribution = path.throughput.rgb * f * lm.emission.rgb * (wiLocal.z * weight / (pdf * float(samples)));
+  if (!(maxComponent(contribution) > 0.0)) return;
+  if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * pixelEstimate[path.info.x]) {
+    if (randomUnit(key, lightDim(depth, j, 3u)) < kShadowRouletteQ) return;
+    contribution /= 1.0 - kShadowRouletteQ;
+  }
   vec3 origin = offsetRayOrigin(s.p, s.pError, s.ng, wi);
-  vec3 target = offsetRayOrigin(pl, barycentricError(b, v0, v1, v2), nl, -wi);
+  vec3 target = offsetRayOrigin(pl, plError, nl, -wi);
   uint slot = atomicAdd(control.counts.z, 1u);
   shadowRays[slot].origin = vec4(origin, 1.0 - 1e-4);
   shadowRays[slot].direction = vec4(target - origin, uintBitsToFloat(id));
@@ -97,33 +164,59 @@ void main() {
   }
   SurfacePoint s = surfaceAt(tri, hit.yz, wo);
   Material m = materials[texelFetch(triangleInfo, int(tri)).w];
+  uint depth = path.info.z;
 
   if (emitsToward(m, s.frontFace)) {
     float weight = 1.0;
-    if (kHasLights != 0u && path.direction.w > 0.0) {
-      float lightPdfArea = texelFetch(triangles, int(3u * tri + 1u)).w;
-      float lightPdf = lightPdfArea * hit.x * hit.x / max(dot(s.ng, wo), 1e-30);
-      weight = powerHeuristic(path.direction.w, lightPdf);
+    bool bsdfSampled = path.direction.w > 0.0;
+    if (kHasLights != 0u && kNee != 0u && bsdfSampled) {
+      if (kMis == kMisNone) {
+        weight = 0.0;  // light sampling alone accounts for direct light
+      } else {
+        float pmf = texelFetch(triangles, int(3u * tri + 1u)).w;
+        float cosLight = max(dot(s.ng, wo), 1e-30);
+        float pl = lightPdf(tri, pmf, path.origin.xyz, hit.x * hit.x, cosLight);
+        weight = misWeight(path.direction.w, float(lightSamplesAt(depth - 1u)) * pl);
+      }
     }
     path.radiance.rgb += path.throughput.rgb * m.emission.rgb * weight;
   }
 
-  uint depth = path.info.z;
   bool alive = kMaxDepth == 0u || depth < kMaxDepth;
-  vec3 albedo = m.baseColor.rgb;
-  if (alive && kHasLights != 0u) queueLightSample(id, path, s, albedo);
+  GltfMaterial gm = gltfMaterial(m);
+  vec3 woLocal = wo * s.frame;
+  if (alive && kHasLights != 0u && kNee != 0u) {
+    uint samples = lightSamplesAt(depth);
+    for (uint j = 0u; j < samples; ++j) queueLightSample(id, path, s, gm, wo, j, samples);
+  }
 
   uint key = path.info.y;
-  vec3 local = sampleCosineHemisphere(vec2(randomUnit(key, bounceDim(depth, kDimBsdf)),
-                                           randomUnit(key, bounceDim(depth, kDimBsdf + 1u))));
-  vec3 wi = basisFromNormal(s.ns) * local;
-  float pdf = cosineHemispherePdf(local.z);
-  alive = alive && dot(wi, s.ng) > 0.0 && pdf > 0.0 && maxComponent(albedo) > 0.0;
-  path.throughput.rgb *= albedo;  // f * cos / pdf for a Lambertian surface sampled by cosine
-  if (alive && depth + 1u >= kRouletteDepth) {
-    float survival = min(maxComponent(path.throughput.rgb), kRouletteMaxSurvival);
-    if (randomUnit(key, bounceDim(depth, kDimRoulette)) >= survival) alive = false;
-    else path.throughput.rgb /= survival;
+  vec3 u = vec3(randomUnit(key, bounceDim(depth, kDimBsdfLobe)), randomUnit(key, bounceDim(depth, kDimBsdf)),
+                randomUnit(key, bounceDim(depth, kDimBsdf + 1u)));
+  vec3 wiLocal = sampleTechnique(gm, woLocal, u);
+  float pdf = techniquePdf(gm, woLocal, wiLocal);
+  vec3 wi = s.frame * wiLocal;
+  alive = alive && pdf > 0.0 && wiLocal.z > 0.0 && dot(wi, s.ng) > 0.0;
+  if (alive) path.throughput.rgb *= gltfBsdfEval(gm, woLocal, wiLocal) * (wiLocal.z / pdf);
+  alive = alive && maxComponent(path.throughput.rgb) > 0.0;
+
+  if (alive && depth + 1u >= kRouletteDepth && kRouletteMode != kRouletteNone) {
+    float r = randomUnit(key, bounceDim(depth, kDimRoulette));
+    if (kRouletteMode == kRouletteFixed) {
+      // F' = (F - q c) / (1 - q) with probability 1 - q, else c: unbiased for any c.
+      vec3 c = path.throughput.rgb * kRouletteC;
+      if (r < kRouletteQ) {
+        path.radiance.rgb += c;
+        alive = false;
+      } else {
+        path.radiance.rgb -= c * (kRouletteQ / (1.0 - kRouletteQ));
+        path.throughput.rgb /= 1.0 - kRouletteQ;
+      }
+    } else {
+      float survival = min(maxComponent(path.throughput.rgb), kRouletteMaxSurvival);
+      if (r >= survival) alive = false;
+      else path.throughput.rgb /= survival;
+    }
   }
   if (alive) {
     path.origin = vec4(offsetRayOrigin(s.p, s.pError, s.ng, wi), 0.0);

@@ -1,7 +1,11 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Stage 4: any-hit visibility of each light sample; an unoccluded one adds its contribution to its path.
-// Each path has at most one shadow ray per bounce, so the add needs no atomic.
+// With one light sample per path and bounce a plain add is race-free; splitting (several samples per path)
+// builds the VKMC_FLOAT_ATOMICS variant, which adds atomically.
+#ifdef VKMC_FLOAT_ATOMICS
+#extension GL_EXT_shader_atomic_float : require
+#endif
 #include "common.glsl"
 #include "traversal.glsl"
 
@@ -12,5 +16,11 @@ void main() {
   vec4 h = traceRay(s.origin.xyz, s.direction.xyz, s.origin.w, true);
   if (floatBitsToUint(h.w) != kMissPrimitive) return;
   uint id = floatBitsToUint(s.direction.w);
+#ifdef VKMC_FLOAT_ATOMICS
+  atomicAdd(paths[id].radiance.r, s.contribution.r);
+  atomicAdd(paths[id].radiance.g, s.contribution.g);
+  atomicAdd(paths[id].radiance.b, s.contribution.b);
+#else
   paths[id].radiance.rgb += s.contribution.rgb;
+#endif
 }

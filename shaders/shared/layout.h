@@ -4,7 +4,7 @@
 #include "glsl_cpp.h"
 
 // Descriptor bindings of the single set used by every kernel.
-#define BINDING_TRIANGLES 0       // samplerBuffer RGBA32F, 3 texels per triangle: v0|unused, v1|lightPdfArea, v2|unused
+#define BINDING_TRIANGLES 0       // samplerBuffer RGBA32F, 3 texels per triangle: v0|unused, v1|light pmf, v2|unused
 #define BINDING_TRIANGLE_INFO 1   // usamplerBuffer RGBA32UI, 1 texel per triangle: octahedral n0, n1, n2, material id
 #define BINDING_BVH_NODES 2       // samplerBuffer RGBA32F, 4 texels per node (two child boxes, see BvhNode)
 #define BINDING_LIGHTS 3          // usamplerBuffer RGBA32UI, 1 texel per emissive triangle: alias entry
@@ -17,7 +17,8 @@
 #define BINDING_FILM 10           // FilmPixel[]
 #define BINDING_TEST_RAYS 11      // TestRay[] (trace_rays kernel only)
 #define BINDING_TEST_HITS 12      // vec4[] (trace_rays kernel only)
-#define BINDING_COUNT 13
+#define BINDING_PIXEL_ESTIMATE 13 // float[]: running luminance estimate per pixel (shadow-ray roulette)
+#define BINDING_COUNT 14
 
 // Specialization constant ids.
 #define SPEC_WORKGROUP_SIZE 0
@@ -25,6 +26,19 @@
 #define SPEC_RR_DEPTH 2           // first depth at which roulette applies
 #define SPEC_HAS_LIGHTS 3         // 0: no emissive triangles, NEE code removed
 #define SPEC_ANY_HIT 4            // trace_rays: 1 = any-hit query
+// Estimator settings (see host/estimators/estimator_config.h, the one place that sets them).
+#define SPEC_NEE 5                // 0/1: next-event estimation
+#define SPEC_MIS 6                // kMis*
+#define SPEC_BSDF_SAMPLING 7      // kBsdfSampling*
+#define SPEC_LIGHT_SAMPLING 8     // kLightSampling*
+#define SPEC_RR_MODE 9            // kRoulette*
+#define SPEC_RR_Q 10              // float: fixed termination probability q
+#define SPEC_RR_C 11              // float: fixed-mode constant c returned on termination
+#define SPEC_LIGHT_SAMPLES 12     // M light samples per hit at depths below SPEC_SPLIT_DEPTH
+#define SPEC_SPLIT_DEPTH 13
+#define SPEC_SHADOW_RR_THRESHOLD 14  // float: 0 = off
+#define SPEC_SHADOW_RR_Q 15          // float: termination probability of a tiny shadow ray
+#define SPEC_CAMERA_RR_Q 16          // float: 0 = off
 
 VKMC_BEGIN_NAMESPACE
 
@@ -34,6 +48,10 @@ VKMC_CONST uint kMaterialDoubleSided = 1u;   // Material.emission.w bit
 VKMC_CONST uint kCameraPerspective = 0u;
 VKMC_CONST uint kCameraOrthographic = 1u;
 VKMC_CONST float kRouletteMaxSurvival = 0.95f; // < 1: every path ends with probability 1, no hidden depth cap
+VKMC_CONST uint kMisNone = 0u, kMisBalance = 1u, kMisPower = 2u;
+VKMC_CONST uint kBsdfSamplingUniform = 0u, kBsdfSamplingCosine = 1u, kBsdfSamplingFull = 2u;
+VKMC_CONST uint kLightSamplingArea = 0u, kLightSamplingSolidAngle = 1u;
+VKMC_CONST uint kRouletteNone = 0u, kRouletteFixed = 1u, kRouletteThroughput = 2u, kRouletteEfficiency = 3u;
 
 // A path between stages. direction.w is the solid-angle pdf of the sampling that produced the ray
 // (0 for camera rays: their emission hits are never MIS-weighted).

@@ -5,12 +5,17 @@
 #include "glsl_cpp.h"
 VKMC_BEGIN_NAMESPACE
 
-VKMC_CONST uint kDimsCamera = 2u;     // pixel jitter
-VKMC_CONST uint kDimsPerBounce = 8u;  // light select, light point (2), bsdf (2), roulette, spare (2)
-VKMC_CONST uint kDimLightSelect = 0u;
-VKMC_CONST uint kDimLightPoint = 1u;
-VKMC_CONST uint kDimBsdf = 3u;
-VKMC_CONST uint kDimRoulette = 5u;
+VKMC_CONST uint kDimsCamera = 3u;     // pixel jitter (2), camera-ray roulette
+VKMC_CONST uint kDimCameraRoulette = 2u;  // within the camera block
+VKMC_CONST uint kDimsPerBounce = 8u;  // bsdf lobe, bsdf (2), roulette, shadow roulette, then light samples
+VKMC_CONST uint kDimBsdfLobe = 0u;
+VKMC_CONST uint kDimBsdf = 1u;
+VKMC_CONST uint kDimRoulette = 3u;
+VKMC_CONST uint kDimShadowRoulette = 4u;
+VKMC_CONST uint kDimLightSelect = 5u;
+VKMC_CONST uint kDimLightPoint = 6u;  // and 7
+// Light sample j > 0 of a split bounce takes its three dimensions from a separate stream.
+VKMC_CONST uint kDimsSplitBase = 0x40000000u;
 
 // lowbias32 (Chris Wellons): a well-mixed 32-bit permutation.
 uint hashU32(uint x) {
@@ -32,6 +37,13 @@ VKMC_FN float randomUnit(uint key, uint dim) {
 }
 
 VKMC_FN uint bounceDim(uint depth, uint offset) { return kDimsCamera + depth * kDimsPerBounce + offset; }
+
+// Dimension `offset` (0: light select, 1-2: point, 3: shadow roulette) of light sample j at a bounce: sample 0
+// uses the bounce's block, the others a disjoint stream, so splitting leaves sample 0 unchanged.
+VKMC_FN uint lightDim(uint depth, uint sampleIndex, uint offset) {
+  if (sampleIndex == 0u) return offset < 3u ? bounceDim(depth, kDimLightSelect + offset) : bounceDim(depth, kDimShadowRoulette);
+  return kDimsSplitBase + (depth * 4096u + sampleIndex) * 4u + offset;
+}
 
 VKMC_END_NAMESPACE
 #endif

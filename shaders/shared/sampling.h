@@ -30,6 +30,16 @@ VKMC_FN vec3 sampleCosineHemisphere(vec2 u) {
 }
 VKMC_FN float cosineHemispherePdf(float cosTheta) { return max(cosTheta, 0.0f) * kInvPi; }
 
+VKMC_FN vec3 sampleUniformHemisphere(vec2 u) {
+  float z = u.x;
+  float r = sqrt(max(0.0f, 1.0f - z * z));
+  float phi = 2.0f * kPi * u.y;
+  return vec3(r * cos(phi), r * sin(phi), z);
+}
+VKMC_FN float uniformHemispherePdf(float cosTheta) { return cosTheta > 0.0f ? 0.5f * kInvPi : 0.0f; }
+
+VKMC_FN float balanceHeuristic(float pdfA, float pdfB) { return pdfA + pdfB > 0.0f ? pdfA / (pdfA + pdfB) : 0.0f; }
+
 // Barycentrics (b0, b1, b2) uniform over the triangle's area; pdf = 1 / area.
 VKMC_FN vec3 sampleUniformTriangle(vec2 u) {
   float su = sqrt(u.x);
