@@ -9,6 +9,7 @@
 #include "bvh/bvh.h"
 
 using namespace vkmc;
+using glm::vec3;
 
 namespace {
 
@@ -132,5 +133,22 @@ TEST(Geometry, OffsetOriginsNeverReHitTheirSurfaceAtAnyScale) {
       }
       EXPECT_EQ(selfHits, 0) << "scale " << scale << " shift " << shift;
     }
+  }
+}
+
+TEST(Geometry, BarycentricsAreRightFromBothSides) {
+  // The hit point rebuilt from the returned barycentrics must be the ray's point at t, front and back.
+  vec3 v0(0.0f, 0.0f, 0.0f), v1(1.0f, 0.0f, 0.0f), v2(0.0f, 1.0f, 0.0f);
+  for (float side : {1.0f, -1.0f}) {
+    vec3 o(0.2f, 0.3f, 2.0f * side);
+    vec3 d = normalize(vec3(0.1f, 0.05f, -side));
+    vec3 h = gpu::intersectTriangle(gpu::makeRayShear(o, d), v0, v1, v2, 1e30f);
+    ASSERT_GT(h.x, 0.0f);
+    vec3 p = (1.0f - h.y - h.z) * v0 + h.y * v1 + h.z * v2;
+    vec3 q = o + h.x * d;
+    EXPECT_NEAR(p.x, q.x, 1e-5f) << "side " << side;
+    EXPECT_NEAR(p.y, q.y, 1e-5f) << "side " << side;
+    EXPECT_GE(h.y, 0.0f);
+    EXPECT_GE(h.z, 0.0f);
   }
 }

@@ -53,9 +53,11 @@ VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax
   float det = U + V + W;
   if (det == 0.0f) return miss;
   float T = U * dot(r.row2, A) + V * dot(r.row2, B) + W * dot(r.row2, C);
-  if (det < 0.0f) {
+  if (det < 0.0f) {  // seen from the back: all of U, V, W, det and T flip sign together
     T = -T;
     det = -det;
+    V = -V;
+    W = -W;
   }
   if (T <= 0.0f || T >= tMax * det) return miss;
   float inv = 1.0f / det;
