@@ -169,9 +169,64 @@ def furnace(path, albedo, emission, name):
     b.camera("camera", [0, 0, 0], [0, 0, -1], 60.0)
     b.write(path, ["KHR_materials_specular"] + (["KHR_materials_emissive_strength"] if emission != 1.0 else []))
 
+def translate(tris, offset):
+    return [tuple([c + o for c, o in zip(v, offset)] for v in t) for t in tris]
+
+def veach_mis(path):
+    """Veach's MIS test (thesis fig. 9.2): four glossy metal plates (GGX roughness 0.5, 0.25, 0.1, 0.02 from
+    the bottom up) reflect a row of four spherical lights of equal power whose radii span 30x (0.03 .. 0.9).
+    Each plate's normal is the half vector between the camera and the light row, so every plate shows all
+    four reflections. Light sampling wins on rough plates with small lights, BSDF sampling on sharp plates
+    with big lights; MIS should be close to the better of the two on every plate. As fractions of the image height (measured on
+    a render): lights 0.11-0.34, plates 0.44-0.50 (roughness 0.02), 0.58-0.64 (0.1), 0.70-0.80 (0.25),
+    0.86-0.95 (0.5)."""
+    def n3(v):
+        l = math.sqrt(sum(c * c for c in v))
+        return [c / l for c in v]
+    cam, light_row = [0.0, 2.0, 15.0], [0.0, 0.5, -1.5]
+    b = Builder()
+    radii = [0.03, 0.1, 0.3, 0.9]
+    total_power = 100.0
+    for i, r in enumerate(radii):
+        # Equal power: Le * (4 pi r^2) * pi is the same for every light, so Le ~ 1 / r^2.
+        le = total_power / 4 / (4 * math.pi * r * r * math.pi)
+        m = b.material(f"light_{i}", (0, 0, 0), emission=(1.0, 1.0, 1.0), strength=le)
+        b.mesh(f"light_{i}", translate(icosphere(r, 2, inward=False), (-3.75 + 2.5 * i, light_row[1], light_row[2])), m)
+    plates = [(-2.79, 5.0, 0.5), (-2.328, 3.8, 0.25), (-1.76, 2.6, 0.1), (-1.072, 1.4, 0.02)]  # (y, z, roughness)
+    for i, (y, z, rough) in enumerate(plates):
+        m = b.material(f"plate_{i}", (0.7, 0.7, 0.7), metallic=1.0, roughness=rough, specular=1.0)
+        c = [0.0, y, z]
+        n = n3([a + bb for a, bb in zip(n3(sub(cam, c)), n3(sub(light_row, c)))])
+        d = n3(cross(n, [1.0, 0.0, 0.0]))
+        corner = lambda sx, sd: [c[k] + sx * 4.0 * (1.0 if k == 0 else 0.0) + sd * 0.5 * d[k] for k in range(3)]
+        b.mesh(f"plate_{i}", quad(corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1)), m)
+    b.camera("camera", cam, [0.0, -1.0, 2.5], 30.0, aspect=1.5)
+    b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
+
+def many_lights(path):
+    """A white Lambertian room lit by 64 small square lights on the ceiling whose powers span 1e4 (one bright
+    light, many dim ones): power-proportional light selection should beat uniform selection by a wide margin."""
+    b = Builder()
+    white = b.material("white", (0.7, 0.7, 0.7))
+    b.mesh("floor", quad([-2, 0, -2], [-2, 0, 2], [2, 0, 2], [2, 0, -2]), white)
+    b.mesh("back", quad([-2, 0, -2], [2, 0, -2], [2, 2, -2], [-2, 2, -2]), white)
+    b.mesh("ceiling", quad([-2, 2, -2], [2, 2, -2], [2, 2, 2], [-2, 2, 2]), white)
+    s = 0.06
+    for i in range(8):
+        for j in range(8):
+            k = i * 8 + j
+            strength = 400.0 if k == 27 else 0.04 * (1 + (k % 5))
+            m = b.material(f"light_{k}", (0, 0, 0), emission=(1.0, 0.9, 0.8), strength=strength)
+            x, z = -1.75 + 0.5 * i, -1.75 + 0.5 * j
+            b.mesh(f"light_{k}", quad([x - s, 1.99, z - s], [x + s, 1.99, z - s], [x + s, 1.99, z + s], [x - s, 1.99, z + s]), m)
+    b.camera("camera", [0, 1.0, 5.5], [0, 0.8, 0], 45.0)
+    b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
+
 if __name__ == "__main__":
     os.makedirs("scenes", exist_ok=True)
     cornell_box("scenes/cornell_box.gltf")
     furnace("scenes/furnace.gltf", 0.5, 1.0, "furnace_albedo_0.5")
     furnace("scenes/furnace_stiff.gltf", 0.99, 1.0, "furnace_albedo_0.99")
-    print("wrote scenes/cornell_box.gltf, scenes/furnace.gltf, scenes/furnace_stiff.gltf")
+    veach_mis("scenes/veach_mis.gltf")
+    many_lights("scenes/many_lights.gltf")
+    print("wrote scenes/cornell_box.gltf, furnace.gltf, furnace_stiff.gltf, veach_mis.gltf, many_lights.gltf")

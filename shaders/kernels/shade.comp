@@ -190,6 +190,12 @@ void main() {
     for (uint j = 0u; j < samples; ++j) queueLightSample(id, path, s, gm, wo, j, samples);
   }
 
+  // With light sampling alone (NEE without MIS) the vertex at the depth cap only adds emission, which it
+  // ignores: the continuation ray would be traced for nothing.
+  bool lastVertexIsUseless = kMaxDepth > 0u && depth + 1u >= kMaxDepth && kNee != 0u && kMis == kMisNone &&
+                             kHasLights != 0u && maxComponent(pc.background.rgb) == 0.0;
+  alive = alive && !lastVertexIsUseless;
+
   uint key = path.info.y;
   vec3 u = vec3(randomUnit(key, bounceDim(depth, kDimBsdfLobe)), randomUnit(key, bounceDim(depth, kDimBsdf)),
                 randomUnit(key, bounceDim(depth, kDimBsdf + 1u)));

@@ -47,7 +47,11 @@ VKMC_CONST uint kWorkgroupSize = 64u;
 VKMC_CONST uint kMaterialDoubleSided = 1u;   // Material.emission.w bit
 VKMC_CONST uint kCameraPerspective = 0u;
 VKMC_CONST uint kCameraOrthographic = 1u;
-VKMC_CONST float kRouletteMaxSurvival = 0.95f; // < 1: every path ends with probability 1, no hidden depth cap
+// Throughput roulette survives with min(max(beta), kRouletteMaxSurvival). The cap below 1 ends every path with
+// probability 1 (no hidden depth cap), but while beta >= cap each survival multiplies beta by a / cap for a
+// surface of albedo a, so the second moment grows like (a^2 / cap)^n: a cap of 0.95 (Mitsuba's) gives infinite
+// variance above albedo 0.975. 0.999 keeps the variance finite up to albedo 0.9995 and still ends paths.
+VKMC_CONST float kRouletteMaxSurvival = 0.999f;
 VKMC_CONST uint kMisNone = 0u, kMisBalance = 1u, kMisPower = 2u;
 VKMC_CONST uint kBsdfSamplingUniform = 0u, kBsdfSamplingCosine = 1u, kBsdfSamplingFull = 2u;
 VKMC_CONST uint kLightSamplingArea = 0u, kLightSamplingSolidAngle = 1u;
