@@ -10,6 +10,7 @@
 #include "app/bench_kernels.h"
 #include "app/render_job.h"
 #include "error.h"
+#include "analysis/error_metrics.h"
 #include "io/exr.h"
 #include "io/png.h"
 #include "vk/context.h"
@@ -91,6 +92,15 @@ int main(int argc, char** argv) {
   render->add_option("--png", png, "sRGB PNG preview");
   render->add_option("--exposure", exposure, "PNG exposure in stops")->capture_default_str();
   render->add_flag("-q,--quiet", quiet, "no summary on stdout, no progress line");
+  render->add_option("--time-budget", ro.timeBudget, "render whole sample passes until this many seconds are spent (--spp caps)");
+  render->add_option("--reference", ro.referencePath, "reference EXR: the report gains mse, relmse, efficiency");
+
+  std::string cmpImage, cmpReference, cmpJson, cmpHeatmap;
+  CLI::App* compare = app.add_subcommand("compare", "error metrics of an EXR against a reference EXR");
+  compare->add_option("image", cmpImage, "image (EXR)")->required();
+  compare->add_option("reference", cmpReference, "reference (EXR)")->required();
+  compare->add_option("--json", cmpJson, "write the metrics as JSON");
+  compare->add_option("--heatmap", cmpHeatmap, "write per-pixel squared error (RGB) and relMSE (Y) as EXR");
 
   vkmc::BenchOptions bo;
   CLI::App* bench = app.add_subcommand("bench-kernels", "set-up split, samples/s and Mrays/s per scene (medians)");
@@ -119,6 +129,7 @@ int main(int argc, char** argv) {
       if (seed < 0 || seed > 0xffffffffLL) throw vkmc::Error("--seed must be between 0 and 4294967295");
       if (render->count("--camera") && cameraIndex < 0) throw vkmc::Error("--camera must be >= 0");
       ro.spp = static_cast<uint32_t>(spp);
+      if (ro.timeBudget > 0.0 && !render->count("--spp")) ro.spp = 1u << 24;  // the budget decides
       if (!estimatorFile.empty()) ro.estimator = vkmc::loadEstimatorFile(estimatorFile);
       for (const auto& f : estimatorFlags) {
         if (!render->count(f.flag)) continue;
@@ -164,6 +175,26 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (bench->parsed()) return vkmc::runBenchKernels(bo);
+    if (compare->parsed()) {
+      checkWritable(cmpJson, "--json");
+      checkWritable(cmpHeatmap, "--heatmap");
+      vkmc::ExrImage a = vkmc::readExr(cmpImage), b = vkmc::readExr(cmpReference);
+      vkmc::ErrorMetrics e = vkmc::compareImages(a, b);
+      nlohmann::json j = {{"image", cmpImage}, {"reference", cmpReference}, {"width", a.width}, {"height", a.height},
+                          {"mse", e.mse}, {"relmse", e.relmse}, {"relmse_epsilon", vkmc::kRelMseEpsilon}, {"rmse", e.rmse},
+                          {"mean_absolute_error", e.meanAbsoluteError}, {"mean_difference", e.meanDifference}};
+      if (e.hasZTest) {
+        j["ztest_pass_fraction"] = e.zTestPassFraction;
+        j["ztest_threshold"] = e.zThreshold;
+      }
+      if (!cmpHeatmap.empty()) vkmc::writeErrorHeatmap(cmpHeatmap, a, b);
+      if (!cmpJson.empty()) vkmc::writeFileAtomically(cmpJson, j.dump(2) + "\n");
+      std::printf("MSE %.6g  relMSE %.6g (epsilon %g)  RMSE %.6g  MAE %.6g  mean difference %.6g\n", e.mse, e.relmse,
+                  vkmc::kRelMseEpsilon, e.rmse, e.meanAbsoluteError, e.meanDifference);
+      if (e.hasZTest)
+        std::printf("per-pixel z-test (Sidak, alpha 0.01, |z| < %.2f): %.4f of pixels pass\n", e.zThreshold, e.zTestPassFraction);
+      return 0;
+    }
   } catch (const vkmc::Error& e) {
     std::fprintf(stderr, "vkmc: error: %s\n", e.what());
     return 1;

@@ -32,6 +32,7 @@ void validateOptions(const RenderOptions& o) {
   if (!(o.fovDegrees > 0.0f && o.fovDegrees < 179.0f)) throw Error("--fov must be in (0, 179) degrees");
   for (int c = 0; c < 3; ++c)
     if (!(o.background[c] >= 0.0f) || !std::isfinite(o.background[c])) throw Error("--background must be finite and non-negative");
+  if (!(o.timeBudget >= 0.0) || o.timeBudget > 1e6) throw Error("--time-budget must be between 0 and 1e6 seconds");
 }
 
 RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options) {
@@ -46,6 +47,8 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options) {
 
 RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene scene) {
   validateOptions(options);
+  std::optional<ExrImage> reference;
+  if (!options.referencePath.empty()) reference = readExr(options.referencePath);
   RenderOutcome out;
   out.device = ctx.deviceName();
   out.degenerateTriangles = scene.degenerateTriangles;
@@ -76,6 +79,9 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
   }
   if (width > kMaxImageSide || height > kMaxImageSide) throw Error("image size from the camera's aspect ratio is too large");
   if (!options.lookFrom && scene.cameras.empty()) camera = autoCamera(scene.bounds, float(width) / float(height));
+  if (reference && (uint32_t(reference->width) != width || uint32_t(reference->height) != height))
+    throw Error("reference '" + options.referencePath + "' is " + std::to_string(reference->width) + "x" +
+                std::to_string(reference->height) + ", the render is " + std::to_string(width) + "x" + std::to_string(height));
   out.cameraName = camera.name;
   out.width = width;
   out.height = height;
@@ -102,9 +108,11 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
   settings.background = options.background;
   settings.camera = makeCameraRig(camera, width, height);
   settings.progress = options.progress;
+  settings.timeBudget = options.timeBudget;
   WavefrontRenderer renderer(ctx, gpuScene, settings);
   out.setup.pipelines = renderer.pipelineSeconds();
   out.film = renderer.render(out.stats);
+  if (reference) out.error = compareImages(filmToImage(out.film), *reference);
   return out;
 }
 
@@ -133,6 +141,25 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["mean"] = {mean.x, mean.y, mean.z};
   j["mean_variance"] = {var.x, var.y, var.z};
   j["device"] = r.device;
+  j["spp_reached"] = s.samplesPerPixel;
+  if (o.timeBudget > 0.0) j["time_budget"] = o.timeBudget;
+  // Without a reference: relative variance (per-pixel variance of the mean over mean^2 + epsilon, averaged
+  // over pixels and channels) is the expected relMSE of an unbiased render, so it gives an efficiency too.
+  double relVar = 0.0;
+  for (size_t p = 0; p < r.film.pixels(); ++p)
+    for (int c = 0; c < 3; ++c) {
+      double m = r.film.mean(p, c);
+      relVar += r.film.varianceOfMean(p, c) / (m * m + kRelMseEpsilon);
+    }
+  relVar /= 3.0 * std::max<size_t>(1, r.film.pixels());
+  j["mean_relvariance"] = relVar;
+  j["estimated_efficiency"] = relVar > 0.0 && s.seconds > 0.0 ? 1.0 / (relVar * s.seconds) : 0.0;
+  if (r.error) {
+    j["reference"] = o.referencePath;
+    j["mse"] = r.error->mse;
+    j["relmse"] = r.error->relmse;
+    j["efficiency"] = r.error->relmse > 0.0 && s.seconds > 0.0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0;
+  }
   const EstimatorConfig& e = o.estimator;
   j["estimator"] = e.toJson();
   j["estimator"]["unbiased"] = e.unbiased();
@@ -166,13 +193,16 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 "variance    %.3g %.3g %.3g (image mean of the per-pixel variance of the mean)\n"
                 "non-finite  %llu samples\n",
                 o.scenePath.c_str(), r.sceneInfo.triangles, r.sceneInfo.emissiveTriangles, r.device.c_str(), r.width, r.height,
-                o.spp, r.cameraName.c_str(),
+                s.samplesPerPixel, r.cameraName.c_str(),
                 o.estimator.summary().c_str(),
                 s.seconds, s.gpuSeconds, r.setup.total(), r.setup.load, r.setup.bvh, r.setup.upload, r.setup.pipelines,
                 (unsigned long long)s.rays(), (unsigned long long)s.cameraRays, (unsigned long long)s.extensionRays,
                 (unsigned long long)s.shadowRays, s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z,
                 var.x, var.y, var.z, (unsigned long long)r.film.totalNonfinite());
   std::string text = buf;
+  if (r.error)
+    text += "error       relMSE " + std::to_string(r.error->relmse) + ", MSE " + std::to_string(r.error->mse) +
+            ", efficiency 1/(relMSE x s) " + std::to_string(r.error->relmse > 0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0) + "\n";
   for (const auto& w : r.warnings) text += "warning     " + w + "\n";
   return text;
 }

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "analysis/error_metrics.h"
 #include "estimators/estimator_config.h"
 #include "render/film.h"
 #include "render/wavefront_renderer.h"
@@ -25,6 +26,8 @@ struct RenderOptions {
   float fovDegrees = 45.0f;
   glm::vec3 background{0.0f};
   bool progress = true;
+  double timeBudget = 0.0;        // seconds; 0 = render spp samples
+  std::string referencePath;      // EXR to compare with: mse, relmse, efficiency in the report
 };
 
 struct SetupTimes {
@@ -43,6 +46,7 @@ struct RenderOutcome {
   std::string cameraName;
   std::string device;
   uint32_t width = 0, height = 0;
+  std::optional<ErrorMetrics> error;  // against the reference, when one was given
 };
 
 // Throws vkmc::Error on bad options or input, before anything is written.

@@ -22,7 +22,7 @@ E parseEnum(const std::string& s, const char* key, std::initializer_list<std::pa
   throw Error(std::string(key) + ": '" + s + "' is not one of " + options);
 }
 
-const char* name(RouletteMode m) {
+const char* nameOf(RouletteMode m) {
   switch (m) {
     case RouletteMode::None: return "none";
     case RouletteMode::Fixed: return "fixed";
@@ -31,10 +31,10 @@ const char* name(RouletteMode m) {
   }
   return "?";
 }
-const char* name(BsdfSampling b) { return b == BsdfSampling::Uniform ? "uniform" : b == BsdfSampling::Cosine ? "cosine" : "bsdf"; }
-const char* name(LightSampling l) { return l == LightSampling::Area ? "area" : "solid-angle"; }
-const char* name(LightSelect l) { return l == LightSelect::Uniform ? "uniform" : "power"; }
-const char* name(MisHeuristic m) { return m == MisHeuristic::None ? "none" : m == MisHeuristic::Balance ? "balance" : "power"; }
+const char* nameOf(BsdfSampling b) { return b == BsdfSampling::Uniform ? "uniform" : b == BsdfSampling::Cosine ? "cosine" : "bsdf"; }
+const char* nameOf(LightSampling l) { return l == LightSampling::Area ? "area" : "solid-angle"; }
+const char* nameOf(LightSelect l) { return l == LightSelect::Uniform ? "uniform" : "power"; }
+const char* nameOf(MisHeuristic m) { return m == MisHeuristic::None ? "none" : m == MisHeuristic::Balance ? "balance" : "power"; }
 
 uint32_t floatBits(float f) { return std::bit_cast<uint32_t>(f); }
 
@@ -80,7 +80,7 @@ void EstimatorConfig::validate() const {
 }
 
 nlohmann::json EstimatorConfig::toJson() const {
-  return {{"rr", name(rr)},
+  return {{"rr", nameOf(rr)},
           {"rr_q", rrQ},
           {"rr_c", rrC},
           {"rr_depth", rrDepth},
@@ -89,12 +89,13 @@ nlohmann::json EstimatorConfig::toJson() const {
           {"camera_rr", cameraRrQ},
           {"light_samples", lightSamples},
           {"split_depth", splitDepth},
-          {"bsdf_sampling", name(bsdfSampling)},
-          {"light_sampling", name(lightSampling)},
-          {"light_select", name(lightSelect)},
+          {"bsdf_sampling", nameOf(bsdfSampling)},
+          {"light_sampling", nameOf(lightSampling)},
+          {"light_select", nameOf(lightSelect)},
           {"nee", nee ? "on" : "off"},
-          {"mis", name(mis)},
-          {"max_depth", maxDepth}};
+          {"mis", nameOf(mis)},
+          {"max_depth", maxDepth},
+          {"name", name}};
 }
 
 void EstimatorConfig::applyJson(const nlohmann::json& j) {
@@ -128,7 +129,8 @@ void EstimatorConfig::applyJson(const nlohmann::json& j) {
     else if (key == "nee") nee = v.is_boolean() ? v.get<bool>() : parseOnOff(text(key, v), "nee");
     else if (key == "mis") mis = parseMis(text(key, v));
     else if (key == "max_depth") maxDepth = count(key, v);
-    else if (key == "name" || key == "comment") continue;
+    else if (key == "name") name = text(key, v);
+    else if (key == "comment") continue;
     else throw Error("unknown estimator key '" + key + "'");
   }
 }
@@ -162,8 +164,8 @@ std::vector<vk::SpecConstant> EstimatorConfig::specConstants() const {
 
 std::string EstimatorConfig::summary() const {
   std::ostringstream s;
-  s << "nee " << (nee ? "on" : "off") << ", mis " << name(mis) << ", bsdf " << name(bsdfSampling) << ", lights "
-    << name(lightSelect) << "/" << name(lightSampling) << ", rr " << name(rr);
+  s << "nee " << (nee ? "on" : "off") << ", mis " << nameOf(mis) << ", bsdf " << nameOf(bsdfSampling) << ", lights "
+    << nameOf(lightSelect) << "/" << nameOf(lightSampling) << ", rr " << nameOf(rr);
   if (rr == RouletteMode::Fixed) s << " (q " << rrQ << ", c " << rrC << ")";
   if (rr != RouletteMode::None) s << " from depth " << rrDepth;
   if (lightSamples > 1) s << ", " << lightSamples << " light samples below depth " << splitDepth;

@@ -51,6 +51,7 @@ struct EstimatorConfig {
   bool nee = true;
   MisHeuristic mis = MisHeuristic::Power;
   uint32_t maxDepth = 0;
+  std::string name;  // free text from the estimator file, echoed in reports
 
   // Throws vkmc::Error naming the offending key.
   void validate() const;

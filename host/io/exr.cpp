@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "analysis/error_metrics.h"
 #include "error.h"
 
 namespace vkmc {
@@ -70,27 +71,7 @@ void writeExr(const std::string& path, const ExrImage& image) {
   }
 }
 
-void writeFilmExr(const std::string& path, const Film& film) {
-  ExrImage img;
-  img.width = static_cast<int>(film.width);
-  img.height = static_cast<int>(film.height);
-  const char* rgb[3] = {"R", "G", "B"};
-  const char* var[3] = {"variance.R", "variance.G", "variance.B"};
-  for (int c = 0; c < 3; ++c) {
-    auto& m = img.channels[rgb[c]];
-    auto& v = img.channels[var[c]];
-    m.resize(film.pixels());
-    v.resize(film.pixels());
-    for (size_t p = 0; p < film.pixels(); ++p) {
-      m[p] = static_cast<float>(film.mean(p, c));
-      v[p] = static_cast<float>(film.varianceOfMean(p, c));
-    }
-  }
-  auto& n = img.channels["samples"];
-  n.resize(film.pixels());
-  for (size_t p = 0; p < film.pixels(); ++p) n[p] = static_cast<float>(film.count[p]);
-  writeExr(path, img);
-}
+void writeFilmExr(const std::string& path, const Film& film) { writeExr(path, filmToImage(film)); }
 
 ExrImage readExr(const std::string& path) {
   try {

@@ -46,7 +46,8 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
     throw Error("image " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + " is too large: its film needs " +
                 std::to_string(filmBytes >> 20) + " MiB, the device's storage-buffer limit is " +
                 std::to_string(limits.maxStorageBufferRange >> 20) + " MiB");
-  capacity_ = static_cast<uint32_t>(std::min<uint64_t>(pixels * settings.spp, settings.maxPathsPerPass));
+  uint64_t plannedSamples = settings.timeBudget > 0.0 ? std::min<uint64_t>(settings.spp, 64) : settings.spp;
+  capacity_ = static_cast<uint32_t>(std::min<uint64_t>(pixels * plannedSamples, settings.maxPathsPerPass));
   capacity_ = std::min<uint32_t>(capacity_, limits.maxStorageBufferRange / sizeof(gpu::PathState));
   const EstimatorConfig& est = settings.estimator;
   est.validate();
@@ -206,7 +207,9 @@ Film WavefrontRenderer::render(RenderStats& stats) {
   // Small images take several samples per pixel per pass, so that a pass fills the wavefront.
   const uint32_t perPass = std::clamp(capacity_ / std::max(pixels, 1u), 1u, kSamplesPerBatch);
   uint32_t inBatch = 0;
+  const double budget = settings_.timeBudget;
   for (uint32_t s = 0; s < settings_.spp;) {
+    if (budget > 0.0 && s > 0 && since(start) >= budget) break;
     uint32_t samples = std::min(perPass, settings_.spp - s);
     for (uint32_t first = 0; first < pixels; first += capacity_) {
       uint32_t bounces = renderPass(first, std::min(capacity_, pixels - first), s, samples, stats);
@@ -215,14 +218,15 @@ Film WavefrontRenderer::render(RenderStats& stats) {
     }
     s += samples;
     inBatch += samples;
-    if (inBatch + perPass > kSamplesPerBatch || s == settings_.spp) {
+    bool last = s == settings_.spp || (budget > 0.0 && since(start) >= budget);
+    if (inBatch + perPass > kSamplesPerBatch || last) {
       foldFilm(film);
       inBatch = 0;
     }
     double elapsed = since(start);
-    if (showProgress && (elapsed - lastProgress > 0.25 || s == settings_.spp)) {
+    if (showProgress && (elapsed - lastProgress > 0.25 || last)) {
       lastProgress = elapsed;
-      double eta = elapsed / s * (settings_.spp - s);
+      double eta = budget > 0.0 ? std::max(0.0, budget - elapsed) : elapsed / s * (settings_.spp - s);
       std::fprintf(stderr, "\rvkmc: %u/%u spp  %.2f Mrays/s  ETA %.1f s   ", s, settings_.spp,
                    stats.rays() / std::max(elapsed, 1e-9) * 1e-6, eta);
       std::fflush(stderr);
@@ -230,6 +234,7 @@ Film WavefrontRenderer::render(RenderStats& stats) {
   }
   if (showProgress) std::fprintf(stderr, "\n");
   stats.seconds = since(start);
+  stats.samplesPerPixel = film.pixels() ? static_cast<uint32_t>(film.count[0] + film.nonfinite[0]) : 0;
   for (const auto& [name, secs] : stats.stageSeconds) stats.gpuSeconds += secs;
   stats.primarySeconds = stats.stageSeconds["intersect_primary"];
   stats.incoherentSeconds = stats.stageSeconds["intersect"];

@@ -18,7 +18,8 @@ namespace vkmc {
 struct RenderSettings {
   uint32_t width = 256;
   uint32_t height = 256;
-  uint32_t spp = 64;
+  uint32_t spp = 64;           // with a time budget: the most samples to take
+  double timeBudget = 0.0;     // seconds; > 0: whole sample passes until the budget is spent
   EstimatorConfig estimator;   // roulette, splitting, sampling, MIS, depth cap
   uint32_t seed = 1;
   glm::vec3 background{0.0f};
@@ -37,6 +38,7 @@ struct RenderStats {
   std::map<std::string, double> stageSeconds;
   uint32_t passes = 0;
   uint32_t maxBounces = 0;
+  uint32_t samplesPerPixel = 0;  // reached (equals spp unless a time budget ended the render)
   uint64_t rays() const { return cameraRays + extensionRays + shadowRays; }
 };
 

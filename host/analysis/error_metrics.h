@@ -1,0 +1,33 @@
+// Error of an image against a reference: MSE, relMSE, RMSE, mean absolute error, difference of the image
+// means, and (when both carry variance channels) the per-pixel z-test of Mitsuba's render regressions.
+#pragma once
+#include <string>
+
+#include "io/exr.h"
+
+namespace vkmc {
+
+struct ErrorMetrics {
+  double mse = 0.0;
+  double relmse = 0.0;        // mean over pixels and channels of (a - b)^2 / (b^2 + epsilon)
+  double rmse = 0.0;
+  double meanAbsoluteError = 0.0;
+  double meanDifference = 0.0;  // mean(a) - mean(b) over pixels and channels
+  bool hasZTest = false;
+  double zTestPassFraction = 0.0;  // pixels whose every channel passes |a - b| / sqrt(va + vb) < z threshold
+  double zThreshold = 0.0;
+  size_t pixels = 0;
+};
+
+inline constexpr double kRelMseEpsilon = 1e-2;  // keeps near-black reference pixels from dominating relMSE
+
+// Compares channels R, G, B; the z-test uses variance.R/G/B when both images have them. Its threshold is
+// Sidak-corrected so that on two unbiased renders all pixels pass with probability 1 - alpha.
+ErrorMetrics compareImages(const ExrImage& image, const ExrImage& reference, double alpha = 0.01);
+
+// Writes per-pixel squared error (R, G, B) and relMSE (Y) as an EXR heat map.
+void writeErrorHeatmap(const std::string& path, const ExrImage& image, const ExrImage& reference);
+
+ExrImage filmToImage(const class Film& film);
+
+}  // namespace vkmc
