@@ -1,0 +1,78 @@
+// Error metrics on synthetic images with known answers; estimator configuration parsing and validation.
+#include <gtest/gtest.h>
+
+#include "analysis/error_metrics.h"
+#include "error.h"
+#include "estimators/estimator_config.h"
+
+using namespace vkmc;
+
+namespace {
+ExrImage constant(int w, int h, float v, float variance = -1.0f) {
+  ExrImage img;
+  img.width = w;
+  img.height = h;
+  for (const char* c : {"R", "G", "B"}) img.channels[c].assign(size_t(w) * h, v);
+  if (variance >= 0.0f)
+    for (const char* c : {"variance.R", "variance.G", "variance.B"}) img.channels[c].assign(size_t(w) * h, variance);
+  return img;
+}
+}  // namespace
+
+TEST(ErrorMetrics, KnownMseAndRelMse) {
+  ExrImage ref = constant(8, 4, 0.5f), img = constant(8, 4, 0.6f);
+  ErrorMetrics m = compareImages(img, ref);
+  EXPECT_NEAR(m.mse, 0.01, 1e-7);
+  EXPECT_NEAR(m.relmse, 0.01 / (0.25 + kRelMseEpsilon), 1e-6);
+  EXPECT_NEAR(m.rmse, 0.1, 1e-6);
+  EXPECT_NEAR(m.meanAbsoluteError, 0.1, 1e-6);
+  EXPECT_NEAR(m.meanDifference, 0.1, 1e-6);
+  EXPECT_FALSE(m.hasZTest);
+}
+
+TEST(ErrorMetrics, ZTestCountsPixelsOutsideTheirNoise) {
+  ExrImage ref = constant(10, 10, 1.0f, 0.01f), img = constant(10, 10, 1.0f, 0.01f);
+  img.channels["G"][37] = 3.0f;  // 2 / sqrt(0.02) = 14 sigma
+  img.channels["R"][5] = 1.2f;   // 1.4 sigma: passes
+  ErrorMetrics m = compareImages(img, ref);
+  ASSERT_TRUE(m.hasZTest);
+  EXPECT_NEAR(m.zTestPassFraction, 0.99, 1e-12);
+  EXPECT_GT(m.zThreshold, 3.5);  // Sidak over 300 tests at 1%
+  EXPECT_LT(m.zThreshold, 4.5);
+}
+
+TEST(ErrorMetrics, MismatchedImagesAreRejected) {
+  EXPECT_THROW(compareImages(constant(4, 4, 1), constant(4, 5, 1)), Error);
+  ExrImage noGreen = constant(4, 4, 1);
+  noGreen.channels.erase("G");
+  EXPECT_THROW(compareImages(noGreen, constant(4, 4, 1)), Error);
+}
+
+TEST(EstimatorConfig, JsonRoundTripAndDefaults) {
+  EstimatorConfig c;
+  c.rr = RouletteMode::Fixed;
+  c.rrQ = 0.25f;
+  c.lightSamples = 7;
+  c.mis = MisHeuristic::Balance;
+  c.lightSampling = LightSampling::SolidAngle;
+  EstimatorConfig d;
+  d.applyJson(c.toJson());
+  EXPECT_EQ(d.toJson(), c.toJson());
+  EXPECT_EQ(EstimatorConfig{}.toJson()["rr"], "throughput");
+  EXPECT_EQ(EstimatorConfig{}.toJson()["bsdf_sampling"], "bsdf");
+}
+
+TEST(EstimatorConfig, RejectsUnknownKeysBadValuesAndEndlessPaths) {
+  EstimatorConfig c;
+  EXPECT_THROW(c.applyJson({{"rr_typo", 1}}), Error);
+  EXPECT_THROW(c.applyJson({{"mis", "best"}}), Error);
+  EXPECT_THROW(c.applyJson({{"light_samples", -2}}), Error);
+  EstimatorConfig q;
+  q.rrQ = 1.0f;
+  EXPECT_THROW(q.validate(), Error);
+  EstimatorConfig endless;
+  endless.rr = RouletteMode::None;
+  EXPECT_THROW(endless.validate(), Error) << "no roulette and no depth cap never ends";
+  endless.maxDepth = 8;
+  EXPECT_NO_THROW(endless.validate());
+}
