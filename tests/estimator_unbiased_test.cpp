@@ -29,6 +29,8 @@ std::vector<Variant> variants() {
   add("rr throughput from 1", [](EstimatorConfig& c) { c.rrDepth = 1; });
   add("light samples 4", [](EstimatorConfig& c) { c.lightSamples = 4; });
   add("light samples 3, split depth 3", [](EstimatorConfig& c) { c.lightSamples = 3; c.splitDepth = 3; });
+  add("bsdf samples 4", [](EstimatorConfig& c) { c.bsdfSamples = 4.0f; });
+  add("bsdf samples 2.5 to depth 2, 2 light samples", [](EstimatorConfig& c) { c.bsdfSamples = 2.5f; c.splitDepth = 2; c.lightSamples = 2; });
   add("bsdf uniform", [](EstimatorConfig& c) { c.bsdfSampling = BsdfSampling::Uniform; });
   add("bsdf cosine", [](EstimatorConfig& c) { c.bsdfSampling = BsdfSampling::Cosine; });
   add("solid-angle lights", [](EstimatorConfig& c) { c.lightSampling = LightSampling::SolidAngle; });

@@ -77,6 +77,7 @@ void EstimatorConfig::validate() const {
     throw Error("rr none needs a depth cap (--max-depth > 0): without roulette or a cap paths never end");
   if (!nee && lightSamples > 1) throw Error("light_samples > 1 needs nee on");
   if (rr == RouletteMode::Efficiency) throw Error("rr efficiency is not implemented yet");
+  if (!std::isfinite(bsdfSamples) || bsdfSamples < 1.0f || bsdfSamples > 64.0f) throw Error("bsdf_samples must be in [1, 64]");
 }
 
 nlohmann::json EstimatorConfig::toJson() const {
@@ -89,6 +90,7 @@ nlohmann::json EstimatorConfig::toJson() const {
           {"camera_rr", cameraRrQ},
           {"light_samples", lightSamples},
           {"split_depth", splitDepth},
+          {"bsdf_samples", bsdfSamples},
           {"bsdf_sampling", nameOf(bsdfSampling)},
           {"light_sampling", nameOf(lightSampling)},
           {"light_select", nameOf(lightSelect)},
@@ -123,6 +125,7 @@ void EstimatorConfig::applyJson(const nlohmann::json& j) {
     else if (key == "camera_rr") cameraRrQ = static_cast<float>(number(key, v));
     else if (key == "light_samples") lightSamples = count(key, v);
     else if (key == "split_depth") splitDepth = count(key, v);
+    else if (key == "bsdf_samples") bsdfSamples = static_cast<float>(number(key, v));
     else if (key == "bsdf_sampling") bsdfSampling = parseBsdfSampling(text(key, v));
     else if (key == "light_sampling") lightSampling = parseLightSampling(text(key, v));
     else if (key == "light_select") lightSelect = parseLightSelect(text(key, v));
@@ -159,7 +162,14 @@ std::vector<vk::SpecConstant> EstimatorConfig::specConstants() const {
           {SPEC_SPLIT_DEPTH, splitDepth},
           {SPEC_SHADOW_RR_THRESHOLD, floatBits(shadowRrThreshold)},
           {SPEC_SHADOW_RR_Q, floatBits(shadowRrQ)},
-          {SPEC_CAMERA_RR_Q, floatBits(cameraRrQ)}};
+          {SPEC_CAMERA_RR_Q, floatBits(cameraRrQ)},
+          {SPEC_BSDF_SAMPLES, floatBits(bsdfSamples)}};
+}
+
+uint32_t EstimatorConfig::pathPoolFactor() const {
+  if (!splitsPaths()) return 1;
+  double factor = std::pow(std::ceil(bsdfSamples), std::min<uint32_t>(splitDepth, 3));
+  return static_cast<uint32_t>(std::min(16.0, factor));
 }
 
 std::string EstimatorConfig::summary() const {
@@ -169,6 +179,7 @@ std::string EstimatorConfig::summary() const {
   if (rr == RouletteMode::Fixed) s << " (q " << rrQ << ", c " << rrC << ")";
   if (rr != RouletteMode::None) s << " from depth " << rrDepth;
   if (lightSamples > 1) s << ", " << lightSamples << " light samples below depth " << splitDepth;
+  if (bsdfSamples > 1) s << ", " << bsdfSamples << " BSDF samples below depth " << splitDepth;
   if (shadowRrThreshold > 0) s << ", shadow rr " << shadowRrThreshold << " (q " << shadowRrQ << ")";
   if (cameraRrQ > 0) s << ", camera rr q " << cameraRrQ;
   s << (maxDepth ? ", depth cap " + std::to_string(maxDepth) + " (biased by truncation)" : ", no depth cap (unbiased)");

@@ -12,6 +12,7 @@
 // | shadow_rr_q     | termination probability of tiny ones    | 0.5        |
 // | camera_rr       | termination probability of camera rays  | 0          |
 // | light_samples   | M light samples per hit                 | 1          |
+// | bsdf_samples    | K continuations per hit (float factor)  | 1          |
 // | split_depth     | splitting applies at depths < this      | 1          |
 // | bsdf_sampling   | uniform, cosine, bsdf                   | bsdf       |
 // | light_sampling  | area, solid-angle                       | area       |
@@ -45,6 +46,7 @@ struct EstimatorConfig {
   float cameraRrQ = 0.0f;
   uint32_t lightSamples = 1;
   uint32_t splitDepth = 1;
+  float bsdfSamples = 1.0f;  // q: floor(q + u) continuations, each weighted 1/q
   BsdfSampling bsdfSampling = BsdfSampling::Bsdf;
   LightSampling lightSampling = LightSampling::Area;
   LightSelect lightSelect = LightSelect::Power;
@@ -56,7 +58,10 @@ struct EstimatorConfig {
   // Throws vkmc::Error naming the offending key.
   void validate() const;
   bool unbiased() const { return maxDepth == 0; }
-  bool needsFloatAtomics() const { return lightSamples > 1; }
+  bool needsFloatAtomics() const { return lightSamples > 1 || splitsPaths(); }
+  bool splitsPaths() const { return bsdfSamples > 1.0f; }
+  // Room for split children, as a multiple of the camera paths of a pass (a full pool stops splitting).
+  uint32_t pathPoolFactor() const;
   nlohmann::json toJson() const;
   // Applies the keys present in j over the current values (unknown keys are an error).
   void applyJson(const nlohmann::json& j);

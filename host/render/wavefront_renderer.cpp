@@ -18,6 +18,7 @@
 #include "spirv/intersect_spv.h"
 #include "spirv/prepare_bounce_spv.h"
 #include "spirv/prepare_shadow_spv.h"
+#include "spirv/shade_atomic_spv.h"
 #include "spirv/shade_spv.h"
 #include "spirv/shadow_atomic_spv.h"
 #include "spirv/shadow_spv.h"
@@ -53,18 +54,21 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   est.validate();
   if (est.needsFloatAtomics() && !ctx.hasFloatAtomics())
     throw Error("light_samples > 1 needs buffer float atomics (VK_EXT_shader_atomic_float), which this device lacks");
-  // Each path queues up to M shadow rays per bounce.
-  capacity_ = std::min<uint32_t>(capacity_, limits.maxStorageBufferRange / (sizeof(gpu::ShadowRay) * est.lightSamples));
+  // The pool holds camera paths and split children; each pooled path queues up to M shadow rays per bounce.
+  const uint32_t poolFactor = est.pathPoolFactor();
+  capacity_ = std::min<uint32_t>(capacity_, limits.maxStorageBufferRange / (sizeof(gpu::PathState) * poolFactor));
+  capacity_ = std::min<uint32_t>(capacity_, limits.maxStorageBufferRange / (sizeof(gpu::ShadowRay) * est.lightSamples * poolFactor));
   capacity_ = std::max(capacity_, 1u);
+  pool_ = capacity_ * poolFactor;
 
   auto storage = [&](VkDeviceSize bytes, vk::MemoryKind kind = vk::MemoryKind::DeviceLocal, VkBufferUsageFlags extra = 0) {
     deviceBytes_ += bytes;
     return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | extra, kind);
   };
-  paths_ = storage(uint64_t(capacity_) * sizeof(gpu::PathState));
-  hits_ = storage(uint64_t(capacity_) * 16);
-  queues_ = storage(uint64_t(capacity_) * 8);
-  shadowQueue_ = storage(uint64_t(capacity_) * est.lightSamples * sizeof(gpu::ShadowRay));
+  paths_ = storage(uint64_t(pool_) * sizeof(gpu::PathState));
+  hits_ = storage(uint64_t(pool_) * 16);
+  queues_ = storage(uint64_t(pool_) * 8);
+  shadowQueue_ = storage(uint64_t(pool_) * est.lightSamples * sizeof(gpu::ShadowRay));
   control_ = storage(sizeof(gpu::Control), vk::MemoryKind::HostVisible, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
   film_ = storage(filmBytes, vk::MemoryKind::HostVisible);
   pixelEstimate_ = storage(pixels * sizeof(float), vk::MemoryKind::HostVisible);
@@ -95,7 +99,7 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   kernels_->camera = make("camera_rays", kSpirv_camera_rays);
   kernels_->prepareBounce = make("prepare_bounce", kSpirv_prepare_bounce);
   kernels_->intersect = make("intersect", kSpirv_intersect);
-  kernels_->shade = make("shade", kSpirv_shade);
+  kernels_->shade = est.splitsPaths() ? make("shade", kSpirv_shade_atomic) : make("shade", kSpirv_shade);
   kernels_->prepareShadow = make("prepare_shadow", kSpirv_prepare_shadow);
   kernels_->shadow = est.needsFloatAtomics() ? make("shadow", kSpirv_shadow_atomic) : make("shadow", kSpirv_shadow);
   kernels_->accumulate = make("accumulate", kSpirv_accumulate);
@@ -107,7 +111,7 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   gpu::PushConstants pc{};
   pc.width = settings.width;
   pc.height = settings.height;
-  pc.queueCapacity = capacity_;
+  pc.queueCapacity = pool_;
   ctx.runCommands([&](VkCommandBuffer cmd) {
     for (const auto* k : {&kernels_->camera, &kernels_->prepareBounce, &kernels_->intersect, &kernels_->shade,
                           &kernels_->prepareShadow, &kernels_->shadow, &kernels_->accumulate})
@@ -130,7 +134,7 @@ uint32_t WavefrontRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount,
   pc.width = settings_.width;
   pc.height = settings_.height;
   pc.seed = settings_.seed;
-  pc.queueCapacity = capacity_;
+  pc.queueCapacity = pool_;
   const CameraRig& cam = settings_.camera;
   pc.cameraOrigin = glm::vec4(cam.origin, cam.orthographic ? float(gpu::kCameraOrthographic) : float(gpu::kCameraPerspective));
   pc.cameraForward = glm::vec4(cam.forward, 0.0f);

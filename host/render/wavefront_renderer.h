@@ -59,7 +59,8 @@ class WavefrontRenderer {
   vk::Context& ctx_;
   const GpuScene& scene_;
   RenderSettings settings_;
-  uint32_t capacity_ = 0;
+  uint32_t capacity_ = 0;  // camera paths per pass
+  uint32_t pool_ = 0;      // path slots: camera paths and split children
   std::unique_ptr<vk::KernelLayout> layout_;
   std::unique_ptr<Kernels> kernels_;
   std::unique_ptr<vk::GpuTimer> timer_;

@@ -28,7 +28,7 @@ void main() {
   p.direction = vec4(dir, 0.0);
   p.throughput = vec4(1.0, 1.0, 1.0, 0.0);
   p.radiance = vec4(0.0);
-  p.info = uvec4(pixel, key, 0u, 0u);
+  p.info = uvec4(pixel, key, 0u, id);
   if (kCameraRouletteQ > 0.0) {
     bool survives = randomUnit(key, kDimCameraRoulette) >= kCameraRouletteQ;
     p.throughput.rgb = vec3(survives ? 1.0 / (1.0 - kCameraRouletteQ) : 0.0);

@@ -1,5 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#ifdef VKMC_FLOAT_ATOMICS
+#extension GL_EXT_shader_atomic_float : require
+#endif
 // Stage 3: at each hit, the estimator chosen by specialization constants:
 //   emission, MIS-weighted against light sampling for BSDF-sampled rays;
 //   next-event estimation with M light samples (M > 1 splits the first kSplitDepth bounces), each queued as a
@@ -89,7 +92,7 @@ uvec2 selectLight(float u) {
   return uvec2(chosen.z, chosen.w);
 }
 
-void queueLightSample(uint id, PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo, uint j, uint samples) {
+void queueLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo, uint j, uint samples) {
   uint depth = path.info.z;
   uint key = path.info.y;
   uvec2 light = selectLight(randomUnit(key, lightDim(depth, j, 0u)));
@@ -146,8 +149,23 @@ void queueLightSample(uint id, PathState path, SurfacePoint s, GltfMaterial gm, 
   vec3 target = offsetRayOrigin(pl, plError, nl, -wi);
   uint slot = atomicAdd(control.counts.z, 1u);
   shadowRays[slot].origin = vec4(origin, 1.0 - 1e-4);
-  shadowRays[slot].direction = vec4(target - origin, uintBitsToFloat(id));
+  shadowRays[slot].direction = vec4(target - origin, uintBitsToFloat(path.info.w));
   shadowRays[slot].contribution = vec4(contribution, 0.0);
+}
+
+// Radiance of a sample accumulates in its root path. Without BSDF splitting a path is its own root and is
+// alone in its slot during this dispatch; with splitting, siblings add concurrently, hence the atomics.
+void addToSample(uint id, uint root, vec3 value) {
+  if (!(maxComponent(abs(value)) > 0.0)) return;
+#ifdef VKMC_FLOAT_ATOMICS
+  if (kBsdfSamples > 1.0) {
+    atomicAdd(paths[root].radiance.r, value.r);
+    atomicAdd(paths[root].radiance.g, value.g);
+    atomicAdd(paths[root].radiance.b, value.b);
+    return;
+  }
+#endif
+  paths[id].radiance.rgb += value;
 }
 
 void main() {
@@ -157,14 +175,16 @@ void main() {
   PathState path = paths[id];
   vec4 hit = hits[id];
   uint tri = floatBitsToUint(hit.w);
+  uint root = path.info.w;
   vec3 wo = -path.direction.xyz;
   if (tri == kMissPrimitive) {
-    paths[id].radiance.rgb += path.throughput.rgb * pc.background.rgb;
+    addToSample(id, root, path.throughput.rgb * pc.background.rgb);
     return;
   }
   SurfacePoint s = surfaceAt(tri, hit.yz, wo);
   Material m = materials[texelFetch(triangleInfo, int(tri)).w];
   uint depth = path.info.z;
+  vec3 gathered = vec3(0.0);
 
   if (emitsToward(m, s.frontFace)) {
     float weight = 1.0;
@@ -179,7 +199,7 @@ void main() {
         weight = misWeight(path.direction.w, float(lightSamplesAt(depth - 1u)) * pl);
       }
     }
-    path.radiance.rgb += path.throughput.rgb * m.emission.rgb * weight;
+    gathered += path.throughput.rgb * m.emission.rgb * weight;
   }
 
   bool alive = kMaxDepth == 0u || depth < kMaxDepth;
@@ -187,49 +207,67 @@ void main() {
   vec3 woLocal = wo * s.frame;
   if (alive && kHasLights != 0u && kNee != 0u) {
     uint samples = lightSamplesAt(depth);
-    for (uint j = 0u; j < samples; ++j) queueLightSample(id, path, s, gm, wo, j, samples);
+    for (uint j = 0u; j < samples; ++j) queueLightSample(path, s, gm, wo, j, samples);
   }
-
   // With light sampling alone (NEE without MIS) the vertex at the depth cap only adds emission, which it
   // ignores: the continuation ray would be traced for nothing.
   bool lastVertexIsUseless = kMaxDepth > 0u && depth + 1u >= kMaxDepth && kNee != 0u && kMis == kMisNone &&
                              kHasLights != 0u && maxComponent(pc.background.rgb) == 0.0;
   alive = alive && !lastVertexIsUseless;
 
+  // BSDF continuations: q = kBsdfSamples at split depths gives floor(q + u) children weighted 1/q; child 0
+  // continues in this slot, the others take slots from the pool (none left: no split, weight 1, unbiased).
   uint key = path.info.y;
-  vec3 u = vec3(randomUnit(key, bounceDim(depth, kDimBsdfLobe)), randomUnit(key, bounceDim(depth, kDimBsdf)),
-                randomUnit(key, bounceDim(depth, kDimBsdf + 1u)));
-  vec3 wiLocal = sampleTechnique(gm, woLocal, u);
-  float pdf = techniquePdf(gm, woLocal, wiLocal);
-  vec3 wi = s.frame * wiLocal;
-  alive = alive && pdf > 0.0 && wiLocal.z > 0.0 && dot(wi, s.ng) > 0.0;
-  if (alive) path.throughput.rgb *= gltfBsdfEval(gm, woLocal, wiLocal) * (wiLocal.z / pdf);
-  alive = alive && maxComponent(path.throughput.rgb) > 0.0;
-
-  if (alive && depth + 1u >= kRouletteDepth && kRouletteMode != kRouletteNone) {
-    float r = randomUnit(key, bounceDim(depth, kDimRoulette));
-    if (kRouletteMode == kRouletteFixed) {
-      // F' = (F - q c) / (1 - q) with probability 1 - q, else c: unbiased for any c.
-      vec3 c = path.throughput.rgb * kRouletteC;
-      if (r < kRouletteQ) {
-        path.radiance.rgb += c;
-        alive = false;
-      } else {
-        path.radiance.rgb -= c * (kRouletteQ / (1.0 - kRouletteQ));
-        path.throughput.rgb /= 1.0 - kRouletteQ;
-      }
+  float q = (kBsdfSamples > 1.0 && depth < kSplitDepth) ? kBsdfSamples : 1.0;
+  uint children = alive ? (q > 1.0 ? splitCount(q, randomUnit(key, bounceDim(depth, kDimSplit))) : 1u) : 0u;
+  uint firstChild = 0u;
+  if (children > 1u) {
+    uint base = atomicAdd(control.counts.w, children - 1u);
+    if (pc.pathCount + base + children - 1u > pc.queueCapacity) {
+      children = 1u;
+      q = 1.0;
     } else {
-      float survival = min(maxComponent(path.throughput.rgb), kRouletteMaxSurvival);
-      if (r >= survival) alive = false;
-      else path.throughput.rgb /= survival;
+      firstChild = pc.pathCount + base;
     }
   }
-  if (alive) {
-    path.origin = vec4(offsetRayOrigin(s.p, s.pError, s.ng, wi), 0.0);
-    path.direction = vec4(wi, pdf);
-    path.info.z = depth + 1u;
+  for (uint c = 0u; c < children; ++c) {
+    uint ckey = childKey(key, depth, c);
+    vec3 u = vec3(randomUnit(ckey, bounceDim(depth, kDimBsdfLobe)), randomUnit(ckey, bounceDim(depth, kDimBsdf)),
+                  randomUnit(ckey, bounceDim(depth, kDimBsdf + 1u)));
+    vec3 wiLocal = sampleTechnique(gm, woLocal, u);
+    float pdf = techniquePdf(gm, woLocal, wiLocal);
+    vec3 wi = s.frame * wiLocal;
+    bool continues = pdf > 0.0 && wiLocal.z > 0.0 && dot(wi, s.ng) > 0.0;
+    vec3 beta = continues ? path.throughput.rgb * gltfBsdfEval(gm, woLocal, wiLocal) * (wiLocal.z / (pdf * q)) : vec3(0.0);
+    continues = continues && maxComponent(beta) > 0.0;
+
+    if (continues && depth + 1u >= kRouletteDepth && kRouletteMode != kRouletteNone) {
+      float r = randomUnit(ckey, bounceDim(depth, kDimRoulette));
+      if (kRouletteMode == kRouletteFixed) {
+        // F' = (F - q c) / (1 - q) with probability 1 - q, else c: unbiased for any c.
+        vec3 cValue = beta * kRouletteC;
+        if (r < kRouletteQ) {
+          gathered += cValue;
+          continues = false;
+        } else {
+          gathered -= cValue * (kRouletteQ / (1.0 - kRouletteQ));
+          beta /= 1.0 - kRouletteQ;
+        }
+      } else {
+        float survival = min(maxComponent(beta), kRouletteMaxSurvival);
+        continues = splitCount(survival, r) > 0u;
+        beta /= survival;
+      }
+    }
+    if (!continues) continue;
+    uint target = c == 0u ? id : firstChild + c - 1u;
+    paths[target].origin = vec4(offsetRayOrigin(s.p, s.pError, s.ng, wi), 0.0);
+    paths[target].direction = vec4(wi, pdf);
+    paths[target].throughput = vec4(beta, 0.0);
+    paths[target].info = uvec4(path.info.x, ckey, depth + 1u, root);
+    if (c > 0u) paths[target].radiance = vec4(0.0);
     uint out_ = atomicAdd(control.counts[((pc.bounce + 1u) & 1u)], 1u);
-    rayQueues[outQueueBase() + out_] = id;
+    rayQueues[outQueueBase() + out_] = target;
   }
-  paths[id] = path;
+  addToSample(id, root, gathered);
 }

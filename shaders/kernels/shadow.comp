@@ -15,7 +15,7 @@ void main() {
   ShadowRay s = shadowRays[slot];
   vec4 h = traceRay(s.origin.xyz, s.direction.xyz, s.origin.w, true);
   if (floatBitsToUint(h.w) != kMissPrimitive) return;
-  uint id = floatBitsToUint(s.direction.w);
+  uint id = floatBitsToUint(s.direction.w);  // the root path of the sample
 #ifdef VKMC_FLOAT_ATOMICS
   atomicAdd(paths[id].radiance.r, s.contribution.r);
   atomicAdd(paths[id].radiance.g, s.contribution.g);

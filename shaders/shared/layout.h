@@ -39,6 +39,7 @@
 #define SPEC_SHADOW_RR_THRESHOLD 14  // float: 0 = off
 #define SPEC_SHADOW_RR_Q 15          // float: termination probability of a tiny shadow ray
 #define SPEC_CAMERA_RR_Q 16          // float: 0 = off
+#define SPEC_BSDF_SAMPLES 17         // float: continuations per hit below SPEC_SPLIT_DEPTH (1 = no splitting)
 
 VKMC_BEGIN_NAMESPACE
 
@@ -64,7 +65,7 @@ struct PathState {
   vec4 direction;   // xyz: unit direction, w: pdf of the direction
   vec4 throughput;  // rgb: path throughput, w: unused
   vec4 radiance;    // rgb: radiance gathered so far, w: unused
-  uvec4 info;       // x: pixel, y: rng key, z: depth (scattering events so far), w: unused
+  uvec4 info;       // x: pixel, y: rng key, z: depth (scattering events so far), w: root path (its sample)
 };
 
 struct ShadowRay {
@@ -87,7 +88,7 @@ struct FilmPixel {
 
 // Queue counters and indirect dispatch arguments (x,y,z used; w pads to 16 bytes).
 struct Control {
-  uvec4 counts;          // x, y: ray queue sizes (ping-pong), z: shadow queue size, w: unused
+  uvec4 counts;          // x, y: ray queue sizes (ping-pong), z: shadow queue size, w: split children allocated
   uvec4 rayArgs;         // dispatch of intersect and shade
   uvec4 shadowArgs;      // dispatch of shadow
   uvec4 accumulateArgs;  // dispatch of accumulate: non-zero only once no path is alive
@@ -108,7 +109,7 @@ struct PushConstants {
   uint width;
   uint height;
   uint seed;
-  uint queueCapacity;
+  uint queueCapacity;  // path pool size: camera paths plus room for split children
   vec4 cameraOrigin;  // xyz, w: camera kind as float (0 perspective, 1 orthographic)
   vec4 cameraForward; // xyz unit
   vec4 cameraRight;   // xyz: scaled by tan(xfov/2), or half width for orthographic

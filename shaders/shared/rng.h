@@ -7,13 +7,14 @@ VKMC_BEGIN_NAMESPACE
 
 VKMC_CONST uint kDimsCamera = 3u;     // pixel jitter (2), camera-ray roulette
 VKMC_CONST uint kDimCameraRoulette = 2u;  // within the camera block
-VKMC_CONST uint kDimsPerBounce = 8u;  // bsdf lobe, bsdf (2), roulette, shadow roulette, then light samples
+VKMC_CONST uint kDimsPerBounce = 9u;  // bsdf lobe, bsdf (2), roulette, shadow roulette, light sample (3), split
 VKMC_CONST uint kDimBsdfLobe = 0u;
 VKMC_CONST uint kDimBsdf = 1u;
 VKMC_CONST uint kDimRoulette = 3u;
 VKMC_CONST uint kDimShadowRoulette = 4u;
 VKMC_CONST uint kDimLightSelect = 5u;
 VKMC_CONST uint kDimLightPoint = 6u;  // and 7
+VKMC_CONST uint kDimSplit = 8u;
 // Light sample j > 0 of a split bounce takes its three dimensions from a separate stream.
 VKMC_CONST uint kDimsSplitBase = 0x40000000u;
 
@@ -35,6 +36,9 @@ VKMC_FN uint pathKey(uint seed, uint pixel, uint sampleIndex) {
 VKMC_FN float randomUnit(uint key, uint dim) {
   return float(hashU32(key ^ hashU32(dim * 0x9e3779b9u + 0x7f4a7c15u)) >> 8u) * (1.0f / 16777216.0f);
 }
+
+// Key of split child c (c > 0) spawned at `depth`: an independent stream for the rest of its path.
+VKMC_FN uint childKey(uint key, uint depth, uint c) { return c == 0u ? key : hashU32(key ^ hashU32(c * 0x9e3779b9u + depth * 0x85ebca6bu)); }
 
 VKMC_FN uint bounceDim(uint depth, uint offset) { return kDimsCamera + depth * kDimsPerBounce + offset; }
 

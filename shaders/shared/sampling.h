@@ -74,6 +74,10 @@ VKMC_FN vec3 decodeOctahedral(vec2 e) {
   return normalize(v);
 }
 
+// Splitting and Russian roulette as one mechanism (as in EARS): a factor q yields floor(q + u) children,
+// each weighted 1 / q, so the expected total weight is one. q < 1 is roulette, q > 1 splitting.
+VKMC_FN uint splitCount(float q, float u) { return uint(floor(q + u)); }
+
 VKMC_FN float maxComponent(vec3 v) { return max(v.x, max(v.y, v.z)); }
 VKMC_FN float luminance(vec3 c) { return dot(c, vec3(0.2126f, 0.7152f, 0.0722f)); }
 
