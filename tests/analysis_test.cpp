@@ -3,6 +3,7 @@
 
 #include "analysis/error_metrics.h"
 #include "error.h"
+#include "estimators/efficiency_roulette.h"
 #include "estimators/estimator_config.h"
 
 using namespace vkmc;
@@ -75,4 +76,38 @@ TEST(EstimatorConfig, RejectsUnknownKeysBadValuesAndEndlessPaths) {
   EXPECT_THROW(endless.validate(), Error) << "no roulette and no depth cap never ends";
   endless.maxDepth = 8;
   EXPECT_NO_THROW(endless.validate());
+}
+
+TEST(EfficiencyRoulette, KillsFreelyWhereTheContinuationAddsNothing) {
+  // Every path gathers all of its estimate by depth 1: later decisions may kill at no variance cost.
+  std::vector<PilotPath> pilot(1000);
+  for (PilotPath& p : pilot) {
+    p.radiance = 1.0f;
+    p.lastDepth = 10;
+    p.beta.fill(0.5f);
+    p.gathered.fill(1.0f);
+  }
+  RouletteTable t = optimizeRouletteScales(pilot, 0.1, 2.0, 1);
+  EXPECT_TRUE(std::isinf(t.scale[0])) << "depths before the first decision are left alone";
+  for (uint32_t d = 1; d < 9; ++d) {
+    EXPECT_NEAR(t.scale[d], 0.01f, 1e-6f) << "depth " << d;
+    // No variance is added, so the gain is the cost ratio: 1 + 2 x 11 rays against what remains after killing
+    // with survival 0.01 x 0.5 the 2 (10 - d) rays of the continuation.
+    double saved = (1.0 - 0.005) * 2.0 * (10 - d);
+    EXPECT_NEAR(t.predictedGain[d], 23.0 / (23.0 - saved), 1e-6) << "depth " << d;
+  }
+}
+
+TEST(EfficiencyRoulette, KeepsPathsWhoseContinuationCarriesTheEstimate) {
+  // The whole estimate arrives late and cheaply: killing would add far more variance than it saves cost.
+  std::vector<PilotPath> pilot(1000);
+  for (size_t i = 0; i < pilot.size(); ++i) {
+    PilotPath& p = pilot[i];
+    p.radiance = 10.0f;
+    p.lastDepth = 4;
+    p.beta.fill(0.9f);
+    p.gathered.fill(0.0f);
+  }
+  RouletteTable t = optimizeRouletteScales(pilot, 1e-4, 2.0, 1);
+  for (uint32_t d = 1; d < 4; ++d) EXPECT_GE(t.scale[d], 1.0f / 0.9f) << "depth " << d << ": survival must stay 1";
 }

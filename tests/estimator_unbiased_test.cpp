@@ -27,6 +27,7 @@ std::vector<Variant> variants() {
   add("rr fixed q=0.5", [](EstimatorConfig& c) { c.rr = RouletteMode::Fixed; c.rrQ = 0.5f; c.rrDepth = 1; });
   add("rr fixed q=0.7 c=0.3", [](EstimatorConfig& c) { c.rr = RouletteMode::Fixed; c.rrQ = 0.7f; c.rrC = 0.3f; c.rrDepth = 1; });
   add("rr throughput from 1", [](EstimatorConfig& c) { c.rrDepth = 1; });
+  add("rr efficiency", [](EstimatorConfig& c) { c.rr = RouletteMode::Efficiency; });
   add("light samples 4", [](EstimatorConfig& c) { c.lightSamples = 4; });
   add("light samples 3, split depth 3", [](EstimatorConfig& c) { c.lightSamples = 3; c.splitDepth = 3; });
   add("bsdf samples 4", [](EstimatorConfig& c) { c.bsdfSamples = 4.0f; });
@@ -102,6 +103,16 @@ TEST(EstimatorUnbiased, VeachSceneMatchesTheBaselineForEachTechniqueOnEachPlate)
       EXPECT_LT(maxZ(region(r.film, 8, b.y0, 88, b.y1), region(ref.film, 8, b.y0, 88, b.y1)), 5.0) << v.name << ", " << b.name;
     }
   }
+}
+
+TEST(EstimatorUnbiased, StiffFurnaceWithEfficiencyRoulette) {
+  EstimatorConfig c;
+  c.rr = RouletteMode::Efficiency;
+  RenderOutcome r = renderWith("furnace_stiff.gltf", c, 8, 8, 64);
+  ASSERT_EQ(r.film.totalNonfinite(), 0u);
+  RegionStats s = whole(r.film);
+  EXPECT_LT(maxZ(s, glm::dvec3(100.0)), 5.0) << "mean " << s.mean.x << " sigma " << std::sqrt(s.variance.x);
+  EXPECT_LT(std::sqrt(s.variance.x), 0.5) << "the test must resolve a 2.5% bias";
 }
 
 TEST(EstimatorUnbiased, StiffFurnaceWithThroughputRoulette) {

@@ -109,9 +109,42 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
   settings.camera = makeCameraRig(camera, width, height);
   settings.progress = options.progress;
   settings.timeBudget = options.timeBudget;
+  std::optional<RouletteTable> roulette;
+  double pilotSeconds = 0.0;
+  if (options.estimator.rr == RouletteMode::Efficiency) {
+    // Pilot: no roulette, no splitting, a depth cap (its truncation only shortens the statistics), a few
+    // samples per pixel; its time is part of the estimator's cost and counts as render time.
+    RenderSettings pilotSettings = settings;
+    pilotSettings.estimator.rr = RouletteMode::None;
+    pilotSettings.estimator.maxDepth = options.estimator.maxDepth ? std::min(options.estimator.maxDepth, 24u) : 24u;
+    pilotSettings.estimator.bsdfSamples = 1.0f;
+    pilotSettings.estimator.splitDepth = 1;
+    pilotSettings.spp = std::min<uint32_t>(4, options.spp);
+    pilotSettings.timeBudget = 0.0;
+    pilotSettings.progress = false;
+    pilotSettings.recordDepthStats = true;
+    WavefrontRenderer pilot(ctx, gpuScene, pilotSettings);
+    out.setup.pipelines += pilot.pipelineSeconds();
+    RenderStats pilotStats;
+    Film pilotFilm = pilot.render(pilotStats);
+    double variance = 0.0;
+    for (size_t p = 0; p < pilotFilm.pixels(); ++p)
+      for (int c = 0; c < 3; ++c) variance += pilotFilm.varianceOfMean(p, c) * double(pilotFilm.count[p]);
+    variance /= 3.0 * std::max<size_t>(1, pilotFilm.pixels());
+    double raysPerVertex = double(pilotStats.extensionRays + pilotStats.shadowRays) /
+                           std::max(1.0, double(pilotStats.extensionRays));
+    // Roulette acts at the decision of vertex d when d + 1 >= rr_depth.
+    roulette = optimizeRouletteScales(pilot.pilot(), variance, raysPerVertex, std::max(options.estimator.rrDepth, 1u) - 1u);
+    pilotSeconds = pilotStats.seconds;
+  }
+  if (options.timeBudget > 0.0) settings.timeBudget = std::max(1e-3, options.timeBudget - pilotSeconds);
   WavefrontRenderer renderer(ctx, gpuScene, settings);
-  out.setup.pipelines = renderer.pipelineSeconds();
+  if (roulette) renderer.setRouletteScales(roulette->scale);
+  out.setup.pipelines += renderer.pipelineSeconds();
   out.film = renderer.render(out.stats);
+  out.stats.seconds += pilotSeconds;
+  out.pilotSeconds = pilotSeconds;
+  out.roulette = roulette;
   if (reference) out.error = compareImages(filmToImage(out.film), *reference);
   return out;
 }
@@ -142,6 +175,12 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["mean_variance"] = {var.x, var.y, var.z};
   j["device"] = r.device;
   j["spp_reached"] = s.samplesPerPixel;
+  if (r.roulette) {
+    nlohmann::json scales = nlohmann::json::array();
+    for (float k : r.roulette->scale) scales.push_back(std::isfinite(k) ? nlohmann::json(k) : nlohmann::json("none"));
+    j["efficiency_roulette"] = {{"pilot_seconds", r.pilotSeconds}, {"scale_per_depth", scales},
+                                {"formula", "survival = min(scale[depth] * max(throughput), 0.999)"}};
+  }
   if (o.timeBudget > 0.0) j["time_budget"] = o.timeBudget;
   // Without a reference: relative variance (per-pixel variance of the mean over mean^2 + epsilon, averaged
   // over pixels and channels) is the expected relMSE of an unbiased render, so it gives an efficiency too.

@@ -47,6 +47,8 @@ struct RenderOutcome {
   std::string device;
   uint32_t width = 0, height = 0;
   std::optional<ErrorMetrics> error;  // against the reference, when one was given
+  double pilotSeconds = 0.0;           // efficiency roulette's pilot, included in stats.seconds
+  std::optional<RouletteTable> roulette;
 };
 
 // Throws vkmc::Error on bad options or input, before anything is written.

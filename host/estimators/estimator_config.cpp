@@ -76,7 +76,6 @@ void EstimatorConfig::validate() const {
   if (rr == RouletteMode::None && maxDepth == 0)
     throw Error("rr none needs a depth cap (--max-depth > 0): without roulette or a cap paths never end");
   if (!nee && lightSamples > 1) throw Error("light_samples > 1 needs nee on");
-  if (rr == RouletteMode::Efficiency) throw Error("rr efficiency is not implemented yet");
   if (!std::isfinite(bsdfSamples) || bsdfSamples < 1.0f || bsdfSamples > 64.0f) throw Error("bsdf_samples must be in [1, 64]");
 }
 

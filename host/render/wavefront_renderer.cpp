@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 
 #include "../shaders/shared/layout.h"
 #include "../shaders/shared/sampling.h"
@@ -73,6 +74,12 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   film_ = storage(filmBytes, vk::MemoryKind::HostVisible);
   pixelEstimate_ = storage(pixels * sizeof(float), vk::MemoryKind::HostVisible);
   std::memset(pixelEstimate_.mapped(), 0, pixels * sizeof(float));
+  rouletteTable_ = storage(gpu::kRouletteTableDepths * sizeof(float), vk::MemoryKind::HostVisible);
+  std::array<float, kRouletteTableDepths> noRoulette;
+  noRoulette.fill(std::numeric_limits<float>::infinity());
+  setRouletteScales(noRoulette);
+  depthStats_ = storage(settings.recordDepthStats ? uint64_t(pool_) * gpu::kRouletteTableDepths * 8 : 16,
+                        vk::MemoryKind::HostVisible);
 
   layout_ = std::make_unique<vk::KernelLayout>(ctx);
   layout_->bindTexel(BINDING_TRIANGLES, scene.triangles());
@@ -87,11 +94,14 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   layout_->bindStorage(BINDING_CONTROL, control_);
   layout_->bindStorage(BINDING_FILM, film_);
   layout_->bindStorage(BINDING_PIXEL_ESTIMATE, pixelEstimate_);
+  layout_->bindStorage(BINDING_ROULETTE_TABLE, rouletteTable_);
+  layout_->bindStorage(BINDING_DEPTH_STATS, depthStats_);
 
   auto start = Clock::now();
   std::vector<vk::SpecConstant> specs{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize},
                                       {SPEC_HAS_LIGHTS, scene.info().emissiveTriangles > 0 ? 1u : 0u}};
   for (const vk::SpecConstant& s : est.specConstants()) specs.push_back(s);
+  specs.push_back({SPEC_RECORD_DEPTH_STATS, settings.recordDepthStats ? 1u : 0u});
   auto make = [&](const char* name, std::span<const uint32_t> spirv) {
     return std::make_unique<vk::Kernel>(ctx, *layout_, name, spirv, specs);
   };
@@ -122,6 +132,26 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
 
 WavefrontRenderer::~WavefrontRenderer() = default;
 
+void WavefrontRenderer::setRouletteScales(const std::array<float, kRouletteTableDepths>& scales) {
+  std::memcpy(rouletteTable_.mapped(), scales.data(), sizeof(float) * scales.size());
+}
+
+void WavefrontRenderer::collectPilot(uint32_t pathCount) {
+  std::vector<gpu::PathState> paths(pathCount);
+  paths_.download(paths.data(), pathCount * sizeof(gpu::PathState));
+  const auto* stats = static_cast<const glm::vec2*>(depthStats_.mapped());
+  for (uint32_t i = 0; i < pathCount; ++i) {
+    PilotPath p;
+    p.radiance = gpu::luminance(glm::vec3(paths[i].radiance));
+    p.lastDepth = paths[i].info.z;
+    for (uint32_t d = 0; d < kRouletteTableDepths; ++d) {
+      p.beta[d] = stats[i * kRouletteTableDepths + d].x;
+      p.gathered[d] = stats[i * kRouletteTableDepths + d].y;
+    }
+    if (std::isfinite(p.radiance)) pilot_.push_back(p);
+  }
+}
+
 uint32_t WavefrontRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples,
                                        RenderStats& stats) {
   gpu::PushConstants pc{};
@@ -144,6 +174,10 @@ uint32_t WavefrontRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount,
 
   auto* control = static_cast<gpu::Control*>(control_.mapped());
   std::memset(control, 0, sizeof(gpu::Control));
+  if (settings_.recordDepthStats) {  // -1: "no decision recorded at this depth"
+    auto* stats = static_cast<float*>(depthStats_.mapped());
+    std::fill(stats, stats + size_t(pool_) * kRouletteTableDepths * 2, -1.0f);
+  }
   const uint32_t maxDepth = settings_.estimator.maxDepth;
   const uint32_t depthCap = maxDepth == 0 ? UINT32_MAX : maxDepth + 1;  // +1: the last hit's emission
   uint32_t bounce = 0;
@@ -182,6 +216,7 @@ uint32_t WavefrontRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount,
   stats.extensionRays += control->totals.y;
   stats.shadowRays += control->totals.z;
   stats.primaryRays += control->totals.x;
+  if (settings_.recordDepthStats) collectPilot(count);
   return bounce;
 }
 

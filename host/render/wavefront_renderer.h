@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "estimators/efficiency_roulette.h"
 #include "estimators/estimator_config.h"
 #include "render/film.h"
 #include "render/gpu_scene.h"
@@ -26,6 +27,7 @@ struct RenderSettings {
   CameraRig camera{};
   bool progress = false;       // progress line on stderr
   uint32_t maxPathsPerPass = 1u << 18;  // wavefront size: paths in flight per pass
+  bool recordDepthStats = false;         // efficiency-roulette pilot: per-path, per-depth statistics
 };
 
 struct RenderStats {
@@ -49,6 +51,10 @@ class WavefrontRenderer {
   ~WavefrontRenderer();
   Film render(RenderStats& stats);
   double pipelineSeconds() const { return pipelineSeconds_; }
+  // Efficiency roulette: the per-depth scales k_d the kernels read.
+  void setRouletteScales(const std::array<float, kRouletteTableDepths>& scales);
+  // Pilot statistics gathered by render() when settings.recordDepthStats is set.
+  const std::vector<PilotPath>& pilot() const { return pilot_; }
   uint64_t deviceBytes() const { return deviceBytes_; }
 
  private:
@@ -64,7 +70,9 @@ class WavefrontRenderer {
   std::unique_ptr<vk::KernelLayout> layout_;
   std::unique_ptr<Kernels> kernels_;
   std::unique_ptr<vk::GpuTimer> timer_;
-  vk::Buffer paths_, hits_, queues_, shadowQueue_, control_, film_, pixelEstimate_;
+  vk::Buffer paths_, hits_, queues_, shadowQueue_, control_, film_, pixelEstimate_, rouletteTable_, depthStats_;
+  std::vector<PilotPath> pilot_;
+  void collectPilot(uint32_t pathCount);
   double pipelineSeconds_ = 0.0;
   uint64_t deviceBytes_ = 0;
 };

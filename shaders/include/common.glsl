@@ -22,6 +22,7 @@ layout(constant_id = SPEC_SHADOW_RR_THRESHOLD) const float kShadowRouletteThresh
 layout(constant_id = SPEC_SHADOW_RR_Q) const float kShadowRouletteQ = 0.5;
 layout(constant_id = SPEC_CAMERA_RR_Q) const float kCameraRouletteQ = 0.0;
 layout(constant_id = SPEC_BSDF_SAMPLES) const float kBsdfSamples = 1.0;
+layout(constant_id = SPEC_RECORD_DEPTH_STATS) const uint kRecordDepthStats = 0u;
 
 layout(push_constant, std430) uniform Push { PushConstants pc; };
 
@@ -39,6 +40,8 @@ layout(binding = BINDING_SHADOW_QUEUE, std430) buffer ShadowQueue { ShadowRay sh
 layout(binding = BINDING_CONTROL, std430) buffer ControlBuffer { Control control; };
 layout(binding = BINDING_FILM, std430) buffer Film { FilmPixel film[]; };
 layout(binding = BINDING_PIXEL_ESTIMATE, std430) readonly buffer PixelEstimate { float pixelEstimate[]; };
+layout(binding = BINDING_ROULETTE_TABLE, std430) readonly buffer RouletteTable { float rouletteScale[]; };
+layout(binding = BINDING_DEPTH_STATS, std430) buffer DepthStats { vec2 depthStats[]; };
 
 // Indirect dispatches may round up, and big ones use a 2D grid.
 uint invocationIndex() {

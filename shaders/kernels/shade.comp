@@ -177,6 +177,9 @@ void main() {
   uint tri = floatBitsToUint(hit.w);
   uint root = path.info.w;
   vec3 wo = -path.direction.xyz;
+  // Pilot of efficiency roulette: what the sample had gathered when the previous vertex decided to go on.
+  if (kRecordDepthStats != 0u && path.info.z >= 1u && path.info.z <= kRouletteTableDepths)
+    depthStats[id * kRouletteTableDepths + path.info.z - 1u].y = luminance(path.radiance.rgb);
   if (tri == kMissPrimitive) {
     addToSample(id, root, path.throughput.rgb * pc.background.rgb);
     return;
@@ -254,11 +257,16 @@ void main() {
           beta /= 1.0 - kRouletteQ;
         }
       } else {
-        float survival = min(maxComponent(beta), kRouletteMaxSurvival);
+        float survival = kRouletteMode == kRouletteEfficiency
+                             ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] * maxComponent(beta)
+                             : maxComponent(beta);
+        survival = min(survival, kRouletteMaxSurvival);
         continues = splitCount(survival, r) > 0u;
         beta /= survival;
       }
     }
+    if (kRecordDepthStats != 0u && depth < kRouletteTableDepths && continues)
+      depthStats[id * kRouletteTableDepths + depth].x = maxComponent(beta);
     if (!continues) continue;
     uint target = c == 0u ? id : firstChild + c - 1u;
     paths[target].origin = vec4(offsetRayOrigin(s.p, s.pError, s.ng, wi), 0.0);

@@ -18,7 +18,9 @@
 #define BINDING_TEST_RAYS 11      // TestRay[] (trace_rays kernel only)
 #define BINDING_TEST_HITS 12      // vec4[] (trace_rays kernel only)
 #define BINDING_PIXEL_ESTIMATE 13 // float[]: running luminance estimate per pixel (shadow-ray roulette)
-#define BINDING_COUNT 14
+#define BINDING_ROULETTE_TABLE 14 // float[kRouletteTableDepths]: efficiency roulette scale per depth
+#define BINDING_DEPTH_STATS 15    // vec2[pool * kRouletteTableDepths]: pilot (beta, gathered) per path and depth
+#define BINDING_COUNT 16
 
 // Specialization constant ids.
 #define SPEC_WORKGROUP_SIZE 0
@@ -39,6 +41,7 @@
 #define SPEC_SHADOW_RR_THRESHOLD 14  // float: 0 = off
 #define SPEC_SHADOW_RR_Q 15          // float: termination probability of a tiny shadow ray
 #define SPEC_CAMERA_RR_Q 16          // float: 0 = off
+#define SPEC_RECORD_DEPTH_STATS 18   // 1: the efficiency-roulette pilot records per-depth statistics
 #define SPEC_BSDF_SAMPLES 17         // float: continuations per hit below SPEC_SPLIT_DEPTH (1 = no splitting)
 
 VKMC_BEGIN_NAMESPACE
@@ -53,6 +56,7 @@ VKMC_CONST uint kCameraOrthographic = 1u;
 // surface of albedo a, so the second moment grows like (a^2 / cap)^n: a cap of 0.95 (Mitsuba's) gives infinite
 // variance above albedo 0.975. 0.999 keeps the variance finite up to albedo 0.9995 and still ends paths.
 VKMC_CONST float kRouletteMaxSurvival = 0.999f;
+VKMC_CONST uint kRouletteTableDepths = 16u;  // depths with their own efficiency-roulette scale
 VKMC_CONST uint kMisNone = 0u, kMisBalance = 1u, kMisPower = 2u;
 VKMC_CONST uint kBsdfSamplingUniform = 0u, kBsdfSamplingCosine = 1u, kBsdfSamplingFull = 2u;
 VKMC_CONST uint kLightSamplingArea = 0u, kLightSamplingSolidAngle = 1u;

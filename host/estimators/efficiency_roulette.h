@@ -1,0 +1,40 @@
+// Efficiency-optimized Russian roulette (after Veach's thesis, sec. 10.4.1, and the ADRRS/EARS line of work):
+// the survival probability at depth d is s = min(k_d * max(beta), cap), with one scale k_d per depth chosen
+// to maximize the efficiency 1 / (V * T) measured on the scene itself.
+//
+// A pilot pass without roulette records, for every path i and depth d, the throughput beta_{i,d} at the
+// roulette decision, the part of the sample's estimate gathered after it, F_{i,d} = L_i - L_{i,<=d}, and the
+// rays traced after it, C_{i,d}. Rouletting with survival s_i adds F^2 (1/s - 1) to the second moment (the
+// unbiased estimator F/s with probability s, else 0) and saves (1 - s) C in cost, so over N pilot samples
+//   V_d(k) = V + (1/N) sum_i F_{i,d}^2 (1/s_i(k) - 1),   T_d(k) = T - (1/N) sum_i (1 - s_i(k)) C_{i,d},
+// where V is the per-sample variance and T the per-sample cost without roulette. k_d maximizes
+// 1 / (V_d(k) T_d(k)) over a log-spaced grid; "no roulette at this depth" (k = infinity) is a candidate, so the
+// choice never makes the pilot's efficiency worse. Depths are optimized one at a time (a greedy
+// approximation: roulette at one depth changes what later depths see).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace vkmc {
+
+inline constexpr uint32_t kRouletteTableDepths = 16;
+
+struct PilotPath {
+  float radiance = 0.0f;  // luminance of the sample's final estimate L
+  uint32_t lastDepth = 0; // depth of the path's last vertex
+  std::array<float, kRouletteTableDepths> beta{};      // max component of throughput at the decision; < 0: none
+  std::array<float, kRouletteTableDepths> gathered{};  // luminance gathered up to and including depth d; < 0: none
+};
+
+struct RouletteTable {
+  std::array<float, kRouletteTableDepths> scale{};  // k_d; +inf: no roulette at that depth
+  std::array<double, kRouletteTableDepths> predictedGain{};  // efficiency ratio predicted at each depth
+};
+
+// samplesVariance: per-sample variance of the pixel estimates (image mean); raysPerShadowedVertex: rays one
+// vertex costs after the decision (its continuation ray plus its light samples).
+RouletteTable optimizeRouletteScales(const std::vector<PilotPath>& pilot, double sampleVariance, double raysPerVertex,
+                                     uint32_t firstDepth);
+
+}  // namespace vkmc
