@@ -16,7 +16,8 @@ size="--width 128 --height 128"
 {
   echo "# Estimators at equal time"
   echo
-  echo "Produced by \`tools/estimator_table.sh $budget $refspp\` on $($vkmc render scenes/furnace.gltf --width 4 --height 4 --spp 1 -q -o /tmp/vkmc-probe.exr --report /dev/stdout | python3 -c 'import json,sys; print(json.load(sys.stdin)["device"])')."
+  $vkmc render scenes/furnace.gltf --width 4 --height 4 --spp 1 -q -o build/estimator-table/probe.exr --report build/estimator-table/probe.json
+  echo "Produced by \`tools/estimator_table.sh $budget $refspp\` on $(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["device"])' build/estimator-table/probe.json)."
   echo "Each render gets the same wall-clock budget ($budget s, whole sample passes); relMSE is against a"
   echo "${refspp}-spp baseline render with another seed (cached in build/references/); efficiency = 1/(relMSE x"
   echo "seconds), relative to the baseline (\`--rr throughput --nee on --mis power --bsdf-sampling bsdf\`). 128x128"
@@ -48,7 +49,7 @@ PY
       eff=${line%%|*}
       [[ -z $base_eff ]] && base_eff=$eff
       rest=${line#*|}
-      echo "| ${name} | ${rest#*|} |"
+      echo "| ${name} | ${rest#*|} |" | sed 's/|/ | /g; s/  */ /g'
     done
   done
 } > "$out.tmp"

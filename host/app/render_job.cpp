@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "../shaders/shared/sampling.h"
 #include "bvh/bvh.h"
 #include "error.h"
 #include "render/gpu_scene.h"
@@ -127,14 +128,21 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
     out.setup.pipelines += pilot.pipelineSeconds();
     RenderStats pilotStats;
     Film pilotFilm = pilot.render(pilotStats);
+    // Relative to each pixel's mean, as relMSE is.
+    std::vector<double> weight(pilotFilm.pixels());
     double variance = 0.0;
-    for (size_t p = 0; p < pilotFilm.pixels(); ++p)
-      for (int c = 0; c < 3; ++c) variance += pilotFilm.varianceOfMean(p, c) * double(pilotFilm.count[p]);
+    for (size_t p = 0; p < pilotFilm.pixels(); ++p) {
+      double m = gpu::luminance(glm::vec3(pilotFilm.mean(p, 0), pilotFilm.mean(p, 1), pilotFilm.mean(p, 2)));
+      weight[p] = 1.0 / (m * m + kRelMseEpsilon);
+      for (int c = 0; c < 3; ++c) variance += pilotFilm.varianceOfMean(p, c) * double(pilotFilm.count[p]) * weight[p];
+    }
     variance /= 3.0 * std::max<size_t>(1, pilotFilm.pixels());
+    std::vector<PilotPath> pilotPaths = pilot.pilot();
+    for (PilotPath& pp : pilotPaths) pp.weight = static_cast<float>(weight[std::min<size_t>(pp.pixel, weight.size() - 1)]);
     double raysPerVertex = double(pilotStats.extensionRays + pilotStats.shadowRays) /
                            std::max(1.0, double(pilotStats.extensionRays));
     // Roulette acts at the decision of vertex d when d + 1 >= rr_depth.
-    roulette = optimizeRouletteScales(pilot.pilot(), variance, raysPerVertex, std::max(options.estimator.rrDepth, 1u) - 1u);
+    roulette = optimizeRouletteScales(pilotPaths, variance, raysPerVertex, std::max(options.estimator.rrDepth, 1u) - 1u);
     pilotSeconds = pilotStats.seconds;
   }
   if (options.timeBudget > 0.0) settings.timeBudget = std::max(1e-3, options.timeBudget - pilotSeconds);

@@ -28,7 +28,7 @@ RouletteTable optimizeRouletteScales(const std::vector<PilotPath>& pilot, double
         double s = std::min(1.0, k * p.beta[d]);
         if (s >= 1.0) continue;
         double f = static_cast<double>(p.radiance) - p.gathered[d];
-        addedVariance += f * f * (1.0 / s - 1.0);
+        addedVariance += p.weight * f * f * (1.0 / s - 1.0);
         savedCost += (1.0 - s) * raysPerVertex * (p.lastDepth - d);
       }
       double product = (variance + addedVariance / n) * std::max(cost - savedCost / n, 1e-9);

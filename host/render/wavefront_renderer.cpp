@@ -144,6 +144,7 @@ void WavefrontRenderer::collectPilot(uint32_t pathCount) {
     PilotPath p;
     p.radiance = gpu::luminance(glm::vec3(paths[i].radiance));
     p.lastDepth = paths[i].info.z;
+    p.pixel = paths[i].info.x;
     for (uint32_t d = 0; d < kRouletteTableDepths; ++d) {
       p.beta[d] = stats[i * kRouletteTableDepths + d].x;
       p.gathered[d] = stats[i * kRouletteTableDepths + d].y;
@@ -244,12 +245,16 @@ Film WavefrontRenderer::render(RenderStats& stats) {
   auto start = Clock::now();
   double lastProgress = 0.0;
   // Small images take several samples per pixel per pass, so that a pass fills the wavefront.
-  const uint32_t perPass = std::clamp(capacity_ / std::max(pixels, 1u), 1u, kSamplesPerBatch);
+  const uint32_t maxPerPass = std::clamp(capacity_ / std::max(pixels, 1u), 1u, kSamplesPerBatch);
+  // A time budget is checked between passes: start with one sample per pass and grow while a pass takes
+  // under 1/16 of the budget, so the overrun stays small without paying per-pass overhead all along.
+  uint32_t perPass = settings_.timeBudget > 0.0 ? 1u : maxPerPass;
   uint32_t inBatch = 0;
   const double budget = settings_.timeBudget;
   for (uint32_t s = 0; s < settings_.spp;) {
     if (budget > 0.0 && s > 0 && since(start) >= budget) break;
     uint32_t samples = std::min(perPass, settings_.spp - s);
+    double passStart = since(start);
     for (uint32_t first = 0; first < pixels; first += capacity_) {
       uint32_t bounces = renderPass(first, std::min(capacity_, pixels - first), s, samples, stats);
       stats.maxBounces = std::max(stats.maxBounces, bounces);
@@ -257,8 +262,9 @@ Film WavefrontRenderer::render(RenderStats& stats) {
     }
     s += samples;
     inBatch += samples;
+    if (settings_.timeBudget > 0.0 && since(start) - passStart < settings_.timeBudget / 16.0) perPass = std::min(2 * perPass, maxPerPass);
     bool last = s == settings_.spp || (budget > 0.0 && since(start) >= budget);
-    if (inBatch + perPass > kSamplesPerBatch || last) {
+    if (inBatch + maxPerPass > kSamplesPerBatch || last) {
       foldFilm(film);
       inBatch = 0;
     }
