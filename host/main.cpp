@@ -11,6 +11,8 @@
 #include "app/render_job.h"
 #include "error.h"
 #include "analysis/error_metrics.h"
+#include "analysis/study.h"
+#include <fstream>
 #include "io/exr.h"
 #include "io/png.h"
 #include "vk/context.h"
@@ -96,6 +98,11 @@ int main(int argc, char** argv) {
   render->add_option("--time-budget", ro.timeBudget, "render whole sample passes until this many seconds are spent (--spp caps)");
   render->add_option("--reference", ro.referencePath, "reference EXR: the report gains mse, relmse, efficiency");
 
+  std::string studyPath, studyOut;
+  CLI::App* benchStudy = app.add_subcommand("bench", "error-against-time study: renders, results.csv/json, SVG plot, summary, images");
+  benchStudy->add_option("study", studyPath, "study file (JSON; see host/analysis/study.h and scenes/studies/)")->required();
+  benchStudy->add_option("-o,--output", studyOut, "output folder (default bench-<study name>)");
+
   std::string cmpImage, cmpReference, cmpJson, cmpHeatmap;
   CLI::App* compare = app.add_subcommand("compare", "error metrics of an EXR against a reference EXR");
   compare->add_option("image", cmpImage, "image (EXR)")->required();
@@ -176,6 +183,14 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (bench->parsed()) return vkmc::runBenchKernels(bo);
+    if (benchStudy->parsed()) {
+      vkmc::Study study = vkmc::loadStudy(studyPath);
+      std::string dir = studyOut.empty() ? "bench-" + study.name : studyOut;
+      vkmc::runStudy(study, dir);
+      std::ifstream summary(dir + "/summary.md");
+      std::cout << summary.rdbuf() << "wrote " << dir << "/{results.csv,results.json,error_vs_time.svg,summary.md,equal_time.png}\n";
+      return 0;
+    }
     if (compare->parsed()) {
       checkWritable(cmpJson, "--json");
       checkWritable(cmpHeatmap, "--heatmap");

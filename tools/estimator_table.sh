@@ -49,7 +49,7 @@ PY
       eff=${line%%|*}
       [[ -z $base_eff ]] && base_eff=$eff
       rest=${line#*|}
-      echo "| ${name} | ${rest#*|} |" | sed 's/|/ | /g; s/  */ /g'
+      echo "| ${name} | ${rest#*|} |" | sed 's/|/ | /g; s/  */ /g; s/^ //; s/ $//'
     done
   done
 } > "$out.tmp"

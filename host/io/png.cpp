@@ -12,6 +12,8 @@
 #include "error.h"
 #include "io/exr.h"
 
+#include <stb/stb_easy_font.h>
+
 namespace vkmc {
 namespace {
 uint8_t toSrgb8(double linear) {
@@ -20,6 +22,69 @@ uint8_t toSrgb8(double linear) {
   return static_cast<uint8_t>(std::lround(v * 255.0));
 }
 }  // namespace
+
+namespace {
+void writeRgbPng(const std::string& path, const std::vector<uint8_t>& rgb, uint32_t width, uint32_t height) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  image.width = width;
+  image.height = height;
+  image.format = PNG_FORMAT_RGB;
+  std::string tmp = temporaryPathFor(path);
+  if (!png_image_write_to_file(&image, tmp.c_str(), 0, rgb.data(), 0, nullptr)) {
+    std::remove(tmp.c_str());
+    throw Error("cannot write PNG '" + path + "': " + image.message);
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::remove(tmp.c_str());
+    throw Error("cannot write '" + path + "': " + ec.message());
+  }
+}
+
+// Draws text with stb_easy_font (axis-aligned quads) in black, scaled by `scale`, at (x, y).
+void drawText(std::vector<uint8_t>& rgb, uint32_t width, uint32_t height, int x, int y, const std::string& text, int scale) {
+  static char buffer[99999];
+  int quads = stb_easy_font_print(0, 0, const_cast<char*>(text.c_str()), nullptr, buffer, sizeof(buffer));
+  const float* v = reinterpret_cast<const float*>(buffer);
+  for (int q = 0; q < quads; ++q) {
+    const float* quad = v + q * 16;  // 4 vertices of (x, y, z, color)
+    int x0 = int(quad[0]), y0 = int(quad[1]), x1 = int(quad[8]), y1 = int(quad[9]);
+    for (int yy = y0 * scale; yy < y1 * scale; ++yy)
+      for (int xx = x0 * scale; xx < x1 * scale; ++xx) {
+        int px = x + xx, py = y + yy;
+        if (px < 0 || py < 0 || px >= int(width) || py >= int(height)) continue;
+        for (int c = 0; c < 3; ++c) rgb[3 * (size_t(py) * width + px) + c] = 0;
+      }
+  }
+}
+}  // namespace
+
+void writeContactSheet(const std::string& path, const std::vector<ExrImage>& images, const std::vector<std::string>& labels,
+                       float exposureStops) {
+  if (images.empty()) throw Error("no images for the contact sheet");
+  // Small renders are enlarged (nearest neighbour) so that a label fits above each.
+  const uint32_t zoom = std::max(1u, (160u + images[0].width - 1) / images[0].width);
+  const uint32_t srcW = images[0].width;
+  const uint32_t w = srcW * zoom, h = images[0].height * zoom, labelHeight = 24, gap = 4;
+  const uint32_t width = uint32_t(images.size()) * (w + gap) - gap, height = h + labelHeight;
+  std::vector<uint8_t> rgb(size_t(width) * height * 3, 255);
+  double scale = std::exp2(double(exposureStops));
+  const char* names[] = {"R", "G", "B"};
+  for (size_t k = 0; k < images.size(); ++k) {
+    uint32_t x0 = uint32_t(k) * (w + gap);
+    for (uint32_t y = 0; y < h; ++y)
+      for (uint32_t x = 0; x < w; ++x)
+        for (int c = 0; c < 3; ++c) {
+          auto it = images[k].channels.find(names[c]);
+          float v = it == images[k].channels.end() ? 0.0f : it->second[size_t(y / zoom) * srcW + x / zoom];
+          rgb[3 * (size_t(y + labelHeight) * width + x0 + x) + c] = toSrgb8(v * scale);
+        }
+    drawText(rgb, width, height, int(x0) + 2, 4, k < labels.size() ? labels[k] : "", w >= 320 ? 2 : 1);
+  }
+  writeRgbPng(path, rgb, width, height);
+}
 
 void writeFilmPng(const std::string& path, const Film& film, float exposureStops) {
   double scale = std::exp2(static_cast<double>(exposureStops));

@@ -4,6 +4,13 @@
 
 #include "render/film.h"
 
+#include <vector>
+
+#include "io/exr.h"
+
 namespace vkmc {
 void writeFilmPng(const std::string& path, const Film& film, float exposureStops);
+// Images side by side (same size), each under its label, tone-mapped to sRGB with one shared exposure.
+void writeContactSheet(const std::string& path, const std::vector<ExrImage>& images, const std::vector<std::string>& labels,
+                       float exposureStops);
 }

@@ -246,8 +246,9 @@ Film WavefrontRenderer::render(RenderStats& stats) {
   double lastProgress = 0.0;
   // Small images take several samples per pixel per pass, so that a pass fills the wavefront.
   const uint32_t maxPerPass = std::clamp(capacity_ / std::max(pixels, 1u), 1u, kSamplesPerBatch);
-  // A time budget is checked between passes: start with one sample per pass and grow while a pass takes
-  // under 1/16 of the budget, so the overrun stays small without paying per-pass overhead all along.
+  // A time budget is checked between passes: the first pass takes one sample (a slow scene must not overrun
+  // by much), each later one as many as fit in a quarter of the budget at the last pass's rate per sample,
+  // which includes the per-pass overhead, so pass sizes grow geometrically on overhead-bound small images.
   uint32_t perPass = settings_.timeBudget > 0.0 ? 1u : maxPerPass;
   uint32_t inBatch = 0;
   const double budget = settings_.timeBudget;
@@ -262,7 +263,10 @@ Film WavefrontRenderer::render(RenderStats& stats) {
     }
     s += samples;
     inBatch += samples;
-    if (settings_.timeBudget > 0.0 && since(start) - passStart < settings_.timeBudget / 16.0) perPass = std::min(2 * perPass, maxPerPass);
+    if (settings_.timeBudget > 0.0) {
+      double perSample = std::max(since(start) - passStart, 1e-6) / samples;
+      perPass = std::clamp(static_cast<uint32_t>(settings_.timeBudget / 4.0 / perSample), 1u, maxPerPass);
+    }
     bool last = s == settings_.spp || (budget > 0.0 && since(start) >= budget);
     if (inBatch + maxPerPass > kSamplesPerBatch || last) {
       foldFilm(film);

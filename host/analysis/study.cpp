@@ -1,0 +1,287 @@
+// Study runner: reference (given or cached), interleaved ladder of renders, results, plot and summary.
+#include "analysis/study.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "analysis/error_metrics.h"
+#include "analysis/plots.h"
+#include "app/render_job.h"
+#include "error.h"
+#include "io/exr.h"
+#include "io/png.h"
+#include "scene/gltf_loader.h"
+
+namespace vkmc {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot open '" + path + "'");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+uint64_t fnv1a(const std::string& bytes, uint64_t h = 1469598103934665603ull) {
+  for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+std::string cacheDir() {
+  if (const char* d = std::getenv("VKMC_CACHE_DIR")) return d;
+  if (const char* x = std::getenv("XDG_CACHE_HOME")) return std::string(x) + "/vkmc";
+  if (const char* h = std::getenv("HOME")) return std::string(h) + "/.cache/vkmc";
+  return ".vkmc-cache";
+}
+
+}  // namespace
+
+Study loadStudy(const std::string& path) {
+  nlohmann::json j = nlohmann::json::parse(readFile(path), nullptr, false);
+  if (j.is_discarded() || !j.is_object()) throw Error("study '" + path + "' is not a JSON object");
+  fs::path dir = fs::path(path).parent_path();
+  auto resolve = [&](const std::string& p) { return fs::path(p).is_absolute() ? p : (dir / p).lexically_normal().string(); };
+  Study s;
+  s.name = j.value("name", fs::path(path).stem().string());
+  if (!j.contains("scene") || !j["scene"].is_string()) throw Error("study: 'scene' (a glTF path) is required");
+  s.scenePath = resolve(j["scene"].get<std::string>());
+  auto count = [&](const char* key, uint32_t fallback, uint32_t lo, uint32_t hi) {
+    if (!j.contains(key)) return fallback;
+    if (!j[key].is_number_integer() || j[key].get<int64_t>() < lo || j[key].get<int64_t>() > hi)
+      throw Error(std::string("study: '") + key + "' must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return j[key].get<uint32_t>();
+  };
+  s.width = count("width", 64, 1, 4096);
+  s.height = count("height", 64, 1, 4096);
+  s.repeats = count("repeats", 3, 1, 100);
+  s.seed = count("seed", 1, 0, 1u << 30);
+  if (j.contains("reference")) {
+    const auto& r = j["reference"];
+    if (r.contains("exr") && r["exr"].is_string()) s.referenceExr = resolve(r["exr"].get<std::string>());
+    else if (r.contains("spp") && r["spp"].is_number_integer() && r["spp"].get<int64_t>() >= 1 && r["spp"].get<int64_t>() <= (1 << 20))
+      s.referenceSpp = r["spp"].get<uint32_t>();
+    else throw Error("study: 'reference' must be {\"exr\": path} or {\"spp\": N}");
+  }
+  if (!j.contains("configurations") || !j["configurations"].is_array() || j["configurations"].empty())
+    throw Error("study: 'configurations' must be a non-empty array");
+  for (const auto& c : j["configurations"]) {
+    if (!c.is_object() || !c.contains("name") || !c["name"].is_string()) throw Error("study: every configuration needs a 'name'");
+    StudyConfiguration sc;
+    sc.name = c["name"].get<std::string>();
+    if (c.contains("estimator_file")) sc.estimator = loadEstimatorFile(resolve(c["estimator_file"].get<std::string>()));
+    if (c.contains("estimator")) sc.estimator.applyJson(c["estimator"]);
+    sc.estimator.validate();
+    s.configurations.push_back(sc);
+  }
+  bool hasSpp = j.contains("spp"), hasSeconds = j.contains("seconds");
+  if (hasSpp == hasSeconds) throw Error("study: give exactly one ladder, 'spp' or 'seconds'");
+  s.timeLadder = hasSeconds;
+  const auto& ladder = j[hasSeconds ? "seconds" : "spp"];
+  if (!ladder.is_array() || ladder.empty()) throw Error("study: the ladder must be a non-empty array");
+  for (const auto& v : ladder) {
+    if (!v.is_number() || !(v.get<double>() > 0.0) || v.get<double>() > 1e5) throw Error("study: ladder values must be positive numbers");
+    if (!hasSeconds && v.get<double>() != std::floor(v.get<double>())) throw Error("study: spp ladder values must be integers");
+    s.ladder.push_back(v.get<double>());
+  }
+  return s;
+}
+
+std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
+  std::error_code ec;
+  fs::create_directories(outDir, ec);
+  if (!fs::is_directory(outDir)) throw Error("cannot create output folder '" + outDir + "'");
+  vk::Context ctx;
+  Scene scene = loadGltf(study.scenePath);
+
+  auto options = [&](const EstimatorConfig& e, uint32_t seed) {
+    RenderOptions o;
+    o.scenePath = study.scenePath;
+    o.width = study.width;
+    o.height = study.height;
+    o.estimator = e;
+    o.seed = seed;
+    o.progress = false;
+    return o;
+  };
+
+  // Reference: given, or rendered with the first configuration and cached by a hash of what determines it.
+  ExrImage reference;
+  std::string referenceNote;
+  if (!study.referenceExr.empty()) {
+    reference = readExr(study.referenceExr);
+    referenceNote = study.referenceExr;
+  } else {
+    std::string key = readFile(study.scenePath) + "|" + std::to_string(study.width) + "x" + std::to_string(study.height) + "|" +
+                      std::to_string(study.referenceSpp) + "|" + study.configurations[0].estimator.toJson().dump() + "|vkmc-ref-1";
+    char hex[17];
+    std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(fnv1a(key)));
+    fs::path cached = fs::path(cacheDir()) / "references" / (std::string(hex) + ".exr");
+    if (fs::exists(cached)) {
+      reference = readExr(cached.string());
+      referenceNote = cached.string() + " (cached)";
+    } else {
+      std::fprintf(stderr, "vkmc bench: rendering the reference (%u spp, %s)\n", study.referenceSpp, study.configurations[0].name.c_str());
+      RenderOptions o = options(study.configurations[0].estimator, 0x5eed0000u + study.seed);
+      o.spp = study.referenceSpp;
+      RenderOutcome r = runRender(ctx, o, scene);
+      reference = filmToImage(r.film);
+      fs::create_directories(cached.parent_path(), ec);
+      if (fs::is_directory(cached.parent_path())) writeExr(cached.string(), reference);
+      referenceNote = cached.string() + " (rendered)";
+    }
+  }
+  if (uint32_t(reference.width) != study.width || uint32_t(reference.height) != study.height)
+    throw Error("reference is " + std::to_string(reference.width) + "x" + std::to_string(reference.height) + ", the study renders " +
+                std::to_string(study.width) + "x" + std::to_string(study.height));
+
+  // Warm-up (not recorded): every configuration once at the smallest rung.
+  for (const auto& c : study.configurations) {
+    RenderOptions o = options(c.estimator, study.seed);
+    if (study.timeLadder) o.timeBudget = study.ladder.front(), o.spp = 1u << 24;
+    else o.spp = static_cast<uint32_t>(study.ladder.front());
+    runRender(ctx, o, scene);
+  }
+
+  std::vector<StudyRow> rows;
+  std::map<std::pair<size_t, size_t>, ExrImage> images;  // (configuration, rung) -> repeat 0's image
+  for (size_t rung = 0; rung < study.ladder.size(); ++rung)
+    for (uint32_t rep = 0; rep < study.repeats; ++rep)
+      for (size_t c = 0; c < study.configurations.size(); ++c) {
+        RenderOptions o = options(study.configurations[c].estimator, study.seed + rep * 7919u + uint32_t(rung) * 104729u);
+        if (study.timeLadder) o.timeBudget = study.ladder[rung], o.spp = 1u << 24;
+        else o.spp = static_cast<uint32_t>(study.ladder[rung]);
+        RenderOutcome r = runRender(ctx, o, scene);
+        ExrImage img = filmToImage(r.film);
+        ErrorMetrics e = compareImages(img, reference);
+        StudyRow row;
+        row.configuration = study.configurations[c].name;
+        row.rung = study.ladder[rung];
+        row.repeat = rep;
+        row.spp = r.stats.samplesPerPixel;
+        row.seconds = r.stats.seconds;
+        row.gpuSeconds = r.stats.gpuSeconds;
+        row.rays = r.stats.rays();
+        row.mse = e.mse;
+        row.relmse = e.relmse;
+        row.efficiency = e.relmse > 0 && row.seconds > 0 ? 1.0 / (e.relmse * row.seconds) : 0.0;
+        row.nonfinite = r.film.totalNonfinite();
+        rows.push_back(row);
+        if (rep == 0) images[{c, rung}] = std::move(img);
+        std::fprintf(stderr, "vkmc bench: %-24s rung %-6g repeat %u: %u spp, %.3f s, relMSE %.4g\n", row.configuration.c_str(), row.rung,
+                     rep, row.spp, row.seconds, row.relmse);
+      }
+
+  // results.csv / results.json
+  std::ostringstream csv;
+  csv << "configuration,rung,repeat,spp,seconds,gpu_seconds,rays,mse,relmse,efficiency,nonfinite_samples\n";
+  nlohmann::json jrows = nlohmann::json::array();
+  for (const StudyRow& r : rows) {
+    csv << '"' << r.configuration << "\"," << r.rung << ',' << r.repeat << ',' << r.spp << ',' << r.seconds << ',' << r.gpuSeconds << ','
+        << r.rays << ',' << r.mse << ',' << r.relmse << ',' << r.efficiency << ',' << r.nonfinite << '\n';
+    jrows.push_back({{"config", r.configuration}, {"rung", r.rung}, {"repeat", r.repeat}, {"spp", r.spp}, {"seconds", r.seconds},
+                     {"gpu_seconds", r.gpuSeconds}, {"rays", r.rays}, {"mse", r.mse}, {"relmse", r.relmse}, {"efficiency", r.efficiency},
+                     {"nonfinite_samples", r.nonfinite}});
+  }
+  writeFileAtomically((fs::path(outDir) / "results.csv").string(), csv.str());
+  writeFileAtomically((fs::path(outDir) / "results.json").string(),
+                      nlohmann::json{{"study", study.name}, {"device", ctx.deviceName()}, {"reference", referenceNote}, {"rows", jrows}}.dump(2) +
+                          "\n");
+
+  // Medians per configuration and rung, fits, plot.
+  struct Curve {
+    std::vector<double> seconds, relmse, spp;
+    LogFit fit, fitSpp;
+    uint64_t nonfinite = 0;
+  };
+  std::vector<Curve> curves(study.configurations.size());
+  std::vector<PlotSeries> plot;
+  for (size_t c = 0; c < study.configurations.size(); ++c) {
+    for (size_t rung = 0; rung < study.ladder.size(); ++rung) {
+      std::vector<double> s, e, n;
+      for (const StudyRow& r : rows)
+        if (r.configuration == study.configurations[c].name && r.rung == study.ladder[rung]) {
+          s.push_back(r.seconds), e.push_back(r.relmse), n.push_back(r.spp);
+          curves[c].nonfinite += r.nonfinite;
+        }
+      curves[c].seconds.push_back(median(s));
+      curves[c].relmse.push_back(median(e));
+      curves[c].spp.push_back(median(n));
+    }
+    curves[c].fit = fitLogLog(curves[c].seconds, curves[c].relmse);
+    curves[c].fitSpp = fitLogLog(curves[c].spp, curves[c].relmse);
+    plot.push_back({study.configurations[c].name, curves[c].seconds, curves[c].relmse});
+  }
+  writeFileAtomically((fs::path(outDir) / "error_vs_time.svg").string(),
+                      logLogSvg(plot, study.name + ": relMSE against render time", "seconds (median of repeats)", "relMSE"));
+
+  // Equal time: the longest time every configuration reached; equal error: the smallest error all reached.
+  double equalTime = 1e300, equalError = 0.0;
+  for (const Curve& c : curves) {
+    equalTime = std::min(equalTime, *std::max_element(c.seconds.begin(), c.seconds.end()));
+    equalError = std::max(equalError, *std::min_element(c.relmse.begin(), c.relmse.end()));
+  }
+  std::ostringstream md;
+  char timeText[64];
+  std::time_t now = std::time(nullptr);
+  std::strftime(timeText, sizeof(timeText), "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  md << "# " << study.name << "\n\n";
+  md << "Scene `" << study.scenePath << "`, " << study.width << "x" << study.height << ", " << (study.timeLadder ? "time" : "spp")
+     << " ladder, " << study.repeats << " repeats (medians), device " << ctx.deviceName() << ", " << timeText << ".\n";
+  md << "Reference: " << referenceNote << ". Efficiency = 1/(relMSE x seconds), from each configuration's log-log fit of relMSE\n"
+     << "against seconds; relative to the first configuration (" << study.configurations[0].name << ").\n\n";
+  md << "| configuration | relMSE at " << equalTime << " s | efficiency (equal time) | seconds to relMSE " << equalError
+     << " | efficiency (equal error) | slope vs log s | slope vs log spp | non-finite |\n|---|---|---|---|---|---|---|---|\n";
+  double baseEt = 0.0, baseEe = 0.0;
+  for (size_t c = 0; c < curves.size(); ++c) {
+    double errAt = curves[c].fit.at(equalTime);
+    double timeTo = curves[c].fit.inverse(equalError);
+    double effT = errAt > 0 ? 1.0 / (errAt * equalTime) : 0.0;
+    double effE = timeTo > 0 ? 1.0 / (equalError * timeTo) : 0.0;
+    if (c == 0) baseEt = effT, baseEe = effE;
+    char line[512];
+    std::snprintf(line, sizeof(line), "| %s | %.4g | %.3g | %.4g | %.3g | %.2f | %.2f | %llu |\n", study.configurations[c].name.c_str(),
+                  errAt, baseEt > 0 ? effT / baseEt : 0.0, timeTo, baseEe > 0 ? effE / baseEe : 0.0, curves[c].fit.slope,
+                  curves[c].fitSpp.slope, static_cast<unsigned long long>(curves[c].nonfinite));
+    md << line;
+  }
+  md << "\nAn unbiased estimator's error falls as 1/samples: slope -1 against spp, and against time when time grows\n"
+        "in proportion to samples (per-render overheads make small renders steeper against time). A flatter slope\n"
+        "exposes bias, or a reference too noisy for the error reached. Raw rows: results.csv; plot:\n"
+        "error_vs_time.svg; images at equal time: equal_time.png.\n";
+  writeFileAtomically((fs::path(outDir) / "summary.md").string(), md.str());
+
+  // Equal-time images: per configuration the rung whose median time is closest to the equal time.
+  std::vector<ExrImage> sheet;
+  std::vector<std::string> labels;
+  for (size_t c = 0; c < curves.size(); ++c) {
+    size_t best = 0;
+    for (size_t rung = 1; rung < study.ladder.size(); ++rung)
+      if (std::abs(std::log(curves[c].seconds[rung] / equalTime)) < std::abs(std::log(curves[c].seconds[best] / equalTime))) best = rung;
+    sheet.push_back(images[{c, best}]);
+    char label[160];
+    std::snprintf(label, sizeof(label), "%s %.2fs", study.configurations[c].name.c_str(), curves[c].seconds[best]);
+    labels.push_back(label);
+  }
+  writeContactSheet((fs::path(outDir) / "equal_time.png").string(), sheet, labels, 0.0f);
+  return rows;
+}
+
+}  // namespace vkmc

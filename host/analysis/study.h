@@ -1,0 +1,59 @@
+// Error-against-time studies (`vkmc bench STUDY.json -o DIR`): a scene, an image size, a reference, named
+// estimator configurations and an spp or time ladder; every configuration at every rung, repeated, in one
+// process with the configurations interleaved so that machine noise hits them alike.
+//
+// Study file keys:
+// | key            | meaning                                                                    | default |
+// |----------------|----------------------------------------------------------------------------|---------|
+// | name           | study name                                                                 | file    |
+// | scene          | glTF path, relative to the study file                                      | —       |
+// | width, height  | image size                                                                 | 64, 64  |
+// | reference      | {"exr": path} or {"spp": N}: rendered with the first configuration, cached | spp 1024|
+// | configurations | [{"name": ..., "estimator": {keys} or "estimator_file": path}, ...]        | —       |
+// | spp / seconds  | the ladder: samples per pixel, or time budgets in seconds                  | —       |
+// | repeats        | renders per configuration and rung (medians reported)                      | 3       |
+// | seed           | first seed; repeat r uses seed + r                                         | 1       |
+#pragma once
+#include <string>
+#include <vector>
+
+#include "estimators/estimator_config.h"
+
+namespace vkmc {
+
+struct StudyConfiguration {
+  std::string name;
+  EstimatorConfig estimator;
+};
+
+struct Study {
+  std::string name;
+  std::string scenePath;
+  uint32_t width = 64, height = 64;
+  std::string referenceExr;  // given reference, or empty
+  uint32_t referenceSpp = 1024;
+  std::vector<StudyConfiguration> configurations;
+  std::vector<double> ladder;  // spp or seconds
+  bool timeLadder = false;
+  uint32_t repeats = 3;
+  uint32_t seed = 1;
+};
+
+Study loadStudy(const std::string& path);
+
+struct StudyRow {
+  std::string configuration;
+  double rung = 0.0;  // spp or seconds asked for
+  uint32_t repeat = 0;
+  uint32_t spp = 0;
+  double seconds = 0.0, gpuSeconds = 0.0;
+  uint64_t rays = 0;
+  double mse = 0.0, relmse = 0.0, efficiency = 0.0;
+  uint64_t nonfinite = 0;
+};
+
+// Runs the study and writes results.csv, results.json, error_vs_time.svg, summary.md and equal_time.png
+// into outDir. Returns the rows.
+std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir);
+
+}  // namespace vkmc

@@ -1,0 +1,104 @@
+// A small error-against-time study end to end: every output exists and parses, the SVG is well-formed XML with
+// one line per configuration, and the baseline's error falls as 1/spp. Bad study files are rejected. (Against
+// time the slope of such tiny renders is steeper than -1: per-pass overhead dominates their few samples.)
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "analysis/study.h"
+#include "error.h"
+
+namespace fs = std::filesystem;
+using namespace vkmc;
+
+namespace {
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+fs::path writeStudy(const std::string& name, const std::string& body) {
+  fs::path dir = fs::temp_directory_path() / "vkmc-study-test";
+  fs::create_directories(dir);
+  fs::path p = dir / (name + ".json");
+  std::ofstream(p) << body;
+  return p;
+}
+}  // namespace
+
+TEST(Study, SmallSppLadderEndToEnd) {
+  setenv("VKMC_CACHE_DIR", (fs::temp_directory_path() / "vkmc-study-cache").c_str(), 1);
+  fs::path file = writeStudy("tiny", R"({"name": "tiny", "scene": ")" + std::string(VKMC_SOURCE_DIR) +
+                                         R"(/scenes/cornell_box.gltf", "width": 32, "height": 32, "reference": {"spp": 8192},
+      "configurations": [{"name": "baseline"}, {"name": "cosine", "estimator": {"bsdf_sampling": "cosine"}}],
+      "spp": [8, 64], "repeats": 1})");
+  Study study = loadStudy(file.string());
+  fs::path out = fs::temp_directory_path() / "vkmc-study-out";
+  fs::remove_all(out);
+  std::vector<StudyRow> rows = runStudy(study, out.string());
+  for (const char* f : {"results.csv", "results.json", "error_vs_time.svg", "summary.md", "equal_time.png"})
+    ASSERT_TRUE(fs::exists(out / f)) << f;
+
+  // CSV: header plus one row per configuration and rung, every numeric field parses.
+  std::istringstream csv(slurp(out / "results.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line.rfind("configuration,rung,repeat,spp,seconds", 0), 0u);
+  int n = 0;
+  while (std::getline(csv, line)) {
+    ++n;
+    std::stringstream fields(line.substr(line.find("\",") + 2));
+    std::string field;
+    while (std::getline(fields, field, ',')) EXPECT_NO_THROW((void)std::stod(field)) << line;
+  }
+  EXPECT_EQ(n, 4);
+
+  // SVG: well-formed (xmllint), one polyline per configuration.
+  std::string svg = slurp(out / "error_vs_time.svg");
+  size_t lines = 0;
+  for (size_t p = svg.find("<polyline"); p != std::string::npos; p = svg.find("<polyline", p + 1)) ++lines;
+  EXPECT_EQ(lines, 2u);
+  if (std::system("command -v xmllint >/dev/null 2>&1") == 0)
+    EXPECT_EQ(std::system(("xmllint --noout " + (out / "error_vs_time.svg").string()).c_str()), 0);
+  else
+    ADD_FAILURE() << "xmllint missing: tools/setup.sh installs libxml2-utils";
+
+  // The baseline's error falls as the samples rise, as 1/spp for an unbiased estimator.
+  const StudyRow &a = rows[0], &b = rows[2];
+  ASSERT_EQ(a.configuration, "baseline");
+  ASSERT_EQ(b.configuration, "baseline");
+  EXPECT_EQ(b.spp, 64u);
+  EXPECT_LT(b.relmse, a.relmse);
+  EXPECT_GT(b.seconds, a.seconds);
+  double slope = std::log(b.relmse / a.relmse) / std::log(double(b.spp) / a.spp);
+  EXPECT_GT(slope, -1.3);
+  EXPECT_LT(slope, -0.7);
+  EXPECT_NE(slurp(out / "summary.md").find("| cosine |"), std::string::npos);
+}
+
+TEST(Study, RejectsBadStudyFiles) {
+  EXPECT_THROW(loadStudy(writeStudy("noscene", R"({"configurations": [{"name": "a"}], "spp": [1]})").string()), Error);
+  EXPECT_THROW(loadStudy(writeStudy("twoladders", R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1], "seconds": [1]})").string()),
+               Error);
+  EXPECT_THROW(loadStudy(writeStudy("badest", R"({"scene": "x.gltf", "configurations": [{"name": "a", "estimator": {"mis": "best"}}], "spp": [1]})").string()),
+               Error);
+  EXPECT_THROW(loadStudy(writeStudy("negative", R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "seconds": [-1]})").string()), Error);
+}
+
+TEST(Study, TimeBudgetRendersReachMoreSamplesWithMoreTime) {
+  setenv("VKMC_CACHE_DIR", (fs::temp_directory_path() / "vkmc-study-cache").c_str(), 1);
+  fs::path file = writeStudy("timed", R"({"name": "timed", "scene": ")" + std::string(VKMC_SOURCE_DIR) +
+                                          R"(/scenes/cornell_box.gltf", "width": 32, "height": 32, "reference": {"spp": 512},
+      "configurations": [{"name": "baseline"}], "seconds": [0.2, 0.8], "repeats": 1})");
+  std::vector<StudyRow> rows = runStudy(loadStudy(file.string()), (fs::temp_directory_path() / "vkmc-study-timed").string());
+  ASSERT_EQ(rows.size(), 2u);
+  for (const StudyRow& r : rows) {
+    EXPECT_GE(r.seconds, r.rung) << "a budget is spent";
+    EXPECT_LT(r.seconds, r.rung * 1.5 + 0.05) << "and not overrun by more than a pass";
+  }
+  EXPECT_GT(rows[1].spp, 2 * rows[0].spp);
+  EXPECT_LT(rows[1].relmse, rows[0].relmse);
+}
