@@ -2,6 +2,7 @@
 // leaks), and non-finite samples are counted and kept out of the image.
 #include <gtest/gtest.h>
 
+#include "analysis/error_metrics.h"
 #include "app/render_job.h"
 #include "scene/gltf_loader.h"
 
@@ -92,4 +93,25 @@ TEST(RenderRobustness, NonFiniteSamplesAreCountedAndExcluded) {
       ASSERT_TRUE(std::isfinite(r.film.mean(p, c)));
       ASSERT_TRUE(std::isfinite(r.film.varianceOfMean(p, c)));
     }
+}
+
+TEST(RenderRobustness, PerPixelZTestHasItsNominalFalsePositiveRate) {
+  // Two independent renders of the grey furnace (channels equal, so each pixel is one test): at level 5%
+  // about 5% of pixels fail, within a 4-sigma binomial bound over 1024 pixels.
+  RenderOptions o;
+  o.scenePath = std::string(VKMC_SOURCE_DIR) + "/scenes/furnace.gltf";
+  o.width = 32;
+  o.height = 32;
+  o.spp = 256;
+  o.progress = false;
+  o.seed = 11;
+  ExrImage a = filmToImage(runRender(context(), o).film);
+  o.seed = 12;
+  ExrImage b = filmToImage(runRender(context(), o).film);
+  ErrorMetrics m = compareImages(a, b, 0.05, true);
+  ASSERT_TRUE(m.hasZTest);
+  double failRate = 1.0 - m.zTestPassFraction, sigma = std::sqrt(0.05 * 0.95 / 1024.0);
+  EXPECT_NEAR(failRate, 0.05, 4.0 * sigma);
+  // Sidak-corrected at 1% over the image: two unbiased renders pass everywhere (with probability 99%).
+  EXPECT_EQ(compareImages(a, b).zTestPassFraction, 1.0);
 }

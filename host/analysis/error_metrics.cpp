@@ -44,7 +44,7 @@ const std::vector<float>& channel(const ExrImage& img, const char* name, const c
 
 }  // namespace
 
-ErrorMetrics compareImages(const ExrImage& a, const ExrImage& b, double alpha) {
+ErrorMetrics compareImages(const ExrImage& a, const ExrImage& b, double alpha, bool perPixelLevel) {
   if (a.width != b.width || a.height != b.height)
     throw Error("image sizes differ: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " against " +
                 std::to_string(b.width) + "x" + std::to_string(b.height));
@@ -54,7 +54,7 @@ ErrorMetrics compareImages(const ExrImage& a, const ExrImage& b, double alpha) {
   const char* var[] = {"variance.R", "variance.G", "variance.B"};
   m.hasZTest = a.channels.count(var[0]) && b.channels.count(var[0]);
   // Sidak: each of the 3 * pixels tests at level 1 - (1 - alpha)^(1 / tests), two-sided.
-  double perTest = 1.0 - std::pow(1.0 - alpha, 1.0 / (3.0 * m.pixels));
+  double perTest = perPixelLevel ? alpha : 1.0 - std::pow(1.0 - alpha, 1.0 / (3.0 * m.pixels));
   m.zThreshold = normalQuantile(1.0 - perTest / 2.0);
   std::vector<bool> pass(m.pixels, true);
   double sumA = 0, sumB = 0;

@@ -21,9 +21,10 @@ struct ErrorMetrics {
 
 inline constexpr double kRelMseEpsilon = 1e-2;  // keeps near-black reference pixels from dominating relMSE
 
-// Compares channels R, G, B; the z-test uses variance.R/G/B when both images have them. Its threshold is
-// Sidak-corrected so that on two unbiased renders all pixels pass with probability 1 - alpha.
-ErrorMetrics compareImages(const ExrImage& image, const ExrImage& reference, double alpha = 0.01);
+// Compares channels R, G, B; the z-test uses variance.R/G/B when both images have them. By default its
+// threshold is Sidak-corrected so that on two unbiased renders all pixels pass with probability 1 - alpha;
+// perPixelLevel = true tests each value at level alpha instead (for calibration).
+ErrorMetrics compareImages(const ExrImage& image, const ExrImage& reference, double alpha = 0.01, bool perPixelLevel = false);
 
 // Writes per-pixel squared error (R, G, B) and relMSE (Y) as an EXR heat map.
 void writeErrorHeatmap(const std::string& path, const ExrImage& image, const ExrImage& reference);

@@ -248,7 +248,8 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
   md << "Reference: " << referenceNote << ". Efficiency = 1/(relMSE x seconds), from each configuration's log-log fit of relMSE\n"
      << "against seconds; relative to the first configuration (" << study.configurations[0].name << ").\n\n";
   md << "| configuration | relMSE at " << equalTime << " s | efficiency (equal time) | seconds to relMSE " << equalError
-     << " | efficiency (equal error) | slope vs log s | slope vs log spp | non-finite |\n|---|---|---|---|---|---|---|---|\n";
+     << " | efficiency (equal error) | slope vs log s | slope vs log spp | last rung relMSE (min-max) | non-finite |\n"
+     << "|---|---|---|---|---|---|---|---|---|\n";
   double baseEt = 0.0, baseEe = 0.0;
   for (size_t c = 0; c < curves.size(); ++c) {
     double errAt = curves[c].fit.at(equalTime);
@@ -256,10 +257,13 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
     double effT = errAt > 0 ? 1.0 / (errAt * equalTime) : 0.0;
     double effE = timeTo > 0 ? 1.0 / (equalError * timeTo) : 0.0;
     if (c == 0) baseEt = effT, baseEe = effE;
-    char line[512];
-    std::snprintf(line, sizeof(line), "| %s | %.4g | %.3g | %.4g | %.3g | %.2f | %.2f | %llu |\n", study.configurations[c].name.c_str(),
-                  errAt, baseEt > 0 ? effT / baseEt : 0.0, timeTo, baseEe > 0 ? effE / baseEe : 0.0, curves[c].fit.slope,
-                  curves[c].fitSpp.slope, static_cast<unsigned long long>(curves[c].nonfinite));
+    double lo = 1e300, hi = 0.0;
+    for (const StudyRow& r : rows)
+      if (r.configuration == study.configurations[c].name && r.rung == study.ladder.back()) lo = std::min(lo, r.relmse), hi = std::max(hi, r.relmse);
+    char line[640];
+    std::snprintf(line, sizeof(line), "| %s | %.4g | %.3g | %.4g | %.3g | %.2f | %.2f | %.4g-%.4g | %llu |\n",
+                  study.configurations[c].name.c_str(), errAt, baseEt > 0 ? effT / baseEt : 0.0, timeTo, baseEe > 0 ? effE / baseEe : 0.0,
+                  curves[c].fit.slope, curves[c].fitSpp.slope, lo, hi, static_cast<unsigned long long>(curves[c].nonfinite));
     md << line;
   }
   md << "\nAn unbiased estimator's error falls as 1/samples: slope -1 against spp, and against time when time grows\n"
