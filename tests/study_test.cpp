@@ -97,7 +97,7 @@ TEST(Study, TimeBudgetRendersReachMoreSamplesWithMoreTime) {
   ASSERT_EQ(rows.size(), 2u);
   for (const StudyRow& r : rows) {
     EXPECT_GE(r.seconds, r.rung) << "a budget is spent";
-    EXPECT_LT(r.seconds, r.rung * 1.5 + 0.05) << "and not overrun by more than a pass";
+    EXPECT_LT(r.seconds, 2.0 * r.rung + 0.1) << "and not overrun by much more than a pass (a quarter budget)";
   }
   EXPECT_GT(rows[1].spp, 2 * rows[0].spp);
   EXPECT_LT(rows[1].relmse, rows[0].relmse);

@@ -91,22 +91,7 @@ void writeFilmPng(const std::string& path, const Film& film, float exposureStops
   std::vector<uint8_t> rgb(film.pixels() * 3);
   for (size_t p = 0; p < film.pixels(); ++p)
     for (int c = 0; c < 3; ++c) rgb[3 * p + c] = toSrgb8(film.mean(p, c) * scale);
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  image.width = film.width;
-  image.height = film.height;
-  image.format = PNG_FORMAT_RGB;
-  std::string tmp = temporaryPathFor(path);
-  if (!png_image_write_to_file(&image, tmp.c_str(), 0, rgb.data(), 0, nullptr)) {
-    std::remove(tmp.c_str());
-    throw Error("cannot write PNG '" + path + "': " + image.message);
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw Error("cannot write '" + path + "': " + ec.message());
-  }
+  writeRgbPng(path, rgb, film.width, film.height);
 }
 
 }  // namespace vkmc
