@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "app/bench_kernels.h"
+#include "app/info.h"
 #include "app/render_job.h"
 #include "error.h"
 #include "analysis/error_metrics.h"
@@ -97,6 +98,14 @@ int main(int argc, char** argv) {
   render->add_flag("-q,--quiet", quiet, "no summary on stdout, no progress line");
   render->add_option("--time-budget", ro.timeBudget, "render whole sample passes until this many seconds are spent (--spp caps)");
   render->add_option("--reference", ro.referencePath, "reference EXR: the report gains mse, relmse, efficiency");
+  bool noSpecialize = false;
+  render->add_flag("--no-specialize", noSpecialize, "build general pipelines (every scene feature on), for comparison");
+
+  vkmc::RenderOptions io;
+  bool infoGeneral = false;
+  CLI::App* info = app.add_subcommand("info", "scene features, kernels and specialization constants, BVH and memory");
+  info->add_option("scene", io.scenePath, "scene (.gltf or .glb)")->required();
+  info->add_flag("--no-specialize", infoGeneral, "show the general pipelines (every feature on)");
 
   std::string studyPath, studyOut;
   CLI::App* benchStudy = app.add_subcommand("bench", "error-against-time study: renders, results.csv/json, SVG plot, summary, images");
@@ -118,6 +127,7 @@ int main(int argc, char** argv) {
   bench->add_option("--width", bo.width, "image width")->capture_default_str();
   bench->add_option("--height", bo.height, "image height")->capture_default_str();
   bench->add_option("--json", bo.jsonPath, "write the results as JSON");
+  bench->add_flag("--specialization", bo.specialization, "compare specialized with general (all-features) pipelines");
 
   try {
     app.parse(argc, argv);
@@ -165,6 +175,7 @@ int main(int argc, char** argv) {
       if (!lookAt.empty()) ro.lookAt = parseVec3(lookAt, "--look-at");
       if (!background.empty()) ro.background = parseVec3(background, "--background");
       ro.progress = !quiet;
+      ro.specialize = !noSpecialize;
       vkmc::validateOptions(ro);
       checkWritable(out, "--output");
       checkWritable(png, "--png");
@@ -183,6 +194,10 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (bench->parsed()) return vkmc::runBenchKernels(bo);
+    if (info->parsed()) {
+      io.specialize = !infoGeneral;
+      return vkmc::runInfo(io);
+    }
     if (benchStudy->parsed()) {
       vkmc::Study study = vkmc::loadStudy(studyPath);
       std::string dir = studyOut.empty() ? "bench-" + study.name : studyOut;

@@ -2,6 +2,8 @@
 // leaks), and non-finite samples are counted and kept out of the image.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "analysis/error_metrics.h"
 #include "app/render_job.h"
 #include "scene/gltf_loader.h"
@@ -114,4 +116,28 @@ TEST(RenderRobustness, PerPixelZTestHasItsNominalFalsePositiveRate) {
   EXPECT_NEAR(failRate, 0.05, 4.0 * sigma);
   // Sidak-corrected at 1% over the image: two unbiased renders pass everywhere (with probability 99%).
   EXPECT_EQ(compareImages(a, b).zTestPassFraction, 1.0);
+}
+
+TEST(RenderRobustness, SpecializedAndGeneralPipelinesRenderTheSameImage) {
+  // The Cornell box (Lambertian: GGX compiled out when specialized) and a scene without emitters lit by the
+  // background (no light-sampling code and no shadow stage when specialized).
+  for (const std::string& scene : {std::string(VKMC_SOURCE_DIR) + "/scenes/cornell_box.gltf",
+                                   std::string(VKMC_SHARED_SCENES) + "/Box/Box.gltf"}) {
+    if (!std::filesystem::exists(scene)) continue;
+    RenderOptions o;
+    o.scenePath = scene;
+    o.width = 32;
+    o.height = 32;
+    o.spp = 64;
+    o.progress = false;
+    o.background = glm::vec3(0.5f);
+    o.seed = 5;
+    ExrImage a = filmToImage(runRender(context(), o).film);
+    o.specialize = false;
+    o.seed = 6;
+    RenderOutcome general = runRender(context(), o);
+    ErrorMetrics m = compareImages(filmToImage(general.film), a);
+    EXPECT_EQ(m.zTestPassFraction, 1.0) << scene;
+    EXPECT_NEAR(m.meanDifference, 0.0, 5.0 * std::sqrt(m.mse / (3.0 * 32 * 32))) << scene;
+  }
 }

@@ -103,11 +103,49 @@ std::pair<std::vector<double>, std::vector<double>> traceBenchmark(vk::Context& 
 
 }  // namespace
 
+// Specialized against general pipelines, interleaved run by run: time per sample and pipeline set-up time.
+int runSpecializationBench(const BenchOptions& o, const std::vector<std::string>& scenes) {
+  vk::Context ctx;
+  std::printf("device: %s; %dx%d, %d spp per run, %d runs; medians [min-max]\n", ctx.deviceName().c_str(), o.width, o.height, o.spp, o.runs);
+  std::printf("%-34s %-12s %14s %22s %12s\n", "scene", "pipelines", "us per sample", "[min-max]", "pipelines s");
+  nlohmann::json out = nlohmann::json::array();
+  for (const std::string& scene : scenes) {
+    std::vector<double> perSample[2], pipes[2];
+    for (int run = -1; run < o.runs; ++run)
+      for (int general = 0; general < 2; ++general) {
+        RenderOptions ro;
+        ro.scenePath = scene;
+        ro.width = static_cast<uint32_t>(o.width);
+        ro.height = static_cast<uint32_t>(o.height);
+        ro.spp = static_cast<uint32_t>(o.spp);
+        ro.progress = false;
+        ro.background = glm::vec3(1.0f);
+        ro.specialize = general == 0;
+        RenderOutcome r = runRender(ctx, ro);
+        if (run < 0) continue;
+        perSample[general].push_back(r.stats.seconds / double(r.film.totalSamples()) * 1e6);
+        pipes[general].push_back(r.setup.pipelines);
+      }
+    std::string name = std::filesystem::path(scene).filename().string();
+    for (int general = 0; general < 2; ++general) {
+      auto [lo, hi] = std::minmax_element(perSample[general].begin(), perSample[general].end());
+      std::printf("%-34s %-12s %14.3f %10.3f-%-10.3f %12.3f\n", name.c_str(), general ? "general" : "specialized", median(perSample[general]),
+                  *lo, *hi, median(pipes[general]));
+    }
+    std::printf("%-34s %-12s %14.2fx\n", "", "ratio", median(perSample[1]) / median(perSample[0]));
+    out.push_back({{"scene", scene}, {"specialized_us_per_sample", median(perSample[0])}, {"general_us_per_sample", median(perSample[1])},
+                   {"specialized_pipeline_seconds", median(pipes[0])}, {"general_pipeline_seconds", median(pipes[1])}});
+  }
+  if (!o.jsonPath.empty()) writeFileAtomically(o.jsonPath, nlohmann::json{{"device", ctx.deviceName()}, {"results", out}}.dump(2) + "\n");
+  return 0;
+}
+
 int runBenchKernels(const BenchOptions& o) {
   if (o.runs < 1 || o.runs > 1000) throw Error("--runs must be between 1 and 1000");
   if (o.spp < 1 || o.width < 1 || o.height < 1 || o.width > 8192 || o.height > 8192) throw Error("bad --spp, --width or --height");
   std::vector<std::string> scenes = o.scenes.empty() ? defaultScenes() : o.scenes;
   if (scenes.empty()) throw Error("no scenes to benchmark");
+  if (o.specialization) return runSpecializationBench(o, scenes);
   vk::Context ctx;
   std::vector<Samples> samples(scenes.size());
   // Round 0 warms caches (Mesa's shader cache, the page cache, the allocator) and is not counted, except that

@@ -12,6 +12,7 @@ struct BenchOptions {
   int width = 256;
   int height = 256;
   std::string jsonPath;
+  bool specialization = false;  // compare specialized with general pipelines instead
 };
 
 int runBenchKernels(const BenchOptions& options);

@@ -105,6 +105,8 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
   settings.height = height;
   settings.spp = options.spp;
   settings.estimator = options.estimator;
+  settings.features = options.specialize ? scanFeatures(scene) : allFeatures(scanFeatures(scene));
+  out.features = settings.features;
   settings.seed = options.seed;
   settings.background = options.background;
   settings.camera = makeCameraRig(camera, width, height);
@@ -166,7 +168,8 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["scene"] = o.scenePath;
   j["width"] = r.width;
   j["height"] = r.height;
-  j["spp"] = o.spp;
+  j["spp"] = s.samplesPerPixel;  // reached; equals the request unless a time budget ended the render
+  if (o.timeBudget == 0.0) j["spp_requested"] = o.spp;
   j["seed"] = o.seed;
   j["camera"] = r.cameraName;
   j["seconds"] = s.seconds;
@@ -220,6 +223,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["bvh"] = {{"inner_nodes", r.bvh.innerNodes}, {"leaves", r.bvh.leaves},           {"max_depth", r.bvh.maxDepth},
               {"max_leaf_size", r.bvh.maxLeafSize}, {"sah_cost", r.bvh.sahCost}, {"build_seconds", r.bvh.buildSeconds}};
   j["max_bounces"] = s.maxBounces;
+  j["specialized_for"] = {{"emitters", r.features.emitters()}, {"glossy", r.features.glossy}, {"specialized", o.specialize}};
   j["warnings"] = r.warnings;
   return j;
 }

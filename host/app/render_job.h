@@ -28,6 +28,7 @@ struct RenderOptions {
   bool progress = true;
   double timeBudget = 0.0;        // seconds; 0 = render spp samples
   std::string referencePath;      // EXR to compare with: mse, relmse, efficiency in the report
+  bool specialize = true;         // false: pipelines with every feature on (for comparison)
 };
 
 struct SetupTimes {
@@ -48,6 +49,7 @@ struct RenderOutcome {
   uint32_t width = 0, height = 0;
   std::optional<ErrorMetrics> error;  // against the reference, when one was given
   double pilotSeconds = 0.0;           // efficiency roulette's pilot, included in stats.seconds
+  SceneFeatures features;              // what the pipelines were specialized for
   std::optional<RouletteTable> roulette;
 };
 

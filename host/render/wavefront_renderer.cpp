@@ -69,7 +69,9 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   paths_ = storage(uint64_t(pool_) * sizeof(gpu::PathState));
   hits_ = storage(uint64_t(pool_) * 16);
   queues_ = storage(uint64_t(pool_) * 8);
-  shadowQueue_ = storage(uint64_t(pool_) * est.lightSamples * sizeof(gpu::ShadowRay));
+  // A scene without emitters has no shadow stage: its queue is not allocated (a placeholder is bound).
+  hasShadowStage_ = settings.features.emitters() && est.nee;
+  shadowQueue_ = storage(hasShadowStage_ ? uint64_t(pool_) * est.lightSamples * sizeof(gpu::ShadowRay) : 16);
   control_ = storage(sizeof(gpu::Control), vk::MemoryKind::HostVisible, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
   film_ = storage(filmBytes, vk::MemoryKind::HostVisible);
   pixelEstimate_ = storage(pixels * sizeof(float), vk::MemoryKind::HostVisible);
@@ -98,10 +100,8 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   layout_->bindStorage(BINDING_DEPTH_STATS, depthStats_);
 
   auto start = Clock::now();
-  std::vector<vk::SpecConstant> specs{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize},
-                                      {SPEC_HAS_LIGHTS, scene.info().emissiveTriangles > 0 ? 1u : 0u}};
-  for (const vk::SpecConstant& s : est.specConstants()) specs.push_back(s);
-  specs.push_back({SPEC_RECORD_DEPTH_STATS, settings.recordDepthStats ? 1u : 0u});
+  const KernelPlan plan = planKernels(settings);
+  const std::vector<vk::SpecConstant>& specs = plan.specs;
   auto make = [&](const char* name, std::span<const uint32_t> spirv) {
     return std::make_unique<vk::Kernel>(ctx, *layout_, name, spirv, specs);
   };
@@ -110,8 +110,9 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   kernels_->prepareBounce = make("prepare_bounce", kSpirv_prepare_bounce);
   kernels_->intersect = make("intersect", kSpirv_intersect);
   kernels_->shade = est.splitsPaths() ? make("shade", kSpirv_shade_atomic) : make("shade", kSpirv_shade);
-  kernels_->prepareShadow = make("prepare_shadow", kSpirv_prepare_shadow);
-  kernels_->shadow = est.needsFloatAtomics() ? make("shadow", kSpirv_shadow_atomic) : make("shadow", kSpirv_shadow);
+  if (hasShadowStage_) kernels_->prepareShadow = make("prepare_shadow", kSpirv_prepare_shadow);
+  if (hasShadowStage_)
+    kernels_->shadow = est.needsFloatAtomics() ? make("shadow", kSpirv_shadow_atomic) : make("shadow", kSpirv_shadow);
   kernels_->accumulate = make("accumulate", kSpirv_accumulate);
   timer_ = std::make_unique<vk::GpuTimer>(ctx, 2 * (8 + 5 * kFirstChunkBounces));
 
@@ -125,12 +126,30 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   ctx.runCommands([&](VkCommandBuffer cmd) {
     for (const auto* k : {&kernels_->camera, &kernels_->prepareBounce, &kernels_->intersect, &kernels_->shade,
                           &kernels_->prepareShadow, &kernels_->shadow, &kernels_->accumulate})
-      vk::dispatch(cmd, *layout_, **k, &pc, sizeof(pc), 1);
+      if (*k) vk::dispatch(cmd, *layout_, **k, &pc, sizeof(pc), 1);
   });
   pipelineSeconds_ = since(start);
 }
 
 WavefrontRenderer::~WavefrontRenderer() = default;
+
+KernelPlan planKernels(const RenderSettings& s) {
+  KernelPlan plan;
+  const EstimatorConfig& est = s.estimator;
+  bool shadows = s.features.emitters() && est.nee;
+  plan.kernels = {"camera_rays", "prepare_bounce", "intersect", est.splitsPaths() ? "shade (float atomics)" : "shade"};
+  if (shadows) {
+    plan.kernels.push_back("prepare_shadow");
+    plan.kernels.push_back(est.needsFloatAtomics() ? "shadow (float atomics)" : "shadow");
+  }
+  plan.kernels.push_back("accumulate");
+  plan.specs = {{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize},
+                {SPEC_HAS_LIGHTS, s.features.emitters() ? 1u : 0u},
+                {SPEC_HAS_GLOSSY, s.features.glossy ? 1u : 0u},
+                {SPEC_RECORD_DEPTH_STATS, s.recordDepthStats ? 1u : 0u}};
+  for (const vk::SpecConstant& c : est.specConstants()) plan.specs.push_back(c);
+  return plan;
+}
 
 void WavefrontRenderer::setRouletteScales(const std::array<float, kRouletteTableDepths>& scales) {
   std::memcpy(rouletteTable_.mapped(), scales.data(), sizeof(float) * scales.size());
@@ -198,8 +217,10 @@ uint32_t WavefrontRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount,
       vk::dispatchIndirect(cmd, *layout_, *kernels_->intersect, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs));
       if (timer) timer->end(cmd);
       vk::dispatchIndirect(cmd, *layout_, *kernels_->shade, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs), timer);
-      vk::dispatch(cmd, *layout_, *kernels_->prepareShadow, &pc, sizeof(pc), 1, timer);
-      vk::dispatchIndirect(cmd, *layout_, *kernels_->shadow, &pc, sizeof(pc), control_, offsetof(gpu::Control, shadowArgs), timer);
+      if (hasShadowStage_) {
+        vk::dispatch(cmd, *layout_, *kernels_->prepareShadow, &pc, sizeof(pc), 1, timer);
+        vk::dispatchIndirect(cmd, *layout_, *kernels_->shadow, &pc, sizeof(pc), control_, offsetof(gpu::Control, shadowArgs), timer);
+      }
     }
     bounce += chunk;
     pc.bounce = bounce;

@@ -12,6 +12,7 @@
 #include "render/film.h"
 #include "render/gpu_scene.h"
 #include "scene/camera_rig.h"
+#include "scene/scene_features.h"
 #include "vk/kernel.h"
 
 namespace vkmc {
@@ -22,6 +23,7 @@ struct RenderSettings {
   uint32_t spp = 64;           // with a time budget: the most samples to take
   double timeBudget = 0.0;     // seconds; > 0: whole sample passes until the budget is spent
   EstimatorConfig estimator;   // roulette, splitting, sampling, MIS, depth cap
+  SceneFeatures features;      // what the pipelines are specialized for (allFeatures(): general pipelines)
   uint32_t seed = 1;
   glm::vec3 background{0.0f};
   CameraRig camera{};
@@ -43,6 +45,13 @@ struct RenderStats {
   uint32_t samplesPerPixel = 0;  // reached (equals spp unless a time budget ended the render)
   uint64_t rays() const { return cameraRays + extensionRays + shadowRays; }
 };
+
+// The kernels a render dispatches, with the specialization constants each is built with.
+struct KernelPlan {
+  std::vector<std::string> kernels;
+  std::vector<vk::SpecConstant> specs;
+};
+KernelPlan planKernels(const RenderSettings& settings);
 
 class WavefrontRenderer {
  public:
@@ -67,6 +76,7 @@ class WavefrontRenderer {
   RenderSettings settings_;
   uint32_t capacity_ = 0;  // camera paths per pass
   uint32_t pool_ = 0;      // path slots: camera paths and split children
+  bool hasShadowStage_ = true;
   std::unique_ptr<vk::KernelLayout> layout_;
   std::unique_ptr<Kernels> kernels_;
   std::unique_ptr<vk::GpuTimer> timer_;

@@ -303,6 +303,9 @@ Scene loadGltf(const std::string& path) {
   Material fallback;  // glTF default material: white, fully metallic and rough (Lambert here)
   scene.materials.push_back(fallback);
   if (usesTextures) scene.warnings.push_back("textures are not supported yet and were ignored");
+  scene.usesTextures = usesTextures;
+  for (const std::string& e : model.extensionsUsed) scene.hasPunctualLights |= e == "KHR_lights_punctual";
+  if (scene.hasPunctualLights) scene.warnings.push_back("KHR_lights_punctual lights are not supported yet and were ignored");
 
   Flattener flattener(model, scene);
   if (!model.scenes.empty()) {

@@ -58,6 +58,8 @@ struct Scene {
   uint64_t skippedPrimitives = 0;     // non-triangle primitives skipped
   std::vector<std::string> warnings;
   std::string path;
+  bool usesTextures = false;       // some material references a texture (ignored for now)
+  bool hasPunctualLights = false;  // KHR_lights_punctual present (ignored for now)
 
   size_t triangleCount() const { return materialIds.size(); }
 };

@@ -8,6 +8,7 @@ layout(local_size_x_id = SPEC_WORKGROUP_SIZE) in;
 layout(constant_id = SPEC_MAX_DEPTH) const uint kMaxDepth = 0u;
 layout(constant_id = SPEC_RR_DEPTH) const uint kRouletteDepth = 3u;
 layout(constant_id = SPEC_HAS_LIGHTS) const uint kHasLights = 1u;
+layout(constant_id = SPEC_HAS_GLOSSY) const uint kHasGlossy = 1u;
 layout(constant_id = SPEC_ANY_HIT) const uint kAnyHit = 0u;
 layout(constant_id = SPEC_NEE) const uint kNee = 1u;
 layout(constant_id = SPEC_MIS) const uint kMis = 2u;

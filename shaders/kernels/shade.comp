@@ -48,17 +48,22 @@ bool emitsToward(Material m, bool frontFace) {
 
 GltfMaterial gltfMaterial(Material m) { return makeGltfMaterial(m.baseColor.rgb, m.params.x, m.params.y, m.params.z); }
 
-// The BSDF-sampling technique and its pdf (local frame).
+// The BSDF-sampling technique and its pdf (local frame). In an all-Lambertian scene (kHasGlossy = 0) the
+// glTF BRDF is baseColor / pi and its sampling is cosine sampling: the GGX code is compiled out.
 vec3 sampleTechnique(GltfMaterial gm, vec3 wo, vec3 u) {
   if (kBsdfSampling == kBsdfSamplingUniform) return sampleUniformHemisphere(u.yz);
-  if (kBsdfSampling == kBsdfSamplingCosine) return sampleCosineHemisphere(u.yz);
+  if (kBsdfSampling == kBsdfSamplingCosine || kHasGlossy == 0u) return sampleCosineHemisphere(u.yz);
   return sampleGltfBsdf(gm, wo, u);
 }
 float techniquePdf(GltfMaterial gm, vec3 wo, vec3 wi) {
   if (wi.z <= 0.0) return 0.0;
   if (kBsdfSampling == kBsdfSamplingUniform) return uniformHemispherePdf(wi.z);
-  if (kBsdfSampling == kBsdfSamplingCosine) return cosineHemispherePdf(wi.z);
+  if (kBsdfSampling == kBsdfSamplingCosine || kHasGlossy == 0u) return cosineHemispherePdf(wi.z);
   return gltfBsdfPdf(gm, wo, wi);
+}
+vec3 bsdfEval(GltfMaterial gm, vec3 wo, vec3 wi) {
+  if (kHasGlossy == 0u) return (wo.z > 0.0 && wi.z > 0.0) ? gm.baseColor * kInvPi : vec3(0.0);
+  return gltfBsdfEval(gm, wo, wi);
 }
 
 float misWeight(float pdfThis, float pdfOther) {
@@ -136,7 +141,7 @@ void queueLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo, 
   vec3 wiLocal = wi * s.frame;
   vec3 woLocal = wo * s.frame;
   if (wiLocal.z <= 0.0 || !(pdf > 0.0)) return;
-  vec3 f = gltfBsdfEval(gm, woLocal, wiLocal);
+  vec3 f = bsdfEval(gm, woLocal, wiLocal);
   // MIS over one BSDF sample and `samples` light samples: the light technique's pdf counts samples times.
   float weight = kMis == kMisNone ? 1.0 : misWeight(float(samples) * pdf, techniquePdf(gm, woLocal, wiLocal));
   vec3 contribution = path.throughput.rgb * f * lm.emission.rgb * (wiLocal.z * weight / (pdf * float(samples)));
@@ -241,7 +246,7 @@ void main() {
     float pdf = techniquePdf(gm, woLocal, wiLocal);
     vec3 wi = s.frame * wiLocal;
     bool continues = pdf > 0.0 && wiLocal.z > 0.0 && dot(wi, s.ng) > 0.0;
-    vec3 beta = continues ? path.throughput.rgb * gltfBsdfEval(gm, woLocal, wiLocal) * (wiLocal.z / (pdf * q)) : vec3(0.0);
+    vec3 beta = continues ? path.throughput.rgb * bsdfEval(gm, woLocal, wiLocal) * (wiLocal.z / (pdf * q)) : vec3(0.0);
     continues = continues && maxComponent(beta) > 0.0;
 
     if (continues && depth + 1u >= kRouletteDepth && kRouletteMode != kRouletteNone) {

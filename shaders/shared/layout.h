@@ -41,6 +41,7 @@
 #define SPEC_SHADOW_RR_THRESHOLD 14  // float: 0 = off
 #define SPEC_SHADOW_RR_Q 15          // float: termination probability of a tiny shadow ray
 #define SPEC_CAMERA_RR_Q 16          // float: 0 = off
+#define SPEC_HAS_GLOSSY 19            // 0: every material is Lambertian; GGX code compiled out
 #define SPEC_RECORD_DEPTH_STATS 18   // 1: the efficiency-roulette pilot records per-depth statistics
 #define SPEC_BSDF_SAMPLES 17         // float: continuations per hit below SPEC_SPLIT_DEPTH (1 = no splitting)
 

@@ -1,0 +1,100 @@
+// Scene report: features, kernels with their specialization constants, triangles, BVH, memory, warnings.
+#include "app/info.h"
+
+#include <bit>
+#include <cstdio>
+
+#include "../shaders/shared/layout.h"
+#include "bvh/bvh.h"
+#include "render/gpu_scene.h"
+#include "render/wavefront_renderer.h"
+#include "scene/camera_rig.h"
+#include "scene/gltf_loader.h"
+#include "scene/scene_features.h"
+
+namespace vkmc {
+namespace {
+const char* specName(uint32_t id) {
+  switch (id) {
+    case SPEC_WORKGROUP_SIZE: return "workgroup_size";
+    case SPEC_MAX_DEPTH: return "max_depth";
+    case SPEC_RR_DEPTH: return "rr_depth";
+    case SPEC_HAS_LIGHTS: return "has_lights";
+    case SPEC_HAS_GLOSSY: return "has_glossy";
+    case SPEC_NEE: return "nee";
+    case SPEC_MIS: return "mis";
+    case SPEC_BSDF_SAMPLING: return "bsdf_sampling";
+    case SPEC_LIGHT_SAMPLING: return "light_sampling";
+    case SPEC_RR_MODE: return "rr_mode";
+    case SPEC_RR_Q: return "rr_q";
+    case SPEC_RR_C: return "rr_c";
+    case SPEC_LIGHT_SAMPLES: return "light_samples";
+    case SPEC_SPLIT_DEPTH: return "split_depth";
+    case SPEC_SHADOW_RR_THRESHOLD: return "shadow_rr";
+    case SPEC_SHADOW_RR_Q: return "shadow_rr_q";
+    case SPEC_CAMERA_RR_Q: return "camera_rr";
+    case SPEC_BSDF_SAMPLES: return "bsdf_samples";
+    case SPEC_RECORD_DEPTH_STATS: return "record_depth_stats";
+    default: return "?";
+  }
+}
+}  // namespace
+
+int runInfo(const RenderOptions& options) {
+  Scene scene = loadGltf(options.scenePath);
+  SceneFeatures f = scanFeatures(scene);
+  std::printf("scene        %s\n", options.scenePath.c_str());
+  std::printf("triangles    %u (%s), %llu zero-area skipped, %u materials, %zu cameras\n", f.triangles, f.sizeClass(),
+              static_cast<unsigned long long>(scene.degenerateTriangles), f.materials, scene.cameras.size());
+  std::printf("features     emitters %s (%u emissive triangles), glossy %s, metallic %s, non-default specular %s,\n"
+              "             double-sided %s, textures %s, punctual lights %s\n",
+              f.emitters() ? "yes" : "no", f.emissiveTriangles, f.glossy ? "yes" : "no", f.metallic ? "yes" : "no",
+              f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.textures ? "yes" : "no",
+              f.punctualLights ? "yes" : "no");
+  std::vector<Aabb> bounds(scene.triangleCount());
+  for (size_t i = 0; i < bounds.size(); ++i)
+    for (int k = 0; k < 3; ++k) bounds[i].grow(scene.positions[3 * i + k]);
+  Bvh bvh = buildBvh(bounds);
+  const BvhStats& b = bvh.stats;
+  std::printf("bvh          %u inner nodes, %u leaves, depth %u, leaf size avg %.2f max %u, SAH cost %.2f, built in %.3f s\n",
+              b.innerNodes, b.leaves, b.maxDepth, b.averageLeafSize, b.maxLeafSize, b.sahCost, b.buildSeconds);
+  vk::Context ctx;
+  GpuScene gpu(ctx, scene, bvh, options.estimator.lightSelect == LightSelect::Uniform);
+  RenderSettings settings;
+  settings.estimator = options.estimator;
+  settings.features = options.specialize ? f : allFeatures(f);
+  settings.width = options.width.value_or(256);
+  settings.height = options.height.value_or(256);
+  settings.spp = options.spp;
+  Camera cam = scene.cameras.empty() ? autoCamera(scene.bounds, 1.0f) : scene.cameras[0];
+  settings.camera = makeCameraRig(cam, settings.width, settings.height);
+  KernelPlan plan = planKernels(settings);
+  std::printf("kernels      %s pipelines on %s:\n", options.specialize ? "specialized" : "general", ctx.deviceName().c_str());
+  for (const std::string& k : plan.kernels) std::printf("               %s\n", k.c_str());
+  std::printf("              not dispatched: %s\n", plan.kernels.size() < 7 ? "prepare_shadow, shadow (no emitters or NEE off)" : "none");
+  std::printf("spec consts  ");
+  int n = 0;
+  for (const vk::SpecConstant& s : plan.specs) {
+    bool isFloat = s.id == SPEC_RR_Q || s.id == SPEC_RR_C || s.id == SPEC_SHADOW_RR_THRESHOLD || s.id == SPEC_SHADOW_RR_Q ||
+                   s.id == SPEC_CAMERA_RR_Q || s.id == SPEC_BSDF_SAMPLES;
+    const char* sep = n == 0 ? "" : (n % 5 == 0 ? "\n              " : ", ");
+    if (isFloat) std::printf("%s%s=%g", sep, specName(s.id), std::bit_cast<float>(s.value));
+    else std::printf("%s%s=%u", sep, specName(s.id), s.value);
+    ++n;
+  }
+  std::printf("\n");
+  WavefrontRenderer renderer(ctx, gpu, settings);
+  std::printf("memory       scene buffers:");
+  uint64_t total = 0;
+  for (const auto& [name, bytes] : gpu.info().bufferBytes) {
+    std::printf(" %s %.1f KiB,", name.c_str(), bytes / 1024.0);
+    total += bytes;
+  }
+  std::printf("\n              render buffers (%ux%u): %.2f MiB; total %.2f MiB\n", settings.width, settings.height,
+              renderer.deviceBytes() / 1048576.0, (total + renderer.deviceBytes()) / 1048576.0);
+  for (const std::string& w : scene.warnings) std::printf("warning      %s\n", w.c_str());
+  for (const std::string& u : f.unsupported()) std::printf("unsupported  %s\n", u.c_str());
+  return 0;
+}
+
+}  // namespace vkmc

@@ -1,0 +1,43 @@
+// Feature scan.
+#include "scene/scene_features.h"
+
+namespace vkmc {
+
+const char* SceneFeatures::sizeClass() const { return triangles < 1000 ? "small" : triangles < 100000 ? "medium" : "large"; }
+
+std::vector<std::string> SceneFeatures::unsupported() const {
+  std::vector<std::string> out;
+  if (textures) out.push_back("textures (ignored)");
+  if (punctualLights) out.push_back("KHR_lights_punctual (ignored)");
+  return out;
+}
+
+SceneFeatures scanFeatures(const Scene& scene) {
+  SceneFeatures f;
+  f.triangles = static_cast<uint32_t>(scene.triangleCount());
+  f.materials = static_cast<uint32_t>(scene.materials.size());
+  std::vector<bool> used(scene.materials.size(), false);
+  for (uint32_t m : scene.materialIds) used[m] = true;
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    if (!used[i]) continue;
+    const Material& m = scene.materials[i];
+    f.glossy |= m.metallic > 0.0f || m.specular > 0.0f;
+    f.metallic |= m.metallic > 0.0f;
+    f.nonDefaultSpecular |= m.specular != 1.0f;
+    f.doubleSided |= m.doubleSided;
+  }
+  for (uint32_t m : scene.materialIds) f.emissiveTriangles += scene.materials[m].isEmissive() ? 1 : 0;
+  f.textures = scene.usesTextures;
+  f.punctualLights = scene.hasPunctualLights;
+  return f;
+}
+
+SceneFeatures allFeatures(const SceneFeatures& scene) {
+  SceneFeatures f = scene;
+  f.glossy = true;
+  f.metallic = true;
+  f.emissiveTriangles = std::max(f.emissiveTriangles, 1u);
+  return f;
+}
+
+}  // namespace vkmc

@@ -1,0 +1,34 @@
+// What a scene needs, scanned once after loading (pbrt-v4's haveMedia/haveSubsurface idea): the renderer
+// turns it into specialization constants, so code for absent features is compiled out and stages the scene
+// cannot use are never dispatched.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace vkmc {
+
+struct SceneFeatures {
+  uint32_t triangles = 0;
+  uint32_t emissiveTriangles = 0;
+  uint32_t materials = 0;
+  bool glossy = false;              // a material with a specular lobe (metallic > 0 or specularFactor > 0)
+  bool metallic = false;
+  bool nonDefaultSpecular = false;  // KHR_materials_specular factor other than 1
+  bool doubleSided = false;
+  bool textures = false;            // referenced (not yet supported)
+  bool punctualLights = false;      // KHR_lights_punctual present (not yet supported)
+
+  bool emitters() const { return emissiveTriangles > 0; }
+  const char* sizeClass() const;  // "small" (< 1k triangles), "medium" (< 100k), "large"
+  std::vector<std::string> unsupported() const;
+};
+
+SceneFeatures scanFeatures(const Scene& scene);
+
+// All features on: the pipelines a renderer without per-scene specialization would build.
+SceneFeatures allFeatures(const SceneFeatures& scene);
+
+}  // namespace vkmc
