@@ -5,6 +5,7 @@
 #include <random>
 
 #include "../shaders/shared/geometry.h"
+#include "../shaders/shared/rng.h"
 #include "../shaders/shared/sampling.h"
 #include "bvh/bvh.h"
 
@@ -151,4 +152,28 @@ TEST(Geometry, BarycentricsAreRightFromBothSides) {
     EXPECT_GE(h.y, 0.0f);
     EXPECT_GE(h.z, 0.0f);
   }
+}
+
+TEST(Geometry, RaysLeavingAPlaneNeverReHitIt) {
+  // A ray leaves a large two-triangle plane from its offset hit point in a cosine-distributed direction: the
+  // plane must never be hit again, also when the ray's dominant axis lies in the plane (then only the
+  // conservative bound on t keeps rounding from producing a tiny positive t). Scales and translations too.
+  for (float scale : {1e-3f, 1.0f, 1e4f})
+    for (float shift : {0.0f, 1e4f}) {
+      vec3 a = vec3(-1, 0, -1) * scale + shift, b = vec3(-1, 0, 1) * scale + shift, c = vec3(1, 0, 1) * scale + shift,
+           d = vec3(1, 0, -1) * scale + shift;
+      int hits = 0;
+      for (uint32_t i = 0; i < 20000; ++i) {
+        uint32_t key = gpu::pathKey(4u, i, 0u);
+        vec3 bary = gpu::sampleUniformTriangle(glm::vec2(gpu::randomUnit(key, 0), gpu::randomUnit(key, 1)));
+        vec3 p = bary.x * a + bary.y * b + bary.z * c;
+        vec3 n(0, 1, 0);
+        vec3 w = gpu::basisFromNormal(n) * gpu::sampleCosineHemisphere(glm::vec2(gpu::randomUnit(key, 2), gpu::randomUnit(key, 3)));
+        vec3 o = gpu::offsetRayOrigin(p, gpu::barycentricError(bary, a, b, c), n, w);
+        gpu::RayShear r = gpu::makeRayShear(o, w);
+        hits += gpu::intersectTriangle(r, a, b, c, 1e30f).x > 0.0f;
+        hits += gpu::intersectTriangle(r, a, c, d, 1e30f).x > 0.0f;
+      }
+      EXPECT_EQ(hits, 0) << "scale " << scale << " shift " << shift;
+    }
 }

@@ -80,6 +80,13 @@ class Builder:
                                                                     "znear": 0.01}})
         self.nodes.append({"name": name, "camera": len(self.cameras) - 1, "matrix": m})
 
+    def ortho_camera_down(self, name, eye, half_size):
+        """Orthographic camera at eye looking down -y, image up = -z, covering x, z in eye +- half_size."""
+        m = [1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0] + list(eye) + [1]
+        self.cameras.append({"type": "orthographic", "orthographic": {"xmag": half_size, "ymag": half_size, "znear": 0.001,
+                                                                     "zfar": 100.0}})
+        self.nodes.append({"name": name, "camera": len(self.cameras) - 1, "matrix": m})
+
     def write(self, path, extensions_used=()):
         doc = {"asset": {"version": "2.0", "generator": "vkmc tools/make_scenes.py"},
                "scene": 0, "scenes": [{"nodes": list(range(len(self.nodes)))}], "nodes": self.nodes,
@@ -222,6 +229,20 @@ def many_lights(path):
     b.camera("camera", [0, 1.0, 5.5], [0, 0.8, 0], 45.0)
     b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
 
+def tiny_light(path):
+    """Stiff case 2: a 1 mm x 1 mm emitter of radiance 1e6 facing down, h = 1 m above a Lambertian floor of
+    albedo 0.5 (x, z in [-1, 1]); an orthographic camera between them looks straight down at the floor, so
+    pixel (i, j) sees x in -1 + 2 [i, i + 1] / W and z in -1 + 2 [j, j + 1] / H, where
+    L(x, z) = rho / pi * Le * A * h^2 / (h^2 + x^2 + z^2)^2 (the light is 1e-3 of h: a point to 1e-7)."""
+    b = Builder()
+    floor = b.material("floor", (0.5, 0.5, 0.5))
+    light = b.material("light", (0, 0, 0), emission=(1.0, 1.0, 1.0), strength=1e6)
+    b.mesh("floor", quad([-1, 0, -1], [-1, 0, 1], [1, 0, 1], [1, 0, -1]), floor)
+    s = 0.0005
+    b.mesh("light", quad([-s, 1, -s], [s, 1, -s], [s, 1, s], [-s, 1, s]), light)
+    b.ortho_camera_down("camera", [0.0, 0.5, 0.0], 1.0)
+    b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
+
 if __name__ == "__main__":
     os.makedirs("scenes", exist_ok=True)
     cornell_box("scenes/cornell_box.gltf")
@@ -229,4 +250,6 @@ if __name__ == "__main__":
     furnace("scenes/furnace_stiff.gltf", 0.99, 1.0, "furnace_albedo_0.99")
     veach_mis("scenes/veach_mis.gltf")
     many_lights("scenes/many_lights.gltf")
+    os.makedirs("scenes/stiff", exist_ok=True)
+    tiny_light("scenes/stiff/tiny_light.gltf")
     print("wrote scenes/cornell_box.gltf, furnace.gltf, furnace_stiff.gltf, veach_mis.gltf, many_lights.gltf")

@@ -5,6 +5,9 @@
 #include "glsl_cpp.h"
 VKMC_BEGIN_NAMESPACE
 
+VKMC_CONST float kMachineEpsilon = 5.96046448e-08f;  // 2^-24
+VKMC_FN float gammaBound(float n) { return (n * kMachineEpsilon) / (1.0f - n * kMachineEpsilon); }
+
 // Per-ray constants of the watertight test: the dominant axis becomes z and the ray is sheared onto +z.
 // Permutation and shear are folded into three rows, so a vertex is transformed by three dot products instead
 // of lane-varying component indexing (which llvmpipe turns into stack traffic). Every factor but the shear is
@@ -52,20 +55,34 @@ VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax
   if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return miss;
   float det = U + V + W;
   if (det == 0.0f) return miss;
-  float T = U * dot(r.row2, A) + V * dot(r.row2, B) + W * dot(r.row2, C);
+  float az = dot(r.row2, A), bz = dot(r.row2, B), cz = dot(r.row2, C);
+  float T = U * az + V * bz + W * cz;
   if (det < 0.0f) {  // seen from the back: all of U, V, W, det and T flip sign together
     T = -T;
     det = -det;
+    U = -U;
     V = -V;
     W = -W;
   }
   if (T <= 0.0f || T >= tMax * det) return miss;
   float inv = 1.0f / det;
-  return vec3(T * inv, V * inv, W * inv);
+  float t = T * inv;
+  // t must exceed its own rounding-error bound (pbrt-v4, after Woop et al.): a ray leaving a surface from an
+  // origin offset by a few ulps would otherwise re-hit the same plane at a tiny positive t when its dominant
+  // axis lies in that plane.
+  float maxZ = max(abs(az), max(abs(bz), abs(cz)));
+  float maxX = max(abs(ax), max(abs(bx), abs(cx)));
+  float maxY = max(abs(ay), max(abs(by), abs(cy)));
+  float deltaZ = gammaBound(3.0f) * maxZ;
+  float deltaX = gammaBound(5.0f) * (maxX + maxZ);
+  float deltaY = gammaBound(5.0f) * (maxY + maxZ);
+  float deltaE = 2.0f * (gammaBound(2.0f) * maxX * maxY + deltaY * maxX + deltaX * maxY);
+  float maxE = max(abs(U), max(abs(V), abs(W)));
+  float deltaT = 3.0f * (gammaBound(3.0f) * maxE * maxZ + deltaE * maxZ + deltaZ * maxE) * inv;
+  if (t <= deltaT) return miss;
+  return vec3(t, V * inv, W * inv);
 }
 
-VKMC_CONST float kMachineEpsilon = 5.96046448e-08f;  // 2^-24
-VKMC_FN float gammaBound(float n) { return (n * kMachineEpsilon) / (1.0f - n * kMachineEpsilon); }
 
 // Bound on the rounding error of b0*v0 + b1*v1 + b2*v2: relative to the coordinates, so scaling or
 // translating a scene scales the offset with it.
