@@ -76,6 +76,15 @@ TEST(EstimatorConfig, RejectsUnknownKeysBadValuesAndEndlessPaths) {
   EXPECT_THROW(endless.validate(), Error) << "no roulette and no depth cap never ends";
   endless.maxDepth = 8;
   EXPECT_NO_THROW(endless.validate());
+  EstimatorConfig never;
+  never.rr = RouletteMode::Fixed;
+  never.rrQ = 0.0f;
+  EXPECT_THROW(never.validate(), Error) << "survival 1 at every depth never ends a path";
+  never.maxDepth = 4;
+  EXPECT_NO_THROW(never.validate());
+  EstimatorConfig late;
+  late.rrDepth = 100000;
+  EXPECT_THROW(late.validate(), Error) << "no roulette for 100000 bounces is a hang in a closed scene";
 }
 
 TEST(EfficiencyRoulette, KillsFreelyWhereTheContinuationAddsNothing) {

@@ -69,7 +69,9 @@ void EstimatorConfig::validate() const {
   probability(cameraRrQ, "camera_rr", false);
   if (!std::isfinite(rrC) || rrC < 0.0f) throw Error("rr_c must be finite and >= 0");
   if (!std::isfinite(shadowRrThreshold) || shadowRrThreshold < 0.0f) throw Error("shadow_rr must be finite and >= 0");
-  if (rrDepth > 100000) throw Error("rr_depth must be at most 100000");
+  if (rrDepth > 256) throw Error("rr_depth must be at most 256 (before it no path can end by roulette)");
+  if (rr == RouletteMode::Fixed && rrQ == 0.0f && maxDepth == 0)
+    throw Error("rr fixed with rr_q 0 never ends a path: give rr_q > 0 or a depth cap (--max-depth)");
   if (lightSamples < 1 || lightSamples > 4096) throw Error("light_samples must be between 1 and 4096");
   if (splitDepth > 100000) throw Error("split_depth must be at most 100000");
   if (maxDepth > 100000) throw Error("max_depth must be at most 100000 (0 = no cap)");
@@ -168,7 +170,7 @@ std::vector<vk::SpecConstant> EstimatorConfig::specConstants() const {
 uint32_t EstimatorConfig::pathPoolFactor() const {
   if (!splitsPaths()) return 1;
   double factor = std::pow(std::ceil(bsdfSamples), std::min<uint32_t>(splitDepth, 3));
-  return static_cast<uint32_t>(std::min(16.0, factor));
+  return static_cast<uint32_t>(std::min(64.0, factor));  // 64: the largest factor validate() accepts
 }
 
 std::string EstimatorConfig::summary() const {

@@ -60,7 +60,8 @@ struct EstimatorConfig {
   bool unbiased() const { return maxDepth == 0; }
   bool needsFloatAtomics() const { return lightSamples > 1 || splitsPaths(); }
   bool splitsPaths() const { return bsdfSamples > 1.0f; }
-  // Room for split children, as a multiple of the camera paths of a pass (a full pool stops splitting).
+  // Room for split children, as a multiple of the camera paths of a pass: ceil(K)^split_depth, at most 64 (a
+  // full pool continues paths unsplit with weight 1, which stays unbiased but loses the variance reduction).
   uint32_t pathPoolFactor() const;
   nlohmann::json toJson() const;
   // Applies the keys present in j over the current values (unknown keys are an error).

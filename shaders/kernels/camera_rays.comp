@@ -26,7 +26,7 @@ void main() {
   PathState p;
   p.origin = vec4(origin, 0.0);
   p.direction = vec4(dir, 0.0);
-  p.throughput = vec4(1.0, 1.0, 1.0, 0.0);
+  p.throughput = vec4(1.0);
   p.radiance = vec4(0.0);
   p.info = uvec4(pixel, key, 0u, id);
   if (kCameraRouletteQ > 0.0) {

@@ -247,6 +247,7 @@ void main() {
     vec3 wi = s.frame * wiLocal;
     bool continues = pdf > 0.0 && wiLocal.z > 0.0 && dot(wi, s.ng) > 0.0;
     vec3 beta = continues ? path.throughput.rgb * bsdfEval(gm, woLocal, wiLocal) * (wiLocal.z / (pdf * q)) : vec3(0.0);
+    float splitWeight = path.throughput.w * q;  // roulette judges a child by its unsplit throughput
     continues = continues && maxComponent(beta) > 0.0;
 
     if (continues && depth + 1u >= kRouletteDepth && kRouletteMode != kRouletteNone) {
@@ -262,9 +263,8 @@ void main() {
           beta /= 1.0 - kRouletteQ;
         }
       } else {
-        float survival = kRouletteMode == kRouletteEfficiency
-                             ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] * maxComponent(beta)
-                             : maxComponent(beta);
+        float unsplit = maxComponent(beta) * splitWeight;
+        float survival = kRouletteMode == kRouletteEfficiency ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] * unsplit : unsplit;
         survival = min(survival, kRouletteMaxSurvival);
         continues = splitCount(survival, r) > 0u;
         beta /= survival;
@@ -276,7 +276,7 @@ void main() {
     uint target = c == 0u ? id : firstChild + c - 1u;
     paths[target].origin = vec4(offsetRayOrigin(s.p, s.pError, s.ng, wi), 0.0);
     paths[target].direction = vec4(wi, pdf);
-    paths[target].throughput = vec4(beta, 0.0);
+    paths[target].throughput = vec4(beta, splitWeight);
     paths[target].info = uvec4(path.info.x, ckey, depth + 1u, root);
     if (c > 0u) paths[target].radiance = vec4(0.0);
     uint out_ = atomicAdd(control.counts[((pc.bounce + 1u) & 1u)], 1u);

@@ -68,7 +68,7 @@ VKMC_CONST uint kRouletteNone = 0u, kRouletteFixed = 1u, kRouletteThroughput = 2
 struct PathState {
   vec4 origin;      // xyz: ray origin, w: unused
   vec4 direction;   // xyz: unit direction, w: pdf of the direction
-  vec4 throughput;  // rgb: path throughput, w: unused
+  vec4 throughput;  // rgb: path throughput, w: product of the split factors that divided it (roulette undoes none)
   vec4 radiance;    // rgb: radiance gathered so far, w: unused
   uvec4 info;       // x: pixel, y: rng key, z: depth (scattering events so far), w: root path (its sample)
 };
