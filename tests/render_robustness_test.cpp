@@ -6,6 +6,7 @@
 
 #include "analysis/error_metrics.h"
 #include "app/render_job.h"
+#include "stability_row.h"
 #include "scene/gltf_loader.h"
 
 using namespace vkmc;
@@ -61,6 +62,8 @@ TEST(RenderRobustness, CornellBoxRendersTheSameScaledAndTranslated) {
     glm::dvec3 a = ref.film.imageMean(), b = r.film.imageMean();
     glm::dvec3 va = ref.film.imageMeanVarianceOfMean(), vb = r.film.imageMeanVarianceOfMean();
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], 5.0 * std::sqrt((va[c] + vb[c]) / r.film.pixels()));
+    test::stabilityRow("6", "Cornell box scaled " + std::to_string(v.scale) + ", shifted " + std::to_string(v.shift.x) +
+                               ": pixels outside 5 sigma of the unscaled render", "0", outside, 0.0, outside == 0);
   }
 }
 
@@ -89,6 +92,8 @@ TEST(RenderRobustness, NonFiniteSamplesAreCountedAndExcluded) {
   o.lookAt = glm::vec3(0, 0, 0);
   RenderOutcome r = runRender(context(), o, s);
   EXPECT_GT(r.film.totalNonfinite(), 32u * 32u * 64u / 100);
+  EXPECT_EQ(r.stats.nonfiniteEmission + r.stats.nonfiniteLightSamples + r.stats.nonfiniteThroughput, 0u)
+      << "every contribution was finite: only its square overflowed, which accumulate alone detects";
   EXPECT_EQ(r.film.totalNonfinite() + r.film.totalSamples(), 32u * 32u * 64u);
   for (size_t p = 0; p < r.film.pixels(); ++p)
     for (int c = 0; c < 3; ++c) {
@@ -140,4 +145,38 @@ TEST(RenderRobustness, SpecializedAndGeneralPipelinesRenderTheSameImage) {
     EXPECT_EQ(m.zTestPassFraction, 1.0) << scene;
     EXPECT_NEAR(m.meanDifference, 0.0, 5.0 * std::sqrt(m.mse / (3.0 * 32 * 32))) << scene;
   }
+}
+
+TEST(RenderRobustness, NonFiniteValuesAreCountedByTheStageThatProducedThem) {
+  // A finite but enormous emitter (3e38): light-sample contributions overflow to infinity inside shade. They
+  // are counted there, and every sample they reach is excluded by accumulate, never written.
+  Scene s;
+  Material wall;
+  wall.baseColor = glm::vec3(0.5f);
+  Material hot;
+  hot.emission = glm::vec3(3e38f);
+  s.materials = {wall, hot};
+  auto quad = [&](glm::vec3 o, glm::vec3 u, glm::vec3 v, uint32_t material) {
+    glm::vec3 n = glm::normalize(glm::cross(u, v));
+    for (glm::vec3 p : {o, o + u, o + u + v, o, o + u + v, o + v}) {
+      s.positions.push_back(p);
+      s.normals.push_back(n);
+      s.bounds.grow(p);
+    }
+    s.materialIds.insert(s.materialIds.end(), {material, material});
+  };
+  quad(glm::vec3(-2, -2, 0), glm::vec3(4, 0, 0), glm::vec3(0, 4, 0), 0);
+  quad(glm::vec3(-0.5f, 0.5f, 1), glm::vec3(0, 0, 1), glm::vec3(1, 0, 0), 1);  // faces -y... lights the wall obliquely
+  RenderOptions o = smallOptions("stage-nonfinite");
+  o.lookFrom = glm::vec3(0, 0, 5);
+  o.lookAt = glm::vec3(0, 0, 0);
+  RenderOutcome r = runRender(context(), o, s);
+  EXPECT_GT(r.stats.nonfiniteLightSamples, 0u);
+  EXPECT_GT(r.film.totalNonfinite(), 0u);
+  bool finiteImage = true;
+  for (size_t p = 0; p < r.film.pixels(); ++p) finiteImage &= std::isfinite(r.film.mean(p, 0)) && std::isfinite(r.film.varianceOfMean(p, 0));
+  EXPECT_TRUE(finiteImage);
+  test::stabilityRow("10", "emission 3e38: light samples overflowing in shade (count), samples excluded (count)",
+                     "> 0 counted, image finite", double(r.stats.nonfiniteLightSamples), double(r.film.totalNonfinite()),
+                     r.stats.nonfiniteLightSamples > 0 && finiteImage);
 }

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Runs the stiff-case tests (ctest -L stiff) and writes their rows (case, what, expected, measured, sigma,
+# Runs the stiff-case tests (ctest -L stiff, plus the robustness tests that cover stability cases) and writes
+# their rows (case, what, expected, measured, sigma,
 # pass) as docs/stability.md (or $OUT). Usage: tools/stability_table.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -7,7 +8,7 @@ cd "$(dirname "$0")/.."
 out=${OUT:-docs/stability.md}
 mkdir -p build/stability
 rm -f build/stability/*.json
-for t in build/tests/stiff_*_test; do
+for t in build/tests/stiff_*_test build/tests/render_robustness_test; do
   "$t" --gtest_output=json:build/stability/$(basename "$t").json >/dev/null || true
 done
 python3 - "$out" build/stability/*.json <<'PY'

@@ -181,6 +181,10 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["ray_counts"] = {{"camera", s.cameraRays}, {"extension", s.extensionRays}, {"shadow", s.shadowRays}};
   j["mrays_per_second"] = s.seconds > 0.0 ? static_cast<double>(s.rays()) / s.seconds * 1e-6 : 0.0;
   j["nonfinite_samples"] = r.film.totalNonfinite();
+  j["nonfinite_by_stage"] = {{"shade_emission", s.nonfiniteEmission},
+                             {"shade_light_samples", s.nonfiniteLightSamples},
+                             {"shade_continuation", s.nonfiniteThroughput},
+                             {"accumulate_excluded_samples", r.film.totalNonfinite()}};
   j["samples"] = r.film.totalSamples();
   j["mean"] = {mean.x, mean.y, mean.z};
   j["mean_variance"] = {var.x, var.y, var.z};
@@ -242,7 +246,7 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 "rays        %llu (camera %llu, extension %llu, shadow %llu): %.2f Mrays/s\n"
                 "mean        %.6g %.6g %.6g\n"
                 "variance    %.3g %.3g %.3g (image mean of the per-pixel variance of the mean)\n"
-                "non-finite  %llu samples\n",
+                "non-finite  %llu samples excluded\n",
                 o.scenePath.c_str(), r.sceneInfo.triangles, r.sceneInfo.emissiveTriangles, r.device.c_str(), r.width, r.height,
                 s.samplesPerPixel, r.cameraName.c_str(),
                 o.estimator.summary().c_str(),

@@ -50,7 +50,8 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
     const Material& m = scene.materials[scene.materialIds[src]];
     if (m.isEmissive() && triangleArea[i] > 0.0f) {
       double sides = m.doubleSided ? 2.0 : 1.0;
-      power.push_back(gpu::luminance(m.emission) * triangleArea[i] * gpu::kPi * sides);
+      // In double: a finite emission near FLT_MAX times area and pi would overflow float.
+      power.push_back(double(gpu::luminance(m.emission)) * double(triangleArea[i]) * double(gpu::kPi) * sides);
       lightTriangles.push_back(i);
     }
   }

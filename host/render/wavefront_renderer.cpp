@@ -238,6 +238,9 @@ uint32_t WavefrontRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount,
   stats.extensionRays += control->totals.y;
   stats.shadowRays += control->totals.z;
   stats.primaryRays += control->totals.x;
+  stats.nonfiniteEmission += control->nonfinite.x;
+  stats.nonfiniteLightSamples += control->nonfinite.y;
+  stats.nonfiniteThroughput += control->nonfinite.z;
   if (settings_.recordDepthStats) collectPilot(count);
   return bounce;
 }

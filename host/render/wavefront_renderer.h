@@ -43,6 +43,7 @@ struct RenderStats {
   uint32_t passes = 0;
   uint32_t maxBounces = 0;
   uint32_t samplesPerPixel = 0;  // reached (equals spp unless a time budget ended the render)
+  uint64_t nonfiniteEmission = 0, nonfiniteLightSamples = 0, nonfiniteThroughput = 0;  // by producing stage
   uint64_t rays() const { return cameraRays + extensionRays + shadowRays; }
 };
 

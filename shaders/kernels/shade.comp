@@ -145,7 +145,8 @@ void queueLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo, 
   // MIS over one BSDF sample and `samples` light samples: the light technique's pdf counts samples times.
   float weight = kMis == kMisNone ? 1.0 : misWeight(float(samples) * pdf, techniquePdf(gm, woLocal, wiLocal));
   vec3 contribution = path.throughput.rgb * f * lm.emission.rgb * (wiLocal.z * weight / (pdf * float(samples)));
-  if (!(maxComponent(contribution) > 0.0)) return;
+  if (!allFinite(contribution)) atomicAdd(control.nonfinite.y, 1u);  // still queued: it poisons the sample
+  else if (!(maxComponent(contribution) > 0.0)) return;
   if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * pixelEstimate[path.info.x]) {
     if (randomUnit(key, lightDim(depth, j, 3u)) < kShadowRouletteQ) return;
     contribution /= 1.0 - kShadowRouletteQ;
@@ -158,10 +159,12 @@ void queueLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo, 
   shadowRays[slot].contribution = vec4(contribution, 0.0);
 }
 
-// Radiance of a sample accumulates in its root path. Without BSDF splitting a path is its own root and is
+// Radiance of a sample accumulates in its root path. A non-finite value is counted here by kind and still
+// added: the whole sample is then excluded (and counted) by accumulate, never written to the image. Without BSDF splitting a path is its own root and is
 // alone in its slot during this dispatch; with splitting, siblings add concurrently, hence the atomics.
 void addToSample(uint id, uint root, vec3 value) {
-  if (!(maxComponent(abs(value)) > 0.0)) return;
+  if (!allFinite(value)) atomicAdd(control.nonfinite.x, 1u);
+  else if (!(maxComponent(abs(value)) > 0.0)) return;
 #ifdef VKMC_FLOAT_ATOMICS
   if (kBsdfSamples > 1.0) {
     atomicAdd(paths[root].radiance.r, value.r);
@@ -247,6 +250,11 @@ void main() {
     vec3 wi = s.frame * wiLocal;
     bool continues = pdf > 0.0 && wiLocal.z > 0.0 && dot(wi, s.ng) > 0.0;
     vec3 beta = continues ? path.throughput.rgb * bsdfEval(gm, woLocal, wiLocal) * (wiLocal.z / (pdf * q)) : vec3(0.0);
+    if (!allFinite(beta)) {  // never dropped silently: it poisons the sample, which accumulate counts and excludes
+      atomicAdd(control.nonfinite.z, 1u);
+      gathered += beta;
+      continue;
+    }
     float splitWeight = path.throughput.w * q;  // roulette judges a child by its unsplit throughput
     continues = continues && maxComponent(beta) > 0.0;
 

@@ -97,7 +97,10 @@ struct Control {
   uvec4 rayArgs;         // dispatch of intersect and shade
   uvec4 shadowArgs;      // dispatch of shadow
   uvec4 accumulateArgs;  // dispatch of accumulate: non-zero only once no path is alive
-  uvec4 totals;          // x: camera rays, y: extension rays, z: shadow rays, w: non-finite in shade
+  uvec4 totals;          // x: camera rays, y: extension rays, z: shadow rays, w: unused
+  // Non-finite values by the stage that produced them (the sample is then excluded by accumulate):
+  uvec4 nonfinite;       // x: emission and other gathered radiance, y: light-sample contributions,
+                         // z: continuation throughput, w: unused
 };
 
 struct TestRay {
@@ -134,7 +137,7 @@ static_assert(offsetof(PathState, info) == 64);
 static_assert(sizeof(ShadowRay) == 48);
 static_assert(sizeof(Material) == 48);
 static_assert(sizeof(FilmPixel) == 32);
-static_assert(sizeof(Control) == 80);
+static_assert(sizeof(Control) == 96);
 static_assert(offsetof(Control, rayArgs) == 16 && offsetof(Control, accumulateArgs) == 48);
 static_assert(sizeof(TestRay) == 32);
 static_assert(sizeof(PushConstants) == 128);
