@@ -8,6 +8,17 @@ namespace vkmc {
 Film::Film(uint32_t w, uint32_t h)
     : width(w), height(h), sum(3 * pixels(), 0.0), sumSq(3 * pixels(), 0.0), count(pixels(), 0), nonfinite(pixels(), 0) {}
 
+void Film::addBatch(const FilmBatchPixel* px) {
+  for (size_t p = 0; p < pixels(); ++p) {
+    for (int c = 0; c < 3; ++c) {
+      sum[3 * p + c] += px[p].sum[c];
+      sumSq[3 * p + c] += px[p].sumSq[c];
+    }
+    count[p] += static_cast<uint64_t>(px[p].sum[3]);
+    nonfinite[p] += static_cast<uint64_t>(px[p].sumSq[3]);
+  }
+}
+
 double Film::mean(size_t p, int c) const { return count[p] ? sum[3 * p + c] / static_cast<double>(count[p]) : 0.0; }
 
 double Film::varianceOfMean(size_t p, int c) const {

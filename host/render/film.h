@@ -8,6 +8,12 @@
 
 namespace vkmc {
 
+// Mirrors gpu::FilmPixel (layout.h) without pulling the shared header into every includer.
+struct FilmBatchPixel {
+  float sum[4];    // rgb, finite samples
+  float sumSq[4];  // rgb, non-finite samples
+};
+
 struct Film {
   uint32_t width = 0, height = 0;
   std::vector<double> sum;      // 3 per pixel
@@ -16,6 +22,9 @@ struct Film {
   std::vector<uint64_t> nonfinite;
 
   Film() = default;
+  // Folds one batch of the GPU's float partial sums (at most 64 samples a pixel) into the double sums: the
+  // float error stays that of 64 additions however many batches follow.
+  void addBatch(const struct FilmBatchPixel* batch);
   Film(uint32_t w, uint32_t h);
   size_t pixels() const { return static_cast<size_t>(width) * height; }
   double mean(size_t pixel, int c) const;

@@ -246,15 +246,8 @@ uint32_t WavefrontRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount,
 }
 
 void WavefrontRenderer::foldFilm(Film& film) {
-  auto* px = static_cast<gpu::FilmPixel*>(film_.mapped());
-  for (size_t p = 0; p < film.pixels(); ++p) {
-    for (int c = 0; c < 3; ++c) {
-      film.sum[3 * p + c] += px[p].sum[c];
-      film.sumSq[3 * p + c] += px[p].sumSq[c];
-    }
-    film.count[p] += static_cast<uint64_t>(px[p].sum.w);
-    film.nonfinite[p] += static_cast<uint64_t>(px[p].sumSq.w);
-  }
+  static_assert(sizeof(FilmBatchPixel) == sizeof(gpu::FilmPixel));
+  film.addBatch(static_cast<const FilmBatchPixel*>(film_.mapped()));
   // The running pixel estimate that shadow-ray roulette compares tiny contributions against.
   auto* estimate = static_cast<float*>(pixelEstimate_.mapped());
   for (size_t p = 0; p < film.pixels(); ++p)
