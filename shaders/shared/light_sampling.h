@@ -6,9 +6,11 @@
 #include "sampling.h"
 VKMC_BEGIN_NAMESPACE
 
-// Below this solid angle the spherical construction loses precision; area sampling is used instead, and the
-// same test decides the pdf, so sampling and evaluation always agree.
-VKMC_CONST float kMinSphericalSolidAngle = 1e-5f;
+// Spherical sampling is used only where it is well conditioned (pbrt-v4's bounds): tiny triangles lose
+// precision in the spherical construction and near-hemispherical ones in its angles. Outside, area sampling;
+// the same test decides the pdf, so sampling and evaluation always agree.
+VKMC_CONST float kMinSphericalSolidAngle = 3e-4f;
+VKMC_CONST float kMaxSphericalSolidAngle = 6.22f;
 
 // Solid angle of triangle (a, b, c) seen from p (Van Oosterom & Strackee 1983).
 VKMC_FN float triangleSolidAngle(vec3 p, vec3 a, vec3 b, vec3 c) {
@@ -18,31 +20,51 @@ VKMC_FN float triangleSolidAngle(vec3 p, vec3 a, vec3 b, vec3 c) {
   return 2.0f * atan(num, den);
 }
 
-VKMC_FN bool useSphericalSampling(float solidAngle) { return solidAngle >= kMinSphericalSolidAngle; }
+VKMC_FN bool useSphericalSampling(float solidAngle) {
+  return solidAngle >= kMinSphericalSolidAngle && solidAngle <= kMaxSphericalSolidAngle;
+}
 
-// Arvo's spherical triangle sampling: a unit direction from p, uniform over the triangle's solid angle.
-VKMC_FN vec3 sampleSphericalTriangle(vec3 p, vec3 a0, vec3 b0, vec3 c0, vec2 u, float solidAngle) {
-  vec3 A = normalize(a0 - p), B = normalize(b0 - p), C = normalize(c0 - p);
-  // Interior angle at A and side lengths via normals of the great circles.
-  vec3 nAB = normalize(cross(A, B)), nAC = normalize(cross(A, C));
-  float cosAlpha = clamp(dot(nAB, nAC), -1.0f, 1.0f);
-  float alpha = acos(cosAlpha);
-  float sinAlpha = sin(alpha);
-  float cosC = clamp(dot(A, B), -1.0f, 1.0f);
-  float areaHat = u.x * solidAngle;
-  float s = sin(areaHat - alpha);
-  float t = cos(areaHat - alpha);
-  float uu = t - cosAlpha;
-  float vv = s + sinAlpha * cosC;
-  float den = (vv * s + uu * t) * sinAlpha;
-  float q = den != 0.0f ? clamp(((vv * t - uu * s) * cosAlpha - vv) / den, -1.0f, 1.0f) : 1.0f;
-  vec3 perp = C - dot(C, A) * A;
-  float perpLen = length(perp);
-  vec3 cHat = q * A + sqrt(max(0.0f, 1.0f - q * q)) * (perpLen > 0.0f ? perp / perpLen : vec3(0.0f));
-  float z = 1.0f - u.y * (1.0f - dot(cHat, B));
-  vec3 perp2 = cHat - dot(cHat, B) * B;
-  float perp2Len = length(perp2);
-  return normalize(z * B + sqrt(max(0.0f, 1.0f - z * z)) * (perp2Len > 0.0f ? perp2 / perp2Len : vec3(0.0f)));
+VKMC_FN float safeAsin(float x) { return asin(clamp(x, -1.0f, 1.0f)); }
+VKMC_FN float safeSqrt(float x) { return sqrt(max(x, 0.0f)); }
+
+// Angle between unit vectors from half the chord: precise near 0 and pi, where acos of a dot product is not
+// (and GPUs' acos is looser still).
+VKMC_FN float angleBetween(vec3 v1, vec3 v2) {
+  if (dot(v1, v2) < 0.0f) return kPi - 2.0f * safeAsin(0.5f * length(v1 + v2));
+  return 2.0f * safeAsin(0.5f * length(v2 - v1));
+}
+
+VKMC_FN vec3 orthogonalUnit(vec3 v, vec3 w) {
+  vec3 o = v - dot(v, w) * w;
+  float l = length(o);
+  return l > 0.0f ? o / l : vec3(0.0f);
+}
+
+// Arvo 1995 in pbrt-v4's arrangement: a unit direction from p, uniform over the triangle's solid angle. The
+// vertex angles and the sampled area come from the same computation, so the map is uniform to rounding.
+VKMC_FN vec3 sampleSphericalTriangle(vec3 p, vec3 v0, vec3 v1, vec3 v2, vec2 u, float solidAngle) {
+  vec3 a = normalize(v0 - p), b = normalize(v1 - p), c = normalize(v2 - p);
+  vec3 nab = cross(a, b), nbc = cross(b, c), nca = cross(c, a);
+  if (dot(nab, nab) == 0.0f || dot(nbc, nbc) == 0.0f || dot(nca, nca) == 0.0f) return a;
+  nab = normalize(nab);
+  nbc = normalize(nbc);
+  nca = normalize(nca);
+  float alpha = angleBetween(nab, -nca);
+  float beta = angleBetween(nbc, -nab);
+  float gamma = angleBetween(nca, -nbc);
+  float apPi = mix(kPi, alpha + beta + gamma, u.x);  // sampled sub-triangle area + pi
+  float cosAlpha = cos(alpha), sinAlpha = sin(alpha);
+  float sinPhi = sin(apPi) * cosAlpha - cos(apPi) * sinAlpha;
+  float cosPhi = cos(apPi) * cosAlpha + sin(apPi) * sinAlpha;
+  float k1 = cosPhi + cosAlpha;
+  float k2 = sinPhi - sinAlpha * dot(a, b);
+  float den = (k2 * sinPhi + k1 * cosPhi) * sinAlpha;
+  float cosBp = den != 0.0f ? clamp((k2 + (k2 * cosPhi - k1 * sinPhi) * cosAlpha) / den, -1.0f, 1.0f) : 1.0f;
+  float sinBp = safeSqrt(1.0f - cosBp * cosBp);
+  vec3 cp = cosBp * a + sinBp * orthogonalUnit(c, a);
+  float cosTheta = 1.0f - u.y * (1.0f - dot(cp, b));
+  float sinTheta = safeSqrt(1.0f - cosTheta * cosTheta);
+  return normalize(cosTheta * b + sinTheta * orthogonalUnit(cp, b));
 }
 
 // Point where the ray p + t w meets the plane of the triangle (for a direction known to hit it).
