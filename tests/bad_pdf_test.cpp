@@ -7,6 +7,7 @@
 
 #include "../shaders/shared/layout.h"
 #include "spirv/pdf_demo_spv.h"
+#include "render_helpers.h"
 #include "vk/kernel.h"
 
 using namespace vkmc;
@@ -15,9 +16,7 @@ TEST(BadPdf, PdfShapedUnlikeTheIntegrandRaisesVariance) {
   vk::Context ctx;
   vk::KernelLayout layout(ctx);
   vk::Buffer dummy(ctx, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
-  for (uint32_t b : {BINDING_MATERIALS, BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_CONTROL,
-                     BINDING_FILM, BINDING_TEST_RAYS, BINDING_PIXEL_ESTIMATE})
-    layout.bindStorage(b, dummy);
+  test::bindPlaceholders(layout, dummy, {BINDING_TEST_HITS});
   const uint32_t invocations = 4096, perInvocation = 256;
   vk::Buffer out(ctx, invocations * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
   layout.bindStorage(BINDING_TEST_HITS, out);

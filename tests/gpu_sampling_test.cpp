@@ -9,6 +9,7 @@
 #include "../shaders/shared/light_sampling.h"
 #include "../shaders/shared/rng.h"
 #include "spirv/sampling_probe_spv.h"
+#include "render_helpers.h"
 #include "vk/kernel.h"
 
 using namespace vkmc;
@@ -17,9 +18,7 @@ TEST(GpuSampling, SphericalTriangleSamplingMatchesTheHost) {
   vk::Context ctx;
   vk::KernelLayout layout(ctx);
   vk::Buffer dummy(ctx, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
-  for (uint32_t b : {BINDING_MATERIALS, BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_CONTROL,
-                     BINDING_FILM, BINDING_TEST_RAYS, BINDING_PIXEL_ESTIMATE, BINDING_ROULETTE_TABLE, BINDING_DEPTH_STATS})
-    layout.bindStorage(b, dummy);
+  test::bindPlaceholders(layout, dummy, {BINDING_TEST_HITS});
   const uint32_t n = 1u << 20;
   vk::Buffer out(ctx, n * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
   layout.bindStorage(BINDING_TEST_HITS, out);

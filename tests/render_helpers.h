@@ -5,13 +5,35 @@
 
 #include <string>
 
+#include <algorithm>
+#include <initializer_list>
+
+#include "../shaders/shared/layout.h"
 #include "app/render_job.h"
+#include "vk/kernel.h"
 
 namespace vkmc::test {
 
 inline vk::Context& sharedContext() {
   static vk::Context ctx;
   return ctx;
+}
+
+// Appends the quad o, o + u, o + u + v, o + v (front face along u x v) to an in-memory scene.
+inline void addQuad(Scene& s, glm::vec3 o, glm::vec3 u, glm::vec3 v, uint32_t material) {
+  glm::vec3 n = glm::normalize(glm::cross(u, v));
+  for (glm::vec3 p : {o, o + u, o + u + v, o, o + u + v, o + v}) {
+    s.positions.push_back(p);
+    s.normals.push_back(n);
+    s.bounds.grow(p);
+  }
+  s.materialIds.insert(s.materialIds.end(), {material, material});
+}
+
+// Binds a placeholder buffer to every storage binding a standalone test kernel declares but never touches.
+inline void bindPlaceholders(vk::KernelLayout& layout, const vk::Buffer& placeholder, std::initializer_list<uint32_t> except) {
+  for (uint32_t b = BINDING_MATERIALS; b < BINDING_COUNT; ++b)
+    if (std::find(except.begin(), except.end(), b) == except.end()) layout.bindStorage(b, placeholder);
 }
 
 inline std::string scenePath(const std::string& name) { return std::string(VKMC_SOURCE_DIR) + "/scenes/" + name; }

@@ -6,6 +6,7 @@
 
 #include "analysis/error_metrics.h"
 #include "app/render_job.h"
+#include "render_helpers.h"
 #include "stability_row.h"
 #include "scene/gltf_loader.h"
 
@@ -76,17 +77,8 @@ TEST(RenderRobustness, NonFiniteSamplesAreCountedAndExcluded) {
   Material hot;
   hot.emission = glm::vec3(1e30f);
   s.materials = {wall, hot};
-  auto quad = [&](glm::vec3 o, glm::vec3 u, glm::vec3 v, uint32_t material) {
-    glm::vec3 n = glm::normalize(glm::cross(u, v));
-    for (glm::vec3 p : {o, o + u, o + u + v, o, o + u + v, o + v}) {
-      s.positions.push_back(p);
-      s.normals.push_back(n);
-      s.bounds.grow(p);
-    }
-    s.materialIds.insert(s.materialIds.end(), {material, material});
-  };
-  quad(glm::vec3(-2, -2, 0), glm::vec3(4, 0, 0), glm::vec3(0, 4, 0), 0);     // wall facing +z
-  quad(glm::vec3(-0.5f, -0.5f, 1), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), 1);  // hot patch in front
+  test::addQuad(s, glm::vec3(-2, -2, 0), glm::vec3(4, 0, 0), glm::vec3(0, 4, 0), 0);     // wall facing +z
+  test::addQuad(s, glm::vec3(-0.5f, -0.5f, 1), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), 1);  // hot patch in front
   RenderOptions o = smallOptions("nonfinite");
   o.lookFrom = glm::vec3(0, 0, 5);
   o.lookAt = glm::vec3(0, 0, 0);
@@ -156,17 +148,8 @@ TEST(RenderRobustness, NonFiniteValuesAreCountedByTheStageThatProducedThem) {
   Material hot;
   hot.emission = glm::vec3(3e38f);
   s.materials = {wall, hot};
-  auto quad = [&](glm::vec3 o, glm::vec3 u, glm::vec3 v, uint32_t material) {
-    glm::vec3 n = glm::normalize(glm::cross(u, v));
-    for (glm::vec3 p : {o, o + u, o + u + v, o, o + u + v, o + v}) {
-      s.positions.push_back(p);
-      s.normals.push_back(n);
-      s.bounds.grow(p);
-    }
-    s.materialIds.insert(s.materialIds.end(), {material, material});
-  };
-  quad(glm::vec3(-2, -2, 0), glm::vec3(4, 0, 0), glm::vec3(0, 4, 0), 0);
-  quad(glm::vec3(-0.5f, 0.5f, 1), glm::vec3(0, 0, 1), glm::vec3(1, 0, 0), 1);  // faces -y... lights the wall obliquely
+  test::addQuad(s, glm::vec3(-2, -2, 0), glm::vec3(4, 0, 0), glm::vec3(0, 4, 0), 0);
+  test::addQuad(s, glm::vec3(-0.5f, 0.5f, 1), glm::vec3(0, 0, 1), glm::vec3(1, 0, 0), 1);  // faces +y, at right angles to the wall
   RenderOptions o = smallOptions("stage-nonfinite");
   o.lookFrom = glm::vec3(0, 0, 5);
   o.lookAt = glm::vec3(0, 0, 0);

@@ -10,16 +10,6 @@ using namespace vkmc;
 using namespace vkmc::test;
 
 namespace {
-void addQuad(Scene& s, glm::vec3 o, glm::vec3 u, glm::vec3 v, uint32_t material) {
-  glm::vec3 n = glm::normalize(glm::cross(u, v));
-  for (glm::vec3 p : {o, o + u, o + u + v, o, o + u + v, o + v}) {
-    s.positions.push_back(p);
-    s.normals.push_back(n);
-    s.bounds.grow(p);
-  }
-  s.materialIds.insert(s.materialIds.end(), {material, material});
-}
-
 RenderOutcome render(const Scene& s, EstimatorConfig e, uint32_t w, uint32_t spp, glm::vec3 from, glm::vec3 at, uint32_t seed) {
   RenderOptions o;
   o.scenePath = "in-memory";
