@@ -149,3 +149,20 @@ TEST(StiffRender, DegenerateGeometryIsSkippedCountedAndHarmless) {
   EXPECT_GT(whole(single.film).mean.x, 0.0);
   stabilityRow("7", "a single triangle", "0 non-finite", double(single.film.totalNonfinite()), 0.0, single.film.totalNonfinite() == 0);
 }
+
+TEST(StiffRender, DepthCapTruncationMatchesTheoryOnTheStiffFurnace) {
+  // Case 1's truncation part: albedo 0.99, Le = 1, no roulette, cap D: L_D = (1 - 0.99^(D+1)) / (1 - 0.99).
+  for (uint32_t cap : {1u, 10u, 50u}) {
+    EstimatorConfig c;
+    c.rr = RouletteMode::None;
+    c.maxDepth = cap;
+    RenderOutcome r = renderWith("furnace_stiff.gltf", c, 8, 8, 16);
+    RegionStats s = whole(r.film);
+    double expected = (1.0 - std::pow(0.99, cap + 1.0)) / (1.0 - 0.99);
+    double sigma = std::sqrt(s.variance.x);
+    EXPECT_NEAR(s.mean.x, expected, 5.0 * sigma + 1e-6 * expected) << "cap " << cap;
+    EXPECT_LT(sigma, 1e-3 * expected) << "the test must resolve 0.1%";
+    stabilityRow("1", "albedo 0.99 furnace, depth cap " + std::to_string(cap) + ", no roulette: truncation theory",
+                 std::to_string(expected), s.mean.x, sigma, std::abs(s.mean.x - expected) < 5.0 * sigma + 1e-6 * expected);
+  }
+}
