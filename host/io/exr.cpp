@@ -23,6 +23,15 @@ std::string temporaryPathFor(const std::string& path) {
   return path + ".tmp-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
 }
 
+void commitTemporary(const std::string& tmp, const std::string& path) {
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::remove(tmp.c_str());
+    throw Error("cannot write '" + path + "': " + ec.message());
+  }
+}
+
 void writeFileAtomically(const std::string& path, const std::string& bytes) {
   std::string tmp = temporaryPathFor(path);
   {
@@ -34,12 +43,7 @@ void writeFileAtomically(const std::string& path, const std::string& bytes) {
       throw Error("cannot write '" + path + "'");
     }
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw Error("cannot write '" + path + "': " + ec.message());
-  }
+  commitTemporary(tmp, path);
 }
 
 void writeExr(const std::string& path, const ExrImage& image) {
@@ -63,12 +67,7 @@ void writeExr(const std::string& path, const ExrImage& image) {
     std::remove(tmp.c_str());
     throw Error("cannot write '" + path + "': " + e.what());
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw Error("cannot write '" + path + "': " + ec.message());
-  }
+  commitTemporary(tmp, path);
 }
 
 void writeFilmExr(const std::string& path, const Film& film) { writeExr(path, filmToImage(film)); }

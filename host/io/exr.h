@@ -22,5 +22,7 @@ ExrImage readExr(const std::string& path);
 // Writes `bytes` through a temporary name and a rename (for reports and PNGs too).
 void writeFileAtomically(const std::string& path, const std::string& bytes);
 std::string temporaryPathFor(const std::string& path);
+// Renames a finished temporary file onto path; on failure removes it and throws vkmc::Error.
+void commitTemporary(const std::string& tmp, const std::string& path);
 
 }  // namespace vkmc

@@ -35,12 +35,7 @@ void writeRgbPng(const std::string& path, const std::vector<uint8_t>& rgb, uint3
     std::remove(tmp.c_str());
     throw Error("cannot write PNG '" + path + "': " + image.message);
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw Error("cannot write '" + path + "': " + ec.message());
-  }
+  commitTemporary(tmp, path);
 }
 
 // Draws text with stb_easy_font (axis-aligned quads) in black, scaled by `scale`, at (x, y).
