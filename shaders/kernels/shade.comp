@@ -19,6 +19,7 @@ struct SurfacePoint {
   vec3 ng;  // geometric normal, facing the incoming ray's side
   mat3 frame;  // shading frame; column 2 is the shading normal, on the side of ng
   bool frontFace;
+  uint material;
 };
 
 SurfacePoint surfaceAt(uint tri, vec2 b12, vec3 wo) {
@@ -32,6 +33,7 @@ SurfacePoint surfaceAt(uint tri, vec2 b12, vec3 wo) {
   s.frontFace = dot(s.ng, wo) > 0.0;
   if (!s.frontFace) s.ng = -s.ng;
   uvec4 info = texelFetch(triangleInfo, int(tri));
+  s.material = info.w;
   vec3 n = b.x * decodeOctahedral(unpackSnorm2x16(info.x)) + b.y * decodeOctahedral(unpackSnorm2x16(info.y)) +
            b.z * decodeOctahedral(unpackSnorm2x16(info.z));
   float len = length(n);
@@ -193,7 +195,7 @@ void main() {
     return;
   }
   SurfacePoint s = surfaceAt(tri, hit.yz, wo);
-  Material m = materials[texelFetch(triangleInfo, int(tri)).w];
+  Material m = materials[s.material];
   uint depth = path.info.z;
   vec3 gathered = vec3(0.0);
 
