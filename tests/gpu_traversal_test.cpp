@@ -74,3 +74,41 @@ TEST(GpuTraversal, ClosestAndAnyHitAgreeWithBruteForce) {
   EXPECT_EQ(anyMismatches, 0);
   EXPECT_GT(hits, 2000);
 }
+
+// llvmpipe has a hang guard that ends shader loops after 65535 iterations (LP_MAX_TGSI_LOOP_ITERATIONS) without
+// an error; the analytic furnace probe lost paths to it (tests/stiff_furnace_test.cpp). A BVH walk flags a walk
+// that did not end on its own (t = NaN here; counted and excluded in renders). A ray through the common box of
+// 400k coincident triangles, one per leaf, missing them all, visits every one of the 400k leaves: on llvmpipe
+// (Mesa 22.3) that walk completes, and must come back as a miss, not as a cut or a false hit.
+TEST(GpuTraversal, AWalkOfHundredsOfThousandsOfLeavesCompletes) {
+  vk::Context ctx;
+  for (uint32_t count : {1000u, 400000u}) {
+    Scene scene;
+    scene.materials.push_back(Material{});
+    std::vector<Aabb> bounds(count);
+    for (uint32_t i = 0; i < count; ++i) {
+      for (glm::vec3 v : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)}) {
+        scene.positions.push_back(v);
+        scene.normals.push_back(glm::vec3(0, 0, 1));
+        scene.bounds.grow(v);
+        bounds[i].grow(v);
+      }
+      scene.materialIds.push_back(0);
+    }
+    BvhOptions oneTrianglePerLeaf;
+    oneTrianglePerLeaf.maxLeafSize = 1;
+    Bvh bvh = buildBvh(bounds, oneTrianglePerLeaf);
+    ASSERT_EQ(bvh.stats.leaves, count);
+    GpuScene gpuScene(ctx, scene, bvh);
+    RayTracer tracer(ctx, gpuScene);
+    // Inside every leaf's box (the unit square), outside every triangle (x + y > 1).
+    std::vector<gpu::TestRay> rays(64, gpu::TestRay{glm::vec4(0.9f, 0.9f, 1.0f, 1e30f), glm::vec4(0, 0, -1, 0)});
+    std::vector<glm::vec4> hits = tracer.trace(rays, false);
+    EXPECT_FALSE(std::isnan(hits[0].x)) << count << " leaves: the walk was cut short";
+    EXPECT_EQ(glm::floatBitsToUint(hits[0].w), gpu::kMissPrimitive) << count << " leaves";
+    // And the same pile hit inside a triangle: the closest hit is found.
+    rays.assign(64, gpu::TestRay{glm::vec4(0.2f, 0.2f, 1.0f, 1e30f), glm::vec4(0, 0, -1, 0)});
+    hits = tracer.trace(rays, false);
+    EXPECT_FLOAT_EQ(hits[0].x, 1.0f) << count << " leaves";
+  }
+}

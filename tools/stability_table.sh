@@ -20,11 +20,13 @@ for path in sys.argv[2:]:
             for key, value in test.items():
                 if key.startswith("stability_row_"):
                     rows.append((int(key.rsplit("_", 1)[1]), value.split("|")))
-rows.sort(key=lambda r: (r[1][0], r[0]))
+rows.sort(key=lambda r: (int(r[1][0]), r[0]))
 with open(sys.argv[1], "w") as f:
     f.write("# Numerical stability on stiff and extreme cases\n\n")
-    f.write("Produced by `tools/stability_table.sh` (the tests labelled `stiff`: `ctest -L stiff`). Case numbers follow\n")
-    f.write("the stability issue; cases not listed are not covered by a stiff test yet (see the closing notes).\n\n")
+    f.write("Produced by `tools/stability_table.sh` (the tests labelled `stiff`: `ctest -L stiff`, and\n")
+    f.write("`render_robustness_test`). Case numbers follow the stability issue; each case's scene or generator and its\n")
+    f.write("expected answer: `scenes/stiff/README.md`. sigma is the standard deviation of the measured estimate;\n")
+    f.write("statistical rows pass within 5 sigma (3 for case 2), others as stated in the row.\n\n")
     f.write("| case | what | expected | measured | sigma | pass |\n|---|---|---|---|---|---|\n")
     for _, r in rows:
         f.write("| " + " | ".join(r) + " |\n")

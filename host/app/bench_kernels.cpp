@@ -7,15 +7,12 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "../shaders/shared/geometry.h"
-#include "../shaders/shared/rng.h"
-#include "../shaders/shared/sampling.h"
 #include "app/render_job.h"
 #include "bvh/bvh.h"
 #include "error.h"
 #include "render/gpu_scene.h"
+#include "render/benchmark_rays.h"
 #include "render/ray_tracer.h"
-#include "scene/camera_rig.h"
 #include "scene/gltf_loader.h"
 #include "io/exr.h"
 #include "vk/context.h"
@@ -46,9 +43,8 @@ struct Samples {
   double diffuseRays = 0;
 };
 
-// The traversal alone, on ray arrays: camera rays through pixel centres (coherent), then from each of their
-// hits four cosine-distributed bounce rays about the geometric normal (incoherent, as in a diffuse bounce).
-// Returns (primary, diffuse) Mrays/s from the trace kernel's timestamps, medians over runs.
+// The traversal alone, on the ray arrays of render/benchmark_rays.h (camera rays, then four diffuse bounce rays
+// per hit). Returns (primary, diffuse) Mrays/s from the trace kernel's timestamps, medians over runs.
 std::pair<std::vector<double>, std::vector<double>> traceBenchmark(vk::Context& ctx, const std::string& path, int width,
                                                                    int height, int runs, double& diffuseRayCount) {
   Scene scene = loadGltf(path);
@@ -58,34 +54,9 @@ std::pair<std::vector<double>, std::vector<double>> traceBenchmark(vk::Context& 
   Bvh bvh = buildBvh(bounds);
   GpuScene gpuScene(ctx, scene, bvh);
   RayTracer tracer(ctx, gpuScene);
-  Camera cam = scene.cameras.empty() ? autoCamera(scene.bounds, float(width) / height) : scene.cameras[0];
-  CameraRig rig = makeCameraRig(cam, width, height);
-  std::vector<gpu::TestRay> primary;
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      glm::vec2 s(2.0f * (x + 0.5f) / width - 1.0f, 1.0f - 2.0f * (y + 0.5f) / height);
-      glm::vec3 o = rig.origin, d = rig.forward;
-      if (rig.orthographic) o += s.x * rig.right + s.y * rig.up;
-      else d = glm::normalize(rig.forward + s.x * rig.right + s.y * rig.up);
-      primary.push_back({glm::vec4(o, 3e38f), glm::vec4(d, 0.0f)});
-    }
-  std::vector<glm::vec4> hits = tracer.trace(primary, false);
-  std::vector<gpu::TestRay> diffuse;
-  for (size_t i = 0; i < hits.size(); ++i) {
-    uint32_t tri = glm::floatBitsToUint(hits[i].w);
-    if (tri == gpu::kMissPrimitive) continue;
-    const glm::vec3* v = &scene.positions[3 * bvh.triangleOrder[tri]];
-    glm::vec3 b(1.0f - hits[i].y - hits[i].z, hits[i].y, hits[i].z);
-    glm::vec3 p = b.x * v[0] + b.y * v[1] + b.z * v[2];
-    glm::vec3 n = glm::normalize(glm::cross(v[1] - v[0], v[2] - v[0]));
-    if (glm::dot(n, glm::vec3(primary[i].direction)) > 0.0f) n = -n;
-    for (uint32_t k = 0; k < 4; ++k) {
-      uint32_t key = gpu::pathKey(99u, static_cast<uint32_t>(i), k);
-      glm::vec3 w = gpu::basisFromNormal(n) * gpu::sampleCosineHemisphere(glm::vec2(gpu::randomUnit(key, 0), gpu::randomUnit(key, 1)));
-      glm::vec3 o = gpu::offsetRayOrigin(p, gpu::barycentricError(b, v[0], v[1], v[2]), n, w);
-      diffuse.push_back({glm::vec4(o, 3e38f), glm::vec4(w, 0.0f)});
-    }
-  }
+  BenchmarkRays rays = makeBenchmarkRays(scene, bvh, tracer, uint32_t(width), uint32_t(height));
+  const std::vector<gpu::TestRay>& primary = rays.primary;
+  const std::vector<gpu::TestRay>& diffuse = rays.diffuse;
   diffuseRayCount = static_cast<double>(diffuse.size());
   std::vector<double> p, d;
   tracer.trace(primary, false);  // warm-up

@@ -184,6 +184,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["nonfinite_by_stage"] = {{"shade_emission", s.nonfiniteEmission},
                              {"shade_light_samples", s.nonfiniteLightSamples},
                              {"shade_continuation", s.nonfiniteThroughput},
+                             {"traversal_cut_by_loop_limit", s.traversalsCut},
                              {"accumulate_excluded_samples", r.film.totalNonfinite()}};
   j["samples"] = r.film.totalSamples();
   j["mean"] = {mean.x, mean.y, mean.z};

@@ -241,6 +241,7 @@ uint32_t WavefrontRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount,
   stats.nonfiniteEmission += control->nonfinite.x;
   stats.nonfiniteLightSamples += control->nonfinite.y;
   stats.nonfiniteThroughput += control->nonfinite.z;
+  stats.traversalsCut += control->nonfinite.w;
   if (settings_.recordDepthStats) collectPilot(count);
   return bounce;
 }

@@ -44,6 +44,7 @@ struct RenderStats {
   uint32_t maxBounces = 0;
   uint32_t samplesPerPixel = 0;  // reached (equals spp unless a time budget ended the render)
   uint64_t nonfiniteEmission = 0, nonfiniteLightSamples = 0, nonfiniteThroughput = 0;  // by producing stage
+  uint64_t traversalsCut = 0;  // rays whose BVH walk the device's loop limit ended (their samples excluded)
   uint64_t rays() const { return cameraRays + extensionRays + shadowRays; }
 };
 

@@ -2,6 +2,9 @@
 // inner nodes until it holds a leaf, then the lanes test leaves together. On SIMD hardware (llvmpipe's 8
 // lanes, a GPU's warp) this keeps lanes busy with the same kind of work. Leaves are stack entries too, tagged
 // with the high bit and their size; the nearer child is visited first.
+// llvmpipe has a hang guard that ends shader loops after 65535 iterations (LP_MAX_TGSI_LOOP_ITERATIONS) without
+// any error; the analytic furnace probe lost paths to it. A walk of 400k leaves measured complete, but a walk
+// that did not end on its own must never pass for a hit or a miss: `complete` says whether it did.
 #define TRAVERSAL_STACK_SIZE 64
 const uint kLeafTag = 0x80000000u;
 const uint kNoEntry = 0xffffffffu;
@@ -9,7 +12,8 @@ const uint kNoEntry = 0xffffffffu;
 uint leafEntry(uint first, uint count) { return kLeafTag | ((count - 1u) << 27u) | first; }
 
 // Returns vec4(t, b1, b2, triangle bits); triangle = kMissPrimitive when nothing is hit in (0, tMax).
-vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit) {
+vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete) {
+  complete = true;
   RayShear shear = makeRayShear(origin, dir);
   vec3 invDir = safeInverse(dir);
   vec3 originScaled = origin * invDir;
@@ -61,5 +65,6 @@ vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit) {
       current = sp > 0u ? stack[--sp] : kNoEntry;
     }
   }
+  complete = current == kNoEntry;
   return best;
 }

@@ -9,5 +9,10 @@ void main() {
   if (slot >= inQueueCount()) return;
   uint id = rayQueues[inQueueBase() + slot];
   PathState p = paths[id];
-  hits[id] = traceRay(p.origin.xyz, p.direction.xyz, 3.0e38, false);
+  bool complete;
+  hits[id] = traceRay(p.origin.xyz, p.direction.xyz, 3.0e38, false, complete);
+  if (!complete) {  // counted, and the sample poisoned so accumulate excludes it: never a silently wrong hit
+    atomicAdd(control.nonfinite.w, 1u);
+    paths[p.info.w].radiance.r = uintBitsToFloat(0x7fc00000u);
+  }
 }

@@ -274,8 +274,8 @@ void main() {
         }
       } else {
         float unsplit = maxComponent(beta) * splitWeight;
-        float survival = kRouletteMode == kRouletteEfficiency ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] * unsplit : unsplit;
-        survival = min(survival, kRouletteMaxSurvival);
+        float scale = kRouletteMode == kRouletteEfficiency ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] : 1.0;
+        float survival = rouletteSurvival(unsplit, scale, kRouletteMaxSurvival);
         continues = splitCount(survival, r) > 0u;
         beta /= survival;
       }

@@ -13,8 +13,14 @@ void main() {
   uint slot = invocationIndex();
   if (slot >= control.counts.z) return;
   ShadowRay s = shadowRays[slot];
-  vec4 h = traceRay(s.origin.xyz, s.direction.xyz, s.origin.w, true);
-  if (floatBitsToUint(h.w) != kMissPrimitive) return;
+  bool complete;
+  vec4 h = traceRay(s.origin.xyz, s.direction.xyz, s.origin.w, true, complete);
+  if (!complete) {  // as in intersect: counted, and the sample poisoned
+    atomicAdd(control.nonfinite.w, 1u);
+    s.contribution.rgb = vec3(uintBitsToFloat(0x7fc00000u));
+  } else if (floatBitsToUint(h.w) != kMissPrimitive) {
+    return;
+  }
   uint id = floatBitsToUint(s.direction.w);  // the root path of the sample
 #ifdef VKMC_FLOAT_ATOMICS
   atomicAdd(paths[id].radiance.r, s.contribution.r);

@@ -11,5 +11,8 @@ void main() {
   uint id = invocationIndex();
   if (id >= pc.pathCount) return;
   TestRay r = testRays[id];
-  testHits[id] = traceRay(r.origin.xyz, r.direction.xyz, r.origin.w, kAnyHit != 0u);
+  bool complete;
+  vec4 h = traceRay(r.origin.xyz, r.direction.xyz, r.origin.w, kAnyHit != 0u, complete);
+  if (!complete) h.x = uintBitsToFloat(0x7fc00000u);  // a walk cut short reads as t = NaN
+  testHits[id] = h;
 }

@@ -100,7 +100,7 @@ struct Control {
   uvec4 totals;          // x: camera rays, y: extension rays, z: shadow rays, w: unused
   // Non-finite values by the stage that produced them (the sample is then excluded by accumulate):
   uvec4 nonfinite;       // x: emission and other gathered radiance, y: light-sample contributions,
-                         // z: continuation throughput, w: unused
+                         // z: continuation throughput, w: BVH walks cut short by llvmpipe's loop limit
 };
 
 struct TestRay {
@@ -128,6 +128,18 @@ struct PushConstants {
   uint unused0, unused1;
 };
 
+// Push constants of the analytic furnace probe (shaders/kernels/roulette_furnace.comp).
+struct FurnaceProbePush {
+  float albedo;       // Lambertian albedo of the surface every ray hits
+  float emission;     // its emitted radiance Le: L = Le / (1 - albedo)
+  uint rouletteMode;  // kRouletteThroughput or kRouletteEfficiency (scales from BINDING_ROULETTE_TABLE)
+  uint rouletteDepth; // as SPEC_RR_DEPTH
+  uint seed;
+  uint verticesPerInvocation;  // a lane starts paths until it has traced this many vertices
+  uint invocations;
+  uint unused;
+};
+
 VKMC_END_NAMESPACE
 
 #ifdef __cplusplus
@@ -142,6 +154,7 @@ static_assert(offsetof(Control, rayArgs) == 16 && offsetof(Control, accumulateAr
 static_assert(sizeof(TestRay) == 32);
 static_assert(sizeof(PushConstants) == 128);
 static_assert(offsetof(PushConstants, cameraOrigin) == 32);
+static_assert(sizeof(FurnaceProbePush) == 32);
 }
 #endif
 #endif

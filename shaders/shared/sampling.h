@@ -78,6 +78,11 @@ VKMC_FN vec3 decodeOctahedral(vec2 e) {
 // each weighted 1 / q, so the expected total weight is one. q < 1 is roulette, q > 1 splitting.
 VKMC_FN uint splitCount(float q, float u) { return uint(floor(q + u)); }
 
+// Survival probability of throughput-driven roulette: s = min(scale * max(unsplit beta), cap), where scale = 1
+// is throughput roulette and scale = k_d the efficiency-optimized one (host/estimators/efficiency_roulette.h);
+// a survivor's throughput is divided by s. The shade stage and the analytic furnace probe share this.
+VKMC_FN float rouletteSurvival(float unsplitThroughput, float scale, float cap) { return min(scale * unsplitThroughput, cap); }
+
 VKMC_FN float maxComponent(vec3 v) { return max(v.x, max(v.y, v.z)); }
 VKMC_FN float luminance(vec3 c) { return dot(c, vec3(0.2126f, 0.7152f, 0.0722f)); }
 

@@ -1,0 +1,77 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Stability case 1 at 0.1%: the shade stage's continuation and roulette arithmetic on an analytic furnace, where
+// every ray hits a Lambertian surface of albedo a that emits Le (L = Le / (1 - a)). Intersection is left out:
+// a 5-sigma interval of 0.1% needs ~2.5e7 paths of ~1 / (1 - a) vertices each, hours through the wavefront on
+// lavapipe, seconds here. What remains is exactly the per-vertex code of shade.comp for a Lambertian scene:
+// cosine sampling and its pdf, the BRDF weight, the roulette decision (rouletteSurvival, splitCount), the
+// random-number dimensions, float throughput over thousands of vertices.
+//
+// One flat loop, one vertex per iteration: a lane starts a new path when one ends until it has spent its vertex
+// budget, then finishes the path in flight (dropping it would favour short paths). A first version with a loop
+// over 32 paths around a loop over vertices lost 24% of its paths on llvmpipe at albedo 0.999 (L read 761, not
+// 1000): llvmpipe ends loops after 65535 iterations (LP_MAX_TGSI_LOOP_ITERATIONS, a hang guard) without an
+// error, and 32 paths of ~2700 SIMD iterations each pass that. A lane whose loop is cut still has a path in
+// flight, and says so.
+// Output per invocation: (sum of L, sum of L^2, vertices, paths | cut flag in the top bit).
+#include "layout.h"
+#include "rng.h"
+#include "sampling.h"
+
+layout(local_size_x_id = SPEC_WORKGROUP_SIZE) in;
+layout(push_constant, std430) uniform Push { FurnaceProbePush probe; };
+layout(binding = BINDING_ROULETTE_TABLE, std430) readonly buffer RouletteTable { float rouletteScale[]; };
+layout(binding = BINDING_TEST_HITS, std430) writeonly buffer Sums { vec4 sums[]; };
+
+// shade.comp's continuation at a Lambertian vertex with cosine (= BSDF) sampling, and its roulette.
+bool continuePath(uint key, uint depth, inout float beta) {
+  vec2 u = vec2(randomUnit(key, bounceDim(depth, kDimBsdf)), randomUnit(key, bounceDim(depth, kDimBsdf + 1u)));
+  vec3 wi = sampleCosineHemisphere(u);
+  float pdf = cosineHemispherePdf(wi.z);
+  if (!(pdf > 0.0 && wi.z > 0.0)) return false;
+  beta *= probe.albedo * kInvPi * (wi.z / pdf);
+  if (depth + 1u < probe.rouletteDepth) return true;
+  float scale = probe.rouletteMode == kRouletteEfficiency ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] : 1.0;
+  float survival = rouletteSurvival(beta, scale, kRouletteMaxSurvival);
+  if (splitCount(survival, randomUnit(key, bounceDim(depth, kDimRoulette))) == 0u) return false;
+  beta /= survival;
+  return true;
+}
+
+void main() {
+  uint id = gl_GlobalInvocationID.x;
+  if (id >= probe.invocations) return;
+  // Kahan sums (precise: the compiler must not cancel the compensation away).
+  precise float sum = 0.0, sumC = 0.0, sumSq = 0.0, sumSqC = 0.0;
+  uint paths = 0u, vertices = 0u, depth = 0u;
+  uint key = pathKey(probe.seed, id, 0u);
+  float beta = 1.0;  // gray furnace: one channel stands for all three
+  float radiance = 0.0;
+  bool inFlight = true;
+  for (;;) {
+    radiance += beta * probe.emission;
+    ++vertices;
+    if (continuePath(key, depth, beta)) {
+      ++depth;
+      continue;
+    }
+    precise float y = radiance - sumC;
+    precise float t = sum + y;
+    sumC = (t - sum) - y;
+    sum = t;
+    y = radiance * radiance - sumSqC;
+    t = sumSq + y;
+    sumSqC = (t - sumSq) - y;
+    sumSq = t;
+    ++paths;
+    if (vertices >= probe.verticesPerInvocation) {
+      inFlight = false;
+      break;
+    }
+    key = pathKey(probe.seed, id, paths);
+    beta = 1.0;
+    radiance = 0.0;
+    depth = 0u;
+  }
+  sums[id] = vec4(sum, sumSq, uintBitsToFloat(vertices), uintBitsToFloat(paths | (inFlight ? 0x80000000u : 0u)));
+}
