@@ -100,6 +100,10 @@ int main(int argc, char** argv) {
   render->add_option("--reference", ro.referencePath, "reference EXR: the report gains mse, relmse, efficiency");
   bool noSpecialize = false;
   render->add_flag("--no-specialize", noSpecialize, "build general pipelines (every scene feature on), for comparison");
+  render->add_option("--workgroup", ro.workgroupSize, "invocations per workgroup of every kernel: 32, 64, 128, 256")->capture_default_str();
+  std::string integrator = "wavefront";
+  render->add_option("--integrator", integrator, "wavefront (stage by stage) or megakernel (one dispatch per pass)")
+      ->check(CLI::IsMember({"wavefront", "megakernel"}))->capture_default_str();
 
   vkmc::RenderOptions io;
   bool infoGeneral = false;
@@ -128,6 +132,9 @@ int main(int argc, char** argv) {
   bench->add_option("--height", bo.height, "image height")->capture_default_str();
   bench->add_option("--json", bo.jsonPath, "write the results as JSON");
   bench->add_flag("--specialization", bo.specialization, "compare specialized with general (all-features) pipelines");
+  bench->add_option("--workgroup", bo.workgroupSize, "invocations per workgroup of every kernel: 32, 64, 128, 256")->capture_default_str();
+  bench->add_option("--integrator", bo.integrators, "wavefront, megakernel or both (interleaved, side by side)")
+      ->check(CLI::IsMember({"wavefront", "megakernel"}))->expected(1, 2);
 
   try {
     app.parse(argc, argv);
@@ -176,6 +183,7 @@ int main(int argc, char** argv) {
       if (!background.empty()) ro.background = parseVec3(background, "--background");
       ro.progress = !quiet;
       ro.specialize = !noSpecialize;
+      ro.integrator = vkmc::integratorFromString(integrator);
       vkmc::validateOptions(ro);
       checkWritable(out, "--output");
       checkWritable(png, "--png");

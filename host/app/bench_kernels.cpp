@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "app/render_job.h"
@@ -37,11 +38,82 @@ std::vector<std::string> defaultScenes() {
   return scenes;
 }
 
+// Per kernel of the wavefront: GPU seconds per frame (one run's render), the items it processed, and a
+// memory-traffic estimate from the bytes of path state, queues, hits and film each item reads and writes
+// (BVH node and triangle fetches of the traversal kernels are not in it: they depend on the walk).
+struct KernelSamples {
+  std::vector<double> seconds;
+  double items = 0;  // per frame (deterministic: the same every run)
+  double bytesPerItem = 0;
+};
+
 struct Samples {
-  std::vector<double> load, bvh, upload, pipelines, sps, primary, incoherent, total, tracePrimary, traceDiffuse;
+  std::vector<double> load, bvh, upload, pipelines, sps, primary, incoherent, total, tracePrimary, traceDiffuse, gpu;
   uint32_t triangles = 0;
   double diffuseRays = 0;
+  std::map<std::string, KernelSamples> kernels;
+  std::vector<uint64_t> pathsByBounce, shadowRaysByBounce;
+  uint64_t cameraRays = 0;
 };
+
+// Items and bytes per item of each kernel (sizes from shared/layout.h): a path-state read is 80 B, a queue
+// entry 4, a hit 16, a shadow ray 48, a film pixel 32 (read and written).
+void recordKernels(Samples& s, const RenderStats& st, uint64_t samples) {
+  const double tracedPaths = double(st.cameraRays + st.extensionRays);
+  struct Row {
+    const char* name;
+    double items, bytesPerItem;
+  };
+  const Row rows[] = {
+      {"camera_rays", double(st.cameraRays), 80 + 4},
+      {"intersect_primary", double(st.cameraRays), 4 + 80 + 16},
+      {"intersect", double(st.extensionRays), 4 + 80 + 16},
+      // queue, path, hit, triangle info, 3 vertices, material; path and queue written; its shadow rays written
+      {"shade", tracedPaths, 4 + 80 + 16 + 16 + 48 + 48 + 80 + 4 + 48 * double(st.shadowRays) / std::max(1.0, tracedPaths)},
+      {"shadow", double(st.shadowRays), 48 + 2 * 16},
+      {"accumulate", double(samples), 80 + 2 * 32},
+      {"prepare_bounce", 0, 0},
+      {"prepare_shadow", 0, 0}};
+  for (const Row& r : rows) {
+    auto it = st.stageSeconds.find(r.name);
+    if (it == st.stageSeconds.end()) continue;
+    KernelSamples& k = s.kernels[r.name];
+    k.seconds.push_back(it->second);
+    k.items = r.items;
+    k.bytesPerItem = r.bytesPerItem;
+  }
+  s.gpu.push_back(st.gpuSeconds);
+  s.pathsByBounce = st.pathsByBounce;
+  s.shadowRaysByBounce = st.shadowRaysByBounce;
+  s.cameraRays = st.cameraRays;
+}
+
+// The per-kernel table of one scene, and its JSON.
+nlohmann::json printKernels(const std::string& name, const Samples& s) {
+  double gpu = median(s.gpu);
+  std::printf("\n%s: GPU %.1f ms per frame (median); per kernel:\n", name.c_str(), gpu * 1e3);
+  std::printf("  %-18s %10s %7s %12s %10s %12s\n", "kernel", "ms/frame", "share", "items/frame", "Mitems/s", "est. GB/s");
+  nlohmann::json kernels = nlohmann::json::array();
+  for (const auto& [kernel, k] : s.kernels) {
+    double secs = median(k.seconds);
+    double rate = secs > 0 ? k.items / secs * 1e-6 : 0.0, gbps = secs > 0 ? k.items * k.bytesPerItem / secs * 1e-9 : 0.0;
+    std::printf("  %-18s %10.3f %6.1f%% %12.0f %10.2f %12.2f\n", kernel.c_str(), secs * 1e3, 100.0 * secs / std::max(gpu, 1e-12),
+                k.items, rate, gbps);
+    kernels.push_back({{"kernel", kernel}, {"seconds_per_frame", secs}, {"share", secs / std::max(gpu, 1e-12)}, {"items_per_frame", k.items},
+                       {"mitems_per_second", rate}, {"estimated_state_bytes_per_item", k.bytesPerItem}, {"estimated_gb_per_second", gbps}});
+  }
+  // Queue occupancy: paths alive at each bounce, as a share of the camera paths.
+  size_t last = 0;
+  for (size_t b = 0; b < s.pathsByBounce.size(); ++b)
+    if (s.pathsByBounce[b]) last = b;
+  std::printf("  paths alive per bounce (%% of camera paths):");
+  for (size_t b = 0; b <= last && b < 16; ++b) std::printf(" %.1f", 100.0 * s.pathsByBounce[b] / std::max<uint64_t>(1, s.cameraRays));
+  std::printf("%s\n  shadow rays per bounce (per camera path):", last >= 16 ? " ..." : "");
+  for (size_t b = 0; b <= last && b < 16; ++b) std::printf(" %.2f", double(s.shadowRaysByBounce[b]) / std::max<uint64_t>(1, s.cameraRays));
+  std::printf("%s\n", last >= 16 ? " ..." : "");
+  return {{"gpu_seconds_per_frame", gpu}, {"kernels", kernels}, {"paths_by_bounce", s.pathsByBounce},
+          {"shadow_rays_by_bounce", s.shadowRaysByBounce}};
+}
 
 // The traversal alone, on the ray arrays of render/benchmark_rays.h (camera rays, then four diffuse bounce rays
 // per hit). Returns (primary, diffuse) Mrays/s from the trace kernel's timestamps, medians over runs.
@@ -118,19 +190,30 @@ int runBenchKernels(const BenchOptions& o) {
   if (scenes.empty()) throw Error("no scenes to benchmark");
   if (o.specialization) return runSpecializationBench(o, scenes);
   vk::Context ctx;
-  std::vector<Samples> samples(scenes.size());
+  // One case per scene and integrator; cases are interleaved run by run so machine noise hits them alike.
+  struct Case {
+    std::string scene;
+    Integrator integrator;
+    bool traceKernel;  // the traversal-kernel benchmark runs once per scene
+  };
+  std::vector<Case> cases;
+  for (const std::string& scene : scenes)
+    for (size_t k = 0; k < o.integrators.size(); ++k) cases.push_back({scene, integratorFromString(o.integrators[k]), k == 0});
+  std::vector<Samples> samples(cases.size());
   // Round 0 warms caches (Mesa's shader cache, the page cache, the allocator) and is not counted, except that
   // its pipeline time is reported as the first-use figure.
-  std::vector<double> firstPipelines(scenes.size(), 0.0);
+  std::vector<double> firstPipelines(cases.size(), 0.0);
   for (int run = -1; run < o.runs; ++run) {
-    for (size_t i = 0; i < scenes.size(); ++i) {
+    for (size_t i = 0; i < cases.size(); ++i) {
       RenderOptions ro;
-      ro.scenePath = scenes[i];
+      ro.scenePath = cases[i].scene;
       ro.width = static_cast<uint32_t>(o.width);
       ro.height = static_cast<uint32_t>(o.height);
       ro.spp = static_cast<uint32_t>(o.spp);
       ro.progress = false;
       ro.background = glm::vec3(1.0f);  // so scenes without emitters still bounce rays
+      ro.workgroupSize = o.workgroupSize;
+      ro.integrator = cases[i].integrator;
       RenderOutcome r = runRender(ctx, ro);
       if (run < 0) {
         firstPipelines[i] = r.setup.pipelines;
@@ -147,31 +230,34 @@ int runBenchKernels(const BenchOptions& o) {
       s.primary.push_back(st.primarySeconds > 0 ? st.primaryRays / st.primarySeconds * 1e-6 : 0.0);
       s.incoherent.push_back(st.incoherentSeconds > 0 ? st.extensionRays / st.incoherentSeconds * 1e-6 : 0.0);
       s.total.push_back(st.rays() / st.seconds * 1e-6);
-      auto [tp, td] = traceBenchmark(ctx, scenes[i], o.width, o.height, 1, s.diffuseRays);
+      recordKernels(s, st, r.film.totalSamples());
+      if (!cases[i].traceKernel) continue;
+      auto [tp, td] = traceBenchmark(ctx, cases[i].scene, o.width, o.height, 1, s.diffuseRays);
       s.tracePrimary.insert(s.tracePrimary.end(), tp.begin(), tp.end());
       s.traceDiffuse.insert(s.traceDiffuse.end(), td.begin(), td.end());
     }
   }
-  std::printf("device: %s; %dx%d, %d spp per run, %d runs, medians [min-max]\n", ctx.deviceName().c_str(), o.width, o.height,
-              o.spp, o.runs);
-  std::printf("%-34s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s\n", "scene", "triangles", "load s", "bvh s",
-              "upload s", "pipes s", "samples/s", "primary", "bounces", "total", "trace 1st", "trace dif");
-  std::printf("%-34s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s\n", "", "", "", "", "", "", "", "Mrays/s",
+  std::printf("device: %s; %dx%d, %d spp per run, %d runs, workgroup %u, medians [min-max]\n", ctx.deviceName().c_str(), o.width,
+              o.height, o.spp, o.runs, o.workgroupSize);
+  std::printf("%-34s %-10s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s\n", "scene", "integrator", "triangles", "load s",
+              "bvh s", "upload s", "pipes s", "samples/s", "primary", "bounces", "total", "trace 1st", "trace dif");
+  std::printf("%-34s %-10s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s\n", "", "", "", "", "", "", "", "", "Mrays/s",
               "Mrays/s", "Mrays/s", "Mrays/s", "Mrays/s");
   nlohmann::json out = nlohmann::json::array();
-  for (size_t i = 0; i < scenes.size(); ++i) {
+  auto caseName = [&](size_t i) { return std::filesystem::path(cases[i].scene).filename().string(); };
+  for (size_t i = 0; i < cases.size(); ++i) {
     const Samples& s = samples[i];
     auto range = [](const std::vector<double>& v) {
+      if (v.empty()) return std::make_pair(0.0, 0.0);
       auto [lo, hi] = std::minmax_element(v.begin(), v.end());
       return std::make_pair(*lo, *hi);
     };
-    std::string name = std::filesystem::path(scenes[i]).filename().string();
-    std::printf("%-34s %9u %7.3f %7.3f %8.3f %7.3f | %10.0f %9.2f %9.2f %9.2f | %9.2f %9.2f  [dif %.2f-%.2f]\n",
-                name.c_str(), s.triangles, median(s.load), median(s.bvh), median(s.upload), median(s.pipelines),
-                median(s.sps), median(s.primary), median(s.incoherent), median(s.total), median(s.tracePrimary),
-                median(s.traceDiffuse), s.traceDiffuse.empty() ? 0.0 : range(s.traceDiffuse).first,
-                s.traceDiffuse.empty() ? 0.0 : range(s.traceDiffuse).second);
-    out.push_back({{"scene", scenes[i]},
+    std::printf("%-34s %-10s %9u %7.3f %7.3f %8.3f %7.3f | %10.0f %9.2f %9.2f %9.2f | %9.2f %9.2f  [samples/s %.0f-%.0f]\n",
+                caseName(i).c_str(), toString(cases[i].integrator), s.triangles, median(s.load), median(s.bvh), median(s.upload),
+                median(s.pipelines), median(s.sps), median(s.primary), median(s.incoherent), median(s.total),
+                median(s.tracePrimary), median(s.traceDiffuse), range(s.sps).first, range(s.sps).second);
+    out.push_back({{"scene", cases[i].scene},
+                   {"integrator", toString(cases[i].integrator)},
                    {"triangles", s.triangles},
                    {"load_seconds", median(s.load)},
                    {"bvh_seconds", median(s.bvh)},
@@ -184,13 +270,19 @@ int runBenchKernels(const BenchOptions& o) {
                    {"trace_primary_mrays_per_second", median(s.tracePrimary)},
                    {"trace_diffuse_mrays_per_second", median(s.traceDiffuse)},
                    {"trace_diffuse_rays", s.diffuseRays},
-                   {"pipeline_seconds_first_use", firstPipelines[i]}});
+                   {"pipeline_seconds_first_use", firstPipelines[i]},
+                   {"workgroup_size", o.workgroupSize}});
   }
-  std::printf("primary/bounces: wavefront intersection stages (GPU time); total: all rays over render wall time;\n"
+  std::printf("primary/bounces: wavefront intersection stages (GPU time; none in the megakernel); total: all rays over\n"
+              "render wall time;\n"
               "trace 1st/dif: the traversal kernel alone on camera rays and on 4 cosine bounce rays per primary hit.\n"
               "pipelines: creation plus first-dispatch compile, median of warm runs; first use in this process: %.3f s\n"
               "(Mesa's on-disk shader cache may make even that warm; clear ~/.cache/mesa_shader_cache for a cold figure).\n",
               firstPipelines.front());
+  for (size_t i = 0; i < cases.size(); ++i)
+    out[i]["per_kernel"] = printKernels(caseName(i) + " [" + toString(cases[i].integrator) + "]", samples[i]);
+  std::printf("\nitems: rays for the tracing kernels, paths for camera_rays and shade, samples for accumulate;\n"
+              "est. GB/s: path-state, queue, hit, shadow-ray and film bytes moved (BVH and triangle fetches not counted).\n");
   if (!o.jsonPath.empty())
     writeFileAtomically(o.jsonPath, nlohmann::json{{"device", ctx.deviceName()}, {"results", out}}.dump(2) + "\n");
   return 0;

@@ -13,6 +13,8 @@ struct BenchOptions {
   int height = 256;
   std::string jsonPath;
   bool specialization = false;  // compare specialized with general pipelines instead
+  uint32_t workgroupSize = 64;
+  std::vector<std::string> integrators{"wavefront"};  // each is benchmarked, interleaved run by run
 };
 
 int runBenchKernels(const BenchOptions& options);

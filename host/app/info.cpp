@@ -7,7 +7,7 @@
 #include "../shaders/shared/layout.h"
 #include "bvh/bvh.h"
 #include "render/gpu_scene.h"
-#include "render/wavefront_renderer.h"
+#include "render/path_renderer.h"
 #include "scene/camera_rig.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_features.h"
@@ -83,7 +83,7 @@ int runInfo(const RenderOptions& options) {
     ++n;
   }
   std::printf("\n");
-  WavefrontRenderer renderer(ctx, gpu, settings);
+  PathRenderer renderer(ctx, gpu, settings);
   std::printf("memory       scene buffers:");
   uint64_t total = 0;
   for (const auto& [name, bytes] : gpu.info().bufferBytes) {

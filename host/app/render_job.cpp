@@ -112,6 +112,8 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
   settings.camera = makeCameraRig(camera, width, height);
   settings.progress = options.progress;
   settings.timeBudget = options.timeBudget;
+  settings.workgroupSize = options.workgroupSize;
+  settings.integrator = options.integrator;
   std::optional<RouletteTable> roulette;
   double pilotSeconds = 0.0;
   if (options.estimator.rr == RouletteMode::Efficiency) {
@@ -126,7 +128,8 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
     pilotSettings.timeBudget = 0.0;
     pilotSettings.progress = false;
     pilotSettings.recordDepthStats = true;
-    WavefrontRenderer pilot(ctx, gpuScene, pilotSettings);
+    pilotSettings.integrator = Integrator::Wavefront;  // the shade stage records the pilot's statistics
+    PathRenderer pilot(ctx, gpuScene, pilotSettings);
     out.setup.pipelines += pilot.pipelineSeconds();
     RenderStats pilotStats;
     Film pilotFilm = pilot.render(pilotStats);
@@ -148,7 +151,7 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
     pilotSeconds = pilotStats.seconds;
   }
   if (options.timeBudget > 0.0) settings.timeBudget = std::max(1e-3, options.timeBudget - pilotSeconds);
-  WavefrontRenderer renderer(ctx, gpuScene, settings);
+  PathRenderer renderer(ctx, gpuScene, settings);
   if (roulette) renderer.setRouletteScales(roulette->scale);
   out.setup.pipelines += renderer.pipelineSeconds();
   out.film = renderer.render(out.stats);

@@ -9,7 +9,7 @@
 #include "analysis/error_metrics.h"
 #include "estimators/estimator_config.h"
 #include "render/film.h"
-#include "render/wavefront_renderer.h"
+#include "render/path_renderer.h"
 #include "scene/scene.h"
 #include "vk/context.h"
 
@@ -29,6 +29,8 @@ struct RenderOptions {
   double timeBudget = 0.0;        // seconds; 0 = render spp samples
   std::string referencePath;      // EXR to compare with: mse, relmse, efficiency in the report
   bool specialize = true;         // false: pipelines with every feature on (for comparison)
+  uint32_t workgroupSize = 64;    // invocations per workgroup of every kernel (32, 64, 128, 256)
+  Integrator integrator = Integrator::Wavefront;
 };
 
 struct SetupTimes {

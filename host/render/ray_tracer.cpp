@@ -17,7 +17,8 @@ RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene) : ctx_(ctx), scene
   layout_->bindStorage(BINDING_MATERIALS, scene.materials());
   // The kernel declares every binding of the shared set; those it never touches still need a buffer.
   dummy_ = vk::Buffer(ctx, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
-  for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_CONTROL, BINDING_FILM})
+  for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_CONTROL, BINDING_FILM,
+                     BINDING_PIXEL_ESTIMATE, BINDING_ROULETTE_TABLE, BINDING_DEPTH_STATS, BINDING_QUEUE_STATS})
     layout_->bindStorage(b, dummy_);
   closest_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest", kSpirv_trace_rays,
                                           std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 0}});

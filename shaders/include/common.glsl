@@ -43,6 +43,7 @@ layout(binding = BINDING_FILM, std430) buffer Film { FilmPixel film[]; };
 layout(binding = BINDING_PIXEL_ESTIMATE, std430) readonly buffer PixelEstimate { float pixelEstimate[]; };
 layout(binding = BINDING_ROULETTE_TABLE, std430) readonly buffer RouletteTable { float rouletteScale[]; };
 layout(binding = BINDING_DEPTH_STATS, std430) buffer DepthStats { vec2 depthStats[]; };
+layout(binding = BINDING_QUEUE_STATS, std430) buffer QueueStats { uvec2 queueStats[]; };
 
 // Indirect dispatches may round up, and big ones use a 2D grid.
 uint invocationIndex() {

@@ -7,12 +7,13 @@
 void main() {
   if (gl_GlobalInvocationID.x != 0u) return;
   uint n = inQueueCount();
-  control.rayArgs = uvec4((n + kWorkgroupSize - 1u) / kWorkgroupSize, 1u, 1u, 0u);
+  control.rayArgs = uvec4((n + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x, 1u, 1u, 0u);
+  queueStats[min(pc.bounce, kQueueStatsBounces - 1u)].x += n;  // queue occupancy, for bench-kernels
   if (pc.bounce == 0u) control.totals.x += n;
   else control.totals.y += n;
   if ((pc.bounce & 1u) == 0u) control.counts.y = 0u;
   else control.counts.x = 0u;
   control.counts.z = 0u;
-  uint accumulateGroups = (pc.pixelCount + kWorkgroupSize - 1u) / kWorkgroupSize;
+  uint accumulateGroups = (pc.pixelCount + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x;
   control.accumulateArgs = uvec4(n == 0u ? accumulateGroups : 0u, 1u, 1u, 0u);
 }

@@ -6,6 +6,7 @@
 void main() {
   if (gl_GlobalInvocationID.x != 0u) return;
   uint n = control.counts.z;
-  control.shadowArgs = uvec4((n + kWorkgroupSize - 1u) / kWorkgroupSize, 1u, 1u, 0u);
+  control.shadowArgs = uvec4((n + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x, 1u, 1u, 0u);
+  queueStats[min(pc.bounce, kQueueStatsBounces - 1u)].y += n;
   control.totals.z += n;
 }

@@ -20,7 +20,8 @@
 #define BINDING_PIXEL_ESTIMATE 13 // float[]: running luminance estimate per pixel (shadow-ray roulette)
 #define BINDING_ROULETTE_TABLE 14 // float[kRouletteTableDepths]: efficiency roulette scale per depth
 #define BINDING_DEPTH_STATS 15    // vec2[pool * kRouletteTableDepths]: pilot (beta, gathered) per path and depth
-#define BINDING_COUNT 16
+#define BINDING_QUEUE_STATS 16    // uvec2[kQueueStatsBounces]: per bounce, paths queued (x) and shadow rays (y)
+#define BINDING_COUNT 17
 
 // Specialization constant ids.
 #define SPEC_WORKGROUP_SIZE 0
@@ -58,6 +59,7 @@ VKMC_CONST uint kCameraOrthographic = 1u;
 // variance above albedo 0.975. 0.999 keeps the variance finite up to albedo 0.9995 and still ends paths.
 VKMC_CONST float kRouletteMaxSurvival = 0.999f;
 VKMC_CONST uint kRouletteTableDepths = 16u;  // depths with their own efficiency-roulette scale
+VKMC_CONST uint kQueueStatsBounces = 64u;    // queue occupancy is recorded per bounce up to here (the last sums the rest)
 VKMC_CONST uint kMisNone = 0u, kMisBalance = 1u, kMisPower = 2u;
 VKMC_CONST uint kBsdfSamplingUniform = 0u, kBsdfSamplingCosine = 1u, kBsdfSamplingFull = 2u;
 VKMC_CONST uint kLightSamplingArea = 0u, kLightSamplingSolidAngle = 1u;

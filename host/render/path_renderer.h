@@ -1,5 +1,7 @@
-// The wavefront path tracer: camera rays -> (intersect -> shade -> shadow)* -> accumulate, stage by stage,
-// paths kept on the device between stages, queues sized on the device and dispatched indirectly.
+// The path tracer on the device, with one of two integrators built from the same stage functions:
+//   wavefront: camera rays -> (intersect -> shade -> shadow)* -> accumulate, stage by stage, paths kept on the
+//              device between stages, queues sized on the device and dispatched indirectly;
+//   megakernel: one dispatch per sample pass follows every path to its end, then accumulate.
 #pragma once
 #include <glm/glm.hpp>
 
@@ -7,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "../shaders/shared/layout.h"
 #include "estimators/efficiency_roulette.h"
 #include "estimators/estimator_config.h"
 #include "render/film.h"
@@ -16,6 +19,10 @@
 #include "vk/kernel.h"
 
 namespace vkmc {
+
+enum class Integrator { Wavefront, Megakernel };
+const char* toString(Integrator i);
+Integrator integratorFromString(const std::string& name);  // throws Error on an unknown name
 
 struct RenderSettings {
   uint32_t width = 256;
@@ -30,6 +37,8 @@ struct RenderSettings {
   bool progress = false;       // progress line on stderr
   uint32_t maxPathsPerPass = 1u << 18;  // wavefront size: paths in flight per pass
   bool recordDepthStats = false;         // efficiency-roulette pilot: per-path, per-depth statistics
+  uint32_t workgroupSize = 64;           // invocations per workgroup of every kernel: 32, 64, 128 or 256
+  Integrator integrator = Integrator::Wavefront;
 };
 
 struct RenderStats {
@@ -45,6 +54,9 @@ struct RenderStats {
   uint32_t samplesPerPixel = 0;  // reached (equals spp unless a time budget ended the render)
   uint64_t nonfiniteEmission = 0, nonfiniteLightSamples = 0, nonfiniteThroughput = 0;  // by producing stage
   uint64_t traversalsCut = 0;  // rays whose BVH walk the device's loop limit ended (their samples excluded)
+  // Queue occupancy: paths queued for intersection and shadow rays queued, per bounce (the last entry sums
+  // deeper bounces), over the whole render.
+  std::vector<uint64_t> pathsByBounce, shadowRaysByBounce;
   uint64_t rays() const { return cameraRays + extensionRays + shadowRays; }
 };
 
@@ -55,11 +67,11 @@ struct KernelPlan {
 };
 KernelPlan planKernels(const RenderSettings& settings);
 
-class WavefrontRenderer {
+class PathRenderer {
  public:
   // Creates the pipelines and warms them up (the driver compiles at first dispatch); see pipelineSeconds().
-  WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings);
-  ~WavefrontRenderer();
+  PathRenderer(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings);
+  ~PathRenderer();
   Film render(RenderStats& stats);
   double pipelineSeconds() const { return pipelineSeconds_; }
   // Efficiency roulette: the per-depth scales k_d the kernels read.
@@ -71,7 +83,11 @@ class WavefrontRenderer {
  private:
   struct Kernels;
   uint32_t renderPass(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples, RenderStats& stats);
+  uint32_t renderMegakernelPass(const gpu::PushConstants& pc, RenderStats& stats);
+  gpu::PushConstants passConstants(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples) const;
+  void collectCounters(RenderStats& stats);
   void foldFilm(Film& film);
+  uint32_t groupsFor(uint32_t invocations) const;
 
   vk::Context& ctx_;
   const GpuScene& scene_;
@@ -82,7 +98,7 @@ class WavefrontRenderer {
   std::unique_ptr<vk::KernelLayout> layout_;
   std::unique_ptr<Kernels> kernels_;
   std::unique_ptr<vk::GpuTimer> timer_;
-  vk::Buffer paths_, hits_, queues_, shadowQueue_, control_, film_, pixelEstimate_, rouletteTable_, depthStats_;
+  vk::Buffer paths_, hits_, queues_, shadowQueue_, control_, film_, pixelEstimate_, rouletteTable_, depthStats_, queueStats_;
   std::vector<PilotPath> pilot_;
   void collectPilot(uint32_t pathCount);
   double pipelineSeconds_ = 0.0;

@@ -1,7 +1,7 @@
 // The depth loop. One submit per pass in the common case: camera rays, a chunk of bounces recorded with
 // indirect dispatches (an empty queue costs an empty dispatch), and an accumulate that the device arms only
 // once every path has ended. Survivors past the chunk get further chunks.
-#include "render/wavefront_renderer.h"
+#include "render/path_renderer.h"
 
 #include <unistd.h>
 
@@ -17,6 +17,7 @@
 #include "spirv/accumulate_spv.h"
 #include "spirv/camera_rays_spv.h"
 #include "spirv/intersect_spv.h"
+#include "spirv/megakernel_spv.h"
 #include "spirv/prepare_bounce_spv.h"
 #include "spirv/prepare_shadow_spv.h"
 #include "spirv/shade_atomic_spv.h"
@@ -32,16 +33,32 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 constexpr uint32_t kFirstChunkBounces = 24;
 constexpr uint32_t kLaterChunkBounces = 16;
 constexpr uint32_t kSamplesPerBatch = 64;  // samples in a float batch sum before it is folded into double
-uint32_t groupsFor(uint32_t n) { return (n + gpu::kWorkgroupSize - 1) / gpu::kWorkgroupSize; }
 }  // namespace
 
-struct WavefrontRenderer::Kernels {
-  std::unique_ptr<vk::Kernel> camera, prepareBounce, intersect, shade, prepareShadow, shadow, accumulate;
+struct PathRenderer::Kernels {
+  std::unique_ptr<vk::Kernel> camera, prepareBounce, intersect, shade, prepareShadow, shadow, accumulate, megakernel;
 };
 
-WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings)
+const char* toString(Integrator i) { return i == Integrator::Megakernel ? "megakernel" : "wavefront"; }
+
+Integrator integratorFromString(const std::string& name) {
+  if (name == "wavefront") return Integrator::Wavefront;
+  if (name == "megakernel") return Integrator::Megakernel;
+  throw Error("unknown integrator '" + name + "' (wavefront or megakernel)");
+}
+
+uint32_t PathRenderer::groupsFor(uint32_t n) const { return (n + settings_.workgroupSize - 1) / settings_.workgroupSize; }
+
+PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings)
     : ctx_(ctx), scene_(scene), settings_(settings) {
   const auto& limits = ctx.properties().limits;
+  // Below 32 the indirect dispatch of a full path pool (~1.7M paths) would pass 65535 workgroups.
+  const uint32_t ws = settings.workgroupSize;
+  if (ws != 32 && ws != 64 && ws != 128 && ws != 256)
+    throw Error("--workgroup must be 32, 64, 128 or 256 (got " + std::to_string(ws) + ")");
+  if (ws > limits.maxComputeWorkGroupSize[0] || ws > limits.maxComputeWorkGroupInvocations)
+    throw Error("--workgroup " + std::to_string(ws) + " exceeds this device's limit of " +
+                std::to_string(std::min(limits.maxComputeWorkGroupSize[0], limits.maxComputeWorkGroupInvocations)));
   uint64_t pixels = static_cast<uint64_t>(settings.width) * settings.height;
   uint64_t filmBytes = pixels * sizeof(gpu::FilmPixel);
   if (filmBytes > limits.maxStorageBufferRange)
@@ -53,6 +70,9 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   capacity_ = std::min<uint32_t>(capacity_, limits.maxStorageBufferRange / sizeof(gpu::PathState));
   const EstimatorConfig& est = settings.estimator;
   est.validate();
+  const bool megakernel = settings.integrator == Integrator::Megakernel;
+  if (megakernel && est.splitsPaths())
+    throw Error("bsdf_samples > 1 (splitting paths) needs the wavefront integrator's path pool; use --integrator wavefront");
   if (est.needsFloatAtomics() && !ctx.hasFloatAtomics())
     throw Error("light_samples > 1 needs buffer float atomics (VK_EXT_shader_atomic_float), which this device lacks");
   // The pool holds camera paths and split children; each pooled path queues up to M shadow rays per bounce.
@@ -67,10 +87,11 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
     return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | extra, kind);
   };
   paths_ = storage(uint64_t(pool_) * sizeof(gpu::PathState));
-  hits_ = storage(uint64_t(pool_) * 16);
-  queues_ = storage(uint64_t(pool_) * 8);
+  // The megakernel keeps hits and queues in registers: placeholders are bound.
+  hits_ = storage(megakernel ? 16 : uint64_t(pool_) * 16);
+  queues_ = storage(megakernel ? 16 : uint64_t(pool_) * 8);
   // A scene without emitters has no shadow stage: its queue is not allocated (a placeholder is bound).
-  hasShadowStage_ = settings.features.emitters() && est.nee;
+  hasShadowStage_ = settings.features.emitters() && est.nee && !megakernel;
   shadowQueue_ = storage(hasShadowStage_ ? uint64_t(pool_) * est.lightSamples * sizeof(gpu::ShadowRay) : 16);
   control_ = storage(sizeof(gpu::Control), vk::MemoryKind::HostVisible, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
   film_ = storage(filmBytes, vk::MemoryKind::HostVisible);
@@ -98,6 +119,8 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   layout_->bindStorage(BINDING_PIXEL_ESTIMATE, pixelEstimate_);
   layout_->bindStorage(BINDING_ROULETTE_TABLE, rouletteTable_);
   layout_->bindStorage(BINDING_DEPTH_STATS, depthStats_);
+  queueStats_ = storage(gpu::kQueueStatsBounces * 8, vk::MemoryKind::HostVisible);
+  layout_->bindStorage(BINDING_QUEUE_STATS, queueStats_);
 
   auto start = Clock::now();
   const KernelPlan plan = planKernels(settings);
@@ -106,6 +129,9 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
     return std::make_unique<vk::Kernel>(ctx, *layout_, name, spirv, specs);
   };
   kernels_ = std::make_unique<Kernels>();
+  if (megakernel) {
+    kernels_->megakernel = make("megakernel", kSpirv_megakernel);
+  } else {
   kernels_->camera = make("camera_rays", kSpirv_camera_rays);
   kernels_->prepareBounce = make("prepare_bounce", kSpirv_prepare_bounce);
   kernels_->intersect = make("intersect", kSpirv_intersect);
@@ -113,6 +139,7 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   if (hasShadowStage_) kernels_->prepareShadow = make("prepare_shadow", kSpirv_prepare_shadow);
   if (hasShadowStage_)
     kernels_->shadow = est.needsFloatAtomics() ? make("shadow", kSpirv_shadow_atomic) : make("shadow", kSpirv_shadow);
+  }
   kernels_->accumulate = make("accumulate", kSpirv_accumulate);
   timer_ = std::make_unique<vk::GpuTimer>(ctx, 2 * (8 + 5 * kFirstChunkBounces));
 
@@ -125,25 +152,29 @@ WavefrontRenderer::WavefrontRenderer(vk::Context& ctx, const GpuScene& scene, co
   pc.queueCapacity = pool_;
   ctx.runCommands([&](VkCommandBuffer cmd) {
     for (const auto* k : {&kernels_->camera, &kernels_->prepareBounce, &kernels_->intersect, &kernels_->shade,
-                          &kernels_->prepareShadow, &kernels_->shadow, &kernels_->accumulate})
+                          &kernels_->prepareShadow, &kernels_->shadow, &kernels_->accumulate, &kernels_->megakernel})
       if (*k) vk::dispatch(cmd, *layout_, **k, &pc, sizeof(pc), 1);
   });
   pipelineSeconds_ = since(start);
 }
 
-WavefrontRenderer::~WavefrontRenderer() = default;
+PathRenderer::~PathRenderer() = default;
 
 KernelPlan planKernels(const RenderSettings& s) {
   KernelPlan plan;
   const EstimatorConfig& est = s.estimator;
   bool shadows = s.features.emitters() && est.nee;
-  plan.kernels = {"camera_rays", "prepare_bounce", "intersect", est.splitsPaths() ? "shade (float atomics)" : "shade"};
-  if (shadows) {
+  if (s.integrator == Integrator::Megakernel) {
+    plan.kernels = {"megakernel", "accumulate"};
+  } else {
+    plan.kernels = {"camera_rays", "prepare_bounce", "intersect", est.splitsPaths() ? "shade (float atomics)" : "shade"};
+  }
+  if (shadows && s.integrator == Integrator::Wavefront) {
     plan.kernels.push_back("prepare_shadow");
     plan.kernels.push_back(est.needsFloatAtomics() ? "shadow (float atomics)" : "shadow");
   }
-  plan.kernels.push_back("accumulate");
-  plan.specs = {{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize},
+  if (s.integrator == Integrator::Wavefront) plan.kernels.push_back("accumulate");
+  plan.specs = {{SPEC_WORKGROUP_SIZE, s.workgroupSize},
                 {SPEC_HAS_LIGHTS, s.features.emitters() ? 1u : 0u},
                 {SPEC_HAS_GLOSSY, s.features.glossy ? 1u : 0u},
                 {SPEC_RECORD_DEPTH_STATS, s.recordDepthStats ? 1u : 0u}};
@@ -151,11 +182,11 @@ KernelPlan planKernels(const RenderSettings& s) {
   return plan;
 }
 
-void WavefrontRenderer::setRouletteScales(const std::array<float, kRouletteTableDepths>& scales) {
+void PathRenderer::setRouletteScales(const std::array<float, kRouletteTableDepths>& scales) {
   std::memcpy(rouletteTable_.mapped(), scales.data(), sizeof(float) * scales.size());
 }
 
-void WavefrontRenderer::collectPilot(uint32_t pathCount) {
+void PathRenderer::collectPilot(uint32_t pathCount) {
   std::vector<gpu::PathState> paths(pathCount);
   paths_.download(paths.data(), pathCount * sizeof(gpu::PathState));
   const auto* stats = static_cast<const glm::vec2*>(depthStats_.mapped());
@@ -172,8 +203,8 @@ void WavefrontRenderer::collectPilot(uint32_t pathCount) {
   }
 }
 
-uint32_t WavefrontRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples,
-                                       RenderStats& stats) {
+gpu::PushConstants PathRenderer::passConstants(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex,
+                                               uint32_t samples) const {
   gpu::PushConstants pc{};
   const uint32_t count = pixelCount * samples;
   pc.pathCount = count;
@@ -191,7 +222,41 @@ uint32_t WavefrontRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount,
   pc.cameraRight = glm::vec4(cam.right, 0.0f);
   pc.cameraUp = glm::vec4(cam.up, 0.0f);
   pc.background = glm::vec4(settings_.background, 0.0f);
+  return pc;
+}
 
+// Ray counts and non-finite values by stage, from the control block after a pass.
+void PathRenderer::collectCounters(RenderStats& stats) {
+  const auto* control = static_cast<const gpu::Control*>(control_.mapped());
+  stats.cameraRays += control->totals.x;
+  stats.extensionRays += control->totals.y;
+  stats.shadowRays += control->totals.z;
+  stats.primaryRays += control->totals.x;
+  stats.nonfiniteEmission += control->nonfinite.x;
+  stats.nonfiniteLightSamples += control->nonfinite.y;
+  stats.nonfiniteThroughput += control->nonfinite.z;
+  stats.traversalsCut += control->nonfinite.w;
+}
+
+// Megakernel: one dispatch follows every path of the pass to its end, then accumulate; one submit.
+uint32_t PathRenderer::renderMegakernelPass(const gpu::PushConstants& pc, RenderStats& stats) {
+  std::memset(control_.mapped(), 0, sizeof(gpu::Control));
+  VkCommandBuffer cmd = ctx_.beginCommands();
+  timer_->reset(cmd);
+  vk::dispatch(cmd, *layout_, *kernels_->megakernel, &pc, sizeof(pc), groupsFor(pc.pathCount), timer_.get());
+  vk::dispatch(cmd, *layout_, *kernels_->accumulate, &pc, sizeof(pc), groupsFor(pc.pixelCount), timer_.get());
+  ctx_.submitAndWait(cmd);
+  timer_->collect(stats.stageSeconds);
+  collectCounters(stats);
+  return 0;
+}
+
+uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples,
+                                  RenderStats& stats) {
+  const gpu::PushConstants base = passConstants(firstPixel, pixelCount, sampleIndex, samples);
+  if (settings_.integrator == Integrator::Megakernel) return renderMegakernelPass(base, stats);
+  gpu::PushConstants pc = base;
+  const uint32_t count = pc.pathCount;
   auto* control = static_cast<gpu::Control*>(control_.mapped());
   std::memset(control, 0, sizeof(gpu::Control));
   if (settings_.recordDepthStats) {  // -1: "no decision recorded at this depth"
@@ -234,19 +299,12 @@ uint32_t WavefrontRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount,
     if (alive == 0) break;
     if (bounce >= depthCap) throw Error("internal error: paths alive past the depth cap");
   }
-  stats.cameraRays += control->totals.x;
-  stats.extensionRays += control->totals.y;
-  stats.shadowRays += control->totals.z;
-  stats.primaryRays += control->totals.x;
-  stats.nonfiniteEmission += control->nonfinite.x;
-  stats.nonfiniteLightSamples += control->nonfinite.y;
-  stats.nonfiniteThroughput += control->nonfinite.z;
-  stats.traversalsCut += control->nonfinite.w;
+  collectCounters(stats);
   if (settings_.recordDepthStats) collectPilot(count);
   return bounce;
 }
 
-void WavefrontRenderer::foldFilm(Film& film) {
+void PathRenderer::foldFilm(Film& film) {
   static_assert(sizeof(FilmBatchPixel) == sizeof(gpu::FilmPixel));
   film.addBatch(static_cast<const FilmBatchPixel*>(film_.mapped()));
   // The running pixel estimate that shadow-ray roulette compares tiny contributions against.
@@ -256,10 +314,11 @@ void WavefrontRenderer::foldFilm(Film& film) {
   std::memset(film_.mapped(), 0, film.pixels() * sizeof(gpu::FilmPixel));
 }
 
-Film WavefrontRenderer::render(RenderStats& stats) {
+Film PathRenderer::render(RenderStats& stats) {
   Film film(settings_.width, settings_.height);
   const uint32_t pixels = settings_.width * settings_.height;
   bool showProgress = settings_.progress && isatty(STDERR_FILENO);
+  std::memset(queueStats_.mapped(), 0, gpu::kQueueStatsBounces * 8);
   auto start = Clock::now();
   double lastProgress = 0.0;
   // Small images take several samples per pixel per pass, so that a pass fills the wavefront.
@@ -305,6 +364,13 @@ Film WavefrontRenderer::render(RenderStats& stats) {
   for (const auto& [name, secs] : stats.stageSeconds) stats.gpuSeconds += secs;
   stats.primarySeconds = stats.stageSeconds["intersect_primary"];
   stats.incoherentSeconds = stats.stageSeconds["intersect"];
+  const auto* queueStats = static_cast<const glm::uvec2*>(queueStats_.mapped());
+  stats.pathsByBounce.resize(gpu::kQueueStatsBounces, 0);
+  stats.shadowRaysByBounce.resize(gpu::kQueueStatsBounces, 0);
+  for (uint32_t b = 0; b < gpu::kQueueStatsBounces; ++b) {
+    stats.pathsByBounce[b] += queueStats[b].x;
+    stats.shadowRaysByBounce[b] += queueStats[b].y;
+  }
   return film;
 }
 

@@ -1,0 +1,30 @@
+// The camera path of sample id / pixelCount of pixel firstPixel + id % pixelCount (path id = sample *
+// pixelCount + pixel offset, so accumulate can walk one pixel's samples). Camera-ray roulette (the lecture's bad
+// example): with probability q a sample is 0 (throughput 0), survivors weigh 1/(1-q).
+PathState cameraPath(uint id) {
+  uint pixel = pc.firstPixel + id % pc.pixelCount;
+  uint key = pathKey(pc.seed, pixel, pc.sampleIndex + id / pc.pixelCount);
+  vec2 jitter = vec2(randomUnit(key, 0u), randomUnit(key, 1u));
+  vec2 ndc = vec2(float(pixel % pc.width) + jitter.x, float(pixel / pc.width) + jitter.y) /
+             vec2(float(pc.width), float(pc.height));
+  vec2 screen = vec2(2.0 * ndc.x - 1.0, 1.0 - 2.0 * ndc.y);
+  vec3 origin = pc.cameraOrigin.xyz;
+  vec3 dir;
+  if (pc.cameraOrigin.w == float(kCameraOrthographic)) {
+    origin += screen.x * pc.cameraRight.xyz + screen.y * pc.cameraUp.xyz;
+    dir = pc.cameraForward.xyz;
+  } else {
+    dir = normalize(pc.cameraForward.xyz + screen.x * pc.cameraRight.xyz + screen.y * pc.cameraUp.xyz);
+  }
+  PathState p;
+  p.origin = vec4(origin, 0.0);
+  p.direction = vec4(dir, 0.0);
+  p.throughput = vec4(1.0);
+  p.radiance = vec4(0.0);
+  p.info = uvec4(pixel, key, 0u, id);
+  if (kCameraRouletteQ > 0.0) {
+    bool survives = randomUnit(key, kDimCameraRoulette) >= kCameraRouletteQ;
+    p.throughput.rgb = vec3(survives ? 1.0 / (1.0 - kCameraRouletteQ) : 0.0);
+  }
+  return p;
+}

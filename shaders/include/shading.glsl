@@ -1,0 +1,237 @@
+// The shading of one path vertex, shared by the wavefront's shade stage (shade.comp) and the megakernel
+// (megakernel.comp), so both integrators run the same estimator code: the surface point, emission with its MIS
+// weight, light samples as shadow rays, BSDF continuations with roulette. What differs is only where their
+// results go: queues between dispatches, or the next iteration of one invocation's loop.
+#include "bsdf_gltf.h"
+#include "light_sampling.h"
+
+struct SurfacePoint {
+  vec3 p;
+  vec3 pError;
+  vec3 ng;  // geometric normal, facing the incoming ray's side
+  mat3 frame;  // shading frame; column 2 is the shading normal, on the side of ng
+  bool frontFace;
+  uint material;
+};
+
+SurfacePoint surfaceAt(uint tri, vec2 b12, vec3 wo) {
+  vec3 v0, v1, v2;
+  triangleVertices(tri, v0, v1, v2);
+  vec3 b = vec3(1.0 - b12.x - b12.y, b12.x, b12.y);
+  SurfacePoint s;
+  s.p = b.x * v0 + b.y * v1 + b.z * v2;
+  s.pError = barycentricError(b, v0, v1, v2);
+  s.ng = normalize(cross(v1 - v0, v2 - v0));
+  s.frontFace = dot(s.ng, wo) > 0.0;
+  if (!s.frontFace) s.ng = -s.ng;
+  uvec4 info = texelFetch(triangleInfo, int(tri));
+  s.material = info.w;
+  vec3 n = b.x * decodeOctahedral(unpackSnorm2x16(info.x)) + b.y * decodeOctahedral(unpackSnorm2x16(info.y)) +
+           b.z * decodeOctahedral(unpackSnorm2x16(info.z));
+  float len = length(n);
+  vec3 ns = len > 0.0 ? n / len : s.ng;
+  if (dot(ns, s.ng) < 0.0) ns = -ns;
+  s.frame = basisFromNormal(ns);
+  return s;
+}
+
+bool emitsToward(Material m, bool frontFace) {
+  return (frontFace || (floatBitsToUint(m.emission.w) & kMaterialDoubleSided) != 0u) &&
+         maxComponent(m.emission.rgb) > 0.0;
+}
+
+GltfMaterial gltfMaterial(Material m) { return makeGltfMaterial(m.baseColor.rgb, m.params.x, m.params.y, m.params.z); }
+
+// The BSDF-sampling technique and its pdf (local frame). In an all-Lambertian scene (kHasGlossy = 0) the
+// glTF BRDF is baseColor / pi and its sampling is cosine sampling: the GGX code is compiled out.
+vec3 sampleTechnique(GltfMaterial gm, vec3 wo, vec3 u) {
+  if (kBsdfSampling == kBsdfSamplingUniform) return sampleUniformHemisphere(u.yz);
+  if (kBsdfSampling == kBsdfSamplingCosine || kHasGlossy == 0u) return sampleCosineHemisphere(u.yz);
+  return sampleGltfBsdf(gm, wo, u);
+}
+float techniquePdf(GltfMaterial gm, vec3 wo, vec3 wi) {
+  if (wi.z <= 0.0) return 0.0;
+  if (kBsdfSampling == kBsdfSamplingUniform) return uniformHemispherePdf(wi.z);
+  if (kBsdfSampling == kBsdfSamplingCosine || kHasGlossy == 0u) return cosineHemispherePdf(wi.z);
+  return gltfBsdfPdf(gm, wo, wi);
+}
+vec3 bsdfEval(GltfMaterial gm, vec3 wo, vec3 wi) {
+  if (kHasGlossy == 0u) return (wo.z > 0.0 && wi.z > 0.0) ? gm.baseColor * kInvPi : vec3(0.0);
+  return gltfBsdfEval(gm, wo, wi);
+}
+
+float misWeight(float pdfThis, float pdfOther) {
+  if (kMis == kMisBalance) return balanceHeuristic(pdfThis, pdfOther);
+  if (kMis == kMisPower) return powerHeuristic(pdfThis, pdfOther);
+  return 1.0;
+}
+
+uint lightSamplesAt(uint depth) { return depth < kSplitDepth ? kLightSamples : 1u; }
+
+// Solid-angle pdf with which light sampling from p picks this point of emitter `tri`; pmf = selection pmf.
+float lightPdf(uint tri, float pmf, vec3 p, float dist2, float cosLight) {
+  vec3 v0, v1, v2;
+  triangleVertices(tri, v0, v1, v2);
+  if (kLightSampling == kLightSamplingSolidAngle) {
+    float omega = triangleSolidAngle(p, v0, v1, v2);
+    if (useSphericalSampling(omega)) return pmf / omega;
+  }
+  float area = 0.5 * length(cross(v1 - v0, v2 - v0));
+  return pmf * dist2 / (area * cosLight);
+}
+
+// Alias-table pick of one emissive triangle: x = triangle, y = pmf bits.
+uvec2 selectLight(float u) {
+  uint n = uint(textureSize(lights));
+  float scaled = u * float(n);
+  uint i = min(uint(scaled), n - 1u);
+  uvec4 e = texelFetch(lights, int(i));
+  uint pick = (scaled - float(i)) < uintBitsToFloat(e.x) ? i : e.y;
+  uvec4 chosen = pick == i ? e : texelFetch(lights, int(pick));
+  return uvec2(chosen.z, chosen.w);
+}
+
+// Light sample j of `samples` at s: the shadow ray to trace, carrying the contribution it adds if unoccluded;
+// false when the sample adds nothing (or was rouletted away).
+bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo, uint j, uint samples, out ShadowRay ray) {
+  uint depth = path.info.z;
+  uint key = path.info.y;
+  uvec2 light = selectLight(randomUnit(key, lightDim(depth, j, 0u)));
+  float pmf = uintBitsToFloat(light.y);
+  vec3 v0, v1, v2;
+  triangleVertices(light.x, v0, v1, v2);
+  vec3 cr = cross(v1 - v0, v2 - v0);
+  float area = 0.5 * length(cr);
+  if (!(area > 0.0)) return false;
+  vec3 nl = cr / (2.0 * area);
+  vec2 u = vec2(randomUnit(key, lightDim(depth, j, 1u)), randomUnit(key, lightDim(depth, j, 2u)));
+  vec3 pl;
+  vec3 plError;
+  float pdf = 0.0;
+  bool spherical = false;
+  if (kLightSampling == kLightSamplingSolidAngle) {
+    float omega = triangleSolidAngle(s.p, v0, v1, v2);
+    spherical = useSphericalSampling(omega);
+    if (spherical) {
+      vec3 w = sampleSphericalTriangle(s.p, v0, v1, v2, u, omega);
+      pl = pointOnTrianglePlane(s.p, w, v0, nl);
+      plError = gammaBound(16.0) * (abs(pl) + abs(v0) + abs(v1) + abs(v2));
+      pdf = pmf / omega;
+    }
+  }
+  if (!spherical) {
+    vec3 b = sampleUniformTriangle(u);
+    pl = b.x * v0 + b.y * v1 + b.z * v2;
+    plError = barycentricError(b, v0, v1, v2);
+  }
+  vec3 toLight = pl - s.p;
+  float dist2 = dot(toLight, toLight);
+  if (!(dist2 > 0.0)) return false;
+  vec3 wi = toLight * inversesqrt(dist2);
+  float cosLight = dot(nl, -wi);
+  Material lm = materials[texelFetch(triangleInfo, int(light.x)).w];
+  if (!emitsToward(lm, cosLight > 0.0)) return false;
+  cosLight = abs(cosLight);
+  if (cosLight <= 0.0 || dot(s.ng, wi) <= 0.0) return false;
+  if (!spherical) pdf = pmf * dist2 / (area * cosLight);
+  vec3 wiLocal = wi * s.frame;
+  vec3 woLocal = wo * s.frame;
+  if (wiLocal.z <= 0.0 || !(pdf > 0.0)) return false;
+  vec3 f = bsdfEval(gm, woLocal, wiLocal);
+  // MIS over one BSDF sample and `samples` light samples: the light technique's pdf counts samples times.
+  float weight = kMis == kMisNone ? 1.0 : misWeight(float(samples) * pdf, techniquePdf(gm, woLocal, wiLocal));
+  vec3 contribution = path.throughput.rgb * f * lm.emission.rgb * (wiLocal.z * weight / (pdf * float(samples)));
+  if (!allFinite(contribution)) atomicAdd(control.nonfinite.y, 1u);  // still queued: it poisons the sample
+  else if (!(maxComponent(contribution) > 0.0)) return false;
+  if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * pixelEstimate[path.info.x]) {
+    if (randomUnit(key, lightDim(depth, j, 3u)) < kShadowRouletteQ) return false;
+    contribution /= 1.0 - kShadowRouletteQ;
+  }
+  vec3 origin = offsetRayOrigin(s.p, s.pError, s.ng, wi);
+  vec3 target = offsetRayOrigin(pl, plError, nl, -wi);
+  ray.origin = vec4(origin, 1.0 - 1e-4);
+  ray.direction = vec4(target - origin, uintBitsToFloat(path.info.w));
+  ray.contribution = vec4(contribution, 0.0);
+  return true;
+}
+
+
+// Emission seen at s from the path's last ray, MIS-weighted against light sampling for BSDF-sampled rays.
+vec3 emissionAt(PathState path, SurfacePoint s, Material m, uint tri, vec4 hit, vec3 wo) {
+  if (!emitsToward(m, s.frontFace)) return vec3(0.0);
+  float weight = 1.0;
+  bool bsdfSampled = path.direction.w > 0.0;
+  if (kHasLights != 0u && kNee != 0u && bsdfSampled) {
+    if (kMis == kMisNone) {
+      weight = 0.0;  // light sampling alone accounts for direct light
+    } else {
+      float pmf = texelFetch(triangles, int(3u * tri + 1u)).w;
+      float cosLight = max(dot(s.ng, wo), 1e-30);
+      float pl = lightPdf(tri, pmf, path.origin.xyz, hit.x * hit.x, cosLight);
+      weight = misWeight(path.direction.w, float(lightSamplesAt(path.info.z - 1u)) * pl);
+    }
+  }
+  return path.throughput.rgb * m.emission.rgb * weight;
+}
+
+// Below the depth cap a vertex samples lights; it also continues unless, with light sampling alone (NEE
+// without MIS), the next vertex at the cap would only add emission, which it ignores.
+bool belowDepthCap(uint depth) { return kMaxDepth == 0u || depth < kMaxDepth; }
+bool continuationIsUseful(uint depth) {
+  bool lastVertexIsUseless = kMaxDepth > 0u && depth + 1u >= kMaxDepth && kNee != 0u && kMis == kMisNone &&
+                             kHasLights != 0u && maxComponent(pc.background.rgb) == 0.0;
+  return belowDepthCap(depth) && !lastVertexIsUseless;
+}
+
+// BSDF continuation c of q (q > 1 splits, see splitCount) of `path` (in slot `id`) at s: false when it ends,
+// else the child's next ray, throughput and info in `next` (radiance left to the caller). Russian roulette
+// ends or reweights it; the fixed mode's constant c on termination goes to `gathered`, as does a non-finite
+// throughput (counted: it poisons the sample, which accumulate counts and excludes, never dropped silently).
+bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3 woLocal, uint c, float q,
+                  inout vec3 gathered, out PathState next) {
+  uint depth = path.info.z;
+  uint ckey = childKey(path.info.y, depth, c);
+  vec3 u = vec3(randomUnit(ckey, bounceDim(depth, kDimBsdfLobe)), randomUnit(ckey, bounceDim(depth, kDimBsdf)),
+                randomUnit(ckey, bounceDim(depth, kDimBsdf + 1u)));
+  vec3 wiLocal = sampleTechnique(gm, woLocal, u);
+  float pdf = techniquePdf(gm, woLocal, wiLocal);
+  vec3 wi = s.frame * wiLocal;
+  bool continues = pdf > 0.0 && wiLocal.z > 0.0 && dot(wi, s.ng) > 0.0;
+  vec3 beta = continues ? path.throughput.rgb * bsdfEval(gm, woLocal, wiLocal) * (wiLocal.z / (pdf * q)) : vec3(0.0);
+  if (!allFinite(beta)) {
+    atomicAdd(control.nonfinite.z, 1u);
+    gathered += beta;
+    return false;
+  }
+  float splitWeight = path.throughput.w * q;  // roulette judges a child by its unsplit throughput
+  continues = continues && maxComponent(beta) > 0.0;
+
+  if (continues && depth + 1u >= kRouletteDepth && kRouletteMode != kRouletteNone) {
+    float r = randomUnit(ckey, bounceDim(depth, kDimRoulette));
+    if (kRouletteMode == kRouletteFixed) {
+      // F' = (F - q c) / (1 - q) with probability 1 - q, else c: unbiased for any c.
+      vec3 cValue = beta * kRouletteC;
+      if (r < kRouletteQ) {
+        gathered += cValue;
+        continues = false;
+      } else {
+        gathered -= cValue * (kRouletteQ / (1.0 - kRouletteQ));
+        beta /= 1.0 - kRouletteQ;
+      }
+    } else {
+      float unsplit = maxComponent(beta) * splitWeight;
+      float scale = kRouletteMode == kRouletteEfficiency ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] : 1.0;
+      float survival = rouletteSurvival(unsplit, scale, kRouletteMaxSurvival);
+      continues = splitCount(survival, r) > 0u;
+      beta /= survival;
+    }
+  }
+  if (kRecordDepthStats != 0u && depth < kRouletteTableDepths && continues)
+    depthStats[id * kRouletteTableDepths + depth].x = maxComponent(beta);
+  next.origin = vec4(offsetRayOrigin(s.p, s.pError, s.ng, wi), 0.0);
+  next.direction = vec4(wi, pdf);
+  next.throughput = vec4(beta, splitWeight);
+  next.info = uvec4(path.info.x, ckey, depth + 1u, path.info.w);
+  next.radiance = path.radiance;
+  return continues;
+}
