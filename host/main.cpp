@@ -133,6 +133,7 @@ int main(int argc, char** argv) {
   bench->add_option("--json", bo.jsonPath, "write the results as JSON");
   bench->add_flag("--specialization", bo.specialization, "compare specialized with general (all-features) pipelines");
   bench->add_option("--workgroup", bo.workgroupSize, "invocations per workgroup of every kernel: 32, 64, 128, 256")->capture_default_str();
+  bench->add_flag("--sah", bo.sah, "BVH quality: SAH cost of the binned build against a full sweep build");
   bench->add_option("--integrator", bo.integrators, "wavefront, megakernel or both (interleaved, side by side)")
       ->check(CLI::IsMember({"wavefront", "megakernel"}))->expected(1, 2);
 

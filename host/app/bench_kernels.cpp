@@ -54,6 +54,7 @@ struct Samples {
   std::map<std::string, KernelSamples> kernels;
   std::vector<uint64_t> pathsByBounce, shadowRaysByBounce;
   uint64_t cameraRays = 0;
+  bool megakernel = false;  // no queues: no occupancy to report
 };
 
 // Items and bytes per item of each kernel (sizes from shared/layout.h): a path-state read is 80 B, a queue
@@ -72,6 +73,8 @@ void recordKernels(Samples& s, const RenderStats& st, uint64_t samples) {
       {"shade", tracedPaths, 4 + 80 + 16 + 16 + 48 + 48 + 80 + 4 + 48 * double(st.shadowRays) / std::max(1.0, tracedPaths)},
       {"shadow", double(st.shadowRays), 48 + 2 * 16},
       {"accumulate", double(samples), 80 + 2 * 32},
+      // every ray of the pass; the path slot's radiance is its only state traffic
+      {"megakernel", double(st.rays()), 16.0 * double(st.cameraRays) / std::max<double>(1.0, double(st.rays()))},
       {"prepare_bounce", 0, 0},
       {"prepare_shadow", 0, 0}};
   for (const Row& r : rows) {
@@ -86,6 +89,7 @@ void recordKernels(Samples& s, const RenderStats& st, uint64_t samples) {
   s.pathsByBounce = st.pathsByBounce;
   s.shadowRaysByBounce = st.shadowRaysByBounce;
   s.cameraRays = st.cameraRays;
+  s.megakernel = st.stageSeconds.count("megakernel") > 0;
 }
 
 // The per-kernel table of one scene, and its JSON.
@@ -101,6 +105,10 @@ nlohmann::json printKernels(const std::string& name, const Samples& s) {
                 k.items, rate, gbps);
     kernels.push_back({{"kernel", kernel}, {"seconds_per_frame", secs}, {"share", secs / std::max(gpu, 1e-12)}, {"items_per_frame", k.items},
                        {"mitems_per_second", rate}, {"estimated_state_bytes_per_item", k.bytesPerItem}, {"estimated_gb_per_second", gbps}});
+  }
+  if (s.megakernel) {
+    std::printf("  (megakernel: no queues between stages, so no occupancy per bounce)\n");
+    return {{"gpu_seconds_per_frame", gpu}, {"kernels", kernels}};
   }
   // Queue occupancy: paths alive at each bounce, as a share of the camera paths.
   size_t last = 0;
@@ -146,6 +154,37 @@ std::pair<std::vector<double>, std::vector<double>> traceBenchmark(vk::Context& 
 
 }  // namespace
 
+// BVH quality: SAH cost of the binned build (the renderer's) against a full sweep build, with build times.
+int runSahBench(const BenchOptions& o, const std::vector<std::string>& scenes) {
+  std::printf("%-34s %9s %12s %10s %12s %10s %8s\n", "scene", "triangles", "SAH binned", "build s", "SAH sweep", "build s", "binned/");
+  std::printf("%-34s %9s %12s %10s %12s %10s %8s\n", "", "", "", "(1 core)", "", "", "sweep");
+  nlohmann::json out = nlohmann::json::array();
+  for (const std::string& path : scenes) {
+    Scene scene = loadGltf(path);
+    std::vector<Aabb> bounds(scene.triangleCount());
+    for (size_t i = 0; i < bounds.size(); ++i)
+      for (int k = 0; k < 3; ++k) bounds[i].grow(scene.positions[3 * i + k]);
+    std::vector<double> binnedSeconds;
+    Bvh binned;
+    for (int r = 0; r < o.runs; ++r) {
+      binned = buildBvh(bounds);
+      binnedSeconds.push_back(binned.stats.buildSeconds);
+    }
+    BvhOptions sweepOptions;
+    sweepOptions.fullSweep = true;
+    Bvh sweep = buildBvh(bounds, sweepOptions);
+    double ratio = binned.stats.sahCost / sweep.stats.sahCost;
+    std::printf("%-34s %9zu %12.3f %10.3f %12.3f %10.3f %8.4f\n", std::filesystem::path(path).filename().c_str(), bounds.size(),
+                binned.stats.sahCost, median(binnedSeconds), sweep.stats.sahCost, sweep.stats.buildSeconds, ratio);
+    out.push_back({{"scene", path}, {"triangles", bounds.size()}, {"sah_binned", binned.stats.sahCost},
+                   {"binned_build_seconds", median(binnedSeconds)}, {"sah_sweep", sweep.stats.sahCost},
+                   {"sweep_build_seconds", sweep.stats.buildSeconds}, {"ratio", ratio}});
+  }
+  std::printf("SAH cost: expected traversal steps plus triangle tests per ray (cost 1 each); build s: median of --runs.\n");
+  if (!o.jsonPath.empty()) writeFileAtomically(o.jsonPath, nlohmann::json{{"results", out}}.dump(2) + "\n");
+  return 0;
+}
+
 // Specialized against general pipelines, interleaved run by run: time per sample and pipeline set-up time.
 int runSpecializationBench(const BenchOptions& o, const std::vector<std::string>& scenes) {
   vk::Context ctx;
@@ -189,6 +228,7 @@ int runBenchKernels(const BenchOptions& o) {
   std::vector<std::string> scenes = o.scenes.empty() ? defaultScenes() : o.scenes;
   if (scenes.empty()) throw Error("no scenes to benchmark");
   if (o.specialization) return runSpecializationBench(o, scenes);
+  if (o.sah) return runSahBench(o, scenes);
   vk::Context ctx;
   // One case per scene and integrator; cases are interleaved run by run so machine noise hits them alike.
   struct Case {
@@ -281,7 +321,8 @@ int runBenchKernels(const BenchOptions& o) {
               firstPipelines.front());
   for (size_t i = 0; i < cases.size(); ++i)
     out[i]["per_kernel"] = printKernels(caseName(i) + " [" + toString(cases[i].integrator) + "]", samples[i]);
-  std::printf("\nitems: rays for the tracing kernels, paths for camera_rays and shade, samples for accumulate;\n"
+  std::printf("\nitems: rays for the tracing kernels and the megakernel, paths for camera_rays and shade, samples for\n"
+              "accumulate;\n"
               "est. GB/s: path-state, queue, hit, shadow-ray and film bytes moved (BVH and triangle fetches not counted).\n");
   if (!o.jsonPath.empty())
     writeFileAtomically(o.jsonPath, nlohmann::json{{"device", ctx.deviceName()}, {"results", out}}.dump(2) + "\n");

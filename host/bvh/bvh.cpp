@@ -76,6 +76,7 @@ class Builder {
     if (count <= 1) return 0;
     bool mustSplit = count > options_.maxLeafSize;
     if (depth >= kMaxDepth) return 0;
+    if (options_.fullSweep) return sweepSplit(first, count, box, mustSplit);
     const uint32_t bins = options_.bins;
     glm::vec3 extent = centroidBox.extent();
     float bestCost = std::numeric_limits<float>::infinity();
@@ -133,6 +134,43 @@ class Builder {
     });
     uint32_t left = static_cast<uint32_t>(mid - (order_.begin() + first));
     return (left == 0 || left == count) ? count / 2 : left;
+  }
+
+  // Every split between centroid-sorted neighbours along every axis (ties broken by index: deterministic).
+  uint32_t sweepSplit(uint32_t first, uint32_t count, const Aabb& box, bool mustSplit) {
+    float bestCost = std::numeric_limits<float>::infinity();
+    uint32_t bestLeft = 0;
+    std::vector<uint32_t> sorted(count), best;
+    std::vector<float> rightArea(count);
+    for (int axis = 0; axis < 3; ++axis) {
+      std::copy(order_.begin() + first, order_.begin() + first + count, sorted.begin());
+      std::sort(sorted.begin(), sorted.end(), [&](uint32_t a, uint32_t b) {
+        float ca = centroids_[a][axis], cb = centroids_[b][axis];
+        return ca < cb || (ca == cb && a < b);
+      });
+      Aabb acc;
+      for (uint32_t i = count; i-- > 0;) {
+        acc.grow(bounds_[sorted[i]]);
+        rightArea[i] = acc.halfArea();
+      }
+      acc = Aabb{};
+      bool improved = false;
+      for (uint32_t i = 1; i < count; ++i) {
+        acc.grow(bounds_[sorted[i - 1]]);
+        float cost = acc.halfArea() * static_cast<float>(i) + rightArea[i] * static_cast<float>(count - i);
+        if (cost < bestCost) {
+          bestCost = cost;
+          bestLeft = i;
+          improved = true;
+        }
+      }
+      if (improved) best = sorted;
+    }
+    float leafCost = options_.triangleCost * static_cast<float>(count);
+    float splitCost = options_.traversalCost + options_.triangleCost * bestCost / std::max(box.halfArea(), 1e-30f);
+    if (!mustSplit && splitCost >= leafCost) return 0;
+    std::copy(best.begin(), best.end(), order_.begin() + first);
+    return bestLeft;
   }
 
   std::span<const Aabb> bounds_;

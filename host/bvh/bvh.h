@@ -32,6 +32,9 @@ struct BvhOptions {
   uint32_t maxLeafSize = 8;
   float traversalCost = 1.0f;
   float triangleCost = 1.0f;
+  // Full sweep SAH: every split position along every axis (centroid-sorted), O(n log^2 n); the reference the
+  // binned build's quality is measured against, not the production build.
+  bool fullSweep = false;
 };
 
 struct Bvh {

@@ -362,8 +362,12 @@ Film PathRenderer::render(RenderStats& stats) {
   stats.seconds = since(start);
   stats.samplesPerPixel = film.pixels() ? static_cast<uint32_t>(film.count[0] + film.nonfinite[0]) : 0;
   for (const auto& [name, secs] : stats.stageSeconds) stats.gpuSeconds += secs;
-  stats.primarySeconds = stats.stageSeconds["intersect_primary"];
-  stats.incoherentSeconds = stats.stageSeconds["intersect"];
+  auto stage = [&](const char* name) {
+    auto it = stats.stageSeconds.find(name);
+    return it == stats.stageSeconds.end() ? 0.0 : it->second;
+  };
+  stats.primarySeconds = stage("intersect_primary");
+  stats.incoherentSeconds = stage("intersect");
   const auto* queueStats = static_cast<const glm::uvec2*>(queueStats_.mapped());
   stats.pathsByBounce.resize(gpu::kQueueStatsBounces, 0);
   stats.shadowRaysByBounce.resize(gpu::kQueueStatsBounces, 0);
