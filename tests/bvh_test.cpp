@@ -191,9 +191,7 @@ TEST(Bvh, BinnedBuildIsWithinFivePercentOfTheFullSweep) {
                            std::string(VKMC_SHARED_SCENES) + "/MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.gltf"}) {
     if (!std::filesystem::exists(path)) continue;
     Scene scene = loadGltf(path);
-    std::vector<Aabb> bounds(scene.triangleCount());
-    for (size_t i = 0; i < bounds.size(); ++i)
-      for (int k = 0; k < 3; ++k) bounds[i].grow(scene.positions[3 * i + k]);
+    std::vector<Aabb> bounds = scene.triangleBounds();
     cases.emplace_back(path, std::move(bounds));
   }
   Soup soup = randomSoup(20000, 3);

@@ -28,9 +28,7 @@ TEST(GpuTraversal, ClosestAndAnyHitAgreeWithBruteForce) {
     }
     scene.materialIds.push_back(0);
   }
-  std::vector<Aabb> bounds(scene.triangleCount());
-  for (size_t i = 0; i < bounds.size(); ++i)
-    for (int k = 0; k < 3; ++k) bounds[i].grow(scene.positions[3 * i + k]);
+  std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   std::vector<glm::vec3> ordered;
   for (uint32_t t : bvh.triangleOrder)

@@ -128,9 +128,7 @@ nlohmann::json printKernels(const std::string& name, const Samples& s) {
 std::pair<std::vector<double>, std::vector<double>> traceBenchmark(vk::Context& ctx, const std::string& path, int width,
                                                                    int height, int runs, double& diffuseRayCount) {
   Scene scene = loadGltf(path);
-  std::vector<Aabb> bounds(scene.triangleCount());
-  for (size_t i = 0; i < bounds.size(); ++i)
-    for (int k = 0; k < 3; ++k) bounds[i].grow(scene.positions[3 * i + k]);
+  std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   GpuScene gpuScene(ctx, scene, bvh);
   RayTracer tracer(ctx, gpuScene);
@@ -161,9 +159,7 @@ int runSahBench(const BenchOptions& o, const std::vector<std::string>& scenes) {
   nlohmann::json out = nlohmann::json::array();
   for (const std::string& path : scenes) {
     Scene scene = loadGltf(path);
-    std::vector<Aabb> bounds(scene.triangleCount());
-    for (size_t i = 0; i < bounds.size(); ++i)
-      for (int k = 0; k < 3; ++k) bounds[i].grow(scene.positions[3 * i + k]);
+    std::vector<Aabb> bounds = scene.triangleBounds();
     std::vector<double> binnedSeconds;
     Bvh binned;
     for (int r = 0; r < o.runs; ++r) {

@@ -51,9 +51,7 @@ int runInfo(const RenderOptions& options) {
               f.emitters() ? "yes" : "no", f.emissiveTriangles, f.glossy ? "yes" : "no", f.metallic ? "yes" : "no",
               f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.textures ? "yes" : "no",
               f.punctualLights ? "yes" : "no");
-  std::vector<Aabb> bounds(scene.triangleCount());
-  for (size_t i = 0; i < bounds.size(); ++i)
-    for (int k = 0; k < 3; ++k) bounds[i].grow(scene.positions[3 * i + k]);
+  std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   const BvhStats& b = bvh.stats;
   std::printf("bvh          %u inner nodes, %u leaves, depth %u, leaf size avg %.2f max %u, SAH cost %.2f, built in %.3f s\n",

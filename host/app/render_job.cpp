@@ -88,9 +88,7 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
   out.height = height;
 
   auto t = Clock::now();
-  std::vector<Aabb> bounds(scene.triangleCount());
-  for (size_t i = 0; i < bounds.size(); ++i)
-    for (int k = 0; k < 3; ++k) bounds[i].grow(scene.positions[3 * i + k]);
+  std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   out.setup.bvh = since(t);
   out.bvh = bvh.stats;

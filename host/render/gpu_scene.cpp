@@ -107,4 +107,12 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
                        {"materials", mats.size() * sizeof(gpu::Material)}};
 }
 
+void GpuScene::bindTo(vk::KernelLayout& layout) const {
+  layout.bindTexel(BINDING_TRIANGLES, triangles_);
+  layout.bindTexel(BINDING_TRIANGLE_INFO, triangleInfo_);
+  layout.bindTexel(BINDING_BVH_NODES, bvhNodes_);
+  layout.bindTexel(BINDING_LIGHTS, lights_);
+  layout.bindStorage(BINDING_MATERIALS, materials_);
+}
+
 }  // namespace vkmc

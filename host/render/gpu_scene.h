@@ -8,6 +8,7 @@
 #include "scene/scene.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
+#include "vk/kernel.h"
 
 namespace vkmc {
 
@@ -29,6 +30,8 @@ class GpuScene {
   const vk::Buffer& bvhNodes() const { return bvhNodes_; }
   const vk::Buffer& lights() const { return lights_; }
   const vk::Buffer& materials() const { return materials_; }
+  // Binds the scene's buffers (triangles, triangle info, BVH nodes, lights, materials) to their bindings.
+  void bindTo(vk::KernelLayout& layout) const;
 
  private:
   GpuSceneInfo info_;

@@ -105,11 +105,7 @@ PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const Render
                         vk::MemoryKind::HostVisible);
 
   layout_ = std::make_unique<vk::KernelLayout>(ctx);
-  layout_->bindTexel(BINDING_TRIANGLES, scene.triangles());
-  layout_->bindTexel(BINDING_TRIANGLE_INFO, scene.triangleInfo());
-  layout_->bindTexel(BINDING_BVH_NODES, scene.bvhNodes());
-  layout_->bindTexel(BINDING_LIGHTS, scene.lights());
-  layout_->bindStorage(BINDING_MATERIALS, scene.materials());
+  scene.bindTo(*layout_);
   layout_->bindStorage(BINDING_PATHS, paths_);
   layout_->bindStorage(BINDING_HITS, hits_);
   layout_->bindStorage(BINDING_RAY_QUEUES, queues_);

@@ -10,11 +10,7 @@ namespace vkmc {
 
 RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene) : ctx_(ctx), scene_(scene) {
   layout_ = std::make_unique<vk::KernelLayout>(ctx);
-  layout_->bindTexel(BINDING_TRIANGLES, scene.triangles());
-  layout_->bindTexel(BINDING_TRIANGLE_INFO, scene.triangleInfo());
-  layout_->bindTexel(BINDING_BVH_NODES, scene.bvhNodes());
-  layout_->bindTexel(BINDING_LIGHTS, scene.lights());
-  layout_->bindStorage(BINDING_MATERIALS, scene.materials());
+  scene.bindTo(*layout_);
   // The kernel declares every binding of the shared set; those it never touches still need a buffer.
   dummy_ = vk::Buffer(ctx, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_CONTROL, BINDING_FILM,

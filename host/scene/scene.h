@@ -62,6 +62,13 @@ struct Scene {
   bool hasPunctualLights = false;  // KHR_lights_punctual present (ignored for now)
 
   size_t triangleCount() const { return materialIds.size(); }
+  // One box per triangle: what the BVH builder takes.
+  std::vector<Aabb> triangleBounds() const {
+    std::vector<Aabb> boxes(triangleCount());
+    for (size_t i = 0; i < boxes.size(); ++i)
+      for (int k = 0; k < 3; ++k) boxes[i].grow(positions[3 * i + k]);
+    return boxes;
+  }
 };
 
 }  // namespace vkmc

@@ -122,9 +122,7 @@ int main(int argc, char** argv) {
     nlohmann::json out = nlohmann::json::array();
     for (const std::string& path : scenes) {
       Scene scene = loadGltf(path);
-      std::vector<Aabb> bounds(scene.triangleCount());
-      for (size_t i = 0; i < bounds.size(); ++i)
-        for (int k = 0; k < 3; ++k) bounds[i].grow(scene.positions[3 * i + k]);
+      std::vector<Aabb> bounds = scene.triangleBounds();
       Bvh bvh = buildBvh(bounds);
       GpuScene gpuScene(ctx, scene, bvh);
       RayTracer tracer(ctx, gpuScene);
