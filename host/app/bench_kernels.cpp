@@ -48,7 +48,7 @@ struct KernelSamples {
 };
 
 struct Samples {
-  std::vector<double> load, bvh, upload, pipelines, sps, primary, incoherent, total, tracePrimary, traceDiffuse, gpu;
+  std::vector<double> load, bvh, upload, pipelines, sps, primary, incoherent, total, tracePrimary, traceDiffuse, traceDiffuseBinary, gpu;
   uint32_t triangles = 0;
   double diffuseRays = 0;
   std::map<std::string, KernelSamples> kernels;
@@ -124,30 +124,35 @@ nlohmann::json printKernels(const std::string& name, const Samples& s) {
 }
 
 // The traversal alone, on the ray arrays of render/benchmark_rays.h (camera rays, then four diffuse bounce rays
-// per hit). Returns (primary, diffuse) Mrays/s from the trace kernel's timestamps, medians over runs.
-std::pair<std::vector<double>, std::vector<double>> traceBenchmark(vk::Context& ctx, const std::string& path, int width,
-                                                                   int height, int runs, double& diffuseRayCount) {
+// per hit), through the 4-wide BVH and, interleaved, the binary one. Mrays/s from the trace kernel's timestamps.
+struct TraceRates {
+  std::vector<double> primary, diffuse, diffuseBinary;
+};
+TraceRates traceBenchmark(vk::Context& ctx, const std::string& path, int width, int height, int runs, double& diffuseRayCount) {
   Scene scene = loadGltf(path);
   std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
-  GpuScene gpuScene(ctx, scene, bvh);
-  RayTracer tracer(ctx, gpuScene);
+  GpuScene gpuScene(ctx, scene, bvh, false, true);
+  RayTracer tracer(ctx, gpuScene), binaryTracer(ctx, gpuScene, true);
   BenchmarkRays rays = makeBenchmarkRays(scene, bvh, tracer, uint32_t(width), uint32_t(height));
   const std::vector<gpu::TestRay>& primary = rays.primary;
   const std::vector<gpu::TestRay>& diffuse = rays.diffuse;
   diffuseRayCount = static_cast<double>(diffuse.size());
-  std::vector<double> p, d;
+  TraceRates rates;
   tracer.trace(primary, false);  // warm-up
+  binaryTracer.trace(primary, false);
+  auto rate = [](size_t n, double secs) { return secs > 0 ? double(n) / secs * 1e-6 : 0.0; };
   for (int r = 0; r < runs; ++r) {
     double secs = 0;
     tracer.trace(primary, false, &secs);
-    p.push_back(secs > 0 ? primary.size() / secs * 1e-6 : 0.0);
-    if (!diffuse.empty()) {
-      tracer.trace(diffuse, false, &secs);
-      d.push_back(secs > 0 ? diffuse.size() / secs * 1e-6 : 0.0);
-    }
+    rates.primary.push_back(rate(primary.size(), secs));
+    if (diffuse.empty()) continue;
+    tracer.trace(diffuse, false, &secs);
+    rates.diffuse.push_back(rate(diffuse.size(), secs));
+    binaryTracer.trace(diffuse, false, &secs);
+    rates.diffuseBinary.push_back(rate(diffuse.size(), secs));
   }
-  return {p, d};
+  return rates;
 }
 
 }  // namespace
@@ -268,17 +273,18 @@ int runBenchKernels(const BenchOptions& o) {
       s.total.push_back(st.rays() / st.seconds * 1e-6);
       recordKernels(s, st, r.film.totalSamples());
       if (!cases[i].traceKernel) continue;
-      auto [tp, td] = traceBenchmark(ctx, cases[i].scene, o.width, o.height, 1, s.diffuseRays);
-      s.tracePrimary.insert(s.tracePrimary.end(), tp.begin(), tp.end());
-      s.traceDiffuse.insert(s.traceDiffuse.end(), td.begin(), td.end());
+      TraceRates t = traceBenchmark(ctx, cases[i].scene, o.width, o.height, 1, s.diffuseRays);
+      s.tracePrimary.insert(s.tracePrimary.end(), t.primary.begin(), t.primary.end());
+      s.traceDiffuse.insert(s.traceDiffuse.end(), t.diffuse.begin(), t.diffuse.end());
+      s.traceDiffuseBinary.insert(s.traceDiffuseBinary.end(), t.diffuseBinary.begin(), t.diffuseBinary.end());
     }
   }
   std::printf("device: %s; %dx%d, %d spp per run, %d runs, workgroup %u, medians [min-max]\n", ctx.deviceName().c_str(), o.width,
               o.height, o.spp, o.runs, o.workgroupSize);
-  std::printf("%-34s %-10s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s\n", "scene", "integrator", "triangles", "load s",
-              "bvh s", "upload s", "pipes s", "samples/s", "primary", "bounces", "total", "trace 1st", "trace dif");
-  std::printf("%-34s %-10s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s\n", "", "", "", "", "", "", "", "", "Mrays/s",
-              "Mrays/s", "Mrays/s", "Mrays/s", "Mrays/s");
+  std::printf("%-34s %-10s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s %9s\n", "scene", "integrator", "triangles", "load s",
+              "bvh s", "upload s", "pipes s", "samples/s", "primary", "bounces", "total", "trace 1st", "trace dif", "dif bvh2");
+  std::printf("%-34s %-10s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s %9s\n", "", "", "", "", "", "", "", "", "Mrays/s",
+              "Mrays/s", "Mrays/s", "Mrays/s", "Mrays/s", "Mrays/s");
   nlohmann::json out = nlohmann::json::array();
   auto caseName = [&](size_t i) { return std::filesystem::path(cases[i].scene).filename().string(); };
   for (size_t i = 0; i < cases.size(); ++i) {
@@ -288,10 +294,10 @@ int runBenchKernels(const BenchOptions& o) {
       auto [lo, hi] = std::minmax_element(v.begin(), v.end());
       return std::make_pair(*lo, *hi);
     };
-    std::printf("%-34s %-10s %9u %7.3f %7.3f %8.3f %7.3f | %10.0f %9.2f %9.2f %9.2f | %9.2f %9.2f  [samples/s %.0f-%.0f]\n",
+    std::printf("%-34s %-10s %9u %7.3f %7.3f %8.3f %7.3f | %10.0f %9.2f %9.2f %9.2f | %9.2f %9.2f %9.2f  [samples/s %.0f-%.0f]\n",
                 caseName(i).c_str(), toString(cases[i].integrator), s.triangles, median(s.load), median(s.bvh), median(s.upload),
                 median(s.pipelines), median(s.sps), median(s.primary), median(s.incoherent), median(s.total),
-                median(s.tracePrimary), median(s.traceDiffuse), range(s.sps).first, range(s.sps).second);
+                median(s.tracePrimary), median(s.traceDiffuse), median(s.traceDiffuseBinary), range(s.sps).first, range(s.sps).second);
     out.push_back({{"scene", cases[i].scene},
                    {"integrator", toString(cases[i].integrator)},
                    {"triangles", s.triangles},
@@ -305,13 +311,15 @@ int runBenchKernels(const BenchOptions& o) {
                    {"total_mrays_per_second", median(s.total)},
                    {"trace_primary_mrays_per_second", median(s.tracePrimary)},
                    {"trace_diffuse_mrays_per_second", median(s.traceDiffuse)},
+                   {"trace_diffuse_binary_bvh_mrays_per_second", median(s.traceDiffuseBinary)},
                    {"trace_diffuse_rays", s.diffuseRays},
                    {"pipeline_seconds_first_use", firstPipelines[i]},
                    {"workgroup_size", o.workgroupSize}});
   }
   std::printf("primary/bounces: wavefront intersection stages (GPU time; none in the megakernel); total: all rays over\n"
               "render wall time;\n"
-              "trace 1st/dif: the traversal kernel alone on camera rays and on 4 cosine bounce rays per primary hit.\n"
+              "trace 1st/dif: the traversal kernel alone (4-wide BVH) on camera rays and on 4 cosine bounce rays per primary\n"
+              "hit; dif bvh2: the same bounce rays through the binary BVH, interleaved.\n"
               "pipelines: creation plus first-dispatch compile, median of warm runs; first use in this process: %.3f s\n"
               "(Mesa's on-disk shader cache may make even that warm; clear ~/.cache/mesa_shader_cache for a cold figure).\n",
               firstPipelines.front());

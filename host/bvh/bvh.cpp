@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "../shaders/shared/geometry.h"
+#include "error.h"
 
 namespace vkmc {
 namespace {
@@ -183,6 +184,66 @@ void writeChild(BvhGpuNode& gpu, int c, const Aabb& box, uint32_t ref, uint32_t 
   gpu.texels[2 * c + 1] = glm::vec4(box.max, asFloat(count));
 }
 
+// Collapses the binary GPU layout into 4-wide nodes: a node's children are its binary children, the inner one
+// with the largest surface opened in turn until there are four (Wald et al. 2008's collapse).
+std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary) {
+  struct Child {
+    Aabb box;
+    uint32_t ref = 0, count = 0;  // count 0: binary inner node `ref`
+  };
+  auto childrenOf = [&](uint32_t node, std::vector<Child>& out) {
+    for (int c = 0; c < 2; ++c) {
+      const glm::vec4 lo = binary[node].texels[2 * c], hi = binary[node].texels[2 * c + 1];
+      uint32_t count = asUint(hi.w);
+      if (count == 0xffffffffu) continue;  // the empty half of a root leaf
+      out.push_back({Aabb{glm::vec3(lo), glm::vec3(hi)}, asUint(lo.w), count});
+    }
+  };
+  std::vector<BvhWideNode> wide(1);
+  std::vector<std::pair<uint32_t, uint32_t>> tasks{{0u, 0u}};  // (binary node, wide node)
+  while (!tasks.empty()) {
+    auto [node, w] = tasks.back();
+    tasks.pop_back();
+    std::vector<Child> children;
+    childrenOf(node, children);
+    while (children.size() < 4) {
+      int open = -1;
+      for (int i = 0; i < int(children.size()); ++i)
+        if (children[i].count == 0 && (open < 0 || children[i].box.halfArea() > children[open].box.halfArea())) open = i;
+      if (open < 0) break;
+      uint32_t inner = children[open].ref;
+      children.erase(children.begin() + open);
+      childrenOf(inner, children);
+    }
+    BvhWideNode out;
+    for (int axis = 0; axis < 3; ++axis) {
+      out.texels[2 * axis] = glm::vec4(std::numeric_limits<float>::max());
+      out.texels[2 * axis + 1] = glm::vec4(-std::numeric_limits<float>::max());
+    }
+    out.texels[6] = glm::vec4(asFloat(kBvhEmptySlot));
+    for (size_t i = 0; i < children.size(); ++i) {
+      const Child& c = children[i];
+      for (int axis = 0; axis < 3; ++axis) {
+        out.texels[2 * axis][i] = c.box.min[axis];
+        out.texels[2 * axis + 1][i] = c.box.max[axis];
+      }
+      uint32_t entry;
+      if (c.count > 0) {
+        if (c.count > 8 || c.ref >= (1u << 27)) throw Error("BVH leaf of " + std::to_string(c.count) + " triangles at " +
+                                                            std::to_string(c.ref) + " does not fit the 4-wide node layout");
+        entry = kBvhLeafTag | ((c.count - 1u) << 27) | c.ref;
+      } else {
+        entry = static_cast<uint32_t>(wide.size());
+        wide.emplace_back();
+        tasks.push_back({c.ref, entry});
+      }
+      out.texels[6][i] = asFloat(entry);
+    }
+    wide[w] = out;
+  }
+  return wide;
+}
+
 }  // namespace
 
 Bvh buildBvh(std::span<const Aabb> bounds, const BvhOptions& options) {
@@ -238,6 +299,7 @@ Bvh buildBvh(std::span<const Aabb> bounds, const BvhOptions& options) {
   }
   s.maxDepth = builder.maxDepth;
   s.averageLeafSize = s.leaves ? static_cast<double>(bounds.size()) / s.leaves : 0.0;
+  bvh.wideNodes = collapseToWide(bvh.nodes);
   s.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return bvh;
 }

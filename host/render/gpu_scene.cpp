@@ -35,7 +35,7 @@ vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, VkF
 
 }  // namespace
 
-GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool uniformLightSelection) {
+GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool uniformLightSelection, bool keepBinaryBvh) {
   const size_t n = scene.triangleCount();
   info_.triangles = static_cast<uint32_t>(n);
   info_.materials = static_cast<uint32_t>(scene.materials.size());
@@ -96,21 +96,26 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
 
   triangles_ = makeTexelBuffer(ctx, triTexels.data(), triTexels.size() * 16, VK_FORMAT_R32G32B32A32_SFLOAT, "triangles");
   triangleInfo_ = makeTexelBuffer(ctx, infoTexels.data(), infoTexels.size() * 16, VK_FORMAT_R32G32B32A32_UINT, "triangle info");
-  bvhNodes_ = makeTexelBuffer(ctx, bvh.nodes.data(), bvh.nodes.size() * 64, VK_FORMAT_R32G32B32A32_SFLOAT, "BVH nodes");
+  bvhNodes_ = makeTexelBuffer(ctx, bvh.wideNodes.data(), bvh.wideNodes.size() * sizeof(BvhWideNode), VK_FORMAT_R32G32B32A32_SFLOAT,
+                              "BVH nodes");
+  if (keepBinaryBvh)
+    binaryBvhNodes_ = makeTexelBuffer(ctx, bvh.nodes.data(), bvh.nodes.size() * sizeof(BvhGpuNode), VK_FORMAT_R32G32B32A32_SFLOAT,
+                                      "binary BVH nodes");
   lights_ = makeTexelBuffer(ctx, lightTexels.data(), lightTexels.size() * 16, VK_FORMAT_R32G32B32A32_UINT, "lights");
   materials_ = vk::Buffer(ctx, mats.size() * sizeof(gpu::Material), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   materials_.upload(mats.data(), mats.size() * sizeof(gpu::Material));
   info_.bufferBytes = {{"triangles", triTexels.size() * 16},
                        {"triangle_info", infoTexels.size() * 16},
-                       {"bvh_nodes", bvh.nodes.size() * 64},
+                       {"bvh_nodes", bvh.wideNodes.size() * sizeof(BvhWideNode)},
                        {"lights", lightTexels.size() * 16},
                        {"materials", mats.size() * sizeof(gpu::Material)}};
 }
 
-void GpuScene::bindTo(vk::KernelLayout& layout) const {
+void GpuScene::bindTo(vk::KernelLayout& layout, bool binaryBvh) const {
+  if (binaryBvh && !binaryBvhNodes_.handle()) throw Error("internal error: the binary BVH layout was not uploaded");
   layout.bindTexel(BINDING_TRIANGLES, triangles_);
   layout.bindTexel(BINDING_TRIANGLE_INFO, triangleInfo_);
-  layout.bindTexel(BINDING_BVH_NODES, bvhNodes_);
+  layout.bindTexel(BINDING_BVH_NODES, binaryBvh ? binaryBvhNodes_ : bvhNodes_);
   layout.bindTexel(BINDING_LIGHTS, lights_);
   layout.bindStorage(BINDING_MATERIALS, materials_);
 }

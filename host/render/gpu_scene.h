@@ -23,7 +23,8 @@ struct GpuSceneInfo {
 class GpuScene {
  public:
   // uniformLightSelection: every emissive triangle equally likely; otherwise in proportion to emitted power.
-  GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool uniformLightSelection = false);
+  // keepBinaryBvh: also upload the binary node layout, for side-by-side traversal benchmarks.
+  GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool uniformLightSelection = false, bool keepBinaryBvh = false);
   const GpuSceneInfo& info() const { return info_; }
   const vk::Buffer& triangles() const { return triangles_; }
   const vk::Buffer& triangleInfo() const { return triangleInfo_; }
@@ -31,11 +32,11 @@ class GpuScene {
   const vk::Buffer& lights() const { return lights_; }
   const vk::Buffer& materials() const { return materials_; }
   // Binds the scene's buffers (triangles, triangle info, BVH nodes, lights, materials) to their bindings.
-  void bindTo(vk::KernelLayout& layout) const;
+  void bindTo(vk::KernelLayout& layout, bool binaryBvh = false) const;
 
  private:
   GpuSceneInfo info_;
-  vk::Buffer triangles_, triangleInfo_, bvhNodes_, lights_, materials_;
+  vk::Buffer triangles_, triangleInfo_, bvhNodes_, binaryBvhNodes_, lights_, materials_;
 };
 
 }  // namespace vkmc

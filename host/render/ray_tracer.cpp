@@ -4,21 +4,23 @@
 #include <cstring>
 #include <map>
 
+#include "spirv/trace_rays_bvh2_spv.h"
 #include "spirv/trace_rays_spv.h"
 
 namespace vkmc {
 
-RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene) : ctx_(ctx), scene_(scene) {
+RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh) : ctx_(ctx), scene_(scene) {
   layout_ = std::make_unique<vk::KernelLayout>(ctx);
-  scene.bindTo(*layout_);
+  scene.bindTo(*layout_, binaryBvh);
   // The kernel declares every binding of the shared set; those it never touches still need a buffer.
   dummy_ = vk::Buffer(ctx, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_CONTROL, BINDING_FILM,
                      BINDING_PIXEL_ESTIMATE, BINDING_ROULETTE_TABLE, BINDING_DEPTH_STATS, BINDING_QUEUE_STATS})
     layout_->bindStorage(b, dummy_);
-  closest_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest", kSpirv_trace_rays,
+  std::span<const uint32_t> spirv = binaryBvh ? std::span<const uint32_t>(kSpirv_trace_rays_bvh2) : std::span<const uint32_t>(kSpirv_trace_rays);
+  closest_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest", spirv,
                                           std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 0}});
-  any_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any", kSpirv_trace_rays,
+  any_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any", spirv,
                                       std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 1}});
 }
 

@@ -15,7 +15,8 @@ namespace vkmc {
 
 class RayTracer {
  public:
-  RayTracer(vk::Context& ctx, const GpuScene& scene);
+  // binaryBvh: walk the binary node layout (the scene must keep it) instead of the 4-wide one.
+  RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh = false);
   ~RayTracer();
   // Returns (t, b1, b2, triangle bits) per ray, triangle = kMissPrimitive on a miss. gpuSeconds: kernel time.
   std::vector<glm::vec4> trace(std::span<const gpu::TestRay> rays, bool anyHit, double* gpuSeconds = nullptr);
