@@ -12,6 +12,23 @@ const uint kNoEntry = 0xffffffffu;
 
 uint leafEntry(uint first, uint count) { return kLeafTag | ((count - 1u) << 27u) | first; }
 
+// The triangles of a leaf entry against the ray; true when one of them is the new closest hit (in best).
+bool intersectLeaf(uint entry, RayShear shear, inout vec4 best) {
+  uint first = entry & 0x07ffffffu;
+  uint last = first + ((entry >> 27u) & 0xfu) + 1u;
+  bool found = false;
+  for (uint tri = first; tri < last; ++tri) {
+    vec3 v0, v1, v2;
+    triangleVertices(tri, v0, v1, v2);
+    vec3 h = intersectTriangle(shear, v0, v1, v2, best.x);
+    if (h.x > 0.0) {
+      best = vec4(h, uintBitsToFloat(tri));
+      found = true;
+    }
+  }
+  return found;
+}
+
 #ifndef VKMC_BVH2
 const uint kEmptySlot = 0x7f7fffffu;
 
@@ -68,17 +85,7 @@ vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete)
       }
     }
     while (current != kNoEntry && (current & kLeafTag) != 0u) {
-      uint first = current & 0x07ffffffu;
-      uint last = first + ((current >> 27u) & 0xfu) + 1u;
-      for (uint tri = first; tri < last; ++tri) {
-        vec3 v0, v1, v2;
-        triangleVertices(tri, v0, v1, v2);
-        vec3 h = intersectTriangle(shear, v0, v1, v2, best.x);
-        if (h.x > 0.0) {
-          best = vec4(h, uintBitsToFloat(tri));
-          if (anyHit) return best;
-        }
-      }
+      if (intersectLeaf(current, shear, best) && anyHit) return best;
       current = sp > 0u ? stack[--sp] : kNoEntry;
     }
   }
@@ -126,17 +133,7 @@ vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete)
       }
     }
     while (current != kNoEntry && (current & kLeafTag) != 0u) {
-      uint first = current & 0x07ffffffu;
-      uint last = first + ((current >> 27u) & 0xfu) + 1u;
-      for (uint tri = first; tri < last; ++tri) {
-        vec3 v0, v1, v2;
-        triangleVertices(tri, v0, v1, v2);
-        vec3 h = intersectTriangle(shear, v0, v1, v2, best.x);
-        if (h.x > 0.0) {
-          best = vec4(h, uintBitsToFloat(tri));
-          if (anyHit) return best;
-        }
-      }
+      if (intersectLeaf(current, shear, best) && anyHit) return best;
       current = sp > 0u ? stack[--sp] : kNoEntry;
     }
   }
