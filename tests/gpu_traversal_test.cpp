@@ -77,7 +77,9 @@ TEST(GpuTraversal, ClosestAndAnyHitAgreeWithBruteForce) {
 // an error; the analytic furnace probe lost paths to it (tests/stiff_furnace_test.cpp). A BVH walk flags a walk
 // that did not end on its own (t = NaN here; counted and excluded in renders). A ray through the common box of
 // 400k coincident triangles, one per leaf, missing them all, visits every one of the 400k leaves: on llvmpipe
-// (Mesa 22.3) that walk completes, and must come back as a miss, not as a cut or a false hit.
+// (Mesa 22.3) that walk completes, and must come back as a miss, not as a cut or a false hit. Every child box
+// of that pile is hit, so the walk pushes 3 entries per level of the 4-wide tree (~27 for 400k leaves): more than
+// the 16-entry register stack holds, so this also checks the walk that starts over with its stack in memory.
 TEST(GpuTraversal, AWalkOfHundredsOfThousandsOfLeavesCompletes) {
   vk::Context ctx;
   for (uint32_t count : {1000u, 400000u}) {

@@ -1,23 +1,32 @@
-// BVH traversal in while-while form (Aila & Laine 2009): each lane walks inner nodes until it holds a leaf, then
-// the lanes test leaves together. On SIMD hardware (llvmpipe's 8 lanes, a GPU's warp) this keeps lanes busy
-// with the same kind of work. Leaves are stack entries too, tagged with the high bit and their size; nearer
-// children are visited first. Two node layouts (host/bvh/bvh.h): 4-wide nodes (the default: 4 box tests as vec4
-// arithmetic, half the steps) and, with VKMC_BVH2, the binary one (kept for side-by-side benchmarks).
-// llvmpipe has a hang guard that ends shader loops after 65535 iterations (LP_MAX_TGSI_LOOP_ITERATIONS) without
-// any error; the analytic furnace probe lost paths to it. A walk of 400k leaves measured complete, but a walk
-// that did not end on its own must never pass for a hit or a miss: `complete` says whether it did.
+// BVH traversal. The default walk (4-wide nodes) is shaped by what llvmpipe, our CPU device, does with a shader:
+// it runs 8 lanes as one SIMD program and never skips code, not even an `if` or a loop no lane enters; a loop
+// runs until its last lane is done. Measured on Mesa 22.3 (docs/performance.md), that made three choices:
+// - One flat loop in which every lane does one box step (a 4-wide node) and one triangle test per iteration:
+//   a node unit and a triangle unit. When the node unit reaches a leaf it hands it to the triangle unit as soon
+//   as that is free and goes on with the next stack entry; the closest hit so far bounds both (Aila & Laine's
+//   speculative traversal, for lanes that cannot skip). Nested while-while loops cost an empty pass each.
+// - The stack in registers (16 entries, shifted by selects): an indexed private array becomes scratch memory
+//   that llvmpipe reads and writes with a loop over the lanes, which made the stack the walk's largest cost.
+//   A walk that outgrows 16 entries starts over in traceRayDeep (the stack in memory); never dropped.
+// - Near and far planes picked by the ray's direction sign when the planes are fetched: no min/max per axis.
+// Leaves are stack entries tagged with the high bit and their size; nearer children come first. With VKMC_BVH2
+// the binary layout is walked instead (kept for side-by-side benchmarks). llvmpipe also has a hang guard that ends
+// shader loops after 65535 iterations (LP_MAX_TGSI_LOOP_ITERATIONS) without any error; a walk of 400k leaves
+// measured complete, but a walk that did not end on its own must never pass for a hit or a miss: `complete`
+// says whether it did.
 #define TRAVERSAL_STACK_SIZE 96
 const uint kLeafTag = 0x80000000u;
 const uint kNoEntry = 0xffffffffu;
 
 uint leafEntry(uint first, uint count) { return kLeafTag | ((count - 1u) << 27u) | first; }
+uint leafFirst(uint entry) { return entry & 0x07ffffffu; }
+uint leafEnd(uint entry) { return leafFirst(entry) + ((entry >> 27u) & 0xfu) + 1u; }
+bool isLeaf(uint entry) { return entry != kNoEntry && (entry & kLeafTag) != 0u; }
 
 // The triangles of a leaf entry against the ray; true when one of them is the new closest hit (in best).
 bool intersectLeaf(uint entry, RayShear shear, inout vec4 best) {
-  uint first = entry & 0x07ffffffu;
-  uint last = first + ((entry >> 27u) & 0xfu) + 1u;
   bool found = false;
-  for (uint tri = first; tri < last; ++tri) {
+  for (uint tri = leafFirst(entry); tri < leafEnd(entry); ++tri) {
     vec3 v0, v1, v2;
     triangleVertices(tri, v0, v1, v2);
     vec3 h = intersectTriangle(shear, v0, v1, v2, best.x);
@@ -43,53 +52,168 @@ void orderPair(inout float da, inout uint ea, inout float db, inout uint eb) {
   eb = swap ? e : eb;
 }
 
+// min/max as compare and select: GLSL's carry NaN handling that costs llvmpipe two more instructions each.
+vec4 maxSel(vec4 a, vec4 b) { return mix(b, a, greaterThan(a, b)); }
+vec4 minSel(vec4 a, vec4 b) { return mix(b, a, lessThan(a, b)); }
+
+// The 4 child boxes of an inner node against the ray: returns how many are hit, their entries near to far
+// first in e.
+uint hitChildren(uint node, vec3 invDir, vec3 os, ivec3 nearOffset, float tMax, out uvec4 e) {
+  int base = int(7u * node);
+  vec4 nx = texelFetch(bvhNodes, base + nearOffset.x) * invDir.x - os.x;
+  vec4 fx = texelFetch(bvhNodes, base + 1 - nearOffset.x) * invDir.x - os.x;
+  vec4 ny = texelFetch(bvhNodes, base + 2 + nearOffset.y) * invDir.y - os.y;
+  vec4 fy = texelFetch(bvhNodes, base + 3 - nearOffset.y) * invDir.y - os.y;
+  vec4 nz = texelFetch(bvhNodes, base + 4 + nearOffset.z) * invDir.z - os.z;
+  vec4 fz = texelFetch(bvhNodes, base + 5 - nearOffset.z) * invDir.z - os.z;
+  e = floatBitsToUint(texelFetch(bvhNodes, base + 6));
+  vec4 tNear = maxSel(maxSel(nx, ny), maxSel(nz, vec4(0.0)));
+  // The far distance is widened by 2 gamma(3) (Ize 2013) so rounding never culls a box a ray grazes.
+  vec4 tFar = minSel(minSel(minSel(fx, fy), fz) * kSlabWiden, vec4(tMax));
+  bvec4 hit = bvec4(uvec4(lessThanEqual(tNear, tFar)) & uvec4(notEqual(e, uvec4(kEmptySlot))));
+  vec4 d = mix(vec4(3.0e38), tNear, hit);
+  orderPair(d.x, e.x, d.y, e.y);
+  orderPair(d.z, e.z, d.w, e.w);
+  orderPair(d.x, e.x, d.z, e.z);
+  orderPair(d.y, e.y, d.w, e.w);
+  orderPair(d.y, e.y, d.z, e.z);
+  return uint(hit.x) + uint(hit.y) + uint(hit.z) + uint(hit.w);
+}
+
+// The register stack: 16 entries in four uvec4 (top = s0.x, empty slots = kNoEntry). `shift` entries of (a, b, c)
+// are pushed (1..3, a on top), or -shift entries popped (1..2), or nothing (0). Pushing past the bottom sets
+// overflow; the walk then restarts with traceRayDeep.
+struct RegisterStack {
+  uvec4 s0, s1, s2, s3;
+};
+
+void shiftStack(inout RegisterStack st, int shift, uint a, uint b, uint c, inout bool overflow) {
+  uvec4 s0 = st.s0, s1 = st.s1, s2 = st.s2, s3 = st.s3;
+  overflow = overflow || (shift >= 1 && s3.w != kNoEntry) || (shift >= 2 && s3.z != kNoEntry) ||
+             (shift >= 3 && s3.y != kNoEntry);
+  uvec4 p1_0 = uvec4(a, s0.xyz), p1_1 = uvec4(s0.w, s1.xyz), p1_2 = uvec4(s1.w, s2.xyz), p1_3 = uvec4(s2.w, s3.xyz);
+  uvec4 p2_0 = uvec4(a, b, s0.xy), p2_1 = uvec4(s0.zw, s1.xy), p2_2 = uvec4(s1.zw, s2.xy), p2_3 = uvec4(s2.zw, s3.xy);
+  uvec4 p3_0 = uvec4(a, b, c, s0.x), p3_1 = uvec4(s0.yzw, s1.x), p3_2 = uvec4(s1.yzw, s2.x), p3_3 = uvec4(s2.yzw, s3.x);
+  uvec4 q1_0 = uvec4(s0.yzw, s1.x), q1_1 = uvec4(s1.yzw, s2.x), q1_2 = uvec4(s2.yzw, s3.x), q1_3 = uvec4(s3.yzw, kNoEntry);
+  uvec4 q2_0 = uvec4(s0.zw, s1.xy), q2_1 = uvec4(s1.zw, s2.xy), q2_2 = uvec4(s2.zw, s3.xy), q2_3 = uvec4(s3.zw, uvec2(kNoEntry));
+  st.s0 = shift == 1 ? p1_0 : shift == 2 ? p2_0 : shift == 3 ? p3_0 : shift == -1 ? q1_0 : shift == -2 ? q2_0 : s0;
+  st.s1 = shift == 1 ? p1_1 : shift == 2 ? p2_1 : shift == 3 ? p3_1 : shift == -1 ? q1_1 : shift == -2 ? q2_1 : s1;
+  st.s2 = shift == 1 ? p1_2 : shift == 2 ? p2_2 : shift == 3 ? p3_2 : shift == -1 ? q1_2 : shift == -2 ? q2_2 : s2;
+  st.s3 = shift == 1 ? p1_3 : shift == 2 ? p2_3 : shift == 3 ? p3_3 : shift == -1 ? q1_3 : shift == -2 ? q2_3 : s3;
+}
+
+struct Walk {
+  RegisterStack stack;
+  uint node;             // the node unit's next entry: inner node, leaf waiting for the triangle unit, or none
+  uint triNext, triEnd;  // the triangle unit's leaf: triangles [triNext, triEnd) still to test
+  bool overflow;
+};
+
+bool walking(Walk w) { return w.node != kNoEntry || w.triNext < w.triEnd; }
+
+// The triangle unit: one triangle of its leaf against the ray. An any-hit query ends at its first hit.
+void triangleStep(inout Walk w, RayShear shear, bool anyHit, inout vec4 best) {
+  if (w.triNext < w.triEnd) {
+    vec3 v0, v1, v2;
+    triangleVertices(w.triNext, v0, v1, v2);
+    vec3 h = intersectTriangle(shear, v0, v1, v2, best.x);
+    if (h.x > 0.0) {
+      best = vec4(h, uintBitsToFloat(w.triNext));
+      if (anyHit) {
+        w.node = kNoEntry;
+        w.triEnd = w.triNext;
+      }
+    }
+    ++w.triNext;
+  }
+}
+
+// The node unit: the 4 child boxes of an inner node against the ray (hit children sorted near to far, the
+// nearest next, the others pushed), then the handoff of a leaf that comes up next to a free triangle unit.
+void nodeStep(inout Walk w, vec3 invDir, vec3 os, ivec3 nearOffset, float tMax) {
+  int shift = 0;
+  uint pushA = kNoEntry, pushB = kNoEntry, pushC = kNoEntry;
+  uint next0 = w.node, next1 = w.stack.s0.x;  // the entries up next, for the handoff
+  if (w.node != kNoEntry && (w.node & kLeafTag) == 0u) {
+    uvec4 e;
+    uint n = hitChildren(w.node, invDir, os, nearOffset, tMax, e);
+    shift = int(n) - 1;
+    next0 = n > 0u ? e.x : w.stack.s0.x;
+    next1 = n > 1u ? e.y : n == 1u ? w.stack.s0.x : w.stack.s0.y;
+    pushA = e.y;
+    pushB = e.z;
+    pushC = e.w;
+  }
+  if (isLeaf(next0) && w.triNext >= w.triEnd) {
+    w.triNext = leafFirst(next0);
+    w.triEnd = leafEnd(next0);
+    next0 = next1;
+    shift -= 1;
+    pushA = pushB;
+    pushB = pushC;
+  }
+  w.node = next0;
+  shiftStack(w.stack, shift, pushA, pushB, pushC, w.overflow);
+}
+
+// The same walk with its stack in a private array (96 entries; scratch memory on llvmpipe, a loop over the lanes
+// per access): the fallback for the rare walk that outgrows the register stack. One flat loop, so lanes that do
+// not need it pay a single pass.
+vec4 traceRayDeep(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete) {
+  RayShear shear = makeRayShear(origin, dir);
+  vec3 invDir = safeInverse(dir);
+  vec3 os = origin * invDir;
+  ivec3 nearOffset = ivec3(lessThan(invDir, vec3(0.0)));
+  vec4 best = vec4(tMax, 0.0, 0.0, uintBitsToFloat(kMissPrimitive));
+  uint stack[TRAVERSAL_STACK_SIZE];
+  uint sp = 0u;
+  Walk w;
+  w.node = 0u;
+  w.triNext = w.triEnd = 0u;
+  w.overflow = false;
+  while (walking(w) && !w.overflow) {
+    triangleStep(w, shear, anyHit, best);
+    bool pop = w.node == kNoEntry;
+    if (isLeaf(w.node)) {
+      if (w.triNext >= w.triEnd) {
+        w.triNext = leafFirst(w.node);
+        w.triEnd = leafEnd(w.node);
+        pop = true;
+      }
+    } else if (w.node != kNoEntry) {
+      uvec4 e;
+      uint n = hitChildren(w.node, invDir, os, nearOffset, best.x, e);
+      w.overflow = sp + n > TRAVERSAL_STACK_SIZE;  // reported as an incomplete walk, never silently wrong
+      if (n > 3u) stack[sp++] = e.w;
+      if (n > 2u) stack[sp++] = e.z;
+      if (n > 1u) stack[sp++] = e.y;
+      w.node = e.x;
+      pop = n == 0u;
+    }
+    if (pop) w.node = sp > 0u ? stack[--sp] : kNoEntry;
+  }
+  complete = !w.overflow;
+  return best;
+}
+
 // Returns vec4(t, b1, b2, triangle bits); triangle = kMissPrimitive when nothing is hit in (0, tMax).
 vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete) {
   RayShear shear = makeRayShear(origin, dir);
   vec3 invDir = safeInverse(dir);
   vec3 os = origin * invDir;
+  ivec3 nearOffset = ivec3(lessThan(invDir, vec3(0.0)));  // 1 where the far plane is the box's low one
   vec4 best = vec4(tMax, 0.0, 0.0, uintBitsToFloat(kMissPrimitive));
-  uint stack[TRAVERSAL_STACK_SIZE];
-  uint sp = 0u;
-  uint current = 0u;
-  bool overflow = false;
-  complete = true;
-  while (current != kNoEntry) {
-    while (current != kNoEntry && (current & kLeafTag) == 0u) {
-      int base = int(7u * current);
-      vec4 lx = texelFetch(bvhNodes, base) * invDir.x - os.x, hx = texelFetch(bvhNodes, base + 1) * invDir.x - os.x;
-      vec4 ly = texelFetch(bvhNodes, base + 2) * invDir.y - os.y, hy = texelFetch(bvhNodes, base + 3) * invDir.y - os.y;
-      vec4 lz = texelFetch(bvhNodes, base + 4) * invDir.z - os.z, hz = texelFetch(bvhNodes, base + 5) * invDir.z - os.z;
-      uvec4 e = floatBitsToUint(texelFetch(bvhNodes, base + 6));
-      vec4 tNear = max(max(min(lx, hx), min(ly, hy)), max(min(lz, hz), vec4(0.0)));
-      // The far distance is widened by 2 gamma(3) (Ize 2013) so rounding never culls a box a ray grazes.
-      vec4 tFar = min(min(max(lx, hx), max(ly, hy)) * kSlabWiden, min(max(lz, hz) * kSlabWiden, vec4(best.x)));
-      bvec4 hit = bvec4(uvec4(lessThanEqual(tNear, tFar)) & uvec4(notEqual(e, uvec4(kEmptySlot))));
-      vec4 d = mix(vec4(3.0e38), tNear, hit);
-      orderPair(d.x, e.x, d.y, e.y);
-      orderPair(d.z, e.z, d.w, e.w);
-      orderPair(d.x, e.x, d.z, e.z);
-      orderPair(d.y, e.y, d.w, e.w);
-      orderPair(d.y, e.y, d.z, e.z);
-      uint n = uint(hit.x) + uint(hit.y) + uint(hit.z) + uint(hit.w);
-      if (n == 0u) {
-        current = sp > 0u ? stack[--sp] : kNoEntry;
-      } else if (sp + n > TRAVERSAL_STACK_SIZE) {
-        overflow = true;  // reported as an incomplete walk, never silently wrong
-        current = kNoEntry;
-      } else {
-        if (n > 3u) stack[sp++] = e.w;
-        if (n > 2u) stack[sp++] = e.z;
-        if (n > 1u) stack[sp++] = e.y;
-        current = e.x;
-      }
-    }
-    while (current != kNoEntry && (current & kLeafTag) != 0u) {
-      if (intersectLeaf(current, shear, best) && anyHit) return best;
-      current = sp > 0u ? stack[--sp] : kNoEntry;
-    }
+  Walk w;
+  w.stack.s0 = w.stack.s1 = w.stack.s2 = w.stack.s3 = uvec4(kNoEntry);
+  w.node = 0u;
+  w.triNext = w.triEnd = 0u;
+  w.overflow = false;
+  while (walking(w) && !w.overflow) {
+    triangleStep(w, shear, anyHit, best);
+    nodeStep(w, invDir, os, nearOffset, best.x);
   }
-  complete = !overflow && current == kNoEntry;
+  complete = !walking(w);
+  if (w.overflow) best = traceRayDeep(origin, dir, tMax, anyHit, complete);
   return best;
 }
 #else
