@@ -79,7 +79,7 @@ TEST(GpuTraversal, ClosestAndAnyHitAgreeWithBruteForce) {
 // 400k coincident triangles, one per leaf, missing them all, visits every one of the 400k leaves: on llvmpipe
 // (Mesa 22.3) that walk completes, and must come back as a miss, not as a cut or a false hit. Every child box
 // of that pile is hit, so the walk pushes 3 entries per level of the 4-wide tree (~27 for 400k leaves): more than
-// the 16-entry register stack holds, so this also checks the walk that starts over with its stack in memory.
+// the 16-entry register stack holds, so this also checks the deep pass the trace kernel defers such walks to.
 TEST(GpuTraversal, AWalkOfHundredsOfThousandsOfLeavesCompletes) {
   vk::Context ctx;
   for (uint32_t count : {1000u, 400000u}) {
@@ -104,11 +104,18 @@ TEST(GpuTraversal, AWalkOfHundredsOfThousandsOfLeavesCompletes) {
     // Inside every leaf's box (the unit square), outside every triangle (x + y > 1).
     std::vector<gpu::TestRay> rays(64, gpu::TestRay{glm::vec4(0.9f, 0.9f, 1.0f, 1e30f), glm::vec4(0, 0, -1, 0)});
     std::vector<glm::vec4> hits = tracer.trace(rays, false);
-    EXPECT_FALSE(std::isnan(hits[0].x)) << count << " leaves: the walk was cut short";
-    EXPECT_EQ(glm::floatBitsToUint(hits[0].w), gpu::kMissPrimitive) << count << " leaves";
+    if (count == 400000u) {
+      EXPECT_EQ(tracer.deepWalks(), rays.size()) << "each walk should have run in the deep pass";
+    }
+    for (const glm::vec4& h : hits) {
+      EXPECT_FALSE(std::isnan(h.x)) << count << " leaves: the walk was cut short";
+      EXPECT_EQ(glm::floatBitsToUint(h.w), gpu::kMissPrimitive) << count << " leaves";
+    }
     // And the same pile hit inside a triangle: the closest hit is found.
     rays.assign(64, gpu::TestRay{glm::vec4(0.2f, 0.2f, 1.0f, 1e30f), glm::vec4(0, 0, -1, 0)});
     hits = tracer.trace(rays, false);
-    EXPECT_FLOAT_EQ(hits[0].x, 1.0f) << count << " leaves";
+    for (const glm::vec4& h : hits) EXPECT_FLOAT_EQ(h.x, 1.0f) << count << " leaves";
+    // Any-hit through the same pile: its deep pass too.
+    EXPECT_NE(glm::floatBitsToUint(tracer.trace(rays, true)[63].w), gpu::kMissPrimitive) << count << " leaves";
   }
 }

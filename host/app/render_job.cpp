@@ -179,7 +179,8 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["gpu_seconds"] = s.gpuSeconds;
   j["stage_gpu_seconds"] = s.stageSeconds;
   j["rays"] = s.rays();
-  j["ray_counts"] = {{"camera", s.cameraRays}, {"extension", s.extensionRays}, {"shadow", s.shadowRays}};
+  j["ray_counts"] = {{"camera", s.cameraRays}, {"extension", s.extensionRays}, {"shadow", s.shadowRays},
+                     {"deep_walks", s.deepWalks}};  // rays whose walk outgrew the register stack (deep pass)
   j["mrays_per_second"] = s.seconds > 0.0 ? static_cast<double>(s.rays()) / s.seconds * 1e-6 : 0.0;
   j["nonfinite_samples"] = r.film.totalNonfinite();
   j["nonfinite_by_stage"] = {{"shade_emission", s.nonfiniteEmission},
@@ -245,7 +246,7 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 "image       %ux%u, %u spp, camera: %s\n"
                 "estimator   %s\n"
                 "time        %.3f s render (GPU %.3f s), set-up %.3f s (load %.3f, BVH %.3f, upload %.3f, pipelines %.3f)\n"
-                "rays        %llu (camera %llu, extension %llu, shadow %llu): %.2f Mrays/s\n"
+                "rays        %llu (camera %llu, extension %llu, shadow %llu; %llu deep walks): %.2f Mrays/s\n"
                 "mean        %.6g %.6g %.6g\n"
                 "variance    %.3g %.3g %.3g (image mean of the per-pixel variance of the mean)\n"
                 "non-finite  %llu samples excluded\n",
@@ -254,7 +255,7 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 o.estimator.summary().c_str(),
                 s.seconds, s.gpuSeconds, r.setup.total(), r.setup.load, r.setup.bvh, r.setup.upload, r.setup.pipelines,
                 (unsigned long long)s.rays(), (unsigned long long)s.cameraRays, (unsigned long long)s.extensionRays,
-                (unsigned long long)s.shadowRays, s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z,
+                (unsigned long long)s.shadowRays, (unsigned long long)s.deepWalks, s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z,
                 var.x, var.y, var.z, (unsigned long long)r.film.totalNonfinite());
   std::string text = buf;
   if (r.error)

@@ -5,6 +5,7 @@
 #include <array>
 #include <bit>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <limits>
 
@@ -184,6 +185,45 @@ void writeChild(BvhGpuNode& gpu, int c, const Aabb& box, uint32_t ref, uint32_t 
   gpu.texels[2 * c + 1] = glm::vec4(box.max, asFloat(count));
 }
 
+// The grid of a wide node and its children's boxes in 8-bit steps, rounded outwards (in double, where a float's
+// difference and a power-of-two step are exact). Entries are left empty.
+template <typename Child>
+BvhWideNode quantizeBoxes(const std::vector<Child>& children) {
+  BvhWideNode out{};
+  Aabb all;
+  for (const Child& c : children) all.grow(c.box);
+  uint32_t exponents = 0;
+  std::array<double, 3> origin{}, step{};
+  for (int axis = 0; axis < 3; ++axis) {
+    origin[axis] = all.min[axis];
+    // The smallest power of two with 255 steps >= the extent, within the normal floats.
+    int e = 0;
+    std::frexp((double(all.max[axis]) - double(all.min[axis])) / 255.0, &e);
+    int biased = std::clamp(e + 127, 1, 254);
+    step[axis] = std::ldexp(1.0, biased - 127);
+    exponents |= uint32_t(biased) << (8 * axis);
+    out.texels[0][axis] = asUint(all.min[axis]);
+  }
+  out.texels[0].w = exponents;
+  out.texels[1] = glm::uvec4(0xffffffffu, 0u, 0xffffffffu, 0u);  // empty slots: lo = 255 > hi = 0
+  out.texels[2] = glm::uvec4(0xffffffffu, 0u, 0u, 0u);
+  out.texels[3] = glm::uvec4(kBvhEmptySlot);
+  for (size_t i = 0; i < children.size(); ++i)
+    for (int axis = 0; axis < 3; ++axis) {
+      double lo = std::floor((double(children[i].box.min[axis]) - origin[axis]) / step[axis]);
+      double hi = std::ceil((double(children[i].box.max[axis]) - origin[axis]) / step[axis]);
+      uint32_t qlo = uint32_t(std::clamp(lo, 0.0, 255.0)), qhi = uint32_t(std::clamp(hi, 0.0, 255.0));
+      if (origin[axis] + qlo * step[axis] > children[i].box.min[axis] ||
+          origin[axis] + qhi * step[axis] < children[i].box.max[axis])
+        throw Error("internal error: a quantized BVH box does not contain its child");
+      uint32_t& loWord = axis < 2 ? out.texels[1][2 * axis] : out.texels[2][0];
+      uint32_t& hiWord = axis < 2 ? out.texels[1][2 * axis + 1] : out.texels[2][1];
+      loWord = (loWord & ~(0xffu << (8 * i))) | (qlo << (8 * i));
+      hiWord = (hiWord & ~(0xffu << (8 * i))) | (qhi << (8 * i));
+    }
+  return out;
+}
+
 // Collapses the binary GPU layout into 4-wide nodes: a node's children are its binary children, the inner one
 // with the largest surface opened in turn until there are four (Wald et al. 2008's collapse).
 std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary) {
@@ -215,18 +255,9 @@ std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary) {
       children.erase(children.begin() + open);
       childrenOf(inner, children);
     }
-    BvhWideNode out;
-    for (int axis = 0; axis < 3; ++axis) {
-      out.texels[2 * axis] = glm::vec4(std::numeric_limits<float>::max());
-      out.texels[2 * axis + 1] = glm::vec4(-std::numeric_limits<float>::max());
-    }
-    out.texels[6] = glm::vec4(asFloat(kBvhEmptySlot));
+    BvhWideNode out = quantizeBoxes(children);
     for (size_t i = 0; i < children.size(); ++i) {
       const Child& c = children[i];
-      for (int axis = 0; axis < 3; ++axis) {
-        out.texels[2 * axis][i] = c.box.min[axis];
-        out.texels[2 * axis + 1][i] = c.box.max[axis];
-      }
       uint32_t entry;
       if (c.count > 0) {
         if (c.count > 8 || c.ref >= (1u << 27)) throw Error("BVH leaf of " + std::to_string(c.count) + " triangles at " +
@@ -237,7 +268,7 @@ std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary) {
         wide.emplace_back();
         tasks.push_back({c.ref, entry});
       }
-      out.texels[6][i] = asFloat(entry);
+      out.texels[3][i] = entry;
     }
     wide[w] = out;
   }
@@ -336,6 +367,20 @@ HostHit traceHost(const Bvh& bvh, std::span<const glm::vec3> pos, glm::vec3 orig
     }
   }
   return best;
+}
+
+Aabb wideChildBox(const BvhWideNode& node, int i) {
+  Aabb box;
+  if (node.texels[3][i] == kBvhEmptySlot) return box;
+  for (int axis = 0; axis < 3; ++axis) {
+    double step = std::ldexp(1.0, int((node.texels[0].w >> (8 * axis)) & 0xffu) - 127);
+    double origin = asFloat(node.texels[0][axis]);
+    uint32_t lo = axis < 2 ? node.texels[1][2 * axis] : node.texels[2][0];
+    uint32_t hi = axis < 2 ? node.texels[1][2 * axis + 1] : node.texels[2][1];
+    box.min[axis] = float(origin + ((lo >> (8 * i)) & 0xffu) * step);
+    box.max[axis] = float(origin + ((hi >> (8 * i)) & 0xffu) * step);
+  }
+  return box;
 }
 
 }  // namespace vkmc

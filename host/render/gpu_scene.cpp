@@ -27,7 +27,7 @@ vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, VkF
   if (texels > ctx.properties().limits.maxTexelBufferElements)
     throw Error(std::string("scene too big for the device: ") + name + " needs " + std::to_string(texels) +
                 " texels, the device allows " + std::to_string(ctx.properties().limits.maxTexelBufferElements));
-  vk::Buffer b(ctx, std::max<size_t>(bytes, 16), VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+  vk::Buffer b(ctx, std::max<size_t>(bytes, 16), VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   b.upload(data, bytes);
   b.createView(format);
   return b;
@@ -96,10 +96,10 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
 
   triangles_ = makeTexelBuffer(ctx, triTexels.data(), triTexels.size() * 16, VK_FORMAT_R32G32B32A32_SFLOAT, "triangles");
   triangleInfo_ = makeTexelBuffer(ctx, infoTexels.data(), infoTexels.size() * 16, VK_FORMAT_R32G32B32A32_UINT, "triangle info");
-  bvhNodes_ = makeTexelBuffer(ctx, bvh.wideNodes.data(), bvh.wideNodes.size() * sizeof(BvhWideNode), VK_FORMAT_R32G32B32A32_SFLOAT,
+  bvhNodes_ = makeTexelBuffer(ctx, bvh.wideNodes.data(), bvh.wideNodes.size() * sizeof(BvhWideNode), VK_FORMAT_R32G32B32A32_UINT,
                               "BVH nodes");
   if (keepBinaryBvh)
-    binaryBvhNodes_ = makeTexelBuffer(ctx, bvh.nodes.data(), bvh.nodes.size() * sizeof(BvhGpuNode), VK_FORMAT_R32G32B32A32_SFLOAT,
+    binaryBvhNodes_ = makeTexelBuffer(ctx, bvh.nodes.data(), bvh.nodes.size() * sizeof(BvhGpuNode), VK_FORMAT_R32G32B32A32_UINT,
                                       "binary BVH nodes");
   lights_ = makeTexelBuffer(ctx, lightTexels.data(), lightTexels.size() * 16, VK_FORMAT_R32G32B32A32_UINT, "lights");
   materials_ = vk::Buffer(ctx, mats.size() * sizeof(gpu::Material), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);

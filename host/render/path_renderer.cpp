@@ -16,13 +16,16 @@
 #include "error.h"
 #include "spirv/accumulate_spv.h"
 #include "spirv/camera_rays_spv.h"
+#include "spirv/intersect_deep_spv.h"
 #include "spirv/intersect_spv.h"
 #include "spirv/megakernel_spv.h"
 #include "spirv/prepare_bounce_spv.h"
 #include "spirv/prepare_shadow_spv.h"
 #include "spirv/shade_atomic_spv.h"
 #include "spirv/shade_spv.h"
+#include "spirv/shadow_atomic_deep_spv.h"
 #include "spirv/shadow_atomic_spv.h"
+#include "spirv/shadow_deep_spv.h"
 #include "spirv/shadow_spv.h"
 
 namespace vkmc {
@@ -36,7 +39,8 @@ constexpr uint32_t kSamplesPerBatch = 64;  // samples in a float batch sum befor
 }  // namespace
 
 struct PathRenderer::Kernels {
-  std::unique_ptr<vk::Kernel> camera, prepareBounce, intersect, shade, prepareShadow, shadow, accumulate, megakernel;
+  std::unique_ptr<vk::Kernel> camera, prepareBounce, intersect, intersectDeep, shade, prepareShadow, shadow, shadowDeep,
+      accumulate, megakernel;
 };
 
 const char* toString(Integrator i) { return i == Integrator::Megakernel ? "megakernel" : "wavefront"; }
@@ -92,7 +96,10 @@ PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const Render
   queues_ = storage(megakernel ? 16 : uint64_t(pool_) * 8);
   // A scene without emitters has no shadow stage: its queue is not allocated (a placeholder is bound).
   hasShadowStage_ = settings.features.emitters() && est.nee && !megakernel;
-  shadowQueue_ = storage(hasShadowStage_ ? uint64_t(pool_) * est.lightSamples * sizeof(gpu::ShadowRay) : 16);
+  const uint64_t shadowSlots = hasShadowStage_ ? uint64_t(pool_) * est.lightSamples : 0;
+  shadowQueue_ = storage(hasShadowStage_ ? shadowSlots * sizeof(gpu::ShadowRay) : 16);
+  // Room for every item of the larger trace stage, so a deferred walk is never turned away in practice.
+  deepWalks_ = storage(megakernel ? 16 : std::max<uint64_t>(pool_, shadowSlots) * sizeof(uint32_t));
   control_ = storage(sizeof(gpu::Control), vk::MemoryKind::HostVisible, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
   film_ = storage(filmBytes, vk::MemoryKind::HostVisible);
   pixelEstimate_ = storage(pixels * sizeof(float), vk::MemoryKind::HostVisible);
@@ -110,6 +117,7 @@ PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const Render
   layout_->bindStorage(BINDING_HITS, hits_);
   layout_->bindStorage(BINDING_RAY_QUEUES, queues_);
   layout_->bindStorage(BINDING_SHADOW_QUEUE, shadowQueue_);
+  layout_->bindStorage(BINDING_DEEP_WALKS, deepWalks_);
   layout_->bindStorage(BINDING_CONTROL, control_);
   layout_->bindStorage(BINDING_FILM, film_);
   layout_->bindStorage(BINDING_PIXEL_ESTIMATE, pixelEstimate_);
@@ -131,10 +139,14 @@ PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const Render
   kernels_->camera = make("camera_rays", kSpirv_camera_rays);
   kernels_->prepareBounce = make("prepare_bounce", kSpirv_prepare_bounce);
   kernels_->intersect = make("intersect", kSpirv_intersect);
+  kernels_->intersectDeep = make("intersect_deep", kSpirv_intersect_deep);
   kernels_->shade = est.splitsPaths() ? make("shade", kSpirv_shade_atomic) : make("shade", kSpirv_shade);
   if (hasShadowStage_) kernels_->prepareShadow = make("prepare_shadow", kSpirv_prepare_shadow);
   if (hasShadowStage_)
     kernels_->shadow = est.needsFloatAtomics() ? make("shadow", kSpirv_shadow_atomic) : make("shadow", kSpirv_shadow);
+  if (hasShadowStage_)
+    kernels_->shadowDeep = est.needsFloatAtomics() ? make("shadow_deep", kSpirv_shadow_atomic_deep)
+                                                   : make("shadow_deep", kSpirv_shadow_deep);
   }
   kernels_->accumulate = make("accumulate", kSpirv_accumulate);
   timer_ = std::make_unique<vk::GpuTimer>(ctx, 2 * (8 + 5 * kFirstChunkBounces));
@@ -147,8 +159,9 @@ PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const Render
   pc.height = settings.height;
   pc.queueCapacity = pool_;
   ctx.runCommands([&](VkCommandBuffer cmd) {
-    for (const auto* k : {&kernels_->camera, &kernels_->prepareBounce, &kernels_->intersect, &kernels_->shade,
-                          &kernels_->prepareShadow, &kernels_->shadow, &kernels_->accumulate, &kernels_->megakernel})
+    for (const auto* k : {&kernels_->camera, &kernels_->prepareBounce, &kernels_->intersect, &kernels_->intersectDeep,
+                          &kernels_->shade, &kernels_->prepareShadow, &kernels_->shadow, &kernels_->shadowDeep,
+                          &kernels_->accumulate, &kernels_->megakernel})
       if (*k) vk::dispatch(cmd, *layout_, **k, &pc, sizeof(pc), 1);
   });
   pipelineSeconds_ = since(start);
@@ -232,6 +245,8 @@ void PathRenderer::collectCounters(RenderStats& stats) {
   stats.nonfiniteLightSamples += control->nonfinite.y;
   stats.nonfiniteThroughput += control->nonfinite.z;
   stats.traversalsCut += control->nonfinite.w;
+  stats.deepWalks += control->deepTotals.x;
+  stats.deepWalksTraced += control->deepTotals.y;
 }
 
 // Megakernel: one dispatch follows every path of the pass to its end, then accumulate; one submit.
@@ -274,13 +289,18 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
       pc.bounce = b;
       // The chunk-end prepare of the previous chunk already prepared this bounce.
       if (first || b != bounce) vk::dispatch(cmd, *layout_, *kernels_->prepareBounce, &pc, sizeof(pc), 1, timer);
+      // A trace stage's time includes its deep pass (the walks it deferred).
       if (timer) timer->begin(cmd, b == 0 ? "intersect_primary" : "intersect");
       vk::dispatchIndirect(cmd, *layout_, *kernels_->intersect, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs));
+      vk::dispatchIndirect(cmd, *layout_, *kernels_->intersectDeep, &pc, sizeof(pc), control_, offsetof(gpu::Control, deepArgs));
       if (timer) timer->end(cmd);
       vk::dispatchIndirect(cmd, *layout_, *kernels_->shade, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs), timer);
       if (hasShadowStage_) {
         vk::dispatch(cmd, *layout_, *kernels_->prepareShadow, &pc, sizeof(pc), 1, timer);
-        vk::dispatchIndirect(cmd, *layout_, *kernels_->shadow, &pc, sizeof(pc), control_, offsetof(gpu::Control, shadowArgs), timer);
+        if (timer) timer->begin(cmd, "shadow");
+        vk::dispatchIndirect(cmd, *layout_, *kernels_->shadow, &pc, sizeof(pc), control_, offsetof(gpu::Control, shadowArgs));
+        vk::dispatchIndirect(cmd, *layout_, *kernels_->shadowDeep, &pc, sizeof(pc), control_, offsetof(gpu::Control, deepArgs));
+        if (timer) timer->end(cmd);
       }
     }
     bounce += chunk;

@@ -54,6 +54,8 @@ struct RenderStats {
   uint32_t samplesPerPixel = 0;  // reached (equals spp unless a time budget ended the render)
   uint64_t nonfiniteEmission = 0, nonfiniteLightSamples = 0, nonfiniteThroughput = 0;  // by producing stage
   uint64_t traversalsCut = 0;  // rays whose BVH walk the device's loop limit ended (their samples excluded)
+  uint64_t deepWalks = 0;      // walks that outgrew the register stack, deferred to a trace stage's deep pass
+  uint64_t deepWalksTraced = 0;  // of those, walks the deep passes traced (all of them, unless a pass was skipped)
   // Queue occupancy: paths queued for intersection and shadow rays queued, per bounce (the last entry sums
   // deeper bounces), over the whole render.
   std::vector<uint64_t> pathsByBounce, shadowRaysByBounce;
@@ -98,7 +100,7 @@ class PathRenderer {
   std::unique_ptr<vk::KernelLayout> layout_;
   std::unique_ptr<Kernels> kernels_;
   std::unique_ptr<vk::GpuTimer> timer_;
-  vk::Buffer paths_, hits_, queues_, shadowQueue_, control_, film_, pixelEstimate_, rouletteTable_, depthStats_, queueStats_;
+  vk::Buffer paths_, hits_, queues_, shadowQueue_, deepWalks_, control_, film_, pixelEstimate_, rouletteTable_, depthStats_, queueStats_;
   std::vector<PilotPath> pilot_;
   void collectPilot(uint32_t pathCount);
   double pipelineSeconds_ = 0.0;

@@ -4,7 +4,9 @@
 #include <cstring>
 #include <map>
 
+#include "error.h"
 #include "spirv/trace_rays_bvh2_spv.h"
+#include "spirv/trace_rays_deep_spv.h"
 #include "spirv/trace_rays_spv.h"
 
 namespace vkmc {
@@ -14,14 +16,26 @@ RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh) : 
   scene.bindTo(*layout_, binaryBvh);
   // The kernel declares every binding of the shared set; those it never touches still need a buffer.
   dummy_ = vk::Buffer(ctx, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
-  for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_CONTROL, BINDING_FILM,
+  for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_FILM,
                      BINDING_PIXEL_ESTIMATE, BINDING_ROULETTE_TABLE, BINDING_DEPTH_STATS, BINDING_QUEUE_STATS})
     layout_->bindStorage(b, dummy_);
+  // The deep pass's dispatch arguments and counters (the trace kernels use nothing else of Control).
+  control_ = vk::Buffer(ctx, sizeof(gpu::Control), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                        vk::MemoryKind::HostVisible);
+  layout_->bindStorage(BINDING_CONTROL, control_);
   std::span<const uint32_t> spirv = binaryBvh ? std::span<const uint32_t>(kSpirv_trace_rays_bvh2) : std::span<const uint32_t>(kSpirv_trace_rays);
   closest_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest", spirv,
                                           std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 0}});
   any_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any", spirv,
                                       std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 1}});
+  // The binary walk keeps its stack in memory and never defers; the 4-wide one defers walks that outgrow its
+  // register stack to a second, indirect dispatch of the deep variant.
+  if (!binaryBvh) {
+    closestDeep_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest_deep", kSpirv_trace_rays_deep,
+                                                std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 0}});
+    anyDeep_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any_deep", kSpirv_trace_rays_deep,
+                                            std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 1}});
+  }
 }
 
 RayTracer::~RayTracer() = default;
@@ -33,14 +47,28 @@ std::vector<glm::vec4> RayTracer::trace(std::span<const gpu::TestRay> rays, bool
   if (n) std::memcpy(in.mapped(), rays.data(), n * sizeof(gpu::TestRay));
   layout_->bindStorage(BINDING_TEST_RAYS, in);
   layout_->bindStorage(BINDING_TEST_HITS, out);
+  vk::Buffer deep(ctx_, std::max<size_t>(n, 1) * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+  layout_->bindStorage(BINDING_DEEP_WALKS, deep);
+  auto* control = static_cast<gpu::Control*>(control_.mapped());
+  std::memset(control, 0, sizeof(gpu::Control));
+  control->deepArgs = glm::uvec4(0u, 1u, 1u, 0u);
   gpu::PushConstants pc{};
   pc.pathCount = static_cast<uint32_t>(n);
   vk::GpuTimer timer(ctx_, 2);
   ctx_.runCommands([&](VkCommandBuffer cmd) {
     timer.reset(cmd);
+    timer.begin(cmd, "trace");  // both passes
     vk::dispatch(cmd, *layout_, anyHit ? *any_ : *closest_, &pc, sizeof(pc),
-                 static_cast<uint32_t>((n + gpu::kWorkgroupSize - 1) / gpu::kWorkgroupSize), &timer);
+                 static_cast<uint32_t>((n + gpu::kWorkgroupSize - 1) / gpu::kWorkgroupSize));
+    if (closestDeep_)
+      vk::dispatchIndirect(cmd, *layout_, anyHit ? *anyDeep_ : *closestDeep_, &pc, sizeof(pc), control_,
+                           offsetof(gpu::Control, deepArgs));
+    timer.end(cmd);
   });
+  deepWalks_ = control->deepTotals.x;
+  if (control->deepTotals.y != control->deepTotals.x)
+    throw Error("internal error: " + std::to_string(control->deepTotals.x) + " walks deferred, " +
+                std::to_string(control->deepTotals.y) + " traced by the deep pass");
   std::map<std::string, double> seconds;
   timer.collect(seconds);
   if (gpuSeconds) *gpuSeconds = seconds.empty() ? 0.0 : seconds.begin()->second;

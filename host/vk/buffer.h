@@ -24,7 +24,7 @@ class Buffer {
   VkDeviceSize size() const { return size_; }
   void* mapped() const { return mapped_; }
   VkBufferView view() const { return view_; }
-  // Texel-buffer view of the whole buffer (uniform texel buffer usage required).
+  // Texel-buffer view of the whole buffer (storage texel buffer usage required).
   void createView(VkFormat format);
   // Copies host data in, through a staging buffer when the memory is not mappable.
   void upload(const void* data, VkDeviceSize bytes);

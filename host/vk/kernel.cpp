@@ -19,7 +19,7 @@ KernelLayout::KernelLayout(Context& ctx) : ctx_(ctx) {
   for (uint32_t b = 0; b < BINDING_COUNT; ++b) {
     VkDescriptorSetLayoutBinding lb{};
     lb.binding = b;
-    lb.descriptorType = isTexelBinding(b) ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    lb.descriptorType = isTexelBinding(b) ? VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     lb.descriptorCount = 1;
     lb.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
     bindings.push_back(lb);
@@ -37,7 +37,7 @@ KernelLayout::KernelLayout(Context& ctx) : ctx_(ctx) {
   pci.pPushConstantRanges = &range;
   check(vkCreatePipelineLayout(ctx.device(), &pci, nullptr, &pipelineLayout_), "vkCreatePipelineLayout");
 
-  std::array<VkDescriptorPoolSize, 2> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 4},
+  std::array<VkDescriptorPoolSize, 2> sizes{{{VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, 4},
                                              {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT}}};
   VkDescriptorPoolCreateInfo dpci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   dpci.maxSets = 1;
@@ -74,7 +74,7 @@ void KernelLayout::bindTexel(uint32_t binding, const Buffer& buffer) {
   w.dstSet = set_;
   w.dstBinding = binding;
   w.descriptorCount = 1;
-  w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+  w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
   w.pTexelBufferView = &view;
   vkUpdateDescriptorSets(ctx_.device(), 1, &w, 0, nullptr);
 }

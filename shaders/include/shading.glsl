@@ -24,7 +24,7 @@ SurfacePoint surfaceAt(uint tri, vec2 b12, vec3 wo) {
   s.ng = normalize(cross(v1 - v0, v2 - v0));
   s.frontFace = dot(s.ng, wo) > 0.0;
   if (!s.frontFace) s.ng = -s.ng;
-  uvec4 info = texelFetch(triangleInfo, int(tri));
+  uvec4 info = imageLoad(triangleInfo, int(tri));
   s.material = info.w;
   vec3 n = b.x * decodeOctahedral(unpackSnorm2x16(info.x)) + b.y * decodeOctahedral(unpackSnorm2x16(info.y)) +
            b.z * decodeOctahedral(unpackSnorm2x16(info.z));
@@ -82,12 +82,12 @@ float lightPdf(uint tri, float pmf, vec3 p, float dist2, float cosLight) {
 
 // Alias-table pick of one emissive triangle: x = triangle, y = pmf bits.
 uvec2 selectLight(float u) {
-  uint n = uint(textureSize(lights));
+  uint n = uint(imageSize(lights));
   float scaled = u * float(n);
   uint i = min(uint(scaled), n - 1u);
-  uvec4 e = texelFetch(lights, int(i));
+  uvec4 e = imageLoad(lights, int(i));
   uint pick = (scaled - float(i)) < uintBitsToFloat(e.x) ? i : e.y;
-  uvec4 chosen = pick == i ? e : texelFetch(lights, int(pick));
+  uvec4 chosen = pick == i ? e : imageLoad(lights, int(pick));
   return uvec2(chosen.z, chosen.w);
 }
 
@@ -129,7 +129,7 @@ bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo
   if (!(dist2 > 0.0)) return false;
   vec3 wi = toLight * inversesqrt(dist2);
   float cosLight = dot(nl, -wi);
-  Material lm = materials[texelFetch(triangleInfo, int(light.x)).w];
+  Material lm = materials[imageLoad(triangleInfo, int(light.x)).w];
   if (!emitsToward(lm, cosLight > 0.0)) return false;
   cosLight = abs(cosLight);
   if (cosLight <= 0.0 || dot(s.ng, wi) <= 0.0) return false;
@@ -165,7 +165,7 @@ vec3 emissionAt(PathState path, SurfacePoint s, Material m, uint tri, vec4 hit, 
     if (kMis == kMisNone) {
       weight = 0.0;  // light sampling alone accounts for direct light
     } else {
-      float pmf = texelFetch(triangles, int(3u * tri + 1u)).w;
+      float pmf = imageLoad(triangles, int(3u * tri + 1u)).w;
       float cosLight = max(dot(s.ng, wo), 1e-30);
       float pl = lightPdf(tri, pmf, path.origin.xyz, hit.x * hit.x, cosLight);
       weight = misWeight(path.direction.w, float(lightSamplesAt(path.info.z - 1u)) * pl);

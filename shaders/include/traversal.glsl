@@ -7,8 +7,11 @@
 //   speculative traversal, for lanes that cannot skip). Nested while-while loops cost an empty pass each.
 // - The stack in registers (16 entries, shifted by selects): an indexed private array becomes scratch memory
 //   that llvmpipe reads and writes with a loop over the lanes, which made the stack the walk's largest cost.
-//   A walk that outgrows 16 entries starts over in traceRayDeep (the stack in memory); never dropped.
+//   A walk that outgrows 16 entries starts over in traceRayDeep (the stack in memory); never dropped. Kernels that
+//   can defer it do so to a second dispatch (deferred_walk.glsl), since every lane would pay an idle pass of
+//   traceRayDeep in the first: 4-24% of the walk's time.
 // - Near and far planes picked by the ray's direction sign when the planes are fetched: no min/max per axis.
+// - Nodes of one cache line with 8-bit planes (BvhWideNode): a fetch, not arithmetic, is what a step costs.
 // Leaves are stack entries tagged with the high bit and their size; nearer children come first. With VKMC_BVH2
 // the binary layout is walked instead (kept for side-by-side benchmarks). llvmpipe also has a hang guard that ends
 // shader loops after 65535 iterations (LP_MAX_TGSI_LOOP_ITERATIONS) without any error; a walk of 400k leaves
@@ -39,7 +42,7 @@ bool intersectLeaf(uint entry, RayShear shear, inout vec4 best) {
 }
 
 #ifndef VKMC_BVH2
-const uint kEmptySlot = 0x7f7fffffu;
+const uint kEmptySlot = 0x7f7fffffu;  // kBvhEmptySlot
 
 // One compare-exchange of a sorting network on (distance, entry) pairs.
 void orderPair(inout float da, inout uint ea, inout float db, inout uint eb) {
@@ -56,27 +59,37 @@ void orderPair(inout float da, inout uint ea, inout float db, inout uint eb) {
 vec4 maxSel(vec4 a, vec4 b) { return mix(b, a, greaterThan(a, b)); }
 vec4 minSel(vec4 a, vec4 b) { return mix(b, a, lessThan(a, b)); }
 
+// Child i's steps in byte i of each plane word (BvhWideNode), as floats.
+vec4 planeSteps(uint word) { return vec4((uvec4(word) >> uvec4(0u, 8u, 16u, 24u)) & 0xffu); }
+
 // The 4 child boxes of an inner node against the ray: returns how many are hit, their entries near to far
-// first in e.
-uint hitChildren(uint node, vec3 invDir, vec3 os, ivec3 nearOffset, float tMax, out uvec4 e) {
-  int base = int(7u * node);
-  vec4 nx = texelFetch(bvhNodes, base + nearOffset.x) * invDir.x - os.x;
-  vec4 fx = texelFetch(bvhNodes, base + 1 - nearOffset.x) * invDir.x - os.x;
-  vec4 ny = texelFetch(bvhNodes, base + 2 + nearOffset.y) * invDir.y - os.y;
-  vec4 fy = texelFetch(bvhNodes, base + 3 - nearOffset.y) * invDir.y - os.y;
-  vec4 nz = texelFetch(bvhNodes, base + 4 + nearOffset.z) * invDir.z - os.z;
-  vec4 fz = texelFetch(bvhNodes, base + 5 - nearOffset.z) * invDir.z - os.z;
-  e = floatBitsToUint(texelFetch(bvhNodes, base + 6));
+// first in e. A plane is origin + steps * step on the node's grid; the ray's distance to it is
+// (steps * step + (origin - rayOrigin)) * invDir, one fma and one multiply per plane. nearIsHigh picks, per axis,
+// which plane the ray meets first (by its direction's sign).
+uint hitChildren(uint node, vec3 invDir, vec3 origin, bvec3 nearIsHigh, float tMax, out uvec4 e) {
+  int base = int(4u * node);
+  uvec4 grid = imageLoad(bvhNodes, base);
+  uvec4 xy = imageLoad(bvhNodes, base + 1);
+  uvec2 z = imageLoad(bvhNodes, base + 2).xy;
+  e = imageLoad(bvhNodes, base + 3);
+  vec3 d = uintBitsToFloat(grid.xyz) - origin;
+  vec3 step = uintBitsToFloat(((uvec3(grid.w) >> uvec3(0u, 8u, 16u)) & 0xffu) << 23u);
+  vec4 nx = fma(planeSteps(nearIsHigh.x ? xy.y : xy.x), vec4(step.x), vec4(d.x)) * invDir.x;
+  vec4 fx = fma(planeSteps(nearIsHigh.x ? xy.x : xy.y), vec4(step.x), vec4(d.x)) * invDir.x;
+  vec4 ny = fma(planeSteps(nearIsHigh.y ? xy.w : xy.z), vec4(step.y), vec4(d.y)) * invDir.y;
+  vec4 fy = fma(planeSteps(nearIsHigh.y ? xy.z : xy.w), vec4(step.y), vec4(d.y)) * invDir.y;
+  vec4 nz = fma(planeSteps(nearIsHigh.z ? z.y : z.x), vec4(step.z), vec4(d.z)) * invDir.z;
+  vec4 fz = fma(planeSteps(nearIsHigh.z ? z.x : z.y), vec4(step.z), vec4(d.z)) * invDir.z;
   vec4 tNear = maxSel(maxSel(nx, ny), maxSel(nz, vec4(0.0)));
   // The far distance is widened by 2 gamma(3) (Ize 2013) so rounding never culls a box a ray grazes.
   vec4 tFar = minSel(minSel(minSel(fx, fy), fz) * kSlabWiden, vec4(tMax));
   bvec4 hit = bvec4(uvec4(lessThanEqual(tNear, tFar)) & uvec4(notEqual(e, uvec4(kEmptySlot))));
-  vec4 d = mix(vec4(3.0e38), tNear, hit);
-  orderPair(d.x, e.x, d.y, e.y);
-  orderPair(d.z, e.z, d.w, e.w);
-  orderPair(d.x, e.x, d.z, e.z);
-  orderPair(d.y, e.y, d.w, e.w);
-  orderPair(d.y, e.y, d.z, e.z);
+  vec4 dist = mix(vec4(3.0e38), tNear, hit);
+  orderPair(dist.x, e.x, dist.y, e.y);
+  orderPair(dist.z, e.z, dist.w, e.w);
+  orderPair(dist.x, e.x, dist.z, e.z);
+  orderPair(dist.y, e.y, dist.w, e.w);
+  orderPair(dist.y, e.y, dist.z, e.z);
   return uint(hit.x) + uint(hit.y) + uint(hit.z) + uint(hit.w);
 }
 
@@ -130,13 +143,13 @@ void triangleStep(inout Walk w, RayShear shear, bool anyHit, inout vec4 best) {
 
 // The node unit: the 4 child boxes of an inner node against the ray (hit children sorted near to far, the
 // nearest next, the others pushed), then the handoff of a leaf that comes up next to a free triangle unit.
-void nodeStep(inout Walk w, vec3 invDir, vec3 os, ivec3 nearOffset, float tMax) {
+void nodeStep(inout Walk w, vec3 invDir, vec3 origin, bvec3 nearIsHigh, float tMax) {
   int shift = 0;
   uint pushA = kNoEntry, pushB = kNoEntry, pushC = kNoEntry;
   uint next0 = w.node, next1 = w.stack.s0.x;  // the entries up next, for the handoff
   if (w.node != kNoEntry && (w.node & kLeafTag) == 0u) {
     uvec4 e;
-    uint n = hitChildren(w.node, invDir, os, nearOffset, tMax, e);
+    uint n = hitChildren(w.node, invDir, origin, nearIsHigh, tMax, e);
     shift = int(n) - 1;
     next0 = n > 0u ? e.x : w.stack.s0.x;
     next1 = n > 1u ? e.y : n == 1u ? w.stack.s0.x : w.stack.s0.y;
@@ -162,8 +175,7 @@ void nodeStep(inout Walk w, vec3 invDir, vec3 os, ivec3 nearOffset, float tMax) 
 vec4 traceRayDeep(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete) {
   RayShear shear = makeRayShear(origin, dir);
   vec3 invDir = safeInverse(dir);
-  vec3 os = origin * invDir;
-  ivec3 nearOffset = ivec3(lessThan(invDir, vec3(0.0)));
+  bvec3 nearIsHigh = lessThan(invDir, vec3(0.0));
   vec4 best = vec4(tMax, 0.0, 0.0, uintBitsToFloat(kMissPrimitive));
   uint stack[TRAVERSAL_STACK_SIZE];
   uint sp = 0u;
@@ -182,7 +194,7 @@ vec4 traceRayDeep(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool compl
       }
     } else if (w.node != kNoEntry) {
       uvec4 e;
-      uint n = hitChildren(w.node, invDir, os, nearOffset, best.x, e);
+      uint n = hitChildren(w.node, invDir, origin, nearIsHigh, best.x, e);
       w.overflow = sp + n > TRAVERSAL_STACK_SIZE;  // reported as an incomplete walk, never silently wrong
       if (n > 3u) stack[sp++] = e.w;
       if (n > 2u) stack[sp++] = e.z;
@@ -196,12 +208,13 @@ vec4 traceRayDeep(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool compl
   return best;
 }
 
-// Returns vec4(t, b1, b2, triangle bits); triangle = kMissPrimitive when nothing is hit in (0, tMax).
-vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete) {
+// The walk with the register stack alone. Returns vec4(t, b1, b2, triangle bits); triangle = kMissPrimitive when
+// nothing is hit in (0, tMax). overflow: the walk outgrew the register stack and its result means nothing; it
+// must be traced again with traceRayDeep (deferred_walk.glsl does that in a second dispatch).
+vec4 traceRayShallow(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete, out bool overflow) {
   RayShear shear = makeRayShear(origin, dir);
   vec3 invDir = safeInverse(dir);
-  vec3 os = origin * invDir;
-  ivec3 nearOffset = ivec3(lessThan(invDir, vec3(0.0)));  // 1 where the far plane is the box's low one
+  bvec3 nearIsHigh = lessThan(invDir, vec3(0.0));
   vec4 best = vec4(tMax, 0.0, 0.0, uintBitsToFloat(kMissPrimitive));
   Walk w;
   w.stack.s0 = w.stack.s1 = w.stack.s2 = w.stack.s3 = uvec4(kNoEntry);
@@ -210,10 +223,19 @@ vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete)
   w.overflow = false;
   while (walking(w) && !w.overflow) {
     triangleStep(w, shear, anyHit, best);
-    nodeStep(w, invDir, os, nearOffset, best.x);
+    nodeStep(w, invDir, origin, nearIsHigh, best.x);
   }
   complete = !walking(w);
-  if (w.overflow) best = traceRayDeep(origin, dir, tMax, anyHit, complete);
+  overflow = w.overflow;
+  return best;
+}
+
+// The whole walk in one call (the megakernel's): the rare overflowed walk starts over with the deep stack here,
+// so every lane pays one idle pass of traceRayDeep; kernels with a second dispatch defer those walks instead.
+vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete) {
+  bool overflow;
+  vec4 best = traceRayShallow(origin, dir, tMax, anyHit, complete, overflow);
+  if (overflow) best = traceRayDeep(origin, dir, tMax, anyHit, complete);
   return best;
 }
 #else
@@ -230,8 +252,8 @@ vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete)
   while (current != kNoEntry) {
     while (current != kNoEntry && (current & kLeafTag) == 0u) {
       int base = int(4u * current);
-      vec4 a0 = texelFetch(bvhNodes, base), a1 = texelFetch(bvhNodes, base + 1);
-      vec4 b0 = texelFetch(bvhNodes, base + 2), b1 = texelFetch(bvhNodes, base + 3);
+      vec4 a0 = uintBitsToFloat(imageLoad(bvhNodes, base)), a1 = uintBitsToFloat(imageLoad(bvhNodes, base + 1));
+      vec4 b0 = uintBitsToFloat(imageLoad(bvhNodes, base + 2)), b1 = uintBitsToFloat(imageLoad(bvhNodes, base + 3));
       vec3 l0 = a0.xyz * invDir - originScaled, h0 = a1.xyz * invDir - originScaled;
       vec3 l1 = b0.xyz * invDir - originScaled, h1 = b1.xyz * invDir - originScaled;
       vec3 n0 = min(l0, h0), f0 = max(l0, h0), n1 = min(l1, h1), f1 = max(l1, h1);
@@ -263,5 +285,13 @@ vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete)
   }
   complete = current == kNoEntry;
   return best;
+}
+
+vec4 traceRayShallow(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete, out bool overflow) {
+  overflow = false;  // the binary walk keeps its stack in memory: it never defers
+  return traceRay(origin, dir, tMax, anyHit, complete);
+}
+vec4 traceRayDeep(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete) {
+  return traceRay(origin, dir, tMax, anyHit, complete);
 }
 #endif

@@ -1,16 +1,20 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Stage 2: closest hit of every queued ray.
+// Stage 2: closest hit of every queued ray (built twice: the register-stack pass, and with VKMC_DEEP_PASS the
+// pass over the walks it deferred).
 #include "common.glsl"
 #include "traversal.glsl"
+#include "deferred_walk.glsl"
 
 void main() {
-  uint slot = invocationIndex();
-  if (slot >= inQueueCount()) return;
+  uint slot;
+  if (!walkItem(inQueueCount(), slot)) return;
   uint id = rayQueues[inQueueBase() + slot];
   PathState p = paths[id];
+  vec4 hit;
   bool complete;
-  hits[id] = traceRay(p.origin.xyz, p.direction.xyz, 3.0e38, false, complete);
+  if (!traceItem(slot, p.origin.xyz, p.direction.xyz, 3.0e38, false, hit, complete)) return;
+  hits[id] = hit;
   if (!complete) {  // counted, and the sample poisoned so accumulate excludes it: never a silently wrong hit
     atomicAdd(control.nonfinite.w, 1u);
     paths[p.info.w].radiance.r = uintBitsToFloat(0x7fc00000u);

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // One invocation: turns the incoming ray queue's size into dispatch arguments, empties the outgoing queues,
-// counts rays, and arms the film accumulation once no path is alive.
+// counts rays, empties the deep-walk queue, and arms the film accumulation once no path is alive.
 #include "common.glsl"
 
 void main() {
@@ -14,6 +14,7 @@ void main() {
   if ((pc.bounce & 1u) == 0u) control.counts.y = 0u;
   else control.counts.x = 0u;
   control.counts.z = 0u;
+  control.deepArgs = uvec4(0u, 1u, 1u, 0u);  // intersect's deferred walks start empty
   uint accumulateGroups = (pc.pixelCount + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x;
   control.accumulateArgs = uvec4(n == 0u ? accumulateGroups : 0u, 1u, 1u, 0u);
 }

@@ -2,19 +2,21 @@
 #extension GL_GOOGLE_include_directive : require
 // Stage 4: any-hit visibility of each light sample; an unoccluded one adds its contribution to its path.
 // With one light sample per path and bounce a plain add is race-free; splitting (several samples per path)
-// builds the VKMC_FLOAT_ATOMICS variant, which adds atomically.
+// builds the VKMC_FLOAT_ATOMICS variant, which adds atomically. Built twice, as intersect is (VKMC_DEEP_PASS).
 #ifdef VKMC_FLOAT_ATOMICS
 #extension GL_EXT_shader_atomic_float : require
 #endif
 #include "common.glsl"
 #include "traversal.glsl"
+#include "deferred_walk.glsl"
 
 void main() {
-  uint slot = invocationIndex();
-  if (slot >= control.counts.z) return;
+  uint slot;
+  if (!walkItem(control.counts.z, slot)) return;
   ShadowRay s = shadowRays[slot];
+  vec4 h;
   bool complete;
-  vec4 h = traceRay(s.origin.xyz, s.direction.xyz, s.origin.w, true, complete);
+  if (!traceItem(slot, s.origin.xyz, s.direction.xyz, s.origin.w, true, h, complete)) return;
   if (!complete) {  // as in intersect: counted, and the sample poisoned
     atomicAdd(control.nonfinite.w, 1u);
     s.contribution.rgb = vec3(uintBitsToFloat(0x7fc00000u));

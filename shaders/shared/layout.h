@@ -4,10 +4,10 @@
 #include "glsl_cpp.h"
 
 // Descriptor bindings of the single set used by every kernel.
-#define BINDING_TRIANGLES 0       // samplerBuffer RGBA32F, 3 texels per triangle: v0|unused, v1|light pmf, v2|unused
-#define BINDING_TRIANGLE_INFO 1   // usamplerBuffer RGBA32UI, 1 texel per triangle: octahedral n0, n1, n2, material id
-#define BINDING_BVH_NODES 2       // samplerBuffer RGBA32F, 4 texels per node (two child boxes, see BvhNode)
-#define BINDING_LIGHTS 3          // usamplerBuffer RGBA32UI, 1 texel per emissive triangle: alias entry
+#define BINDING_TRIANGLES 0       // imageBuffer RGBA32F, 3 texels per triangle: v0|unused, v1|light pmf, v2|unused
+#define BINDING_TRIANGLE_INFO 1   // uimageBuffer RGBA32UI, 1 texel per triangle: octahedral n0, n1, n2, material id
+#define BINDING_BVH_NODES 2       // uimageBuffer RGBA32UI: BvhWideNode, 4 texels (BvhGpuNode with VKMC_BVH2)
+#define BINDING_LIGHTS 3          // uimageBuffer RGBA32UI, 1 texel per emissive triangle: alias entry
 #define BINDING_MATERIALS 4       // Material[]
 #define BINDING_PATHS 5           // PathState[]
 #define BINDING_HITS 6            // vec4[] (t, b1, b2, triangle bits)
@@ -21,7 +21,8 @@
 #define BINDING_ROULETTE_TABLE 14 // float[kRouletteTableDepths]: efficiency roulette scale per depth
 #define BINDING_DEPTH_STATS 15    // vec2[pool * kRouletteTableDepths]: pilot (beta, gathered) per path and depth
 #define BINDING_QUEUE_STATS 16    // uvec2[kQueueStatsBounces]: per bounce, paths queued (x) and shadow rays (y)
-#define BINDING_COUNT 17
+#define BINDING_DEEP_WALKS 17     // uint[]: items whose walk outgrew the register stack (deferred_walk.glsl)
+#define BINDING_COUNT 18
 
 // Specialization constant ids.
 #define SPEC_WORKGROUP_SIZE 0
@@ -102,7 +103,10 @@ struct Control {
   uvec4 totals;          // x: camera rays, y: extension rays, z: shadow rays, w: unused
   // Non-finite values by the stage that produced them (the sample is then excluded by accumulate):
   uvec4 nonfinite;       // x: emission and other gathered radiance, y: light-sample contributions,
-                         // z: continuation throughput, w: BVH walks cut short by llvmpipe's loop limit
+                         // z: continuation throughput, w: BVH walks cut short (llvmpipe's loop limit, a full deep queue)
+  uvec4 deepArgs;        // dispatch of the deferred deep walks: x groups, y = z = 1, w: walks deferred
+  uvec4 deepTotals;      // x: walks deferred in all (one that finds the deep queue full is cut short: nonfinite.w),
+                         // y: walks the deep passes traced (equals x once every deep pass has run)
 };
 
 struct TestRay {
@@ -151,7 +155,8 @@ static_assert(offsetof(PathState, info) == 64);
 static_assert(sizeof(ShadowRay) == 48);
 static_assert(sizeof(Material) == 48);
 static_assert(sizeof(FilmPixel) == 32);
-static_assert(sizeof(Control) == 96);
+static_assert(sizeof(Control) == 128);
+static_assert(offsetof(Control, deepArgs) == 96);
 static_assert(offsetof(Control, rayArgs) == 16 && offsetof(Control, accumulateArgs) == 48);
 static_assert(sizeof(TestRay) == 32);
 static_assert(sizeof(PushConstants) == 128);
