@@ -79,7 +79,7 @@ TEST(GpuTraversal, ClosestAndAnyHitAgreeWithBruteForce) {
 // 400k coincident triangles, one per leaf, missing them all, visits every one of the 400k leaves: on llvmpipe
 // (Mesa 22.3) that walk completes, and must come back as a miss, not as a cut or a false hit. Every child box
 // of that pile is hit, so the walk pushes 3 entries per level of the 4-wide tree (~27 for 400k leaves): more than
-// the 16-entry register stack holds, so this also checks the deep pass the trace kernel defers such walks to.
+// the 12-entry register stack holds, so this also checks the deep pass the trace kernel defers such walks to.
 TEST(GpuTraversal, AWalkOfHundredsOfThousandsOfLeavesCompletes) {
   vk::Context ctx;
   for (uint32_t count : {1000u, 400000u}) {

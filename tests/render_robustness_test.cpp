@@ -169,7 +169,7 @@ TEST(RenderRobustness, NonFiniteValuesAreCountedByTheStageThatProducedThem) {
 // second seed: the same image within noise (per-pixel z-test). Cornell box (NEE + MIS), Veach's MIS scene
 // (glossy), four light samples per hit with fixed roulette, and camera-ray roulette.
 // A stack of 16k thin parallel layers in the Cornell box: a ray across it meets every layer's box, so the walk
-// down to the nearest layer pushes 3 entries per level of the 4-wide tree, past the 16-entry register stack,
+// down to the nearest layer pushes 3 entries per level of the 4-wide tree, past the 12-entry register stack,
 // then culls the rest (a short walk, unlike a pile of coincident triangles, which would meet llvmpipe's loop
 // limit in the megakernel). The wavefront defers those walks to its deep passes (intersect and shadow), the
 // megakernel starts them over inline; both must give the same image, with no walk lost.

@@ -5,9 +5,9 @@
 //   a node unit and a triangle unit. When the node unit reaches a leaf it hands it to the triangle unit as soon
 //   as that is free and goes on with the next stack entry; the closest hit so far bounds both (Aila & Laine's
 //   speculative traversal, for lanes that cannot skip). Nested while-while loops cost an empty pass each.
-// - The stack in registers (16 entries, shifted by selects): an indexed private array becomes scratch memory
+// - The stack in registers (12 entries, shifted by selects): an indexed private array becomes scratch memory
 //   that llvmpipe reads and writes with a loop over the lanes, which made the stack the walk's largest cost.
-//   A walk that outgrows 16 entries starts over in traceRayDeep (the stack in memory); never dropped. Kernels that
+//   A walk that outgrows 12 entries starts over in traceRayDeep (the stack in memory); never dropped. Kernels that
 //   can defer it do so to a second dispatch (deferred_walk.glsl), since every lane would pay an idle pass of
 //   traceRayDeep in the first: 4-24% of the walk's time.
 // - Near and far planes picked by the ray's direction sign when the planes are fetched: no min/max per axis.
@@ -64,7 +64,7 @@ vec4 planeSteps(uint word) { return vec4((uvec4(word) >> uvec4(0u, 8u, 16u, 24u)
 
 // The 4 child boxes of an inner node against the ray: returns how many are hit, their entries near to far
 // first in e. A plane is origin + steps * step on the node's grid; the ray's distance to it is
-// (steps * step + (origin - rayOrigin)) * invDir, one fma and one multiply per plane. nearIsHigh picks, per axis,
+// steps * (step * invDir) + (origin - rayOrigin) * invDir: one fma per plane. nearIsHigh picks, per axis,
 // which plane the ray meets first (by its direction's sign).
 uint hitChildren(uint node, vec3 invDir, vec3 origin, bvec3 nearIsHigh, float tMax, out uvec4 e) {
   int base = int(4u * node);
@@ -72,14 +72,15 @@ uint hitChildren(uint node, vec3 invDir, vec3 origin, bvec3 nearIsHigh, float tM
   uvec4 xy = imageLoad(bvhNodes, base + 1);
   uvec2 z = imageLoad(bvhNodes, base + 2).xy;
   e = imageLoad(bvhNodes, base + 3);
-  vec3 d = uintBitsToFloat(grid.xyz) - origin;
   vec3 step = uintBitsToFloat(((uvec3(grid.w) >> uvec3(0u, 8u, 16u)) & 0xffu) << 23u);
-  vec4 nx = fma(planeSteps(nearIsHigh.x ? xy.y : xy.x), vec4(step.x), vec4(d.x)) * invDir.x;
-  vec4 fx = fma(planeSteps(nearIsHigh.x ? xy.x : xy.y), vec4(step.x), vec4(d.x)) * invDir.x;
-  vec4 ny = fma(planeSteps(nearIsHigh.y ? xy.w : xy.z), vec4(step.y), vec4(d.y)) * invDir.y;
-  vec4 fy = fma(planeSteps(nearIsHigh.y ? xy.z : xy.w), vec4(step.y), vec4(d.y)) * invDir.y;
-  vec4 nz = fma(planeSteps(nearIsHigh.z ? z.y : z.x), vec4(step.z), vec4(d.z)) * invDir.z;
-  vec4 fz = fma(planeSteps(nearIsHigh.z ? z.x : z.y), vec4(step.z), vec4(d.z)) * invDir.z;
+  vec3 s = step * invDir;  // exact: step is a power of two
+  vec3 o = (uintBitsToFloat(grid.xyz) - origin) * invDir;
+  vec4 nx = fma(planeSteps(nearIsHigh.x ? xy.y : xy.x), vec4(s.x), vec4(o.x));
+  vec4 fx = fma(planeSteps(nearIsHigh.x ? xy.x : xy.y), vec4(s.x), vec4(o.x));
+  vec4 ny = fma(planeSteps(nearIsHigh.y ? xy.w : xy.z), vec4(s.y), vec4(o.y));
+  vec4 fy = fma(planeSteps(nearIsHigh.y ? xy.z : xy.w), vec4(s.y), vec4(o.y));
+  vec4 nz = fma(planeSteps(nearIsHigh.z ? z.y : z.x), vec4(s.z), vec4(o.z));
+  vec4 fz = fma(planeSteps(nearIsHigh.z ? z.x : z.y), vec4(s.z), vec4(o.z));
   vec4 tNear = maxSel(maxSel(nx, ny), maxSel(nz, vec4(0.0)));
   // The far distance is widened by 2 gamma(3) (Ize 2013) so rounding never culls a box a ray grazes.
   vec4 tFar = minSel(minSel(minSel(fx, fy), fz) * kSlabWiden, vec4(tMax));
@@ -93,26 +94,26 @@ uint hitChildren(uint node, vec3 invDir, vec3 origin, bvec3 nearIsHigh, float tM
   return uint(hit.x) + uint(hit.y) + uint(hit.z) + uint(hit.w);
 }
 
-// The register stack: 16 entries in four uvec4 (top = s0.x, empty slots = kNoEntry). `shift` entries of (a, b, c)
-// are pushed (1..3, a on top), or -shift entries popped (1..2), or nothing (0). Pushing past the bottom sets
-// overflow; the walk then restarts with traceRayDeep.
+// The register stack: 12 entries in three uvec4 (top = s0.x, empty slots = kNoEntry). `shift` entries of
+// (a, b, c) are pushed (1..3, a on top), or -shift entries popped (1..2), or nothing (0). Pushing past the bottom
+// sets overflow; the walk then restarts with traceRayDeep. 16 entries cost 5% more loop instructions and spills
+// for 7 fewer deep walks in 200k helmet rays; 8 sent 0.4% of them to the deep pass.
 struct RegisterStack {
-  uvec4 s0, s1, s2, s3;
+  uvec4 s0, s1, s2;
 };
 
 void shiftStack(inout RegisterStack st, int shift, uint a, uint b, uint c, inout bool overflow) {
-  uvec4 s0 = st.s0, s1 = st.s1, s2 = st.s2, s3 = st.s3;
-  overflow = overflow || (shift >= 1 && s3.w != kNoEntry) || (shift >= 2 && s3.z != kNoEntry) ||
-             (shift >= 3 && s3.y != kNoEntry);
-  uvec4 p1_0 = uvec4(a, s0.xyz), p1_1 = uvec4(s0.w, s1.xyz), p1_2 = uvec4(s1.w, s2.xyz), p1_3 = uvec4(s2.w, s3.xyz);
-  uvec4 p2_0 = uvec4(a, b, s0.xy), p2_1 = uvec4(s0.zw, s1.xy), p2_2 = uvec4(s1.zw, s2.xy), p2_3 = uvec4(s2.zw, s3.xy);
-  uvec4 p3_0 = uvec4(a, b, c, s0.x), p3_1 = uvec4(s0.yzw, s1.x), p3_2 = uvec4(s1.yzw, s2.x), p3_3 = uvec4(s2.yzw, s3.x);
-  uvec4 q1_0 = uvec4(s0.yzw, s1.x), q1_1 = uvec4(s1.yzw, s2.x), q1_2 = uvec4(s2.yzw, s3.x), q1_3 = uvec4(s3.yzw, kNoEntry);
-  uvec4 q2_0 = uvec4(s0.zw, s1.xy), q2_1 = uvec4(s1.zw, s2.xy), q2_2 = uvec4(s2.zw, s3.xy), q2_3 = uvec4(s3.zw, uvec2(kNoEntry));
+  uvec4 s0 = st.s0, s1 = st.s1, s2 = st.s2;
+  overflow = overflow || (shift >= 1 && s2.w != kNoEntry) || (shift >= 2 && s2.z != kNoEntry) ||
+             (shift >= 3 && s2.y != kNoEntry);
+  uvec4 p1_0 = uvec4(a, s0.xyz), p1_1 = uvec4(s0.w, s1.xyz), p1_2 = uvec4(s1.w, s2.xyz);
+  uvec4 p2_0 = uvec4(a, b, s0.xy), p2_1 = uvec4(s0.zw, s1.xy), p2_2 = uvec4(s1.zw, s2.xy);
+  uvec4 p3_0 = uvec4(a, b, c, s0.x), p3_1 = uvec4(s0.yzw, s1.x), p3_2 = uvec4(s1.yzw, s2.x);
+  uvec4 q1_0 = uvec4(s0.yzw, s1.x), q1_1 = uvec4(s1.yzw, s2.x), q1_2 = uvec4(s2.yzw, kNoEntry);
+  uvec4 q2_0 = uvec4(s0.zw, s1.xy), q2_1 = uvec4(s1.zw, s2.xy), q2_2 = uvec4(s2.zw, uvec2(kNoEntry));
   st.s0 = shift == 1 ? p1_0 : shift == 2 ? p2_0 : shift == 3 ? p3_0 : shift == -1 ? q1_0 : shift == -2 ? q2_0 : s0;
   st.s1 = shift == 1 ? p1_1 : shift == 2 ? p2_1 : shift == 3 ? p3_1 : shift == -1 ? q1_1 : shift == -2 ? q2_1 : s1;
   st.s2 = shift == 1 ? p1_2 : shift == 2 ? p2_2 : shift == 3 ? p3_2 : shift == -1 ? q1_2 : shift == -2 ? q2_2 : s2;
-  st.s3 = shift == 1 ? p1_3 : shift == 2 ? p2_3 : shift == 3 ? p3_3 : shift == -1 ? q1_3 : shift == -2 ? q2_3 : s3;
 }
 
 struct Walk {
@@ -124,14 +125,17 @@ struct Walk {
 
 bool walking(Walk w) { return w.node != kNoEntry || w.triNext < w.triEnd; }
 
-// The triangle unit: one triangle of its leaf against the ray. An any-hit query ends at its first hit.
-void triangleStep(inout Walk w, RayShear shear, bool anyHit, inout vec4 best) {
+// The triangle unit: one triangle of its leaf against the ray. An any-hit query ends at its first hit. Only the
+// distance and the triangle are carried through the walk (fewer live registers in the loop); hitRecord
+// recomputes the barycentrics once at the end.
+void triangleStep(inout Walk w, RayShear shear, bool anyHit, inout float bestT, inout uint bestTri) {
   if (w.triNext < w.triEnd) {
     vec3 v0, v1, v2;
     triangleVertices(w.triNext, v0, v1, v2);
-    vec3 h = intersectTriangle(shear, v0, v1, v2, best.x);
-    if (h.x > 0.0) {
-      best = vec4(h, uintBitsToFloat(w.triNext));
+    float t = intersectTriangle(shear, v0, v1, v2, bestT).x;
+    if (t > 0.0) {
+      bestT = t;
+      bestTri = w.triNext;
       if (anyHit) {
         w.node = kNoEntry;
         w.triEnd = w.triNext;
@@ -139,6 +143,14 @@ void triangleStep(inout Walk w, RayShear shear, bool anyHit, inout vec4 best) {
     }
     ++w.triNext;
   }
+}
+
+// vec4(t, b1, b2, triangle bits) of the walk's closest hit: the same test on the same inputs gives the same t.
+vec4 hitRecord(RayShear shear, float tMax, uint bestTri) {
+  if (bestTri == kMissPrimitive) return vec4(tMax, 0.0, 0.0, uintBitsToFloat(kMissPrimitive));
+  vec3 v0, v1, v2;
+  triangleVertices(bestTri, v0, v1, v2);
+  return vec4(intersectTriangle(shear, v0, v1, v2, tMax), uintBitsToFloat(bestTri));
 }
 
 // The node unit: the 4 child boxes of an inner node against the ray (hit children sorted near to far, the
@@ -176,7 +188,8 @@ vec4 traceRayDeep(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool compl
   RayShear shear = makeRayShear(origin, dir);
   vec3 invDir = safeInverse(dir);
   bvec3 nearIsHigh = lessThan(invDir, vec3(0.0));
-  vec4 best = vec4(tMax, 0.0, 0.0, uintBitsToFloat(kMissPrimitive));
+  float bestT = tMax;
+  uint bestTri = kMissPrimitive;
   uint stack[TRAVERSAL_STACK_SIZE];
   uint sp = 0u;
   Walk w;
@@ -184,7 +197,7 @@ vec4 traceRayDeep(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool compl
   w.triNext = w.triEnd = 0u;
   w.overflow = false;
   while (walking(w) && !w.overflow) {
-    triangleStep(w, shear, anyHit, best);
+    triangleStep(w, shear, anyHit, bestT, bestTri);
     bool pop = w.node == kNoEntry;
     if (isLeaf(w.node)) {
       if (w.triNext >= w.triEnd) {
@@ -194,7 +207,7 @@ vec4 traceRayDeep(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool compl
       }
     } else if (w.node != kNoEntry) {
       uvec4 e;
-      uint n = hitChildren(w.node, invDir, origin, nearIsHigh, best.x, e);
+      uint n = hitChildren(w.node, invDir, origin, nearIsHigh, bestT, e);
       w.overflow = sp + n > TRAVERSAL_STACK_SIZE;  // reported as an incomplete walk, never silently wrong
       if (n > 3u) stack[sp++] = e.w;
       if (n > 2u) stack[sp++] = e.z;
@@ -205,7 +218,7 @@ vec4 traceRayDeep(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool compl
     if (pop) w.node = sp > 0u ? stack[--sp] : kNoEntry;
   }
   complete = !w.overflow;
-  return best;
+  return hitRecord(shear, tMax, bestTri);
 }
 
 // The walk with the register stack alone. Returns vec4(t, b1, b2, triangle bits); triangle = kMissPrimitive when
@@ -215,19 +228,20 @@ vec4 traceRayShallow(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool co
   RayShear shear = makeRayShear(origin, dir);
   vec3 invDir = safeInverse(dir);
   bvec3 nearIsHigh = lessThan(invDir, vec3(0.0));
-  vec4 best = vec4(tMax, 0.0, 0.0, uintBitsToFloat(kMissPrimitive));
+  float bestT = tMax;
+  uint bestTri = kMissPrimitive;
   Walk w;
-  w.stack.s0 = w.stack.s1 = w.stack.s2 = w.stack.s3 = uvec4(kNoEntry);
+  w.stack.s0 = w.stack.s1 = w.stack.s2 = uvec4(kNoEntry);
   w.node = 0u;
   w.triNext = w.triEnd = 0u;
   w.overflow = false;
   while (walking(w) && !w.overflow) {
-    triangleStep(w, shear, anyHit, best);
-    nodeStep(w, invDir, origin, nearIsHigh, best.x);
+    triangleStep(w, shear, anyHit, bestT, bestTri);
+    nodeStep(w, invDir, origin, nearIsHigh, bestT);
   }
   complete = !walking(w);
   overflow = w.overflow;
-  return best;
+  return hitRecord(shear, tMax, bestTri);
 }
 
 // The whole walk in one call (the megakernel's): the rare overflowed walk starts over with the deep stack here,
