@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <random>
 
 #include "../shaders/shared/geometry.h"
@@ -76,6 +77,53 @@ TEST(Bvh, ClosestAndAnyHitAgreeWithBruteForce) {
     ASSERT_EQ(any.t > 0, ref.t > 0) << "any-hit disagrees on ray " << r;
   }
   EXPECT_GT(hits, 400);  // the test exercises hits, not only misses
+}
+
+// The 4-wide nodes store child boxes in 8-bit steps of a grid over the node: every child box must contain all
+// its triangles (rounded outwards, never in) and stay within one grid step of their tight bounds on each side.
+// Checked far from the origin too, where a float's spacing is coarse.
+TEST(Bvh, QuantizedWideBoxesContainTheirTrianglesAndStayTight) {
+  for (vec3 shift : {vec3(0.0f), vec3(3e4f, -1e4f, 2e4f)}) {
+    Soup s = randomSoup(3000, 11);
+    for (vec3& p : s.positions) p += shift;
+    std::vector<Aabb> bounds(s.positions.size() / 3);
+    for (size_t i = 0; i < bounds.size(); ++i)
+      for (int k = 0; k < 3; ++k) bounds[i].grow(s.positions[3 * i + k]);
+    Bvh bvh = buildBvh(bounds);  // rebuilt on the shifted, already ordered soup
+    auto reorder = [&](uint32_t i) { return bounds[bvh.triangleOrder[i]]; };
+    // Tight bounds of a child entry: its leaf's triangles, or everything under an inner node.
+    std::function<Aabb(uint32_t)> tight = [&](uint32_t entry) {
+      Aabb box;
+      if (entry & kBvhLeafTag) {
+        uint32_t first = entry & 0x07ffffffu, count = ((entry >> 27) & 0xfu) + 1u;
+        for (uint32_t t = first; t < first + count; ++t) box.grow(reorder(t));
+        return box;
+      }
+      for (int c = 0; c < 4; ++c)
+        if (bvh.wideNodes[entry].texels[3][c] != kBvhEmptySlot) box.grow(tight(bvh.wideNodes[entry].texels[3][c]));
+      return box;
+    };
+    int children = 0, loose = 0;
+    for (const BvhWideNode& node : bvh.wideNodes) {
+      Aabb all;
+      for (int c = 0; c < 4; ++c)
+        if (node.texels[3][c] != kBvhEmptySlot) all.grow(tight(node.texels[3][c]));
+      for (int c = 0; c < 4; ++c) {
+        if (node.texels[3][c] == kBvhEmptySlot) continue;
+        ++children;
+        Aabb q = wideChildBox(node, c), t = tight(node.texels[3][c]);
+        for (int a = 0; a < 3; ++a) {
+          ASSERT_LE(q.min[a], t.min[a]);
+          ASSERT_GE(q.max[a], t.max[a]);
+          // One step is at most 2 * extent / 255 (a power of two at or above extent / 255).
+          double step = 2.0 * (double(all.max[a]) - double(all.min[a])) / 255.0;
+          loose += double(t.min[a]) - double(q.min[a]) > step || double(q.max[a]) - double(t.max[a]) > step;
+        }
+      }
+    }
+    EXPECT_GT(children, 2000);
+    EXPECT_EQ(loose, 0);
+  }
 }
 
 TEST(Bvh, BuildStatisticsAreConsistent) {

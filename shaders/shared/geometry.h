@@ -41,6 +41,10 @@ VKMC_FN RayShear makeRayShear(vec3 origin, vec3 dir) {
   return r;
 }
 
+// max as a compare and a select: GLSL's max() carries a NaN rule that costs llvmpipe two more instructions, and
+// the operands of the error bounds below are finite whenever a hit is reported.
+VKMC_FN float maxFinite(float a, float b) { return a > b ? a : b; }
+
 // Returns (t, b1, b2) with b1, b2 the weights of v1, v2, or t < 0 when there is no hit in (0, tMax).
 // Edges are shared exactly between neighbours: no ray slips between two triangles.
 VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax) {
@@ -70,14 +74,14 @@ VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax
   // t must exceed its own rounding-error bound (pbrt-v4, after Woop et al.): a ray leaving a surface from an
   // origin offset by a few ulps would otherwise re-hit the same plane at a tiny positive t when its dominant
   // axis lies in that plane.
-  float maxZ = max(abs(az), max(abs(bz), abs(cz)));
-  float maxX = max(abs(ax), max(abs(bx), abs(cx)));
-  float maxY = max(abs(ay), max(abs(by), abs(cy)));
+  float maxZ = maxFinite(abs(az), maxFinite(abs(bz), abs(cz)));
+  float maxX = maxFinite(abs(ax), maxFinite(abs(bx), abs(cx)));
+  float maxY = maxFinite(abs(ay), maxFinite(abs(by), abs(cy)));
   float deltaZ = gammaBound(3.0f) * maxZ;
   float deltaX = gammaBound(5.0f) * (maxX + maxZ);
   float deltaY = gammaBound(5.0f) * (maxY + maxZ);
   float deltaE = 2.0f * (gammaBound(2.0f) * maxX * maxY + deltaY * maxX + deltaX * maxY);
-  float maxE = max(abs(U), max(abs(V), abs(W)));
+  float maxE = maxFinite(abs(U), maxFinite(abs(V), abs(W)));
   float deltaT = 3.0f * (gammaBound(3.0f) * maxE * maxZ + deltaE * maxZ + deltaZ * maxE) * inv;
   if (t <= deltaT) return miss;
   return vec3(t, V * inv, W * inv);
