@@ -8,19 +8,19 @@ VKMC_BEGIN_NAMESPACE
 VKMC_CONST float kMachineEpsilon = 5.96046448e-08f;  // 2^-24
 VKMC_FN float gammaBound(float n) { return (n * kMachineEpsilon) / (1.0f - n * kMachineEpsilon); }
 
-// Per-ray constants of the watertight test: the dominant axis becomes z and the ray is sheared onto +z.
-// Permutation and shear are folded into three rows, so a vertex is transformed by three dot products instead
-// of lane-varying component indexing (which llvmpipe turns into stack traffic). Every factor but the shear is
-// 0 or 1, so the transformed coordinates round exactly as in the paper's formulation, and a vertex shared by
-// two triangles transforms identically for both: edges stay watertight.
+// Per-ray constants of the watertight test: the dominant axis becomes z and the ray is sheared onto +z. The
+// permutation is kept as two flags per axis and applied to a vertex with selects (fixed-index components, no
+// lane-varying vector indexing, which llvmpipe turns into stack traffic; 27 instructions per triangle where
+// three dot-product rows took 45). A vertex shared by two triangles transforms identically for both: edges
+// stay watertight.
 struct RayShear {
   vec3 origin;
-  vec3 row0;  // e_kx - Sx e_kz
-  vec3 row1;  // e_ky - Sy e_kz
-  vec3 row2;  // Sz e_kz
+  vec3 shear;       // Sx, Sy, Sz
+  bvec2 kx, ky, kz;  // which axis becomes x, y, z: (axis == 0, axis == 1)
 };
 
-VKMC_FN vec3 unitAxis(uint k) { return vec3(k == 0u ? 1.0f : 0.0f, k == 1u ? 1.0f : 0.0f, k == 2u ? 1.0f : 0.0f); }
+VKMC_FN bvec2 axisFlags(uint k) { return bvec2(k == 0u, k == 1u); }
+VKMC_FN float pickAxis(vec3 v, bvec2 k) { return k.x ? v.x : (k.y ? v.y : v.z); }
 
 VKMC_FN RayShear makeRayShear(vec3 origin, vec3 dir) {
   vec3 a = abs(dir);
@@ -32,12 +32,13 @@ VKMC_FN RayShear makeRayShear(vec3 origin, vec3 dir) {
     kx = ky;
     ky = tmp;
   }
-  float dz = dir[kz];
   RayShear r;
   r.origin = origin;
-  r.row0 = unitAxis(kx) - (dir[kx] / dz) * unitAxis(kz);
-  r.row1 = unitAxis(ky) - (dir[ky] / dz) * unitAxis(kz);
-  r.row2 = (1.0f / dz) * unitAxis(kz);
+  r.kx = axisFlags(kx);
+  r.ky = axisFlags(ky);
+  r.kz = axisFlags(kz);
+  float dz = pickAxis(dir, r.kz);
+  r.shear = vec3(pickAxis(dir, r.kx) / dz, pickAxis(dir, r.ky) / dz, 1.0f / dz);
   return r;
 }
 
@@ -49,9 +50,10 @@ VKMC_FN float maxFinite(float a, float b) { return a > b ? a : b; }
 // Edges are shared exactly between neighbours: no ray slips between two triangles.
 VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax) {
   vec3 A = v0 - r.origin, B = v1 - r.origin, C = v2 - r.origin;
-  float ax = dot(r.row0, A), ay = dot(r.row1, A);
-  float bx = dot(r.row0, B), by = dot(r.row1, B);
-  float cx = dot(r.row0, C), cy = dot(r.row1, C);
+  float Az = pickAxis(A, r.kz), Bz = pickAxis(B, r.kz), Cz = pickAxis(C, r.kz);
+  float ax = pickAxis(A, r.kx) - r.shear.x * Az, ay = pickAxis(A, r.ky) - r.shear.y * Az;
+  float bx = pickAxis(B, r.kx) - r.shear.x * Bz, by = pickAxis(B, r.ky) - r.shear.y * Bz;
+  float cx = pickAxis(C, r.kx) - r.shear.x * Cz, cy = pickAxis(C, r.ky) - r.shear.y * Cz;
   float U = cx * by - cy * bx;
   float V = ax * cy - ay * cx;
   float W = bx * ay - by * ax;
@@ -59,7 +61,7 @@ VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax
   if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return miss;
   float det = U + V + W;
   if (det == 0.0f) return miss;
-  float az = dot(r.row2, A), bz = dot(r.row2, B), cz = dot(r.row2, C);
+  float az = r.shear.z * Az, bz = r.shear.z * Bz, cz = r.shear.z * Cz;
   float T = U * az + V * bz + W * cz;
   if (det < 0.0f) {  // seen from the back: all of U, V, W, det and T flip sign together
     T = -T;
