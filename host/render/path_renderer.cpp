@@ -14,6 +14,7 @@
 #include "../shaders/shared/layout.h"
 #include "../shaders/shared/sampling.h"
 #include "error.h"
+#include "render/background_warm_up.h"
 #include "spirv/accumulate_spv.h"
 #include "spirv/camera_rays_spv.h"
 #include "spirv/intersect_deep_spv.h"
@@ -129,41 +130,57 @@ PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const Render
   auto start = Clock::now();
   const KernelPlan plan = planKernels(settings);
   const std::vector<vk::SpecConstant>& specs = plan.specs;
-  auto make = [&](const char* name, std::span<const uint32_t> spirv) {
-    return std::make_unique<vk::Kernel>(ctx, *layout_, name, spirv, specs);
+  // Every kernel this render dispatches, and whether a helper thread compiles it (see BackgroundWarmUp): about
+  // half of the compile time each, the helper taking the tracing kernels.
+  struct Planned {
+    std::unique_ptr<vk::Kernel>* slot;
+    const char* name;
+    std::span<const uint32_t> spirv;
+    bool helper;
   };
+  std::vector<Planned> planned;
+  auto spv = [](const auto& words) { return std::span<const uint32_t>(words); };
   kernels_ = std::make_unique<Kernels>();
+  Kernels& k = *kernels_;
   if (megakernel) {
-    kernels_->megakernel = make("megakernel", kSpirv_megakernel);
+    planned.push_back({&k.megakernel, "megakernel", kSpirv_megakernel, false});
   } else {
-  kernels_->camera = make("camera_rays", kSpirv_camera_rays);
-  kernels_->prepareBounce = make("prepare_bounce", kSpirv_prepare_bounce);
-  kernels_->intersect = make("intersect", kSpirv_intersect);
-  kernels_->intersectDeep = make("intersect_deep", kSpirv_intersect_deep);
-  kernels_->shade = est.splitsPaths() ? make("shade", kSpirv_shade_atomic) : make("shade", kSpirv_shade);
-  if (hasShadowStage_) kernels_->prepareShadow = make("prepare_shadow", kSpirv_prepare_shadow);
-  if (hasShadowStage_)
-    kernels_->shadow = est.needsFloatAtomics() ? make("shadow", kSpirv_shadow_atomic) : make("shadow", kSpirv_shadow);
-  if (hasShadowStage_)
-    kernels_->shadowDeep = est.needsFloatAtomics() ? make("shadow_deep", kSpirv_shadow_atomic_deep)
-                                                   : make("shadow_deep", kSpirv_shadow_deep);
+    planned.push_back({&k.camera, "camera_rays", kSpirv_camera_rays, false});
+    planned.push_back({&k.prepareBounce, "prepare_bounce", kSpirv_prepare_bounce, false});
+    planned.push_back({&k.intersect, "intersect", kSpirv_intersect, true});
+    planned.push_back({&k.intersectDeep, "intersect_deep", kSpirv_intersect_deep, true});
+    planned.push_back({&k.shade, "shade", est.splitsPaths() ? spv(kSpirv_shade_atomic) : spv(kSpirv_shade), false});
+    if (hasShadowStage_) {
+      const bool atomics = est.needsFloatAtomics();
+      planned.push_back({&k.prepareShadow, "prepare_shadow", kSpirv_prepare_shadow, false});
+      planned.push_back({&k.shadow, "shadow", atomics ? spv(kSpirv_shadow_atomic) : spv(kSpirv_shadow), false});
+      planned.push_back({&k.shadowDeep, "shadow_deep", atomics ? spv(kSpirv_shadow_atomic_deep) : spv(kSpirv_shadow_deep), true});
+    }
   }
-  kernels_->accumulate = make("accumulate", kSpirv_accumulate);
+  planned.push_back({&k.accumulate, "accumulate", kSpirv_accumulate, true});
+  std::vector<KernelSource> helperShare;
+  if (compilesAtFirstDispatch(ctx))
+    for (const Planned& p : planned)
+      if (p.helper) helperShare.push_back({p.name, p.spirv, specs});
+  BackgroundWarmUp helper(std::move(helperShare));
+  for (const Planned& p : planned) *p.slot = std::make_unique<vk::Kernel>(ctx, *layout_, p.name, p.spirv, specs);
   timer_ = std::make_unique<vk::GpuTimer>(ctx, 2 * (8 + 5 * kFirstChunkBounces));
 
-  // Warm-up: every kernel once on empty queues, so the driver's compile is not timed as rendering.
+  // Warm-up: every kernel once on empty queues, so the driver's compile is not timed as rendering; the helper's
+  // share last, once it has compiled them into the cache.
   std::memset(control_.mapped(), 0, sizeof(gpu::Control));
   std::memset(film_.mapped(), 0, filmBytes);
   gpu::PushConstants pc{};
   pc.width = settings.width;
   pc.height = settings.height;
   pc.queueCapacity = pool_;
-  ctx.runCommands([&](VkCommandBuffer cmd) {
-    for (const auto* k : {&kernels_->camera, &kernels_->prepareBounce, &kernels_->intersect, &kernels_->intersectDeep,
-                          &kernels_->shade, &kernels_->prepareShadow, &kernels_->shadow, &kernels_->shadowDeep,
-                          &kernels_->accumulate, &kernels_->megakernel})
-      if (*k) vk::dispatch(cmd, *layout_, **k, &pc, sizeof(pc), 1);
-  });
+  for (bool helperShare : {false, true}) {
+    if (helperShare) helper.wait();
+    ctx.runCommands([&](VkCommandBuffer cmd) {
+      for (const Planned& p : planned)
+        if (p.helper == helperShare) vk::dispatch(cmd, *layout_, **p.slot, &pc, sizeof(pc), 1);
+    });
+  }
   pipelineSeconds_ = since(start);
 }
 
