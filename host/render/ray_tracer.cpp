@@ -11,7 +11,7 @@
 
 namespace vkmc {
 
-RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh) : ctx_(ctx), scene_(scene) {
+RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh, bool walkStats) : ctx_(ctx), scene_(scene) {
   layout_ = std::make_unique<vk::KernelLayout>(ctx);
   scene.bindTo(*layout_, binaryBvh);
   // The kernel declares every binding of the shared set; those it never touches still need a buffer.
@@ -25,9 +25,9 @@ RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh) : 
   layout_->bindStorage(BINDING_CONTROL, control_);
   std::span<const uint32_t> spirv = binaryBvh ? std::span<const uint32_t>(kSpirv_trace_rays_bvh2) : std::span<const uint32_t>(kSpirv_trace_rays);
   closest_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest", spirv,
-                                          std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 0}});
+                                          std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 0}, {SPEC_WALK_STATS, walkStats}});
   any_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any", spirv,
-                                      std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 1}});
+                                      std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 1}, {SPEC_WALK_STATS, walkStats}});
   // The binary walk keeps its stack in memory and never defers; the 4-wide one defers walks that outgrow its
   // register stack to a second, indirect dispatch of the deep variant.
   if (!binaryBvh) {
@@ -66,6 +66,9 @@ std::vector<glm::vec4> RayTracer::trace(std::span<const gpu::TestRay> rays, bool
     timer.end(cmd);
   });
   deepWalks_ = control->deepTotals.x;
+  const double perRay = n ? 1.0 / double(n) : 0.0;
+  walkStats_ = {control->walkStats.x * perRay, control->walkStats.y * perRay, control->walkStats.z * perRay,
+                control->walkStats.w * perRay};
   if (control->deepTotals.y != control->deepTotals.x)
     throw Error("internal error: " + std::to_string(control->deepTotals.x) + " walks deferred, " +
                 std::to_string(control->deepTotals.y) + " traced by the deep pass");

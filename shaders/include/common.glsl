@@ -1,3 +1,5 @@
+// Subgroup arithmetic: only SPEC_WALK_STATS walks use it (traversal.glsl); an #extension must come before any code.
+#extension GL_KHR_shader_subgroup_arithmetic : require
 // Declarations every kernel shares: version, spec constants, push constants, scene and queue bindings.
 #include "layout.h"
 #include "rng.h"
@@ -24,6 +26,7 @@ layout(constant_id = SPEC_SHADOW_RR_Q) const float kShadowRouletteQ = 0.5;
 layout(constant_id = SPEC_CAMERA_RR_Q) const float kCameraRouletteQ = 0.0;
 layout(constant_id = SPEC_BSDF_SAMPLES) const float kBsdfSamples = 1.0;
 layout(constant_id = SPEC_RECORD_DEPTH_STATS) const uint kRecordDepthStats = 0u;
+layout(constant_id = SPEC_WALK_STATS) const uint kWalkStats = 0u;
 
 layout(push_constant, std430) uniform Push { PushConstants pc; };
 

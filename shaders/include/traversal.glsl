@@ -42,6 +42,15 @@ bool intersectLeaf(uint entry, RayShear shear, inout vec4 best) {
 }
 
 #ifndef VKMC_BVH2
+// Adds a walk's step counts to Control.walkStats (only kernels built with SPEC_WALK_STATS = 1 call it).
+void countWalkSteps(uvec3 steps) {
+  atomicAdd(control.walkStats.x, steps.x);
+  atomicAdd(control.walkStats.y, steps.y);
+  atomicAdd(control.walkStats.z, steps.z);
+  uint slowest = subgroupMax(steps.x);
+  if (subgroupElect()) atomicAdd(control.walkStats.w, slowest * gl_SubgroupSize);
+}
+
 const uint kEmptySlot = 0x7f7fffffu;  // kBvhEmptySlot
 
 // One compare-exchange of a sorting network on (distance, entry) pairs.
@@ -120,10 +129,11 @@ struct Walk {
   RegisterStack stack;
   uint node;             // the node unit's next entry: inner node, leaf waiting for the triangle unit, or none
   uint triNext, triEnd;  // the triangle unit's leaf: triangles [triNext, triEnd) still to test
+  uint parked;           // a leaf the node unit set aside while the triangle unit was busy, or none
   bool overflow;
 };
 
-bool walking(Walk w) { return w.node != kNoEntry || w.triNext < w.triEnd; }
+bool walking(Walk w) { return w.node != kNoEntry || w.triNext < w.triEnd || w.parked != kNoEntry; }
 
 // The triangle unit: one triangle of its leaf against the ray. An any-hit query ends at its first hit. Only the
 // distance and the triangle are carried through the walk (fewer live registers in the loop); hitRecord
@@ -138,6 +148,7 @@ void triangleStep(inout Walk w, RayShear shear, bool anyHit, inout float bestT, 
       bestTri = w.triNext;
       if (anyHit) {
         w.node = kNoEntry;
+        w.parked = kNoEntry;
         w.triEnd = w.triNext;
       }
     }
@@ -169,13 +180,23 @@ void nodeStep(inout Walk w, vec3 invDir, vec3 origin, bvec3 nearIsHigh, float tM
     pushB = e.z;
     pushC = e.w;
   }
-  if (isLeaf(next0) && w.triNext >= w.triEnd) {
-    w.triNext = leafFirst(next0);
-    w.triEnd = leafEnd(next0);
+  // A free triangle unit takes the parked leaf first, else a leaf that comes up next; a leaf that finds the
+  // triangle unit busy is parked (one slot), so the node unit goes on with the next entry instead of waiting.
+  bool triFree = w.triNext >= w.triEnd;
+  uint take = triFree ? w.parked : kNoEntry;
+  bool advance = isLeaf(next0) && (triFree || w.parked == kNoEntry);
+  if (take != kNoEntry) w.parked = kNoEntry;
+  if (advance) {
+    if (triFree && take == kNoEntry) take = next0;
+    else w.parked = next0;
     next0 = next1;
     shift -= 1;
     pushA = pushB;
     pushB = pushC;
+  }
+  if (take != kNoEntry) {
+    w.triNext = leafFirst(take);
+    w.triEnd = leafEnd(take);
   }
   w.node = next0;
   shiftStack(w.stack, shift, pushA, pushB, pushC, w.overflow);
@@ -195,6 +216,7 @@ vec4 traceRayDeep(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool compl
   Walk w;
   w.node = 0u;
   w.triNext = w.triEnd = 0u;
+  w.parked = kNoEntry;
   w.overflow = false;
   while (walking(w) && !w.overflow) {
     triangleStep(w, shear, anyHit, bestT, bestTri);
@@ -234,11 +256,15 @@ vec4 traceRayShallow(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool co
   w.stack.s0 = w.stack.s1 = w.stack.s2 = uvec4(kNoEntry);
   w.node = 0u;
   w.triNext = w.triEnd = 0u;
+  w.parked = kNoEntry;
   w.overflow = false;
+  uvec3 steps = uvec3(0u);  // SPEC_WALK_STATS: iterations, node steps, triangle tests
   while (walking(w) && !w.overflow) {
+    if (kWalkStats != 0u) steps += uvec3(1u, uint(w.node != kNoEntry && !isLeaf(w.node)), uint(w.triNext < w.triEnd));
     triangleStep(w, shear, anyHit, bestT, bestTri);
     nodeStep(w, invDir, origin, nearIsHigh, bestT);
   }
+  if (kWalkStats != 0u) countWalkSteps(steps);
   complete = !walking(w);
   overflow = w.overflow;
   return hitRecord(shear, tMax, bestTri);

@@ -46,6 +46,7 @@
 #define SPEC_HAS_GLOSSY 19            // 0: every material is Lambertian; GGX code compiled out
 #define SPEC_RECORD_DEPTH_STATS 18   // 1: the efficiency-roulette pilot records per-depth statistics
 #define SPEC_BSDF_SAMPLES 17         // float: continuations per hit below SPEC_SPLIT_DEPTH (1 = no splitting)
+#define SPEC_WALK_STATS 20           // trace_rays: 1 = count the register-stack walk's steps into Control.walkStats
 
 VKMC_BEGIN_NAMESPACE
 
@@ -107,6 +108,8 @@ struct Control {
   uvec4 deepArgs;        // dispatch of the deferred deep walks: x groups, y = z = 1, w: walks deferred
   uvec4 deepTotals;      // x: walks deferred in all (one that finds the deep queue full is cut short: nonfinite.w),
                          // y: walks the deep passes traced (equals x once every deep pass has run)
+  uvec4 walkStats;       // SPEC_WALK_STATS: loop iterations, node steps, triangle tests (summed over rays), and
+                         // the iterations of each subgroup's slowest lane (summed over subgroups, times 8 lanes)
 };
 
 struct TestRay {
@@ -155,7 +158,7 @@ static_assert(offsetof(PathState, info) == 64);
 static_assert(sizeof(ShadowRay) == 48);
 static_assert(sizeof(Material) == 48);
 static_assert(sizeof(FilmPixel) == 32);
-static_assert(sizeof(Control) == 128);
+static_assert(sizeof(Control) == 144);
 static_assert(offsetof(Control, deepArgs) == 96);
 static_assert(offsetof(Control, rayArgs) == 16 && offsetof(Control, accumulateArgs) == 48);
 static_assert(sizeof(TestRay) == 32);

@@ -106,6 +106,9 @@ int main(int argc, char** argv) {
   app.add_option("--height", height, "primary rays: height")->check(CLI::Range(1, 8192));
   app.add_option("--threads", threads, "Embree threads (default: all cores, as lavapipe uses)")->check(CLI::Range(1, 1024));
   app.add_option("--json", jsonPath, "write the results as JSON");
+  bool walkStats = false;
+  app.add_flag("--walk-stats", walkStats,
+               "also count vkmc's walk steps per ray (one more, untimed trace with a counting kernel variant)");
   CLI11_PARSE(app, argc, argv);
   try {
     if (scenes.empty())
@@ -156,6 +159,15 @@ int main(int argc, char** argv) {
       out.push_back({{"scene", path}, {"rays", rays.size()}, {"vkmc_mrays_per_second", median(vk)},
                      {"embree_mrays_per_second", median(em)}, {"ratio", ratio}, {"agreement", agreement},
                      {"deep_walks", tracer.deepWalks()}});
+      if (walkStats) {
+        RayTracer counting(ctx, gpuScene, false, true);
+        counting.trace(rays, false);
+        RayTracer::WalkStats w = counting.walkStats();
+        std::printf("  walk per ray: %.2f iterations (%.2f node steps, %.2f triangle tests); slowest lane of 8: %.2f\n",
+                    w.iterations, w.nodeSteps, w.triangleTests, w.slowestLaneIterations);
+        out.back()["walk_per_ray"] = {{"iterations", w.iterations}, {"node_steps", w.nodeSteps},
+                                      {"triangle_tests", w.triangleTests}, {"slowest_lane_iterations", w.slowestLaneIterations}};
+      }
     }
     if (!jsonPath.empty())
       writeFileAtomically(jsonPath, nlohmann::json{{"device", ctx.deviceName()}, {"embree_threads", threads}, {"results", out}}.dump(2) + "\n");
