@@ -13,6 +13,9 @@
 
 #define kNaN uintBitsToFloat(0x7fc00000u)
 
+// One walk per loop iteration, the path's next ray or its vertex's next light sample, through one traceRay call
+// site: the kernel holds one copy of the walk (and of its inline deep walk) instead of two, which is what its
+// first-dispatch compile on llvmpipe costs. Rays, random numbers and sums are those of the two-loop form.
 void main() {
   uint id = invocationIndex();
   if (id >= pc.pathCount) return;
@@ -21,49 +24,67 @@ void main() {
   uint camera = 0u, extension = 0u, shadow = 0u, cut = 0u;
   bool alive = path.throughput.x > 0.0;  // camera-ray roulette may end it at once
   camera = alive ? 1u : 0u;
+  // The vertex being shaded while its light samples are traced.
+  SurfacePoint s;
+  GltfMaterial gm;
+  vec3 wo = vec3(0.0), woLocal = vec3(0.0), gathered = vec3(0.0);
+  uint samples = 0u, j = 0u;
+  ShadowRay ray;
+  bool tracingLightSample = false;
   while (alive) {
+    bool anyHit = tracingLightSample;
+    vec3 origin = anyHit ? ray.origin.xyz : path.origin.xyz;
+    vec3 dir = anyHit ? ray.direction.xyz : path.direction.xyz;
+    float tMax = anyHit ? ray.origin.w : 3.0e38;
     bool complete;
-    vec4 hit = traceRay(path.origin.xyz, path.direction.xyz, 3.0e38, false, complete);
-    if (!complete) {  // as in intersect: counted, and the sample poisoned
-      ++cut;
-      radiance += vec3(kNaN);
-      break;
+    vec4 hit = traceRay(origin, dir, tMax, anyHit, complete);
+    if (anyHit) {
+      if (!complete) {  // as in shadow: counted, and the sample poisoned
+        ++cut;
+        gathered += vec3(kNaN);
+      } else if (floatBitsToUint(hit.w) == kMissPrimitive) {
+        gathered += ray.contribution.rgb;
+      }
+      ++j;
+    } else {
+      uint tri = floatBitsToUint(hit.w);
+      wo = -path.direction.xyz;
+      if (!complete) {  // as in intersect: counted, and the sample poisoned
+        ++cut;
+        radiance += vec3(kNaN);
+        break;
+      }
+      if (tri == kMissPrimitive) {
+        radiance += path.throughput.rgb * pc.background.rgb;
+        break;
+      }
+      s = surfaceAt(tri, hit.yz, wo);
+      Material m = materials[s.material];
+      uint depth = path.info.z;
+      gathered = emissionAt(path, s, m, tri, hit, wo);
+      gm = gltfMaterial(m);
+      woLocal = wo * s.frame;
+      samples = belowDepthCap(depth) && kHasLights != 0u && kNee != 0u ? lightSamplesAt(depth) : 0u;
+      j = 0u;
     }
-    uint tri = floatBitsToUint(hit.w);
-    vec3 wo = -path.direction.xyz;
-    if (tri == kMissPrimitive) {
-      radiance += path.throughput.rgb * pc.background.rgb;
-      break;
-    }
-    SurfacePoint s = surfaceAt(tri, hit.yz, wo);
-    Material m = materials[s.material];
-    uint depth = path.info.z;
-    vec3 gathered = emissionAt(path, s, m, tri, hit, wo);
-    GltfMaterial gm = gltfMaterial(m);
-    vec3 woLocal = wo * s.frame;
-    if (belowDepthCap(depth) && kHasLights != 0u && kNee != 0u) {
-      uint samples = lightSamplesAt(depth);
-      for (uint j = 0u; j < samples; ++j) {
-        ShadowRay ray;
-        if (!prepareLightSample(path, s, gm, wo, j, samples, ray)) continue;
+    // The vertex's next light sample, if any is left; else the vertex is done and the path continues.
+    tracingLightSample = false;
+    for (; j < samples; ++j) {
+      if (prepareLightSample(path, s, gm, wo, j, samples, ray)) {
         ++shadow;
-        bool visible;
-        vec4 blocker = traceRay(ray.origin.xyz, ray.direction.xyz, ray.origin.w, true, visible);
-        if (!visible) {
-          ++cut;
-          gathered += vec3(kNaN);
-        } else if (floatBitsToUint(blocker.w) == kMissPrimitive) {
-          gathered += ray.contribution.rgb;
-        }
+        tracingLightSample = true;
+        break;
       }
     }
-    PathState next;
-    alive = continuationIsUseful(depth) && continuePath(path, id, s, gm, woLocal, 0u, 1.0, gathered, next);
-    if (!allFinite(gathered)) atomicAdd(control.nonfinite.x, 1u);
-    radiance += gathered;
-    if (alive) {
-      path = next;
-      ++extension;
+    if (!tracingLightSample) {
+      PathState next;
+      alive = continuationIsUseful(path.info.z) && continuePath(path, id, s, gm, woLocal, 0u, 1.0, gathered, next);
+      if (!allFinite(gathered)) atomicAdd(control.nonfinite.x, 1u);
+      radiance += gathered;
+      if (alive) {
+        path = next;
+        ++extension;
+      }
     }
   }
   paths[id].radiance = vec4(radiance, 0.0);
