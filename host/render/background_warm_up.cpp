@@ -1,9 +1,9 @@
 #include "render/background_warm_up.h"
 
-#include <array>
 #include <cstring>
 
 #include "../shaders/shared/layout.h"
+#include "render/gpu_scene.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
 
@@ -22,15 +22,11 @@ void warmOnSecondDevice(const std::vector<KernelSource>& kernels) {
   vk::Buffer storage(ctx, kBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
   std::memset(storage.mapped(), 0, kBytes);
   for (uint32_t b = BINDING_MATERIALS; b < BINDING_COUNT; ++b) layout.bindStorage(b, storage);
-  const std::array<std::pair<uint32_t, VkFormat>, 4> texels{{{BINDING_TRIANGLES, VK_FORMAT_R32G32B32A32_SFLOAT},
-                                                             {BINDING_TRIANGLE_INFO, VK_FORMAT_R32G32B32A32_UINT},
-                                                             {BINDING_BVH_NODES, VK_FORMAT_R32G32B32A32_UINT},
-                                                             {BINDING_LIGHTS, VK_FORMAT_R32G32B32A32_UINT}}};
   std::vector<vk::Buffer> views;
-  for (auto [binding, format] : texels) {
+  for (uint32_t binding : {BINDING_TRIANGLES, BINDING_TRIANGLE_INFO, BINDING_BVH_NODES, BINDING_LIGHTS}) {
     views.emplace_back(ctx, kBytes, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::HostVisible);
     std::memset(views.back().mapped(), 0, kBytes);
-    views.back().createView(format);
+    views.back().createView(sceneTexelFormat(binding));
     layout.bindTexel(binding, views.back());
   }
   gpu::PushConstants pc{};

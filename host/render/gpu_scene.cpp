@@ -22,18 +22,22 @@ uint32_t encodeOctahedral(glm::vec3 n) {
   return glm::packSnorm2x16(e);
 }
 
-vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, VkFormat format, const char* name) {
+vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, uint32_t binding, const char* name) {
   uint64_t texels = bytes / 16;
   if (texels > ctx.properties().limits.maxTexelBufferElements)
     throw Error(std::string("scene too big for the device: ") + name + " needs " + std::to_string(texels) +
                 " texels, the device allows " + std::to_string(ctx.properties().limits.maxTexelBufferElements));
   vk::Buffer b(ctx, std::max<size_t>(bytes, 16), VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   b.upload(data, bytes);
-  b.createView(format);
+  b.createView(sceneTexelFormat(binding));
   return b;
 }
 
 }  // namespace
+
+VkFormat sceneTexelFormat(uint32_t binding) {
+  return binding == BINDING_TRIANGLES ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R32G32B32A32_UINT;
+}
 
 GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool uniformLightSelection, bool keepBinaryBvh) {
   const size_t n = scene.triangleCount();
@@ -94,14 +98,14 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
     mats.push_back(g);
   }
 
-  triangles_ = makeTexelBuffer(ctx, triTexels.data(), triTexels.size() * 16, VK_FORMAT_R32G32B32A32_SFLOAT, "triangles");
-  triangleInfo_ = makeTexelBuffer(ctx, infoTexels.data(), infoTexels.size() * 16, VK_FORMAT_R32G32B32A32_UINT, "triangle info");
-  bvhNodes_ = makeTexelBuffer(ctx, bvh.wideNodes.data(), bvh.wideNodes.size() * sizeof(BvhWideNode), VK_FORMAT_R32G32B32A32_UINT,
+  triangles_ = makeTexelBuffer(ctx, triTexels.data(), triTexels.size() * 16, BINDING_TRIANGLES, "triangles");
+  triangleInfo_ = makeTexelBuffer(ctx, infoTexels.data(), infoTexels.size() * 16, BINDING_TRIANGLE_INFO, "triangle info");
+  bvhNodes_ = makeTexelBuffer(ctx, bvh.wideNodes.data(), bvh.wideNodes.size() * sizeof(BvhWideNode), BINDING_BVH_NODES,
                               "BVH nodes");
   if (keepBinaryBvh)
-    binaryBvhNodes_ = makeTexelBuffer(ctx, bvh.nodes.data(), bvh.nodes.size() * sizeof(BvhGpuNode), VK_FORMAT_R32G32B32A32_UINT,
+    binaryBvhNodes_ = makeTexelBuffer(ctx, bvh.nodes.data(), bvh.nodes.size() * sizeof(BvhGpuNode), BINDING_BVH_NODES,
                                       "binary BVH nodes");
-  lights_ = makeTexelBuffer(ctx, lightTexels.data(), lightTexels.size() * 16, VK_FORMAT_R32G32B32A32_UINT, "lights");
+  lights_ = makeTexelBuffer(ctx, lightTexels.data(), lightTexels.size() * 16, BINDING_LIGHTS, "lights");
   materials_ = vk::Buffer(ctx, mats.size() * sizeof(gpu::Material), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   materials_.upload(mats.data(), mats.size() * sizeof(gpu::Material));
   info_.bufferBytes = {{"triangles", triTexels.size() * 16},

@@ -20,6 +20,9 @@ struct GpuSceneInfo {
   std::vector<std::pair<std::string, uint64_t>> bufferBytes;
 };
 
+// The view format of a scene texel binding (BINDING_TRIANGLES ... BINDING_LIGHTS), as common.glsl declares it.
+VkFormat sceneTexelFormat(uint32_t binding);
+
 class GpuScene {
  public:
   // uniformLightSelection: every emissive triangle equally likely; otherwise in proportion to emitted power.

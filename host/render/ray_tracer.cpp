@@ -24,17 +24,16 @@ RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh, bo
                         vk::MemoryKind::HostVisible);
   layout_->bindStorage(BINDING_CONTROL, control_);
   std::span<const uint32_t> spirv = binaryBvh ? std::span<const uint32_t>(kSpirv_trace_rays_bvh2) : std::span<const uint32_t>(kSpirv_trace_rays);
-  closest_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest", spirv,
-                                          std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 0}, {SPEC_WALK_STATS, walkStats}});
-  any_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any", spirv,
-                                      std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 1}, {SPEC_WALK_STATS, walkStats}});
+  auto specs = [](bool anyHit, bool counting) {
+    return std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, anyHit}, {SPEC_WALK_STATS, counting}};
+  };
+  closest_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest", spirv, specs(false, walkStats));
+  any_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any", spirv, specs(true, walkStats));
   // The binary walk keeps its stack in memory and never defers; the 4-wide one defers walks that outgrow its
   // register stack to a second, indirect dispatch of the deep variant.
   if (!binaryBvh) {
-    closestDeep_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest_deep", kSpirv_trace_rays_deep,
-                                                std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 0}});
-    anyDeep_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any_deep", kSpirv_trace_rays_deep,
-                                            std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, 1}});
+    closestDeep_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest_deep", kSpirv_trace_rays_deep, specs(false, false));
+    anyDeep_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any_deep", kSpirv_trace_rays_deep, specs(true, false));
   }
 }
 

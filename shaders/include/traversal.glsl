@@ -1,6 +1,6 @@
 // BVH traversal. The default walk (4-wide nodes) is shaped by what llvmpipe, our CPU device, does with a shader:
 // it runs 8 lanes as one SIMD program and never skips code, not even an `if` or a loop no lane enters; a loop
-// runs until its last lane is done. Measured on Mesa 22.3 (docs/performance.md), that made three choices:
+// runs until its last lane is done. Measured on Mesa 22.3 (docs/performance.md), that made these choices:
 // - One flat loop in which every lane does one box step (a 4-wide node) and one triangle test per iteration:
 //   a node unit and a triangle unit. When the node unit reaches a leaf it hands it to the triangle unit as soon
 //   as that is free and goes on with the next stack entry; the closest hit so far bounds both (Aila & Laine's
