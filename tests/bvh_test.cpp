@@ -115,8 +115,16 @@ TEST(Bvh, QuantizedWideBoxesContainTheirTrianglesAndStayTight) {
         for (int a = 0; a < 3; ++a) {
           ASSERT_LE(q.min[a], t.min[a]);
           ASSERT_GE(q.max[a], t.max[a]);
-          // One step is at most 2 * extent / 255 (a power of two at or above extent / 255).
-          double step = 2.0 * (double(all.max[a]) - double(all.min[a])) / 255.0;
+          // Planes lie strictly outside, within one step. The grid starts one float below the lowest child; a step
+          // is a power of two no coarser than 2 * extent / 254 (255 steps with the top plane strictly above) or
+          // the float spacing of the node's coordinates, whichever is larger.
+          double step = std::ldexp(1.0, int((node.texels[0].w >> (8 * a)) & 0xffu) - 127);
+          double origin = glm::uintBitsToFloat(node.texels[0][a]);
+          int magnitude = 0;
+          std::frexp(std::max(std::abs(all.min[a]), std::abs(all.max[a])), &magnitude);
+          EXPECT_LT(q.min[a], t.min[a]);
+          EXPECT_GT(q.max[a], t.max[a]);
+          EXPECT_LE(step, std::max(2.0 * (double(all.max[a]) - origin) / 254.0, std::ldexp(1.0, magnitude - 24)));
           loose += double(t.min[a]) - double(q.min[a]) > step || double(q.max[a]) - double(t.max[a]) > step;
         }
       }

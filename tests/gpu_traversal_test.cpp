@@ -4,6 +4,7 @@
 #include <random>
 
 #include "../shaders/shared/geometry.h"
+#include "adversarial_geometry.h"
 #include "bvh/bvh.h"
 #include "render/gpu_scene.h"
 #include "render/ray_tracer.h"
@@ -119,3 +120,42 @@ TEST(GpuTraversal, AWalkOfHundredsOfThousandsOfLeavesCompletes) {
     EXPECT_NE(glm::floatBitsToUint(tracer.trace(rays, true)[63].w), gpu::kMissPrimitive) << count << " leaves";
   }
 }
+
+// The adversarial soups of bvh_property_test (spheres and boxes at the origin, flat boxes, +-0 and denormals,
+// far-away and mixed-scale geometry) through the GPU walks of both node layouts, against brute force.
+class GpuTraversalProperty : public ::testing::TestWithParam<test::Soup> {};
+
+TEST_P(GpuTraversalProperty, BothLayoutsAgreeWithBruteForce) {
+  const test::Soup& soup = GetParam();
+  Scene scene;
+  scene.materials.push_back(Material{});
+  for (size_t i = 0; i < soup.positions.size(); ++i) {
+    scene.positions.push_back(soup.positions[i]);
+    scene.normals.push_back(glm::vec3(0, 1, 0));
+    scene.bounds.grow(soup.positions[i]);
+    if (i % 3 == 0) scene.materialIds.push_back(0);
+  }
+  Bvh bvh = buildBvh(scene.triangleBounds());
+  std::vector<glm::vec3> pos = test::ordered(soup, bvh);
+  static vk::Context ctx;
+  GpuScene gpuScene(ctx, scene, bvh, false, true);
+  std::vector<test::Ray> rays = test::raysAt(soup, 2000, 9);
+  std::vector<gpu::TestRay> gpuRays;
+  for (const test::Ray& r : rays) gpuRays.push_back({glm::vec4(r.origin, r.tMax), glm::vec4(r.direction, 0.0f)});
+  for (bool binary : {false, true}) {
+    RayTracer tracer(ctx, gpuScene, binary);
+    std::vector<glm::vec4> closest = tracer.trace(gpuRays, false), any = tracer.trace(gpuRays, true);
+    int closestWrong = 0, anyWrong = 0;
+    for (size_t r = 0; r < rays.size(); ++r) {
+      HostHit want = test::bruteForce(pos, rays[r]);
+      HostHit got{closest[r].x, closest[r].y, closest[r].z, glm::floatBitsToUint(closest[r].w)};
+      closestWrong += !test::sameClosestHit(got, want);
+      anyWrong += (glm::floatBitsToUint(any[r].w) != gpu::kMissPrimitive) != (want.triangle != gpu::kMissPrimitive);
+    }
+    EXPECT_EQ(closestWrong, 0) << soup.name << (binary ? ", binary layout" : ", 4-wide layout");
+    EXPECT_EQ(anyWrong, 0) << soup.name << (binary ? ", binary layout" : ", 4-wide layout");
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Adversarial, GpuTraversalProperty, ::testing::ValuesIn(test::adversarialSoups()),
+                         [](const ::testing::TestParamInfo<test::Soup>& info) { return "soup" + std::to_string(info.index); });

@@ -23,6 +23,12 @@ struct BuildNode {
   uint32_t child[2] = {0, 0};     // inner node
 };
 
+// The centroid's bin: clamped in double before the conversion (a float-to-int cast of inf or NaN is UB).
+uint32_t binOf(float centroid, float min, double scale, uint32_t bins) {
+  double b = (double(centroid) - double(min)) * scale;
+  return b >= double(bins - 1) ? bins - 1 : b > 0.0 ? static_cast<uint32_t>(b) : 0u;
+}
+
 float asFloat(uint32_t u) { return std::bit_cast<float>(u); }
 uint32_t asUint(float f) { return std::bit_cast<uint32_t>(f); }
 
@@ -80,22 +86,23 @@ class Builder {
     if (depth >= kMaxDepth) return 0;
     if (options_.fullSweep) return sweepSplit(first, count, box, mustSplit);
     const uint32_t bins = options_.bins;
-    glm::vec3 extent = centroidBox.extent();
-    float bestCost = std::numeric_limits<float>::infinity();
+    // In double: a float extent can overflow (+-3e38) or be denormal, and bins / extent then is inf.
+    glm::dvec3 extent = glm::dvec3(centroidBox.max) - glm::dvec3(centroidBox.min);
+    double bestCost = std::numeric_limits<double>::infinity();
     int bestAxis = -1;
     uint32_t bestBin = 0;
     std::array<Aabb, 64> binBox;
     std::array<uint32_t, 64> binCount;
-    std::array<float, 64> rightArea;
+    std::array<double, 64> rightArea;
     std::array<uint32_t, 64> rightCount;
     for (int axis = 0; axis < 3; ++axis) {
       if (!(extent[axis] > 0.0f)) continue;
-      float scale = static_cast<float>(bins) / extent[axis];
+      double scale = bins / extent[axis];
       std::fill_n(binBox.begin(), bins, Aabb{});
       std::fill_n(binCount.begin(), bins, 0u);
       for (uint32_t i = first; i < first + count; ++i) {
         uint32_t tri = order_[i];
-        uint32_t b = std::min(bins - 1, static_cast<uint32_t>((centroids_[tri][axis] - centroidBox.min[axis]) * scale));
+        uint32_t b = binOf(centroids_[tri][axis], centroidBox.min[axis], scale, bins);
         binBox[b].grow(bounds_[tri]);
         ++binCount[b];
       }
@@ -113,7 +120,7 @@ class Builder {
         acc.grow(binBox[b]);
         n += binCount[b];
         if (n == 0 || rightCount[b + 1] == 0) continue;
-        float cost = acc.halfArea() * static_cast<float>(n) + rightArea[b + 1] * static_cast<float>(rightCount[b + 1]);
+        double cost = acc.halfArea() * n + rightArea[b + 1] * rightCount[b + 1];
         if (cost < bestCost) {
           bestCost = cost;
           bestAxis = axis;
@@ -121,18 +128,17 @@ class Builder {
         }
       }
     }
-    float parentArea = box.halfArea();
-    float leafCost = options_.triangleCost * static_cast<float>(count);
-    float splitCost = options_.traversalCost + options_.triangleCost * bestCost / std::max(parentArea, 1e-30f);
+    double parentArea = box.halfArea();
+    double leafCost = double(options_.triangleCost) * count;
+    double splitCost = options_.traversalCost + options_.triangleCost * bestCost / std::max(parentArea, 1e-300);
     if (bestAxis < 0) {
       if (!mustSplit) return 0;
       return count / 2;  // all centroids coincide: split by index
     }
     if (!mustSplit && splitCost >= leafCost) return 0;
-    float scale = static_cast<float>(bins) / extent[bestAxis];
+    double scale = bins / extent[bestAxis];
     auto mid = std::partition(order_.begin() + first, order_.begin() + first + count, [&](uint32_t tri) {
-      uint32_t b = std::min(bins - 1, static_cast<uint32_t>((centroids_[tri][bestAxis] - centroidBox.min[bestAxis]) * scale));
-      return b < bestBin;
+      return binOf(centroids_[tri][bestAxis], centroidBox.min[bestAxis], scale, bins) < bestBin;
     });
     uint32_t left = static_cast<uint32_t>(mid - (order_.begin() + first));
     return (left == 0 || left == count) ? count / 2 : left;
@@ -140,10 +146,10 @@ class Builder {
 
   // Every split between centroid-sorted neighbours along every axis (ties broken by index: deterministic).
   uint32_t sweepSplit(uint32_t first, uint32_t count, const Aabb& box, bool mustSplit) {
-    float bestCost = std::numeric_limits<float>::infinity();
+    double bestCost = std::numeric_limits<double>::infinity();
     uint32_t bestLeft = 0;
     std::vector<uint32_t> sorted(count), best;
-    std::vector<float> rightArea(count);
+    std::vector<double> rightArea(count);
     for (int axis = 0; axis < 3; ++axis) {
       std::copy(order_.begin() + first, order_.begin() + first + count, sorted.begin());
       std::sort(sorted.begin(), sorted.end(), [&](uint32_t a, uint32_t b) {
@@ -159,7 +165,7 @@ class Builder {
       bool improved = false;
       for (uint32_t i = 1; i < count; ++i) {
         acc.grow(bounds_[sorted[i - 1]]);
-        float cost = acc.halfArea() * static_cast<float>(i) + rightArea[i] * static_cast<float>(count - i);
+        double cost = acc.halfArea() * i + rightArea[i] * (count - i);
         if (cost < bestCost) {
           bestCost = cost;
           bestLeft = i;
@@ -168,8 +174,8 @@ class Builder {
       }
       if (improved) best = sorted;
     }
-    float leafCost = options_.triangleCost * static_cast<float>(count);
-    float splitCost = options_.traversalCost + options_.triangleCost * bestCost / std::max(box.halfArea(), 1e-30f);
+    double leafCost = double(options_.triangleCost) * count;
+    double splitCost = options_.traversalCost + options_.triangleCost * bestCost / std::max(box.halfArea(), 1e-300);
     if (!mustSplit && splitCost >= leafCost) return 0;
     std::copy(best.begin(), best.end(), order_.begin() + first);
     return bestLeft;
@@ -185,42 +191,86 @@ void writeChild(BvhGpuNode& gpu, int c, const Aabb& box, uint32_t ref, uint32_t 
   gpu.texels[2 * c + 1] = glm::vec4(box.max, asFloat(count));
 }
 
-// The grid of a wide node and its children's boxes in 8-bit steps, rounded outwards (in double, where a float's
-// difference and a power-of-two step are exact). Entries are left empty.
+// The binary layout's boxes one float outwards (after the wide collapse has read them tight): strictly beyond
+// their triangles, as the quantized wide boxes are (see quantizeBoxes for why).
+void widenByOneFloat(std::vector<BvhGpuNode>& nodes) {
+  const float inf = std::numeric_limits<float>::infinity();
+  for (BvhGpuNode& node : nodes)
+    for (int c = 0; c < 2; ++c) {
+      glm::vec4 &lo = node.texels[2 * c], &hi = node.texels[2 * c + 1];
+      if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z)) continue;  // the empty half of a root leaf
+      for (int a = 0; a < 3; ++a) lo[a] = std::nextafter(lo[a], -inf), hi[a] = std::nextafter(hi[a], inf);
+    }
+}
+
+// x - origin as d + e exactly (Knuth's TwoSum): a float's difference from the grid origin is not always a double
+// (6e-17 against -1 needs 77 bits), so plane positions are compared through this pair, never through d alone.
+struct ExactOffset {
+  double d, e;
+};
+ExactOffset exactOffset(float x, float origin) {
+  double a = x, b = -double(origin), d = a + b, bv = d - a;
+  return {d, (a - (d - bv)) + (b - bv)};
+}
+// Whether the plane origin + qs (qs = steps * step, exact in double) lies strictly below / above x. When
+// qs != d the rounded d already orders them (a double strictly between d + e and d would be nearer than d).
+bool planeBelow(double qs, ExactOffset o) { return qs < o.d || (qs == o.d && o.e > 0.0); }
+bool planeAbove(double qs, ExactOffset o) { return qs > o.d || (qs == o.d && o.e < 0.0); }
+
+// The grid of a wide node and its children's boxes in 8-bit steps, rounded strictly outwards and checked exactly:
+// every decoded plane lies beyond its child as a real number. Strictly, because a ray with a zero direction
+// component that starts exactly on a box's far plane gets a far distance of 0 and culls the box: its triangles,
+// which it can touch on an edge, lie strictly inside the quantized box, so such a ray cannot touch them.
+// Entries are left empty.
 template <typename Child>
 BvhWideNode quantizeBoxes(const std::vector<Child>& children) {
   BvhWideNode out{};
   Aabb all;
   for (const Child& c : children) all.grow(c.box);
-  uint32_t exponents = 0;
-  std::array<double, 3> origin{}, step{};
-  for (int axis = 0; axis < 3; ++axis) {
-    origin[axis] = all.min[axis];
-    // The smallest power of two with 255 steps >= the extent, within the normal floats.
-    int e = 0;
-    std::frexp((double(all.max[axis]) - double(all.min[axis])) / 255.0, &e);
-    int biased = std::clamp(e + 127, 1, 254);
-    step[axis] = std::ldexp(1.0, biased - 127);
-    exponents |= uint32_t(biased) << (8 * axis);
-    out.texels[0][axis] = asUint(all.min[axis]);
-  }
-  out.texels[0].w = exponents;
   out.texels[1] = glm::uvec4(0xffffffffu, 0u, 0xffffffffu, 0u);  // empty slots: lo = 255 > hi = 0
   out.texels[2] = glm::uvec4(0xffffffffu, 0u, 0u, 0u);
   out.texels[3] = glm::uvec4(kBvhEmptySlot);
-  for (size_t i = 0; i < children.size(); ++i)
-    for (int axis = 0; axis < 3; ++axis) {
-      double lo = std::floor((double(children[i].box.min[axis]) - origin[axis]) / step[axis]);
-      double hi = std::ceil((double(children[i].box.max[axis]) - origin[axis]) / step[axis]);
-      uint32_t qlo = uint32_t(std::clamp(lo, 0.0, 255.0)), qhi = uint32_t(std::clamp(hi, 0.0, 255.0));
-      if (origin[axis] + qlo * step[axis] > children[i].box.min[axis] ||
-          origin[axis] + qhi * step[axis] < children[i].box.max[axis])
-        throw Error("internal error: a quantized BVH box does not contain its child");
+  uint32_t exponents = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    // One float below the lowest child, so that plane 0 is strictly below it too (unless that overflows).
+    const float below = std::nextafter(all.min[axis], -std::numeric_limits<float>::infinity());
+    const float origin = std::isfinite(below) ? below : all.min[axis];
+    out.texels[0][axis] = asUint(origin);
+    // Start from the smallest power of two with 255 steps >= the extent (an estimate: the extent's double may
+    // be rounded), within the normal floats; one step coarser whenever a child's top does not fit.
+    int e = 0;
+    std::frexp((double(all.max[axis]) - double(origin)) / 255.0, &e);
+    // Never finer than the float spacing of the node's coordinates: every plane is then a float, as the GPU
+    // decodes it.
+    int magnitude = 0;
+    std::frexp(double(std::max(std::abs(all.min[axis]), std::abs(all.max[axis]))), &magnitude);
+    int biased = std::clamp(std::max(e, magnitude - 24) + 127, 1, 254);
+    std::array<uint32_t, 4> qlo{}, qhi{};
+    for (;; ++biased) {
+      if (biased > 254) throw Error("internal error: a BVH node's extent does not fit the quantized grid");
+      const double step = std::ldexp(1.0, biased - 127);
+      bool fits = true;
+      for (size_t i = 0; i < children.size() && fits; ++i) {
+        ExactOffset lo = exactOffset(children[i].box.min[axis], origin);
+        ExactOffset hi = exactOffset(children[i].box.max[axis], origin);
+        double guessLo = std::floor(lo.d / step), guessHi = std::ceil(hi.d / step);
+        int l = int(std::clamp(guessLo + 1.0, 0.0, 255.0)), h = int(std::clamp(guessHi - 1.0, 0.0, 256.0));
+        while (l > 0 && !planeBelow(l * step, lo)) --l;  // l = 0 is the origin: below every child
+        while (h <= 255 && !planeAbove(h * step, hi)) ++h;
+        fits = h <= 255;
+        qlo[i] = uint32_t(l), qhi[i] = uint32_t(h);
+      }
+      if (fits) break;
+    }
+    exponents |= uint32_t(biased) << (8 * axis);
+    for (size_t i = 0; i < children.size(); ++i) {
       uint32_t& loWord = axis < 2 ? out.texels[1][2 * axis] : out.texels[2][0];
       uint32_t& hiWord = axis < 2 ? out.texels[1][2 * axis + 1] : out.texels[2][1];
-      loWord = (loWord & ~(0xffu << (8 * i))) | (qlo << (8 * i));
-      hiWord = (hiWord & ~(0xffu << (8 * i))) | (qhi << (8 * i));
+      loWord = (loWord & ~(0xffu << (8 * i))) | (qlo[i] << (8 * i));
+      hiWord = (hiWord & ~(0xffu << (8 * i))) | (qhi[i] << (8 * i));
     }
+  }
+  out.texels[0].w = exponents;
   return out;
 }
 
@@ -302,7 +352,7 @@ Bvh buildBvh(std::span<const Aabb> bounds, const BvhOptions& options) {
   }
   bvh.nodes.resize(innerOrder.size());
   BvhStats& s = bvh.stats;
-  double rootArea = std::max(nodes[0].bounds.halfArea(), 1e-30f);
+  double rootArea = std::max(nodes[0].bounds.halfArea(), 1e-300);
   for (size_t g = 0; g < innerOrder.size(); ++g) {
     const BuildNode& node = nodes[innerOrder[g]];
     BvhGpuNode& gpu = bvh.nodes[g];
@@ -331,6 +381,7 @@ Bvh buildBvh(std::span<const Aabb> bounds, const BvhOptions& options) {
   s.maxDepth = builder.maxDepth;
   s.averageLeafSize = s.leaves ? static_cast<double>(bounds.size()) / s.leaves : 0.0;
   bvh.wideNodes = collapseToWide(bvh.nodes);
+  widenByOneFloat(bvh.nodes);
   s.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return bvh;
 }
@@ -369,16 +420,27 @@ HostHit traceHost(const Bvh& bvh, std::span<const glm::vec3> pos, glm::vec3 orig
   return best;
 }
 
+// origin + qs rounded to a float outwards (down for a low plane, up for a high one): the decoded box contains
+// the exact plane, so containment checks on it are exact.
+float roundedPlane(float origin, double qs, bool up) {
+  double s = double(origin) + qs, bv = s - origin, err = (double(origin) - (s - bv)) + (qs - bv);  // exact: s + err
+  float f = float(s);
+  double fMinusS = double(f) - s;  // exact (Sterbenz): f is within a rounding of s
+  if (up && fMinusS < err) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  if (!up && fMinusS > err) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  return f;
+}
+
 Aabb wideChildBox(const BvhWideNode& node, int i) {
   Aabb box;
   if (node.texels[3][i] == kBvhEmptySlot) return box;
   for (int axis = 0; axis < 3; ++axis) {
     double step = std::ldexp(1.0, int((node.texels[0].w >> (8 * axis)) & 0xffu) - 127);
-    double origin = asFloat(node.texels[0][axis]);
+    float origin = asFloat(node.texels[0][axis]);
     uint32_t lo = axis < 2 ? node.texels[1][2 * axis] : node.texels[2][0];
     uint32_t hi = axis < 2 ? node.texels[1][2 * axis + 1] : node.texels[2][1];
-    box.min[axis] = float(origin + ((lo >> (8 * i)) & 0xffu) * step);
-    box.max[axis] = float(origin + ((hi >> (8 * i)) & 0xffu) * step);
+    box.min[axis] = roundedPlane(origin, ((lo >> (8 * i)) & 0xffu) * step, false);
+    box.max[axis] = roundedPlane(origin, ((hi >> (8 * i)) & 0xffu) * step, true);
   }
   return box;
 }

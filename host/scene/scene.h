@@ -40,9 +40,10 @@ struct Aabb {
   void grow(const Aabb& b) { min = glm::min(min, b.min), max = glm::max(max, b.max); }
   bool valid() const { return min.x <= max.x && min.y <= max.y && min.z <= max.z; }
   glm::vec3 extent() const { return max - min; }
-  glm::vec3 center() const { return 0.5f * (min + max); }
-  float halfArea() const {
-    glm::vec3 e = glm::max(extent(), glm::vec3(0.0f));
+  glm::vec3 center() const { return 0.5f * min + 0.5f * max; }  // min + max could overflow
+  // In double: a float extent product overflows for scenes past ~1e19 and underflows below ~1e-19.
+  double halfArea() const {
+    glm::dvec3 e = glm::max(glm::dvec3(max) - glm::dvec3(min), glm::dvec3(0.0));
     return e.x * e.y + e.y * e.z + e.z * e.x;
   }
 };

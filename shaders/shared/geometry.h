@@ -125,10 +125,15 @@ VKMC_FN vec3 offsetRayOrigin(vec3 p, vec3 pError, vec3 n, vec3 w) {
 }
 
 VKMC_CONST float kSlabWiden = 1.0000004f;  // 1 + 2 gamma(3), rounded up
+// Vertex and camera coordinates beyond this are refused: the watertight test's products grow as distance cubed
+// and overflow float past ~7e12, and slab distances (below) must stay finite.
+VKMC_CONST float kMaxSceneCoordinate = 1e11f;
 
-// Directions with a zero component would give 0 * inf = NaN in the slab test.
+// Directions with a zero component would give 0 * inf = NaN in the slab test. The bound keeps every slab
+// distance finite in scenes within the loader's coordinate range (kMaxSceneCoordinate: 2e11 * 1e26 < FLT_MAX), so
+// the node step's fma never meets inf - inf.
 VKMC_FN vec3 safeInverse(vec3 d) {
-  const float tiny = 1e-30f;
+  const float tiny = 1e-26f;
   vec3 s = vec3(abs(d.x) < tiny ? (d.x < 0.0f ? -tiny : tiny) : d.x,
                 abs(d.y) < tiny ? (d.y < 0.0f ? -tiny : tiny) : d.y,
                 abs(d.z) < tiny ? (d.z < 0.0f ? -tiny : tiny) : d.z);
