@@ -186,6 +186,7 @@ int main(int argc, char** argv) {
       ro.specialize = !noSpecialize;
       ro.integrator = vkmc::integratorFromString(integrator);
       vkmc::validateOptions(ro);
+      if (!std::isfinite(exposure) || std::abs(exposure) > 100.0f) throw vkmc::Error("--exposure must be a finite number of stops in [-100, 100]");
       checkWritable(out, "--output");
       checkWritable(png, "--png");
       checkWritable(report, "--report");

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "../shaders/shared/geometry.h"
 #include "../shaders/shared/sampling.h"
 #include "bvh/bvh.h"
 #include "error.h"
@@ -30,6 +31,9 @@ void validateOptions(const RenderOptions& o) {
   if (o.estimator.maxDepth > kMaxDepthLimit) throw Error("--max-depth must be at most " + std::to_string(kMaxDepthLimit) + " (0 = no cap)");
   o.estimator.validate();
   if (o.lookFrom.has_value() != o.lookAt.has_value()) throw Error("--look-from and --look-at go together");
+  for (const auto& p : {o.lookFrom, o.lookAt})
+    if (p && !glm::all(glm::lessThanEqual(glm::abs(*p), glm::vec3(gpu::kMaxSceneCoordinate))))
+      throw Error("--look-from and --look-at must be finite and within +-1e11 (float ray tests overflow beyond)");
   if (!(o.fovDegrees > 0.0f && o.fovDegrees < 179.0f)) throw Error("--fov must be in (0, 179) degrees");
   for (int c = 0; c < 3; ++c)
     if (!(o.background[c] >= 0.0f) || !std::isfinite(o.background[c])) throw Error("--background must be finite and non-negative");
@@ -39,7 +43,9 @@ void validateOptions(const RenderOptions& o) {
 RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options) {
   validateOptions(options);
   auto t = Clock::now();
-  Scene scene = loadGltf(options.scenePath);
+  LoadLimits limits;
+  limits.maxTriangles = maxSceneTriangles(ctx);
+  Scene scene = loadGltf(options.scenePath, limits);
   double load = since(t);
   RenderOutcome out = runRender(ctx, options, std::move(scene));
   out.setup.load = load;
@@ -70,15 +76,22 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
   }
   // Unset sides follow the camera's aspect ratio (square when it has none); 256 pixels wide by default.
   double a = aspect.value_or(1.0f);
+  // The derived side in double, checked before it becomes an integer (an extreme aspect ratio would overflow).
+  auto derivedSide = [&](double side) {
+    side = std::max(1.0, std::round(side));
+    if (!(side <= kMaxImageSide))
+      throw Error("the camera's aspect ratio " + std::to_string(a) + " gives an image side of " + std::to_string(side) +
+                  " pixels, over " + std::to_string(kMaxImageSide) + ": set both --width and --height");
+    return static_cast<uint32_t>(side);
+  };
   uint32_t width, height;
   if (options.width && options.height) {
     width = *options.width, height = *options.height;
   } else if (options.height) {
-    height = *options.height, width = static_cast<uint32_t>(std::max(1.0, std::round(height * a)));
+    height = *options.height, width = derivedSide(height * a);
   } else {
-    width = options.width.value_or(256), height = static_cast<uint32_t>(std::max(1.0, std::round(width / a)));
+    width = options.width.value_or(256), height = derivedSide(width / a);
   }
-  if (width > kMaxImageSide || height > kMaxImageSide) throw Error("image size from the camera's aspect ratio is too large");
   if (!options.lookFrom && scene.cameras.empty()) camera = autoCamera(scene.bounds, float(width) / float(height));
   if (reference && (uint32_t(reference->width) != width || uint32_t(reference->height) != height))
     throw Error("reference '" + options.referencePath + "' is " + std::to_string(reference->width) + "x" +

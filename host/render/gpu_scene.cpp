@@ -1,6 +1,10 @@
 // Builds the device buffers from the scene in BVH leaf order and checks them against device limits.
 #include "render/gpu_scene.h"
 
+#include <unistd.h>
+
+#include "scene/gltf_loader.h"
+
 #include <bit>
 #include <glm/gtc/packing.hpp>
 
@@ -37,6 +41,15 @@ vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, uin
 
 VkFormat sceneTexelFormat(uint32_t binding) {
   return binding == BINDING_TRIANGLES ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R32G32B32A32_UINT;
+}
+
+uint64_t maxSceneTriangles(const vk::Context& ctx) {
+  uint64_t limit = uint64_t(ctx.properties().limits.maxTexelBufferElements) / 3;
+  if (ctx.maxAllocationBytes() > 0) limit = std::min<uint64_t>(limit, ctx.maxAllocationBytes() / 48);
+  if (ctx.largestDeviceLocalHeapBytes() > 0) limit = std::min<uint64_t>(limit, ctx.largestDeviceLocalHeapBytes() / 4 / 128);
+  long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+  if (pages > 0 && pageSize > 0) limit = std::min<uint64_t>(limit, uint64_t(pages) * uint64_t(pageSize) / 2 / 320);
+  return std::min<uint64_t>(limit, LoadLimits{}.maxTriangles);
 }
 
 GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool uniformLightSelection, bool keepBinaryBvh) {

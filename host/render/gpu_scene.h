@@ -23,6 +23,11 @@ struct GpuSceneInfo {
 // The view format of a scene texel binding (BINDING_TRIANGLES ... BINDING_LIGHTS), as common.glsl declares it.
 VkFormat sceneTexelFormat(uint32_t binding);
 
+// The most triangles a scene may have on this device and machine: its largest buffer (3 texels a triangle)
+// within maxTexelBufferElements and one allocation, everything within a quarter of device-local memory, and the
+// host's peak (~320 bytes a triangle while loading and building) within half of physical memory.
+uint64_t maxSceneTriangles(const vk::Context& ctx);
+
 class GpuScene {
  public:
   // uniformLightSelection: every emissive triangle equally likely; otherwise in proportion to emitted power.

@@ -8,12 +8,14 @@
 namespace vkmc {
 
 Camera lookAtCamera(glm::vec3 from, glm::vec3 at, float yfovDegrees) {
-  glm::vec3 f = at - from;
-  if (!(glm::length(f) > 0.0f) || !std::isfinite(glm::length(f))) throw Error("--look-from and --look-at must differ");
+  // In double: a float length under- or overflows for tiny (1e-30) or huge scenes.
+  glm::dvec3 f = glm::dvec3(at) - glm::dvec3(from);
+  double length = glm::length(f);
+  if (!(length > 0.0) || !std::isfinite(length)) throw Error("--look-from and --look-at must differ");
   if (!(yfovDegrees > 0.0f && yfovDegrees < 179.0f)) throw Error("--fov must be in (0, 179) degrees");
   Camera c;
   c.position = from;
-  c.forward = glm::normalize(f);
+  c.forward = glm::vec3(f / length);
   glm::vec3 worldUp(0.0f, 1.0f, 0.0f);
   if (std::abs(glm::dot(worldUp, c.forward)) > 0.999f) worldUp = glm::vec3(0.0f, 0.0f, -1.0f);
   c.up = glm::normalize(glm::cross(glm::cross(c.forward, worldUp), c.forward));

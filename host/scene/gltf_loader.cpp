@@ -11,7 +11,11 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <limits>
+#include <string_view>
 
+#include <sys/stat.h>
+
+#include "../shaders/shared/geometry.h"
 #include "error.h"
 
 namespace vkmc {
@@ -22,12 +26,17 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
   return true;
 }
 
-// Instancing can multiply a small file into an enormous scene (a node graph that references one subtree many
-// times): stop with an error long before memory runs out. 2^25 triangles is over 10x the largest sample model.
-constexpr size_t kMaxTriangles = size_t(1) << 25;
 constexpr size_t kMaxNodeVisits = size_t(1) << 22;
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool inRange(const glm::vec3& v) {
+  return finite(v) && glm::all(glm::lessThanEqual(glm::abs(v), glm::vec3(gpu::kMaxSceneCoordinate)));
+}
+std::string coordinateLimit() {
+  char buf[16];
+  std::snprintf(buf, sizeof(buf), "%g", double(gpu::kMaxSceneCoordinate));
+  return buf;
+}
 
 struct AccessorView {
   const unsigned char* data = nullptr;
@@ -74,8 +83,11 @@ AccessorView viewAccessor(const tinygltf::Model& model, int index, const char* w
   const tinygltf::Buffer& b = model.buffers[v.buffer];
   size_t stride = v.byteStride ? v.byteStride : elemSize;
   if (stride < elemSize) throw Error(name + " has a byte stride smaller than its element");
-  if (v.byteOffset + v.byteLength > b.data.size()) throw Error(name + ": buffer view runs past the end of its buffer");
-  if (a.count > 0 && a.byteOffset + (a.count - 1) * stride + elemSize > v.byteLength)
+  // Every bound by subtraction from a known size: sums of file-supplied offsets and counts can wrap.
+  if (v.byteOffset > b.data.size() || v.byteLength > b.data.size() - v.byteOffset)
+    throw Error(name + ": buffer view runs past the end of its buffer");
+  if (a.count > 0 && (a.byteOffset > v.byteLength || elemSize > v.byteLength - a.byteOffset ||
+                      (a.count - 1) > (v.byteLength - a.byteOffset - elemSize) / stride))
     throw Error(name + ": accessor runs past the end of its buffer view");
   AccessorView out;
   out.data = b.data.data() + v.byteOffset + a.byteOffset;
@@ -154,7 +166,8 @@ Material convertMaterial(const tinygltf::Material& m, int index, bool& usesTextu
 
 class Flattener {
  public:
-  Flattener(const tinygltf::Model& model, Scene& scene) : model_(model), scene_(scene) {}
+  Flattener(const tinygltf::Model& model, Scene& scene, uint64_t maxTriangles)
+      : model_(model), scene_(scene), maxTriangles_(maxTriangles) {}
 
   void visit(int nodeIndex, const glm::mat4& parent, int depth) {
     if (nodeIndex < 0 || nodeIndex >= static_cast<int>(model_.nodes.size()))
@@ -208,8 +221,9 @@ class Flattener {
       uint32_t materialId = materialIndex < 0 ? static_cast<uint32_t>(scene_.materials.size() - 1)  // default material
                                               : static_cast<uint32_t>(materialIndex);
       size_t vertexCount = indices ? indices->count : positions.count;
-      if (scene_.triangleCount() + vertexCount / 3 > kMaxTriangles)
-        throw Error("scene too big: more than " + std::to_string(kMaxTriangles) + " triangles after instancing");
+      if (scene_.triangleCount() + vertexCount / 3 > maxTriangles_)
+        throw Error("scene too big: more than " + std::to_string(maxTriangles_) +
+                    " triangles after instancing (what the device's buffers and this machine's memory hold)");
       for (size_t t = 0; t + 3 <= vertexCount; t += 3) {
         uint32_t idx[3];
         for (int k = 0; k < 3; ++k) {
@@ -224,14 +238,19 @@ class Flattener {
           if (!finite(local)) throw Error("vertex " + std::to_string(idx[k]) + " has a NaN or infinite position");
           p[k] = glm::vec3(world * glm::vec4(local, 1.0f));
           if (!finite(p[k])) throw Error("vertex " + std::to_string(idx[k]) + " is not finite after its node transform");
+          if (!inRange(p[k]))
+            throw Error("vertex " + std::to_string(idx[k]) + " lies beyond +-" + coordinateLimit() +
+                        " after its node transform (float ray tests overflow there; scale the scene down)");
         }
-        glm::vec3 geometric = glm::cross(p[1] - p[0], p[2] - p[0]);
-        float len = glm::length(geometric);
-        if (!(len > 0.0f) || !std::isfinite(len)) {
+        // In double: the cross product of edges longer than ~4e9 overflows float (a huge ground plane is not
+        // degenerate).
+        glm::dvec3 cross = glm::cross(glm::dvec3(p[1]) - glm::dvec3(p[0]), glm::dvec3(p[2]) - glm::dvec3(p[0]));
+        double len = glm::length(cross);
+        glm::vec3 geometric = glm::vec3(cross / len);
+        if (!(len > 0.0) || !finite(geometric) || geometric == glm::vec3(0.0f)) {
           ++scene_.degenerateTriangles;
           continue;
         }
-        geometric /= len;
         for (int k = 0; k < 3; ++k) {
           glm::vec3 nk = normals ? normalMatrix * readVec3(*normals, idx[k]) : geometric;
           float nl = glm::length(nk);
@@ -251,18 +270,27 @@ class Flattener {
     const tinygltf::Camera& c = model_.cameras[cameraIndex];
     Camera cam;
     cam.name = c.name;
+    std::string name = "camera " + std::to_string(cameraIndex);
     cam.position = glm::vec3(world[3]);
-    cam.forward = glm::normalize(-glm::vec3(world[2]));
-    cam.up = glm::normalize(glm::vec3(world[1]));
+    glm::dvec3 forward = -glm::dvec3(glm::vec3(world[2])), up = glm::dvec3(glm::vec3(world[1]));
+    // A basis needs two independent axes: parallel or zero Y and Z columns would give NaN everywhere.
+    double sine = glm::length(glm::cross(forward, up)) / (glm::length(forward) * glm::length(up));
+    if (!(sine > 1e-6)) throw Error(name + ": its node transform's Y and Z axes are parallel or zero (no view basis)");
+    cam.forward = glm::vec3(glm::normalize(forward));
+    cam.up = glm::vec3(glm::normalize(up));
+    if (!inRange(cam.position)) throw Error(name + ": position beyond +-" + coordinateLimit() + " or not finite");
     if (c.type == "orthographic") {
       cam.kind = CameraKind::Orthographic;
       cam.xmag = static_cast<float>(c.orthographic.xmag);
       cam.ymag = static_cast<float>(c.orthographic.ymag);
-      if (!(cam.xmag > 0.0f) || !(cam.ymag > 0.0f)) throw Error("orthographic camera with non-positive magnification");
+      if (!(cam.xmag > 0.0f && cam.xmag < 1e30f) || !(cam.ymag > 0.0f && cam.ymag < 1e30f))
+        throw Error("orthographic camera with a magnification that is not a positive number");
       cam.aspectRatio = cam.xmag / cam.ymag;
     } else {
       cam.yfov = static_cast<float>(c.perspective.yfov);
       if (!(cam.yfov > 0.0f && cam.yfov < 3.14f)) throw Error("perspective camera with yfov outside (0, pi)");
+      if (c.perspective.aspectRatio != 0.0 && !(c.perspective.aspectRatio > 0.0 && c.perspective.aspectRatio < 1e30))
+        throw Error(name + ": aspectRatio " + std::to_string(c.perspective.aspectRatio) + " is not a positive number");
       if (c.perspective.aspectRatio > 0.0) cam.aspectRatio = static_cast<float>(c.perspective.aspectRatio);
     }
     if (!finite(cam.position) || !finite(cam.forward) || !finite(cam.up)) throw Error("camera transform is not finite");
@@ -271,27 +299,65 @@ class Flattener {
 
   const tinygltf::Model& model_;
   Scene& scene_;
+  uint64_t maxTriangles_;
   size_t visits_ = 0;
 };
 
+// tinygltf's file access, made safe for untrusted URIs: no blocking opens (its FileExists opens the file, which
+// waits forever on a FIFO), only regular files, no file larger than `maxBytes`, nothing written.
+struct SafeFs {
+  uint64_t maxBytes = 0;
+};
+
+bool safeFileExists(const std::string& path, void*) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0;
+}
+std::string noExpansion(const std::string& path, void*) { return path; }
+bool safeReadWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  try {
+    *out = readRegularFile(path, static_cast<SafeFs*>(user)->maxBytes, "URI file");
+    return true;
+  } catch (const Error& e) {
+    if (err) *err = e.what();
+    return false;
+  }
+}
+bool noWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
+
 }  // namespace
 
-Scene loadGltf(const std::string& path) {
+Scene loadGltf(const std::string& path, const LoadLimits& limits) {
   namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw Error("cannot open scene '" + path + "'");
-  tinygltf::Model model;
-  tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(skipImage, nullptr);
-  std::string err, warn;
+  std::vector<unsigned char> bytes = readRegularFile(path, limits.input.maxSceneFileBytes, "scene");
   std::string ext = fs::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  bool ok = ext == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                          : loader.LoadASCIIFromFile(&model, &err, &warn, path);
-  if (!ok) {
-    std::string reason = err.empty() ? "unknown error" : err;
+  std::string baseDir = fs::path(path).parent_path().string();
+  return loadGltfFromMemory(bytes, ext == ".glb", baseDir.empty() ? "." : baseDir, path, limits);
+}
+
+Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, const std::string& baseDir,
+                         const std::string& path, const LoadLimits& limits) {
+  tinygltf::Model model;
+  try {
+    std::string_view json = binary ? glbJsonChunk(bytes)
+                                   : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    uint64_t largestBuffer = scanGltfJson(json, limits.input);
+    // Buffers must match their declared byteLength exactly (tinygltf checks after reading); images are not
+    // decoded yet, so anything beyond the largest buffer or 256 MiB is refused before it is read.
+    SafeFs safeFs{std::min(limits.input.maxExternalFileBytes, std::max<uint64_t>(largestBuffer, uint64_t(1) << 28))};
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(skipImage, nullptr);
+    loader.SetFsCallbacks({safeFileExists, noExpansion, safeReadWholeFile, noWrite, &safeFs});
+    std::string err, warn;
+    bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), static_cast<unsigned>(bytes.size()), baseDir)
+                     : loader.LoadASCIIFromString(&model, &err, &warn, json.data(), static_cast<unsigned>(json.size()), baseDir);
+    if (!ok) throw Error(err.empty() ? "unknown error" : err);
+  } catch (const Error& e) {
+    std::string reason = e.what();
     while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' ')) reason.pop_back();
-    for (char& c : reason) if (c == '\n') c = ';';
+    for (char& c : reason)
+      if (c == '\n') c = ';';
     throw Error("cannot load '" + path + "': " + reason);
   }
 
@@ -307,7 +373,7 @@ Scene loadGltf(const std::string& path) {
   for (const std::string& e : model.extensionsUsed) scene.hasPunctualLights |= e == "KHR_lights_punctual";
   if (scene.hasPunctualLights) scene.warnings.push_back("KHR_lights_punctual lights are not supported yet and were ignored");
 
-  Flattener flattener(model, scene);
+  Flattener flattener(model, scene, limits.maxTriangles);
   if (!model.scenes.empty()) {
     int sceneIndex = model.defaultScene >= 0 && model.defaultScene < static_cast<int>(model.scenes.size()) ? model.defaultScene : 0;
     for (int root : model.scenes[sceneIndex].nodes) flattener.visit(root, glm::mat4(1.0f), 0);

@@ -42,6 +42,10 @@ Context::Context(const ContextOptions& options) {
   vkGetPhysicalDeviceProperties(physical_, &properties_);
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
   if (properties_.apiVersion < VK_API_VERSION_1_2) throw Error(std::string("device ") + properties_.deviceName + " lacks Vulkan 1.2");
+  VkPhysicalDeviceMaintenance3Properties m3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+  VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &m3};
+  vkGetPhysicalDeviceProperties2(physical_, &p2);
+  maxAllocationBytes_ = m3.maxMemoryAllocationSize;
 
   vkGetPhysicalDeviceQueueFamilyProperties(physical_, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);

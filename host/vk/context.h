@@ -2,6 +2,7 @@
 #pragma once
 #include <vulkan/vulkan.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -30,6 +31,13 @@ class Context {
   bool hasTimestamps() const { return timestampBits_ > 0; }
   bool hasFloatAtomics() const { return floatAtomics_; }  // shaderBufferFloat32AtomicAdd enabled
   double timestampPeriodNs() const { return properties_.limits.timestampPeriod; }
+  uint64_t maxAllocationBytes() const { return maxAllocationBytes_; }  // maxMemoryAllocationSize
+  uint64_t largestDeviceLocalHeapBytes() const {
+    uint64_t best = 0;
+    for (uint32_t i = 0; i < memory_.memoryHeapCount; ++i)
+      if (memory_.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) best = std::max<uint64_t>(best, memory_.memoryHeaps[i].size);
+    return best;
+  }
 
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) const;
 
@@ -46,6 +54,7 @@ class Context {
   uint32_t queueFamily_ = 0;
   uint32_t timestampBits_ = 0;
   bool floatAtomics_ = false;
+  uint64_t maxAllocationBytes_ = 0;
   VkCommandPool pool_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
   VkPhysicalDeviceProperties properties_{};

@@ -1,0 +1,131 @@
+// Untrusted-input checks that run before tinygltf (see the header for why each exists).
+#include "scene/gltf_input_guard.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <nlohmann/json.hpp>
+
+#include "error.h"
+
+namespace vkmc {
+
+std::vector<unsigned char> readRegularFile(const std::string& path, uint64_t maxBytes, const std::string& what) {
+  // O_NONBLOCK: opening a FIFO without a writer would otherwise wait forever.
+  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw Error("cannot open " + what + " '" + path + "': " + std::strerror(errno));
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    throw Error(what + " '" + path + "' is not a regular file");
+  }
+  if (uint64_t(st.st_size) > maxBytes) {
+    ::close(fd);
+    throw Error(what + " '" + path + "' is " + std::to_string(st.st_size) + " bytes, over the limit of " +
+                std::to_string(maxBytes));
+  }
+  std::vector<unsigned char> bytes(size_t(st.st_size));
+  size_t done = 0;
+  while (done < bytes.size()) {
+    ssize_t n = ::read(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      ::close(fd);
+      throw Error("cannot read " + what + " '" + path + "'" + (n < 0 ? std::string(": ") + std::strerror(errno) : ": file shrank"));
+    }
+    done += size_t(n);
+  }
+  ::close(fd);
+  return bytes;
+}
+
+std::string_view glbJsonChunk(const std::vector<unsigned char>& glb) {
+  auto word = [&](size_t offset) {
+    uint32_t w;
+    std::memcpy(&w, glb.data() + offset, 4);
+    return w;
+  };
+  if (glb.size() < 20 || word(0) != 0x46546C67u) throw Error("not a GLB file (no 'glTF' magic)");
+  if (word(4) != 2) throw Error("GLB version " + std::to_string(word(4)) + " (only 2 is supported)");
+  uint64_t length = word(8), jsonLength = word(12);
+  if (length > glb.size()) throw Error("GLB header length " + std::to_string(length) + " exceeds the file's " + std::to_string(glb.size()) + " bytes");
+  if (word(16) != 0x4E4F534Au) throw Error("GLB's first chunk is not JSON");
+  uint64_t jsonEnd = 20 + jsonLength;
+  if (jsonLength == 0 || jsonEnd > length) throw Error("GLB JSON chunk of " + std::to_string(jsonLength) + " bytes runs past the file");
+  if (jsonEnd % 4 != 0) throw Error("GLB JSON chunk is not padded to 4 bytes");
+  if (jsonEnd < length) {  // a BIN chunk: its 8-byte header and its data must both lie inside the file
+    if (jsonEnd + 8 > length) throw Error("GLB BIN chunk header runs past the file");
+    uint64_t binLength = word(size_t(jsonEnd));
+    if (jsonEnd + 8 + binLength > length)
+      throw Error("GLB BIN chunk of " + std::to_string(binLength) + " bytes runs past the file's end");
+  }
+  return std::string_view(reinterpret_cast<const char*>(glb.data()) + 20, size_t(jsonLength));
+}
+
+namespace {
+
+// Counts values and tracks depth without building anything; stops at the first limit crossed.
+class BoundedScan : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  explicit BoundedScan(const InputLimits& limits) : limits_(limits) {}
+  std::string problem;
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override { return open(); }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(); }
+  bool end_array() override { return close(); }
+  bool key(string_t&) override { return true; }
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) override {
+    std::string what = e.what();  // "[json.exception.parse_error.101] parse error at ...: reason"
+    size_t bracket = what.find("] ");
+    problem = "invalid JSON at byte " + std::to_string(position) + ": " + (bracket == std::string::npos ? what : what.substr(bracket + 2));
+    return false;
+  }
+
+ private:
+  bool value() {
+    if (++values_ <= limits_.maxJsonValues) return true;
+    problem = "JSON holds more than " + std::to_string(limits_.maxJsonValues) + " values";
+    return false;
+  }
+  bool open() {
+    if (++depth_ <= limits_.maxJsonDepth) return value();
+    problem = "JSON nested deeper than " + std::to_string(limits_.maxJsonDepth) + " levels";
+    return false;
+  }
+  bool close() {
+    --depth_;
+    return true;
+  }
+  const InputLimits& limits_;
+  uint64_t values_ = 0;
+  uint32_t depth_ = 0;
+};
+
+}  // namespace
+
+uint64_t scanGltfJson(std::string_view json, const InputLimits& limits) {
+  BoundedScan scan(limits);
+  if (!nlohmann::json::sax_parse(json.begin(), json.end(), &scan) || !scan.problem.empty())
+    throw Error(scan.problem.empty() ? std::string("invalid JSON") : scan.problem);
+  // Bounded now: read what the file declares about its buffers.
+  nlohmann::json doc = nlohmann::json::parse(json.begin(), json.end());
+  uint64_t largest = 0;
+  if (doc.is_object() && doc.contains("buffers") && doc["buffers"].is_array())
+    for (const auto& b : doc["buffers"])
+      if (b.is_object() && b.contains("byteLength") && b["byteLength"].is_number_unsigned())
+        largest = std::max<uint64_t>(largest, b["byteLength"].get<uint64_t>());
+  return largest;
+}
+
+}  // namespace vkmc

@@ -1,0 +1,30 @@
+// Checks on untrusted glTF input before tinygltf sees it: files are opened without blocking and read only when
+// they are regular and of plausible size, GLB containers are validated chunk by chunk, and JSON is scanned for
+// nesting depth and value count (tinygltf's JSON-to-Value conversion recurses, and a few MB of numbers cost GBs).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vkmc {
+
+struct InputLimits {
+  uint64_t maxSceneFileBytes = uint64_t(1) << 31;     // a .gltf or .glb
+  uint64_t maxExternalFileBytes = uint64_t(1) << 31;  // a buffer or image URI
+  uint32_t maxJsonDepth = 64;                         // glTF itself needs about 8
+  uint64_t maxJsonValues = uint64_t(1) << 23;         // ~1 GB of parsed values at most
+};
+
+// The bytes of a regular file no larger than maxBytes; `what` names it in the one-line error otherwise (a FIFO,
+// a folder or a device is refused without blocking).
+std::vector<unsigned char> readRegularFile(const std::string& path, uint64_t maxBytes, const std::string& what);
+
+// The JSON chunk of a GLB container whose header, chunk lengths and alignment are consistent with its size.
+std::string_view glbJsonChunk(const std::vector<unsigned char>& glb);
+
+// Throws vkmc::Error when the JSON is malformed, nested deeper than limits.maxJsonDepth or holds more than
+// limits.maxJsonValues values. Returns the largest declared buffers[].byteLength (0 if none).
+uint64_t scanGltfJson(std::string_view json, const InputLimits& limits);
+
+}  // namespace vkmc
