@@ -15,6 +15,7 @@
 #include "analysis/study.h"
 #include <fstream>
 #include "io/exr.h"
+#include "io/output_files.h"
 #include "io/png.h"
 #include "vk/context.h"
 
@@ -30,14 +31,6 @@ glm::vec3 parseVec3(const std::string& text, const char* flag) {
 }
 
 // Output folders are checked before rendering, so a bad path fails in a second, not after the render.
-void checkWritable(const std::string& path, const char* flag) {
-  if (path.empty()) return;
-  std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  if (parent.empty()) parent = ".";
-  std::error_code ec;
-  if (!std::filesystem::is_directory(parent, ec)) throw vkmc::Error(std::string(flag) + ": folder '" + parent.string() + "' does not exist");
-  if (std::filesystem::is_directory(path, ec)) throw vkmc::Error(std::string(flag) + ": '" + path + "' is a folder");
-}
 
 }  // namespace
 
@@ -187,17 +180,19 @@ int main(int argc, char** argv) {
       ro.integrator = vkmc::integratorFromString(integrator);
       vkmc::validateOptions(ro);
       if (!std::isfinite(exposure) || std::abs(exposure) > 100.0f) throw vkmc::Error("--exposure must be a finite number of stops in [-100, 100]");
-      checkWritable(out, "--output");
-      checkWritable(png, "--png");
-      checkWritable(report, "--report");
+      vkmc::checkOutputPaths({{"--output", out}, {"--png", png}, {"--report", report}},
+                             {ro.scenePath, ro.referencePath, estimatorFile});
 
       vkmc::vk::Context ctx;
       vkmc::RenderOutcome result = vkmc::runRender(ctx, ro);
-      vkmc::writeFilmExr(out, result.film);
-      if (!png.empty()) vkmc::writeFilmPng(png, result.film, exposure);
       nlohmann::json j = vkmc::makeReport(ro, result);
       j["output"] = out;
-      if (!report.empty()) vkmc::writeFileAtomically(report, j.dump(2) + "\n");
+      // All outputs or none: the EXR is not replaced when the PNG or the report cannot be written.
+      vkmc::OutputSet outputs;
+      outputs.add(out, vkmc::encodeFilmExr(result.film));
+      if (!png.empty()) outputs.add(png, vkmc::encodeFilmPng(result.film, exposure));
+      if (!report.empty()) outputs.add(report, j.dump(2) + "\n");
+      outputs.commit();
       if (!quiet) std::cout << vkmc::summaryText(ro, result) << "output      " << out << "\n";
       for (const auto& w : result.warnings)
         if (quiet) std::fprintf(stderr, "vkmc: warning: %s\n", w.c_str());
@@ -217,8 +212,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (compare->parsed()) {
-      checkWritable(cmpJson, "--json");
-      checkWritable(cmpHeatmap, "--heatmap");
+      vkmc::checkOutputPaths({{"--json", cmpJson}, {"--heatmap", cmpHeatmap}}, {cmpImage, cmpReference});
       vkmc::ExrImage a = vkmc::readExr(cmpImage), b = vkmc::readExr(cmpReference);
       vkmc::ErrorMetrics e = vkmc::compareImages(a, b);
       nlohmann::json j = {{"image", cmpImage}, {"reference", cmpReference}, {"width", a.width}, {"height", a.height},

@@ -8,39 +8,15 @@
 #include <sstream>
 
 #include "io/exr.h"
+#include "cli_run.h"
 #include "test_scenes.h"
 
 namespace fs = std::filesystem;
-
-namespace {
-
-struct RunResult {
-  int code;
-  std::string out, err;
-};
-
-fs::path workDir() {
-  static fs::path d = vkmc::test::makeTempDir("cli");
-  return d;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-RunResult runVkmc(const std::string& args) {
-  fs::path out = workDir() / "stdout.txt", err = workDir() / "stderr.txt";
-  std::string cmd = std::string(VKMC_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
-  int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-}
-
-std::string cornell() { return std::string(VKMC_SOURCE_DIR) + "/scenes/cornell_box.gltf"; }
-
-}  // namespace
+using vkmc::test::cornell;
+using vkmc::test::RunResult;
+using vkmc::test::runVkmc;
+using vkmc::test::slurp;
+using vkmc::test::workDir;
 
 TEST(Cli, RenderWritesExrPngAndAConsistentReport) {
   fs::path exr = workDir() / "ok.exr", png = workDir() / "ok.png", report = workDir() / "ok.json";
@@ -145,7 +121,7 @@ TEST(Cli, BadInputFailsCleanlyAndWritesNothing) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "stderr: " << r.err;
     EXPECT_EQ(slurp(out), good) << "a failed run touched the existing output";
     EXPECT_FALSE(fs::exists(report));
-    for (const auto& f : fs::directory_iterator(d)) EXPECT_EQ(f.path().string().find(".tmp-"), std::string::npos);
+    for (const auto& f : fs::directory_iterator(d)) EXPECT_EQ(f.path().string().find(".vkmc-"), std::string::npos);
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include "error.h"
 #include "io/exr.h"
+#include "io/output_files.h"
 
 using namespace vkmc;
 

@@ -18,6 +18,7 @@
 #include "app/render_job.h"
 #include "error.h"
 #include "io/exr.h"
+#include "io/output_files.h"
 #include "io/png.h"
 #include "scene/gltf_loader.h"
 

@@ -16,6 +16,7 @@
 #include "render/ray_tracer.h"
 #include "scene/gltf_loader.h"
 #include "io/exr.h"
+#include "io/output_files.h"
 #include "vk/context.h"
 
 namespace vkmc {

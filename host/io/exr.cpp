@@ -6,48 +6,16 @@
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
-#include <unistd.h>
+#include <ImfStdIO.h>
 
-#include <atomic>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 
 #include "analysis/error_metrics.h"
 #include "error.h"
+#include "io/output_files.h"
 
 namespace vkmc {
 
-std::string temporaryPathFor(const std::string& path) {
-  static std::atomic<int> counter{0};
-  return path + ".tmp-" + std::to_string(getpid()) + "-" + std::to_string(counter++);
-}
-
-void commitTemporary(const std::string& tmp, const std::string& path) {
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw Error("cannot write '" + path + "': " + ec.message());
-  }
-}
-
-void writeFileAtomically(const std::string& path, const std::string& bytes) {
-  std::string tmp = temporaryPathFor(path);
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw Error("cannot write '" + path + "'");
-    }
-  }
-  commitTemporary(tmp, path);
-}
-
-void writeExr(const std::string& path, const ExrImage& image) {
-  std::string tmp = temporaryPathFor(path);
+std::string encodeExr(const ExrImage& image) {
   try {
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
@@ -57,20 +25,24 @@ void writeExr(const std::string& path, const ExrImage& image) {
       header.channels().insert(name, Imf::Channel(Imf::FLOAT));
       fb.insert(name, Imf::Slice(Imf::FLOAT, (char*)data.data(), sizeof(float), sizeof(float) * image.width));
     }
-    Imf::OutputFile file(tmp.c_str(), header);
-    file.setFrameBuffer(fb);
-    file.writePixels(image.height);
+    Imf::StdOSStream stream;
+    {
+      Imf::OutputFile file(stream, header);
+      file.setFrameBuffer(fb);
+      file.writePixels(image.height);
+    }
+    return stream.str();
   } catch (const Error&) {
-    std::remove(tmp.c_str());
     throw;
   } catch (const std::exception& e) {
-    std::remove(tmp.c_str());
-    throw Error("cannot write '" + path + "': " + e.what());
+    throw Error(std::string("cannot encode EXR: ") + e.what());
   }
-  commitTemporary(tmp, path);
 }
 
+void writeExr(const std::string& path, const ExrImage& image) { writeFileAtomically(path, encodeExr(image)); }
+
 void writeFilmExr(const std::string& path, const Film& film) { writeExr(path, filmToImage(film)); }
+std::string encodeFilmExr(const Film& film) { return encodeExr(filmToImage(film)); }
 
 ExrImage readExr(const std::string& path) {
   try {

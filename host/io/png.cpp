@@ -11,6 +11,7 @@
 
 #include "error.h"
 #include "io/exr.h"
+#include "io/output_files.h"
 
 #include <stb/stb_easy_font.h>
 
@@ -24,18 +25,20 @@ uint8_t toSrgb8(double linear) {
 }  // namespace
 
 namespace {
-void writeRgbPng(const std::string& path, const std::vector<uint8_t>& rgb, uint32_t width, uint32_t height) {
+std::string encodeRgbPng(const std::vector<uint8_t>& rgb, uint32_t width, uint32_t height) {
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
   image.width = width;
   image.height = height;
   image.format = PNG_FORMAT_RGB;
-  std::string tmp = temporaryPathFor(path);
-  if (!png_image_write_to_file(&image, tmp.c_str(), 0, rgb.data(), 0, nullptr)) {
-    std::remove(tmp.c_str());
-    throw Error("cannot write PNG '" + path + "': " + image.message);
-  }
-  commitTemporary(tmp, path);
+  png_alloc_size_t size = 0;
+  if (!png_image_write_to_memory(&image, nullptr, &size, 0, rgb.data(), 0, nullptr))
+    throw Error(std::string("cannot encode PNG: ") + image.message);
+  std::string bytes(size, '\0');
+  if (!png_image_write_to_memory(&image, bytes.data(), &size, 0, rgb.data(), 0, nullptr))
+    throw Error(std::string("cannot encode PNG: ") + image.message);
+  bytes.resize(size);
+  return bytes;
 }
 
 // Draws text with stb_easy_font (axis-aligned quads) in black, scaled by `scale`, at (x, y).
@@ -78,15 +81,19 @@ void writeContactSheet(const std::string& path, const std::vector<ExrImage>& ima
         }
     drawText(rgb, width, height, int(x0) + 2, 4, k < labels.size() ? labels[k] : "", w >= 320 ? 2 : 1);
   }
-  writeRgbPng(path, rgb, width, height);
+  writeFileAtomically(path, encodeRgbPng(rgb, width, height));
 }
 
-void writeFilmPng(const std::string& path, const Film& film, float exposureStops) {
+std::string encodeFilmPng(const Film& film, float exposureStops) {
   double scale = std::exp2(static_cast<double>(exposureStops));
   std::vector<uint8_t> rgb(film.pixels() * 3);
   for (size_t p = 0; p < film.pixels(); ++p)
     for (int c = 0; c < 3; ++c) rgb[3 * p + c] = toSrgb8(film.mean(p, c) * scale);
-  writeRgbPng(path, rgb, film.width, film.height);
+  return encodeRgbPng(rgb, film.width, film.height);
+}
+
+void writeFilmPng(const std::string& path, const Film& film, float exposureStops) {
+  writeFileAtomically(path, encodeFilmPng(film, exposureStops));
 }
 
 }  // namespace vkmc

@@ -10,6 +10,7 @@
 
 namespace vkmc {
 void writeFilmPng(const std::string& path, const Film& film, float exposureStops);
+std::string encodeFilmPng(const Film& film, float exposureStops);
 // Images side by side (same size), each under its label, tone-mapped to sRGB with one shared exposure.
 void writeContactSheet(const std::string& path, const std::vector<ExrImage>& images, const std::vector<std::string>& labels,
                        float exposureStops);

@@ -8,6 +8,7 @@
 #include "../shaders/shared/sampling.h"
 #include "error.h"
 #include "io/exr.h"
+#include "io/output_files.h"
 #include "render/ray_tracer.h"
 #include "scene/camera_rig.h"
 

@@ -2,6 +2,7 @@
 #include "render/film.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace vkmc {
 
@@ -11,8 +12,8 @@ Film::Film(uint32_t w, uint32_t h)
 void Film::addBatch(const FilmBatchPixel* px) {
   for (size_t p = 0; p < pixels(); ++p) {
     for (int c = 0; c < 3; ++c) {
-      sum[3 * p + c] += px[p].sum[c];
-      sumSq[3 * p + c] += px[p].sumSq[c];
+      sum[3 * p + c] += px[p].sum[c] + std::ldexp(double(px[p].sumHigh[c]), 96);
+      sumSq[3 * p + c] += px[p].sumSq[c] + std::ldexp(double(px[p].sumSqHigh[c]), 192);
     }
     count[p] += static_cast<uint64_t>(px[p].sum[3]);
     nonfinite[p] += static_cast<uint64_t>(px[p].sumSq[3]);

@@ -10,8 +10,10 @@ namespace vkmc {
 
 // Mirrors gpu::FilmPixel (layout.h) without pulling the shared header into every includer.
 struct FilmBatchPixel {
-  float sum[4];    // rgb, finite samples
-  float sumSq[4];  // rgb, non-finite samples
+  float sum[4];        // rgb, finite samples
+  float sumSq[4];      // rgb, non-finite samples
+  float sumHigh[4];    // rgb of channels >= 2^56, times 2^-96
+  float sumSqHigh[4];  // their squares
 };
 
 struct Film {

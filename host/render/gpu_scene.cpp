@@ -63,7 +63,7 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   for (uint32_t i = 0; i < n; ++i) {
     uint32_t src = bvh.triangleOrder[i];
     const glm::vec3* p = &scene.positions[3 * src];
-    triangleArea[i] = 0.5f * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
+    triangleArea[i] = float(0.5 * glm::length(glm::cross(glm::dvec3(p[1] - p[0]), glm::dvec3(p[2] - p[0]))));
     const Material& m = scene.materials[scene.materialIds[src]];
     if (m.isEmissive() && triangleArea[i] > 0.0f) {
       double sides = m.doubleSided ? 2.0 : 1.0;

@@ -21,7 +21,7 @@ SurfacePoint surfaceAt(uint tri, vec2 b12, vec3 wo) {
   SurfacePoint s;
   s.p = b.x * v0 + b.y * v1 + b.z * v2;
   s.pError = barycentricError(b, v0, v1, v2);
-  s.ng = normalize(cross(v1 - v0, v2 - v0));
+  s.ng = normalize(scaledTriangleCross(v0, v1, v2).xyz);
   s.frontFace = dot(s.ng, wo) > 0.0;
   if (!s.frontFace) s.ng = -s.ng;
   uvec4 info = imageLoad(triangleInfo, int(tri));
@@ -76,7 +76,8 @@ float lightPdf(uint tri, float pmf, vec3 p, float dist2, float cosLight) {
     float omega = triangleSolidAngle(p, v0, v1, v2);
     if (useSphericalSampling(omega)) return pmf / omega;
   }
-  float area = 0.5 * length(cross(v1 - v0, v2 - v0));
+  vec4 c = scaledTriangleCross(v0, v1, v2);
+  float area = 0.5 * length(c.xyz) * c.w * c.w;
   return pmf * dist2 / (area * cosLight);
 }
 
@@ -100,10 +101,10 @@ bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo
   float pmf = uintBitsToFloat(light.y);
   vec3 v0, v1, v2;
   triangleVertices(light.x, v0, v1, v2);
-  vec3 cr = cross(v1 - v0, v2 - v0);
-  float area = 0.5 * length(cr);
+  vec4 cr = scaledTriangleCross(v0, v1, v2);
+  float area = 0.5 * length(cr.xyz) * cr.w * cr.w;
   if (!(area > 0.0)) return false;
-  vec3 nl = cr / (2.0 * area);
+  vec3 nl = normalize(cr.xyz);
   vec2 u = vec2(randomUnit(key, lightDim(depth, j, 1u)), randomUnit(key, lightDim(depth, j, 2u)));
   vec3 pl;
   vec3 plError;

@@ -1,7 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Stage 5: each finished path's estimate into its pixel's batch sums. One invocation per pixel walks that
-// pixel's samples of the pass, so no atomics. Non-finite estimates are counted and left out, never written.
+// pixel's samples of the pass, so no atomics. Non-finite estimates are counted and left out, never written;
+// finite ones always count, however large (FilmPixel's high sums).
 #include "common.glsl"
 
 void main() {
@@ -11,9 +12,13 @@ void main() {
   FilmPixel f = film[pixel];
   for (uint s = 0u; s < pc.samplesPerPass; ++s) {
     vec3 L = paths[s * pc.pixelCount + i].radiance.rgb;
-    if (allFinite(L) && allFinite(L * L)) {
-      f.sum += vec4(L, 1.0);
-      f.sumSq.rgb += L * L;
+    if (allFinite(L)) {
+      bvec3 high = greaterThanEqual(abs(L), vec3(kFilmHighThreshold));
+      vec3 low = mix(L, vec3(0.0), high), scaled = mix(vec3(0.0), L * kFilmHighScale, high);
+      f.sum += vec4(low, 1.0);
+      f.sumSq.rgb += low * low;
+      f.sumHigh.rgb += scaled;
+      f.sumSqHigh.rgb += scaled * scaled;
     } else {
       f.sumSq.w += 1.0;
     }

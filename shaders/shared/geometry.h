@@ -129,6 +129,17 @@ VKMC_CONST float kSlabWiden = 1.0000004f;  // 1 + 2 gamma(3), rounded up
 // and overflow float past ~7e12, and slab distances (below) must stay finite.
 VKMC_CONST float kMaxSceneCoordinate = 1e11f;
 
+// A triangle's edge cross product divided by s^2, s = the edges' largest component (.w): finite for any edges
+// within the coordinate range, where a plain cross of edges over ~4e9 overflows float once squared (a huge ground
+// plane would get a zero normal and an infinite area). Normal: normalize(c.xyz); area: 0.5 * length(c.xyz) * s * s.
+VKMC_FN vec4 scaledTriangleCross(vec3 v0, vec3 v1, vec3 v2) {
+  vec3 e1 = v1 - v0, e2 = v2 - v0;
+  vec3 m = max(abs(e1), abs(e2));
+  float s = max(max(m.x, m.y), max(m.z, 1e-30f));
+  float inv = 1.0f / s;
+  return vec4(cross(e1 * inv, e2 * inv), s);
+}
+
 // Directions with a zero component would give 0 * inf = NaN in the slab test. The bound keeps every slab
 // distance finite in scenes within the loader's coordinate range (kMaxSceneCoordinate: 2e11 * 1e26 < FLT_MAX), so
 // the node step's fma never meets inf - inf.

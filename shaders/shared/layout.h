@@ -89,11 +89,18 @@ struct Material {
   vec4 params;    // x: metallic, y: roughness, z: specular factor, w: unused
 };
 
-// Film of one batch: float partial sums, folded into double on the host every batch.
+// Film of one batch: float partial sums, folded into double on the host every batch. A channel whose magnitude
+// reaches kFilmHighThreshold (2^56) goes to the high sums scaled by kFilmHighScale (2^-96): its square would
+// overflow float past ~1.8e19, and every finite value up to FLT_MAX (2^128) must count. The host adds the high
+// sums back times 2^96 (squares 2^192) in double.
 struct FilmPixel {
-  vec4 sum;   // rgb: sum of estimates, w: finite samples
-  vec4 sumSq; // rgb: sum of squares, w: non-finite samples (counted, excluded)
+  vec4 sum;       // rgb: sum of estimate channels below the threshold, w: finite samples
+  vec4 sumSq;     // rgb: sum of their squares, w: non-finite samples (counted, excluded)
+  vec4 sumHigh;   // rgb: sum of channels at or above the threshold, times kFilmHighScale; w unused
+  vec4 sumSqHigh; // rgb: sum of the squares of those scaled channels; w unused
 };
+VKMC_CONST float kFilmHighThreshold = 72057594037927936.0f;           // 2^56
+VKMC_CONST float kFilmHighScale = 1.2621774483536188886587657e-29f;  // 2^-96
 
 // Queue counters and indirect dispatch arguments (x,y,z used; w pads to 16 bytes).
 struct Control {
@@ -157,7 +164,7 @@ static_assert(sizeof(PathState) == 80);
 static_assert(offsetof(PathState, info) == 64);
 static_assert(sizeof(ShadowRay) == 48);
 static_assert(sizeof(Material) == 48);
-static_assert(sizeof(FilmPixel) == 32);
+static_assert(sizeof(FilmPixel) == 64);
 static_assert(sizeof(Control) == 144);
 static_assert(offsetof(Control, deepArgs) == 96);
 static_assert(offsetof(Control, rayArgs) == 16 && offsetof(Control, accumulateArgs) == 48);

@@ -1,0 +1,185 @@
+// All-or-nothing output files (see the header).
+#include "io/output_files.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+
+#include "error.h"
+
+namespace vkmc {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Temporaries in flight, for the signal handler (fixed storage: only async-signal-safe calls in the handler).
+constexpr int kMaxPending = 16;
+char pendingPaths[kMaxPending][4096];
+std::atomic<bool> pendingUsed[kMaxPending];
+
+void removePendingAndReraise(int sig) {
+  for (int i = 0; i < kMaxPending; ++i)
+    if (pendingUsed[i].load()) ::unlink(pendingPaths[i]);
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+class PendingTemporary {
+ public:
+  explicit PendingTemporary(const std::string& path) : path_(path) {
+    for (int i = 0; i < kMaxPending && slot_ < 0; ++i) {
+      bool expected = false;
+      if (path.size() < sizeof(pendingPaths[i]) && !pendingUsed[i].load()) {
+        std::memcpy(pendingPaths[i], path.c_str(), path.size() + 1);
+        if (pendingUsed[i].compare_exchange_strong(expected, true)) slot_ = i;
+      }
+    }
+  }
+  ~PendingTemporary() {
+    if (!committed_) ::unlink(path_.c_str());
+    if (slot_ >= 0) pendingUsed[slot_].store(false);
+  }
+  void committed() { committed_ = true; }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  int slot_ = -1;
+  bool committed_ = false;
+};
+
+// Installs the cleanup handler for the duration of a commit.
+class SignalGuard {
+ public:
+  SignalGuard() {
+    for (int s : {SIGINT, SIGTERM, SIGHUP}) old_.push_back({s, std::signal(s, removePendingAndReraise)});
+  }
+  ~SignalGuard() {
+    for (auto& [s, h] : old_) std::signal(s, h);
+  }
+
+ private:
+  std::vector<std::pair<int, void (*)(int)>> old_;
+};
+
+void writeAll(int fd, const std::string& bytes, const std::string& path) {
+  size_t done = 0;
+  while (done < bytes.size()) {
+    ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw Error("cannot write '" + path + "': " + std::strerror(n < 0 ? errno : EIO));
+    done += size_t(n);
+  }
+}
+
+// The file a path names once symlinks are followed (a symlink to a regular file is kept and its target replaced).
+std::string resolved(const std::string& path) {
+  std::error_code ec;
+  if (fs::is_symlink(fs::symlink_status(path, ec))) {
+    fs::path target = fs::canonical(path, ec);
+    if (!ec) return target.string();
+  }
+  return path;
+}
+
+// A short name (NAME_MAX-safe whatever the target's length) in the target's folder, so the rename is atomic.
+std::string temporaryBeside(const std::string& path) {
+  static std::atomic<int> counter{0};
+  fs::path parent = fs::path(path).parent_path();
+  std::string name = ".vkmc-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".tmp";
+  return (parent.empty() ? fs::path(name) : parent / name).string();
+}
+
+}  // namespace
+
+void OutputSet::add(const std::string& path, std::string bytes) { files_.emplace_back(path, std::move(bytes)); }
+
+void OutputSet::commit() {
+  SignalGuard guard;
+  std::vector<std::unique_ptr<PendingTemporary>> temporaries;
+  std::vector<std::string> targets;
+  std::vector<std::pair<std::string, const std::string*>> direct;
+  for (const auto& [path, bytes] : files_) {
+    std::string target = resolved(path);
+    struct stat st {};
+    bool exists = ::stat(target.c_str(), &st) == 0;
+    if (exists && S_ISDIR(st.st_mode)) throw Error("cannot write '" + path + "': it is a folder");
+    if (exists && !S_ISREG(st.st_mode)) {
+      if (!S_ISCHR(st.st_mode) && !S_ISFIFO(st.st_mode)) throw Error("cannot write '" + path + "': not a file, device or FIFO");
+      direct.emplace_back(path, &bytes);
+      continue;
+    }
+    auto tmp = std::make_unique<PendingTemporary>(temporaryBeside(target));
+    int fd = ::open(tmp->path().c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0) throw Error("cannot write '" + path + "': " + std::strerror(errno));
+    temporaries.push_back(std::move(tmp));
+    targets.push_back(target);
+    try {
+      writeAll(fd, bytes, path);
+      if (::fsync(fd) != 0) throw Error("cannot write '" + path + "': " + std::strerror(errno));
+    } catch (...) {
+      ::close(fd);
+      throw;
+    }
+    if (::close(fd) != 0) throw Error("cannot write '" + path + "': " + std::strerror(errno));
+  }
+  // Devices and FIFOs: opened without creating or truncating; a FIFO without a reader fails instead of blocking.
+  for (const auto& [path, bytes] : direct) {
+    int fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) throw Error("cannot write '" + path + "': " + std::strerror(errno));
+    int flags = ::fcntl(fd, F_GETFL);
+    if (flags >= 0) ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+    try {
+      writeAll(fd, *bytes, path);
+    } catch (...) {
+      ::close(fd);
+      throw;
+    }
+    ::close(fd);
+  }
+  for (size_t i = 0; i < temporaries.size(); ++i) {
+    if (::rename(temporaries[i]->path().c_str(), targets[i].c_str()) != 0)
+      throw Error("cannot write '" + files_[i].first + "': " + std::strerror(errno));
+    temporaries[i]->committed();
+  }
+}
+
+void writeFileAtomically(const std::string& path, const std::string& bytes) {
+  OutputSet set;
+  set.add(path, bytes);
+  set.commit();
+}
+
+void checkOutputPaths(const std::vector<std::pair<std::string, std::string>>& outputs, const std::vector<std::string>& inputs) {
+  auto sameFile = [](const std::string& a, const std::string& b) {
+    std::error_code ec;
+    if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec);
+    return fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec);
+  };
+  auto isCharDevice = [](const std::string& p) {
+    struct stat st {};
+    return ::stat(p.c_str(), &st) == 0 && S_ISCHR(st.st_mode);
+  };
+  for (size_t i = 0; i < outputs.size(); ++i) {
+    const auto& [flag, path] = outputs[i];
+    if (path.empty()) continue;
+    fs::path parent = fs::path(path).parent_path();
+    std::error_code ec;
+    if (parent.empty()) parent = ".";
+    if (!fs::is_directory(parent, ec)) throw Error(flag + ": folder '" + parent.string() + "' does not exist");
+    if (fs::is_directory(path, ec)) throw Error(flag + ": '" + path + "' is a folder");
+    for (const std::string& in : inputs)
+      if (!in.empty() && sameFile(path, in)) throw Error(flag + ": '" + path + "' is an input of this command; it would be overwritten");
+    for (size_t k = 0; k < i; ++k)
+      if (!outputs[k].second.empty() && sameFile(path, outputs[k].second) && !isCharDevice(path))
+        throw Error(flag + " and " + outputs[k].first + " name the same file '" + path + "'");
+  }
+}
+
+}  // namespace vkmc

@@ -1,0 +1,41 @@
+// Runs the vkmc binary for end-to-end tests: exit code, stdout and stderr.
+#pragma once
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "test_scenes.h"
+
+namespace vkmc::test {
+
+struct RunResult {
+  int code;  // -1: killed by a signal
+  std::string out, err;
+};
+
+inline std::filesystem::path workDir() {
+  static std::filesystem::path d = makeTempDir("cli");
+  return d;
+}
+
+inline std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+inline RunResult runVkmc(const std::string& args) {
+  std::filesystem::path out = workDir() / "stdout.txt", err = workDir() / "stderr.txt";
+  std::string cmd = std::string(VKMC_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
+  int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+}
+
+inline std::string cornell() { return std::string(VKMC_SOURCE_DIR) + "/scenes/cornell_box.gltf"; }
+
+}  // namespace vkmc::test
