@@ -222,8 +222,10 @@ int main(int argc, char** argv) {
         j["ztest_pass_fraction"] = e.zTestPassFraction;
         j["ztest_threshold"] = e.zThreshold;
       }
-      if (!cmpHeatmap.empty()) vkmc::writeErrorHeatmap(cmpHeatmap, a, b);
-      if (!cmpJson.empty()) vkmc::writeFileAtomically(cmpJson, j.dump(2) + "\n");
+      vkmc::OutputSet outputs;
+      if (!cmpHeatmap.empty()) outputs.add(cmpHeatmap, vkmc::encodeExr(vkmc::errorHeatmap(a, b)));
+      if (!cmpJson.empty()) outputs.add(cmpJson, j.dump(2) + "\n");
+      outputs.commit();
       std::printf("MSE %.6g  relMSE %.6g (epsilon %g)  RMSE %.6g  MAE %.6g  mean difference %.6g\n", e.mse, e.relmse,
                   vkmc::kRelMseEpsilon, e.rmse, e.meanAbsoluteError, e.meanDifference);
       if (e.hasZTest)

@@ -11,6 +11,8 @@
 
 #include <chrono>
 #include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
 #include <thread>
 
 #include "adversarial_geometry.h"
@@ -83,11 +85,15 @@ TEST(CliOutputs, AFifoIsWrittenDirectlyAndStaysAFifo) {
   fs::path fifo = dir() / "report.fifo";
   fs::remove(fifo);
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
-  std::string received;
-  std::thread reader([&] { received = slurp(fifo); });  // blocks in open until vkmc opens the write end
+  // The read end open first (without blocking), so vkmc finds a reader; the report (~2 KB) fits the pipe.
+  int readEnd = open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(readEnd, 0);
   RunResult r = runVkmc(render(cornell()) + " -o " + (dir() / "f.exr").string() + " --report " + fifo.string());
-  reader.join();
-  EXPECT_EQ(r.code, 0) << r.err;
+  std::string received;
+  char buf[4096];
+  for (ssize_t n; (n = read(readEnd, buf, sizeof(buf))) > 0;) received.append(buf, size_t(n));
+  close(readEnd);
+  ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_GT(nlohmann::json::parse(received)["mean"][0].get<double>(), 0.0);
   struct stat st {};
   ASSERT_EQ(stat(fifo.c_str(), &st), 0);
@@ -125,15 +131,20 @@ TEST(CliOutputs, SigtermDuringTheCommitRemovesTheTemporaries) {
   argv.push_back(nullptr);
   pid_t pid;
   ASSERT_EQ(posix_spawn(&pid, VKMC_BINARY, nullptr, nullptr, argv.data(), environ), 0);
-  bool sawTemporaries = false;
-  for (int i = 0; i < 6000 && !sawTemporaries; ++i) {  // a hang guard of 10 minutes, not a timing assertion
+  bool sawTemporaries = false, exited = false;
+  int status = 0;
+  for (int i = 0; i < 6000 && !sawTemporaries && !exited; ++i) {  // a hang guard of 10 minutes, not a timing assertion
     sawTemporaries = hasTemporaries(d);
-    if (!sawTemporaries) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    exited = !sawTemporaries && waitpid(pid, &status, WNOHANG) == pid;
+    if (!sawTemporaries && !exited) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
-  ASSERT_TRUE(sawTemporaries);
+  if (!sawTemporaries) {
+    if (!exited) kill(pid, SIGKILL), waitpid(pid, &status, 0);
+    close(readEnd);
+    FAIL() << "vkmc " << (exited ? "exited" : "never reached its commit") << " before writing its temporaries";
+  }
   std::this_thread::sleep_for(std::chrono::milliseconds(200));  // into the blocked FIFO write
   kill(pid, SIGTERM);
-  int status = 0;
   waitpid(pid, &status, 0);
   close(readEnd);
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);

@@ -90,7 +90,7 @@ ErrorMetrics compareImages(const ExrImage& a, const ExrImage& b, double alpha, b
   return m;
 }
 
-void writeErrorHeatmap(const std::string& path, const ExrImage& a, const ExrImage& b) {
+ExrImage errorHeatmap(const ExrImage& a, const ExrImage& b) {
   ExrImage out;
   out.width = a.width;
   out.height = a.height;
@@ -109,7 +109,7 @@ void writeErrorHeatmap(const std::string& path, const ExrImage& a, const ExrImag
       rel[p] += static_cast<float>(d * d / (double(vb[p]) * vb[p] + kRelMseEpsilon) / 3.0);
     }
   }
-  writeExr(path, out);
+  return out;
 }
 
 ExrImage filmToImage(const Film& film) {

@@ -26,8 +26,8 @@ inline constexpr double kRelMseEpsilon = 1e-2;  // keeps near-black reference pi
 // perPixelLevel = true tests each value at level alpha instead (for calibration).
 ErrorMetrics compareImages(const ExrImage& image, const ExrImage& reference, double alpha = 0.01, bool perPixelLevel = false);
 
-// Writes per-pixel squared error (R, G, B) and relMSE (Y) as an EXR heat map.
-void writeErrorHeatmap(const std::string& path, const ExrImage& image, const ExrImage& reference);
+// Per-pixel squared error (R, G, B) and relMSE (Y): an EXR heat map.
+ExrImage errorHeatmap(const ExrImage& image, const ExrImage& reference);
 
 ExrImage filmToImage(const class Film& film);
 

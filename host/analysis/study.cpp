@@ -201,8 +201,9 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
                      {"gpu_seconds", r.gpuSeconds}, {"rays", r.rays}, {"mse", r.mse}, {"relmse", r.relmse}, {"efficiency", r.efficiency},
                      {"nonfinite_samples", r.nonfinite}});
   }
-  writeFileAtomically((fs::path(outDir) / "results.csv").string(), csv.str());
-  writeFileAtomically((fs::path(outDir) / "results.json").string(),
+  OutputSet outputs;  // the study's files are written together, all or none
+  outputs.add((fs::path(outDir) / "results.csv").string(), csv.str());
+  outputs.add((fs::path(outDir) / "results.json").string(),
                       nlohmann::json{{"study", study.name}, {"device", ctx.deviceName()}, {"reference", referenceNote}, {"rows", jrows}}.dump(2) +
                           "\n");
 
@@ -230,7 +231,7 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
     curves[c].fitSpp = fitLogLog(curves[c].spp, curves[c].relmse);
     plot.push_back({study.configurations[c].name, curves[c].seconds, curves[c].relmse});
   }
-  writeFileAtomically((fs::path(outDir) / "error_vs_time.svg").string(),
+  outputs.add((fs::path(outDir) / "error_vs_time.svg").string(),
                       logLogSvg(plot, study.name + ": relMSE against render time", "seconds (median of repeats)", "relMSE"));
 
   // Equal time: the longest time every configuration reached; equal error: the smallest error all reached.
@@ -271,7 +272,7 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
         "in proportion to samples (per-render overheads make small renders steeper against time). A flatter slope\n"
         "exposes bias, or a reference too noisy for the error reached. Raw rows: results.csv; plot:\n"
         "error_vs_time.svg; images at equal time: equal_time.png.\n";
-  writeFileAtomically((fs::path(outDir) / "summary.md").string(), md.str());
+  outputs.add((fs::path(outDir) / "summary.md").string(), md.str());
 
   // Equal-time images: per configuration the rung whose median time is closest to the equal time.
   std::vector<ExrImage> sheet;
@@ -285,7 +286,8 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
     std::snprintf(label, sizeof(label), "%s %.2fs", study.configurations[c].name.c_str(), curves[c].seconds[best]);
     labels.push_back(label);
   }
-  writeContactSheet((fs::path(outDir) / "equal_time.png").string(), sheet, labels, 0.0f);
+  outputs.add((fs::path(outDir) / "equal_time.png").string(), encodeContactSheet(sheet, labels, 0.0f));
+  outputs.commit();
   return rows;
 }
 

@@ -93,6 +93,10 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
     width = options.width.value_or(256), height = derivedSide(width / a);
   }
   if (!options.lookFrom && scene.cameras.empty()) camera = autoCamera(scene.bounds, float(width) / float(height));
+  // Ray origins within 10x the coordinate range keep the traversal's slab distances and triangle products finite
+  // (an automatic camera for a scene at the range's edge, or at an extreme aspect ratio, could sit further out).
+  if (!glm::all(glm::lessThanEqual(glm::abs(camera.position), glm::vec3(10.0f * gpu::kMaxSceneCoordinate))))
+    throw Error("the camera would sit beyond +-1e12, where float ray tests overflow: place it with --look-from");
   if (reference && (uint32_t(reference->width) != width || uint32_t(reference->height) != height))
     throw Error("reference '" + options.referencePath + "' is " + std::to_string(reference->width) + "x" +
                 std::to_string(reference->height) + ", the render is " + std::to_string(width) + "x" + std::to_string(height));

@@ -232,8 +232,10 @@ BvhWideNode quantizeBoxes(const std::vector<Child>& children) {
   out.texels[3] = glm::uvec4(kBvhEmptySlot);
   uint32_t exponents = 0;
   for (int axis = 0; axis < 3; ++axis) {
-    // One float below the lowest child, so that plane 0 is strictly below it too (unless that overflows).
-    const float below = std::nextafter(all.min[axis], -std::numeric_limits<float>::infinity());
+    // One float below the lowest child, so that plane 0 is strictly below it too (unless that overflows); never
+    // a denormal, which a GPU that flushes denormals would read as 0 (the next normal float down instead).
+    float below = std::nextafter(all.min[axis], -std::numeric_limits<float>::infinity());
+    if (std::abs(below) < std::numeric_limits<float>::min()) below = all.min[axis] > 0.0f ? 0.0f : -std::numeric_limits<float>::min();
     const float origin = std::isfinite(below) ? below : all.min[axis];
     out.texels[0][axis] = asUint(origin);
     // Start from the smallest power of two with 255 steps >= the extent (an estimate: the extent's double may

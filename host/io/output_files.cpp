@@ -54,11 +54,17 @@ class PendingTemporary {
   bool committed_ = false;
 };
 
-// Installs the cleanup handler for the duration of a commit.
+// For the duration of a commit: the cleanup handler on SIGINT, SIGTERM and SIGHUP (unless the process ignores
+// them, as under nohup), and SIGPIPE ignored so that a reader closing a FIFO early is a write error, not a kill.
 class SignalGuard {
  public:
   SignalGuard() {
-    for (int s : {SIGINT, SIGTERM, SIGHUP}) old_.push_back({s, std::signal(s, removePendingAndReraise)});
+    for (int s : {SIGINT, SIGTERM, SIGHUP}) {
+      void (*previous)(int) = std::signal(s, removePendingAndReraise);
+      if (previous == SIG_IGN) std::signal(s, SIG_IGN);
+      old_.push_back({s, previous});
+    }
+    old_.push_back({SIGPIPE, std::signal(SIGPIPE, SIG_IGN)});
   }
   ~SignalGuard() {
     for (auto& [s, h] : old_) std::signal(s, h);
@@ -66,6 +72,22 @@ class SignalGuard {
 
  private:
   std::vector<std::pair<int, void (*)(int)>> old_;
+};
+
+// Blocks the cleanup signals while the temporaries are renamed: they then arrive after every rename, never
+// between two of them.
+class SignalBlock {
+ public:
+  SignalBlock() {
+    sigset_t set;
+    sigemptyset(&set);
+    for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, s);
+    sigprocmask(SIG_BLOCK, &set, &old_);
+  }
+  ~SignalBlock() { sigprocmask(SIG_SETMASK, &old_, nullptr); }
+
+ private:
+  sigset_t old_;
 };
 
 void writeAll(int fd, const std::string& bytes, const std::string& path) {
@@ -78,21 +100,25 @@ void writeAll(int fd, const std::string& bytes, const std::string& path) {
   }
 }
 
-// The file a path names once symlinks are followed (a symlink to a regular file is kept and its target replaced).
+// The file a path names once symlinks are followed, existing or not (a symlink is kept and its target written).
 std::string resolved(const std::string& path) {
+  fs::path p = path;
   std::error_code ec;
-  if (fs::is_symlink(fs::symlink_status(path, ec))) {
-    fs::path target = fs::canonical(path, ec);
-    if (!ec) return target.string();
+  for (int hops = 0; hops < 40 && fs::is_symlink(fs::symlink_status(p, ec)); ++hops) {
+    fs::path target = fs::read_symlink(p, ec);
+    if (ec) break;
+    p = target.is_absolute() ? target : p.parent_path() / target;
   }
-  return path;
+  return p.string();
 }
 
 // A short name (NAME_MAX-safe whatever the target's length) in the target's folder, so the rename is atomic.
-std::string temporaryBeside(const std::string& path) {
+// `attempt` varies it: a temporary left by a killed run with the same PID must not block this one.
+std::string temporaryBeside(const std::string& path, int attempt) {
   static std::atomic<int> counter{0};
   fs::path parent = fs::path(path).parent_path();
-  std::string name = ".vkmc-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".tmp";
+  std::string name = ".vkmc-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
+                     (attempt ? "-" + std::to_string(attempt) : "") + ".tmp";
   return (parent.empty() ? fs::path(name) : parent / name).string();
 }
 
@@ -102,8 +128,11 @@ void OutputSet::add(const std::string& path, std::string bytes) { files_.emplace
 
 void OutputSet::commit() {
   SignalGuard guard;
-  std::vector<std::unique_ptr<PendingTemporary>> temporaries;
-  std::vector<std::string> targets;
+  struct Staged {
+    std::unique_ptr<PendingTemporary> temporary;
+    std::string target, path;
+  };
+  std::vector<Staged> staged;
   std::vector<std::pair<std::string, const std::string*>> direct;
   for (const auto& [path, bytes] : files_) {
     std::string target = resolved(path);
@@ -115,12 +144,18 @@ void OutputSet::commit() {
       direct.emplace_back(path, &bytes);
       continue;
     }
-    auto tmp = std::make_unique<PendingTemporary>(temporaryBeside(target));
-    int fd = ::open(tmp->path().c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    int fd = -1;
+    std::unique_ptr<PendingTemporary> tmp;
+    for (int attempt = 0; fd < 0 && attempt < 100; ++attempt) {
+      std::string name = temporaryBeside(target, attempt);
+      fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+      if (fd >= 0) tmp = std::make_unique<PendingTemporary>(name);
+      else if (errno != EEXIST) break;
+    }
     if (fd < 0) throw Error("cannot write '" + path + "': " + std::strerror(errno));
-    temporaries.push_back(std::move(tmp));
-    targets.push_back(target);
+    staged.push_back({std::move(tmp), target, path});
     try {
+      if (exists) ::fchmod(fd, st.st_mode & 07777);  // a replaced file keeps its permissions
       writeAll(fd, bytes, path);
       if (::fsync(fd) != 0) throw Error("cannot write '" + path + "': " + std::strerror(errno));
     } catch (...) {
@@ -143,10 +178,11 @@ void OutputSet::commit() {
     }
     ::close(fd);
   }
-  for (size_t i = 0; i < temporaries.size(); ++i) {
-    if (::rename(temporaries[i]->path().c_str(), targets[i].c_str()) != 0)
-      throw Error("cannot write '" + files_[i].first + "': " + std::strerror(errno));
-    temporaries[i]->committed();
+  SignalBlock block;
+  for (Staged& s : staged) {
+    if (::rename(s.temporary->path().c_str(), s.target.c_str()) != 0)
+      throw Error("cannot write '" + s.path + "': " + std::strerror(errno));
+    s.temporary->committed();
   }
 }
 
@@ -158,9 +194,10 @@ void writeFileAtomically(const std::string& path, const std::string& bytes) {
 
 void checkOutputPaths(const std::vector<std::pair<std::string, std::string>>& outputs, const std::vector<std::string>& inputs) {
   auto sameFile = [](const std::string& a, const std::string& b) {
-    std::error_code ec;
-    if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec);
-    return fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec);
+    std::error_code ea, eb;
+    if (fs::exists(a, ea) && fs::exists(b, eb)) return fs::equivalent(a, b, ea) && !ea;
+    fs::path ca = fs::weakly_canonical(resolved(a), ea), cb = fs::weakly_canonical(resolved(b), eb);
+    return !ea && !eb && ca == cb;
   };
   auto isCharDevice = [](const std::string& p) {
     struct stat st {};

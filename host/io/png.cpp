@@ -61,6 +61,10 @@ void drawText(std::vector<uint8_t>& rgb, uint32_t width, uint32_t height, int x,
 
 void writeContactSheet(const std::string& path, const std::vector<ExrImage>& images, const std::vector<std::string>& labels,
                        float exposureStops) {
+  writeFileAtomically(path, encodeContactSheet(images, labels, exposureStops));
+}
+
+std::string encodeContactSheet(const std::vector<ExrImage>& images, const std::vector<std::string>& labels, float exposureStops) {
   if (images.empty()) throw Error("no images for the contact sheet");
   // Small renders are enlarged (nearest neighbour) so that a label fits above each.
   const uint32_t zoom = std::max(1u, (160u + images[0].width - 1) / images[0].width);
@@ -81,7 +85,7 @@ void writeContactSheet(const std::string& path, const std::vector<ExrImage>& ima
         }
     drawText(rgb, width, height, int(x0) + 2, 4, k < labels.size() ? labels[k] : "", w >= 320 ? 2 : 1);
   }
-  writeFileAtomically(path, encodeRgbPng(rgb, width, height));
+  return encodeRgbPng(rgb, width, height);
 }
 
 std::string encodeFilmPng(const Film& film, float exposureStops) {

@@ -14,4 +14,5 @@ std::string encodeFilmPng(const Film& film, float exposureStops);
 // Images side by side (same size), each under its label, tone-mapped to sRGB with one shared exposure.
 void writeContactSheet(const std::string& path, const std::vector<ExrImage>& images, const std::vector<std::string>& labels,
                        float exposureStops);
+std::string encodeContactSheet(const std::vector<ExrImage>& images, const std::vector<std::string>& labels, float exposureStops);
 }

@@ -33,7 +33,7 @@ BenchmarkRays makeBenchmarkRays(const Scene& scene, const Bvh& bvh, RayTracer& t
     const glm::vec3* v = &scene.positions[3 * bvh.triangleOrder[tri]];
     glm::vec3 b(1.0f - hits[i].y - hits[i].z, hits[i].y, hits[i].z);
     glm::vec3 p = b.x * v[0] + b.y * v[1] + b.z * v[2];
-    glm::vec3 n = glm::normalize(glm::cross(v[1] - v[0], v[2] - v[0]));
+    glm::vec3 n = glm::normalize(glm::vec3(gpu::scaledTriangleCross(v[0], v[1], v[2])));
     if (glm::dot(n, glm::vec3(rays.primary[i].direction)) > 0.0f) n = -n;
     for (uint32_t k = 0; k < 4; ++k) {
       uint32_t key = gpu::pathKey(99u, static_cast<uint32_t>(i), k);

@@ -8,6 +8,7 @@
 #include <bit>
 #include <glm/gtc/packing.hpp>
 
+#include "../shaders/shared/geometry.h"
 #include "../shaders/shared/layout.h"
 #include "../shaders/shared/sampling.h"
 #include "error.h"
@@ -46,7 +47,7 @@ VkFormat sceneTexelFormat(uint32_t binding) {
 uint64_t maxSceneTriangles(const vk::Context& ctx) {
   uint64_t limit = uint64_t(ctx.properties().limits.maxTexelBufferElements) / 3;
   if (ctx.maxAllocationBytes() > 0) limit = std::min<uint64_t>(limit, ctx.maxAllocationBytes() / 48);
-  if (ctx.largestDeviceLocalHeapBytes() > 0) limit = std::min<uint64_t>(limit, ctx.largestDeviceLocalHeapBytes() / 4 / 128);
+  if (ctx.largestDeviceLocalHeapBytes() > 0) limit = std::min<uint64_t>(limit, ctx.largestDeviceLocalHeapBytes() / 2 / 96);
   long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
   if (pages > 0 && pageSize > 0) limit = std::min<uint64_t>(limit, uint64_t(pages) * uint64_t(pageSize) / 2 / 320);
   return std::min<uint64_t>(limit, LoadLimits{}.maxTriangles);
@@ -63,7 +64,8 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   for (uint32_t i = 0; i < n; ++i) {
     uint32_t src = bvh.triangleOrder[i];
     const glm::vec3* p = &scene.positions[3 * src];
-    triangleArea[i] = float(0.5 * glm::length(glm::cross(glm::dvec3(p[1] - p[0]), glm::dvec3(p[2] - p[0]))));
+    glm::vec4 c = gpu::scaledTriangleCross(p[0], p[1], p[2]);  // the area the GPU's light pdfs use
+    triangleArea[i] = 0.5f * glm::length(glm::vec3(c)) * c.w * c.w;
     const Material& m = scene.materials[scene.materialIds[src]];
     if (m.isEmissive() && triangleArea[i] > 0.0f) {
       double sides = m.doubleSided ? 2.0 : 1.0;

@@ -24,8 +24,9 @@ struct GpuSceneInfo {
 VkFormat sceneTexelFormat(uint32_t binding);
 
 // The most triangles a scene may have on this device and machine: its largest buffer (3 texels a triangle)
-// within maxTexelBufferElements and one allocation, everything within a quarter of device-local memory, and the
-// host's peak (~320 bytes a triangle while loading and building) within half of physical memory.
+// within maxTexelBufferElements and one allocation, the scene (~96 bytes a triangle: triangles, their info, BVH
+// nodes) within half of device-local memory, and the host's peak (~320 bytes a triangle while loading and
+// building) within half of physical memory.
 uint64_t maxSceneTriangles(const vk::Context& ctx);
 
 class GpuScene {

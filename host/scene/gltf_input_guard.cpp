@@ -15,7 +15,7 @@ namespace vkmc {
 
 std::vector<unsigned char> readRegularFile(const std::string& path, uint64_t maxBytes, const std::string& what) {
   // O_NONBLOCK: opening a FIFO without a writer would otherwise wait forever.
-  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
   if (fd < 0) throw Error("cannot open " + what + " '" + path + "': " + std::strerror(errno));
   struct stat st {};
   if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {

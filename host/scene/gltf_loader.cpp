@@ -242,15 +242,17 @@ class Flattener {
             throw Error("vertex " + std::to_string(idx[k]) + " lies beyond +-" + coordinateLimit() +
                         " after its node transform (float ray tests overflow there; scale the scene down)");
         }
-        // In double: the cross product of edges longer than ~4e9 overflows float (a huge ground plane is not
-        // degenerate).
-        glm::dvec3 cross = glm::cross(glm::dvec3(p[1]) - glm::dvec3(p[0]), glm::dvec3(p[2]) - glm::dvec3(p[0]));
-        double len = glm::length(cross);
-        glm::vec3 geometric = glm::vec3(cross / len);
-        if (!(len > 0.0) || !finite(geometric) || geometric == glm::vec3(0.0f)) {
+        // Degenerate exactly when the GPU's own normal and area would be (the same shared function): its
+        // scaled cross product must have a normal length and its area must be a normal float. Huge triangles
+        // (a ground plane of 3e9) are not degenerate; a plain float cross would overflow for them.
+        glm::vec4 c = gpu::scaledTriangleCross(p[0], p[1], p[2]);
+        float area = 0.5f * glm::length(glm::vec3(c)) * c.w * c.w;
+        if (!(glm::dot(glm::vec3(c), glm::vec3(c)) >= std::numeric_limits<float>::min()) ||
+            !(area >= std::numeric_limits<float>::min()) || !std::isfinite(area)) {
           ++scene_.degenerateTriangles;
           continue;
         }
+        glm::vec3 geometric = glm::normalize(glm::vec3(c));
         for (int k = 0; k < 3; ++k) {
           glm::vec3 nk = normals ? normalMatrix * readVec3(*normals, idx[k]) : geometric;
           float nl = glm::length(nk);
@@ -283,8 +285,8 @@ class Flattener {
       cam.kind = CameraKind::Orthographic;
       cam.xmag = static_cast<float>(c.orthographic.xmag);
       cam.ymag = static_cast<float>(c.orthographic.ymag);
-      if (!(cam.xmag > 0.0f && cam.xmag < 1e30f) || !(cam.ymag > 0.0f && cam.ymag < 1e30f))
-        throw Error("orthographic camera with a magnification that is not a positive number");
+      if (!(cam.xmag > 0.0f && cam.xmag <= gpu::kMaxSceneCoordinate) || !(cam.ymag > 0.0f && cam.ymag <= gpu::kMaxSceneCoordinate))
+        throw Error(name + ": orthographic magnification not a positive number within " + coordinateLimit());
       cam.aspectRatio = cam.xmag / cam.ymag;
     } else {
       cam.yfov = static_cast<float>(c.perspective.yfov);
