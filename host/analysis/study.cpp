@@ -110,7 +110,7 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
   fs::create_directories(outDir, ec);
   if (!fs::is_directory(outDir)) throw Error("cannot create output folder '" + outDir + "'");
   vk::Context ctx;
-  Scene scene = loadGltf(study.scenePath);
+  Scene scene = loadGltf(study.scenePath, deviceLoadLimits(ctx));
 
   auto options = [&](const EstimatorConfig& e, uint32_t seed) {
     RenderOptions o;

@@ -130,7 +130,7 @@ struct TraceRates {
   std::vector<double> primary, diffuse, diffuseBinary;
 };
 TraceRates traceBenchmark(vk::Context& ctx, const std::string& path, int width, int height, int runs, double& diffuseRayCount) {
-  Scene scene = loadGltf(path);
+  Scene scene = loadGltf(path, deviceLoadLimits(ctx));
   std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   GpuScene gpuScene(ctx, scene, bvh, false, true);

@@ -41,7 +41,8 @@ const char* specName(uint32_t id) {
 }  // namespace
 
 int runInfo(const RenderOptions& options) {
-  Scene scene = loadGltf(options.scenePath);
+  vk::Context ctx;
+  Scene scene = loadGltf(options.scenePath, deviceLoadLimits(ctx));
   SceneFeatures f = scanFeatures(scene);
   std::printf("scene        %s\n", options.scenePath.c_str());
   std::printf("triangles    %u (%s), %llu zero-area skipped, %u materials, %zu cameras\n", f.triangles, f.sizeClass(),
@@ -56,7 +57,6 @@ int runInfo(const RenderOptions& options) {
   const BvhStats& b = bvh.stats;
   std::printf("bvh          %u inner nodes, %u leaves, depth %u, leaf size avg %.2f max %u, SAH cost %.2f, built in %.3f s\n",
               b.innerNodes, b.leaves, b.maxDepth, b.averageLeafSize, b.maxLeafSize, b.sahCost, b.buildSeconds);
-  vk::Context ctx;
   GpuScene gpu(ctx, scene, bvh, options.estimator.lightSelect == LightSelect::Uniform);
   RenderSettings settings;
   settings.estimator = options.estimator;

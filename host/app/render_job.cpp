@@ -43,9 +43,7 @@ void validateOptions(const RenderOptions& o) {
 RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options) {
   validateOptions(options);
   auto t = Clock::now();
-  LoadLimits limits;
-  limits.maxTriangles = maxSceneTriangles(ctx);
-  Scene scene = loadGltf(options.scenePath, limits);
+  Scene scene = loadGltf(options.scenePath, deviceLoadLimits(ctx));
   double load = since(t);
   RenderOutcome out = runRender(ctx, options, std::move(scene));
   out.setup.load = load;

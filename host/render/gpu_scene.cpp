@@ -3,8 +3,6 @@
 
 #include <unistd.h>
 
-#include "scene/gltf_loader.h"
-
 #include <bit>
 #include <glm/gtc/packing.hpp>
 
@@ -51,6 +49,12 @@ uint64_t maxSceneTriangles(const vk::Context& ctx) {
   long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
   if (pages > 0 && pageSize > 0) limit = std::min<uint64_t>(limit, uint64_t(pages) * uint64_t(pageSize) / 2 / 320);
   return std::min<uint64_t>(limit, LoadLimits{}.maxTriangles);
+}
+
+LoadLimits deviceLoadLimits(const vk::Context& ctx) {
+  LoadLimits limits;
+  limits.maxTriangles = maxSceneTriangles(ctx);
+  return limits;
 }
 
 GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool uniformLightSelection, bool keepBinaryBvh) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "bvh/bvh.h"
+#include "scene/gltf_loader.h"
 #include "scene/scene.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
@@ -28,6 +29,8 @@ VkFormat sceneTexelFormat(uint32_t binding);
 // nodes) within half of device-local memory, and the host's peak (~320 bytes a triangle while loading and
 // building) within half of physical memory.
 uint64_t maxSceneTriangles(const vk::Context& ctx);
+// The loader's limits for scenes bound for this device (maxSceneTriangles).
+LoadLimits deviceLoadLimits(const vk::Context& ctx);
 
 class GpuScene {
  public:
