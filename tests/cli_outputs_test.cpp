@@ -208,3 +208,19 @@ TEST(CliOutputs, SpheresAtTheOriginHugeGroundsAndBrightLightsRender) {
   EXPECT_GT(j["mean"][0].get<double>(), 1e18);
   EXPECT_TRUE(std::isfinite(j["mean_variance"][0].get<double>()));
 }
+
+TEST(CliOutputs, AnInstancingBombIsRefusedBeforeAnythingIsAllocated) {
+  // 2^25 instances of a quad (a 1 KB file) are 2^26 triangles, over any device's limit (at most 2^25): refused
+  // from the node graph's counts, before flattening (which took 10 GB and minutes before this check).
+  std::string path = writeGltf(dir(), "bomb", quadSpec());
+  std::string json = slurp(path), nodes = "\"nodes\":[";
+  for (int i = 0; i < 25; ++i) nodes += "{\"children\":[" + std::to_string(i + 1) + "," + std::to_string(i + 1) + "]},";
+  nodes += "{\"mesh\":0}],";
+  size_t a = json.find("\"nodes\":[{"), b = json.find("],", a) + 2;
+  json.replace(a, b - a, nodes);
+  std::ofstream(path) << json;
+  RunResult r = runVkmc(render(path) + " -o " + (dir() / "bomb.exr").string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("scene too big"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("67108864 instanced"), std::string::npos) << r.err;
+}

@@ -29,12 +29,15 @@ inline std::string slurp(const std::filesystem::path& p) {
   return ss.str();
 }
 
-inline RunResult runVkmc(const std::string& args) {
+// A shell command line (its stdout and stderr captured, stdin empty).
+inline RunResult runShell(const std::string& command) {
   std::filesystem::path out = workDir() / "stdout.txt", err = workDir() / "stderr.txt";
-  std::string cmd = std::string(VKMC_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
+  std::string cmd = "( " + command + " ) >" + out.string() + " 2>" + err.string() + " </dev/null";
   int status = std::system(cmd.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
 }
+
+inline RunResult runVkmc(const std::string& args) { return runShell(std::string(VKMC_BINARY) + " " + args); }
 
 inline std::string cornell() { return std::string(VKMC_SOURCE_DIR) + "/scenes/cornell_box.gltf"; }
 

@@ -305,6 +305,43 @@ class Flattener {
   size_t visits_ = 0;
 };
 
+// Triangles the node graph instances, from accessor counts alone and memoized per node (linear in the nodes
+// however exponential the instancing), so that an instancing bomb is refused before anything is allocated for it;
+// flattening checks again as it reads. Invalid references and cycles are left to flattening, which names them.
+class InstanceCounter {
+ public:
+  explicit InstanceCounter(const tinygltf::Model& model) : model_(model), memo_(model.nodes.size(), kUnknown) {}
+
+  uint64_t trianglesUnder(int nodeIndex, int depth = 0) {
+    if (nodeIndex < 0 || nodeIndex >= static_cast<int>(model_.nodes.size()) || depth > 256) return 0;
+    uint64_t& memo = memo_[nodeIndex];
+    if (memo == kVisiting) return 0;  // a cycle
+    if (memo != kUnknown) return memo;
+    memo = kVisiting;
+    const tinygltf::Node& node = model_.nodes[nodeIndex];
+    uint64_t total = 0;
+    if (node.mesh >= 0 && node.mesh < static_cast<int>(model_.meshes.size()))
+      for (const tinygltf::Primitive& prim : model_.meshes[node.mesh].primitives) {
+        if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1) continue;
+        auto pos = prim.attributes.find("POSITION");
+        int accessor = prim.indices >= 0 ? prim.indices : pos == prim.attributes.end() ? -1 : pos->second;
+        if (accessor >= 0 && accessor < static_cast<int>(model_.accessors.size()))
+          total = saturatingAdd(total, model_.accessors[accessor].count / 3);
+      }
+    for (int child : node.children) total = saturatingAdd(total, trianglesUnder(child, depth + 1));
+    memo_[nodeIndex] = total;
+    return total;
+  }
+
+  static uint64_t saturatingAdd(uint64_t a, uint64_t b) { return std::min(a + std::min(b, kSaturated), kSaturated); }
+
+ private:
+  static constexpr uint64_t kSaturated = uint64_t(1) << 62;
+  static constexpr uint64_t kUnknown = ~uint64_t(0), kVisiting = kUnknown - 1;
+  const tinygltf::Model& model_;
+  std::vector<uint64_t> memo_;
+};
+
 // tinygltf's file access, made safe for untrusted URIs: no blocking opens (its FileExists opens the file, which
 // waits forever on a FIFO), only regular files, no file larger than `maxBytes`, nothing written.
 struct SafeFs {
@@ -375,18 +412,26 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
   for (const std::string& e : model.extensionsUsed) scene.hasPunctualLights |= e == "KHR_lights_punctual";
   if (scene.hasPunctualLights) scene.warnings.push_back("KHR_lights_punctual lights are not supported yet and were ignored");
 
-  Flattener flattener(model, scene, limits.maxTriangles);
+  std::vector<int> roots;
   if (!model.scenes.empty()) {
     int sceneIndex = model.defaultScene >= 0 && model.defaultScene < static_cast<int>(model.scenes.size()) ? model.defaultScene : 0;
-    for (int root : model.scenes[sceneIndex].nodes) flattener.visit(root, glm::mat4(1.0f), 0);
+    roots = model.scenes[sceneIndex].nodes;
   } else {
     std::vector<bool> isChild(model.nodes.size(), false);
     for (const auto& n : model.nodes)
       for (int c : n.children)
         if (c >= 0 && c < static_cast<int>(isChild.size())) isChild[c] = true;
     for (size_t i = 0; i < model.nodes.size(); ++i)
-      if (!isChild[i]) flattener.visit(static_cast<int>(i), glm::mat4(1.0f), 0);
+      if (!isChild[i]) roots.push_back(static_cast<int>(i));
   }
+  InstanceCounter counter(model);
+  uint64_t instanced = 0;
+  for (int root : roots) instanced = InstanceCounter::saturatingAdd(instanced, counter.trianglesUnder(root));
+  if (instanced > limits.maxTriangles)
+    throw Error("scene too big: more than " + std::to_string(limits.maxTriangles) + " triangles after instancing (" +
+                std::to_string(instanced) + " instanced; the limit is what the device's buffers and this machine's memory hold)");
+  Flattener flattener(model, scene, limits.maxTriangles);
+  for (int root : roots) flattener.visit(root, glm::mat4(1.0f), 0);
   scene.skippedPrimitives = flattener.nonTrianglePrimitives;
   if (scene.skippedPrimitives > 0)
     scene.warnings.push_back(std::to_string(scene.skippedPrimitives) + " non-triangle primitive(s) skipped");
