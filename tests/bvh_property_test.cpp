@@ -12,43 +12,6 @@ using namespace vkmc::test;
 
 namespace {
 
-// The 4-wide layout walked on the host, with each child box decoded exactly as the node encodes it.
-HostHit traceWide(const Bvh& bvh, const std::vector<glm::vec3>& pos, const Ray& ray, bool anyHit) {
-  gpu::RayShear shear = gpu::makeRayShear(ray.origin, ray.direction);
-  glm::vec3 inv = gpu::safeInverse(ray.direction);
-  HostHit best;
-  float tBest = ray.tMax;
-  std::vector<uint32_t> stack{0};
-  while (!stack.empty()) {
-    const BvhWideNode& node = bvh.wideNodes[stack.back()];
-    stack.pop_back();
-    for (int c = 0; c < 4; ++c) {
-      uint32_t entry = node.texels[3][c];
-      if (entry == kBvhEmptySlot) continue;
-      Aabb box = wideChildBox(node, c);
-      glm::vec3 t0 = (box.min - ray.origin) * inv, t1 = (box.max - ray.origin) * inv;
-      glm::vec3 tn = glm::min(t0, t1), tf = glm::max(t0, t1);
-      float near = std::max(std::max(tn.x, tn.y), std::max(tn.z, 0.0f));
-      float far = std::min(std::min(tf.x, tf.y) * gpu::kSlabWiden, std::min(tf.z * gpu::kSlabWiden, tBest));
-      if (!(near <= far)) continue;
-      if (!(entry & kBvhLeafTag)) {
-        stack.push_back(entry);
-        continue;
-      }
-      uint32_t first = entry & 0x07ffffffu, count = ((entry >> 27) & 0xfu) + 1u;
-      for (uint32_t tri = first; tri < first + count; ++tri) {
-        glm::vec3 h = gpu::intersectTriangle(shear, pos[3 * tri], pos[3 * tri + 1], pos[3 * tri + 2], tBest);
-        if (h.x > 0.0f) {
-          tBest = h.x;
-          best = {h.x, h.y, h.z, tri};
-          if (anyHit) return best;
-        }
-      }
-    }
-  }
-  return best;
-}
-
 // Every quantized child box of every wide node contains the tight bounds of what lies under it.
 int uncontainedWideBoxes(const Bvh& bvh, const std::vector<Aabb>& orderedBounds) {
   std::function<Aabb(uint32_t)> tight = [&](uint32_t entry) {
@@ -90,8 +53,10 @@ TEST_P(BvhProperty, BuildsContainsAndWalksLikeBruteForce) {
     for (const Ray& ray : rays) {
       HostHit want = bruteForce(pos, ray);
       hits += want.triangle != 0xffffffffu;
-      HostHit closest[2] = {traceHost(bvh, pos, ray.origin, ray.direction, ray.tMax, false), traceWide(bvh, pos, ray, false)};
-      HostHit any[2] = {traceHost(bvh, pos, ray.origin, ray.direction, ray.tMax, true), traceWide(bvh, pos, ray, true)};
+      HostHit closest[2] = {traceHost(bvh, pos, ray.origin, ray.direction, ray.tMax, false),
+                            traceHostWide(bvh, pos, ray.origin, ray.direction, ray.tMax, false)};
+      HostHit any[2] = {traceHost(bvh, pos, ray.origin, ray.direction, ray.tMax, true),
+                        traceHostWide(bvh, pos, ray.origin, ray.direction, ray.tMax, true)};
       for (int layout = 0; layout < 2; ++layout) {
         closestWrong[layout] += !sameClosestHit(closest[layout], want);
         anyWrong[layout] += (any[layout].triangle != 0xffffffffu) != (want.triangle != 0xffffffffu);

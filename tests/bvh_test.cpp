@@ -9,6 +9,7 @@
 #include "../shaders/shared/geometry.h"
 #include "../shaders/shared/rng.h"
 #include "../shaders/shared/sampling.h"
+#include "adversarial_geometry.h"
 #include "bvh/bvh.h"
 #include "scene/gltf_loader.h"
 
@@ -42,17 +43,7 @@ Soup randomSoup(int triangles, uint32_t seed) {
 }
 
 HostHit bruteForce(const std::vector<glm::vec3>& pos, glm::vec3 o, glm::vec3 d, float tMax) {
-  gpu::RayShear shear = gpu::makeRayShear(o, d);
-  HostHit best;
-  float t = tMax;
-  for (uint32_t i = 0; i < pos.size() / 3; ++i) {
-    glm::vec3 h = gpu::intersectTriangle(shear, pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], t);
-    if (h.x > 0.0f) {
-      t = h.x;
-      best = {h.x, h.y, h.z, i};
-    }
-  }
-  return best;
+  return test::bruteForce(pos, {o, d, tMax});
 }
 
 }  // namespace

@@ -24,12 +24,6 @@ fs::path dir() {
   return d;
 }
 
-bool hasTemporaries(const fs::path& d) {
-  for (const auto& f : fs::directory_iterator(d))
-    if (f.path().filename().string().rfind(".vkmc-", 0) == 0) return true;
-  return false;
-}
-
 pid_t spawnVkmc(std::vector<std::string> args) {
   args.insert(args.begin(), VKMC_BINARY);
   std::vector<char*> argv;

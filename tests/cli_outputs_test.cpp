@@ -30,12 +30,6 @@ fs::path dir() {
   return d;
 }
 
-bool hasTemporaries(const fs::path& d) {
-  for (const auto& f : fs::directory_iterator(d))
-    if (f.path().filename().string().rfind(".vkmc-", 0) == 0) return true;
-  return false;
-}
-
 std::string render(const std::string& scene) { return "render " + scene + " --width 16 --height 16 --spp 1 -q"; }
 
 // A scene of one emissive (Le = 1) mesh from a soup.

@@ -39,6 +39,13 @@ inline RunResult runShell(const std::string& command) {
 
 inline RunResult runVkmc(const std::string& args) { return runShell(std::string(VKMC_BINARY) + " " + args); }
 
+// Whether a folder holds a temporary of vkmc's output commit (io/output_files.h names them .vkmc-*).
+inline bool hasTemporaries(const std::filesystem::path& d) {
+  for (const auto& f : std::filesystem::directory_iterator(d))
+    if (f.path().filename().string().rfind(".vkmc-", 0) == 0) return true;
+  return false;
+}
+
 inline std::string cornell() { return std::string(VKMC_SOURCE_DIR) + "/scenes/cornell_box.gltf"; }
 
 }  // namespace vkmc::test

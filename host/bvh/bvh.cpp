@@ -388,6 +388,33 @@ Bvh buildBvh(std::span<const Aabb> bounds, const BvhOptions& options) {
   return bvh;
 }
 
+namespace {
+
+// The host walks' shared pieces: the slab test as the GPU does it (far distance widened by 2 gamma(3)) and a
+// leaf's triangles against the best hit so far.
+bool slabHit(const Aabb& box, glm::vec3 origin, glm::vec3 inv, float tBest) {
+  glm::vec3 t0 = (box.min - origin) * inv, t1 = (box.max - origin) * inv;
+  glm::vec3 tn = glm::min(t0, t1), tf = glm::max(t0, t1);
+  float near = std::max(std::max(tn.x, tn.y), std::max(tn.z, 0.0f));
+  float far = std::min(std::min(tf.x, tf.y) * gpu::kSlabWiden, std::min(tf.z * gpu::kSlabWiden, tBest));
+  return near <= far;
+}
+
+bool intersectLeaf(const gpu::RayShear& shear, std::span<const glm::vec3> pos, uint32_t first, uint32_t count, float& tBest,
+                   HostHit& best, bool anyHit) {
+  for (uint32_t tri = first; tri < first + count; ++tri) {
+    glm::vec3 h = gpu::intersectTriangle(shear, pos[3 * tri], pos[3 * tri + 1], pos[3 * tri + 2], tBest);
+    if (h.x > 0.0f) {
+      tBest = h.x;
+      best = {h.x, h.y, h.z, tri};
+      if (anyHit) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 HostHit traceHost(const Bvh& bvh, std::span<const glm::vec3> pos, glm::vec3 origin, glm::vec3 dir, float tMax, bool anyHit) {
   gpu::RayShear shear = gpu::makeRayShear(origin, dir);
   glm::vec3 inv = gpu::safeInverse(dir);
@@ -398,25 +425,29 @@ HostHit traceHost(const Bvh& bvh, std::span<const glm::vec3> pos, glm::vec3 orig
     const BvhGpuNode& node = bvh.nodes[stack.back()];
     stack.pop_back();
     for (int c = 0; c < 2; ++c) {
-      glm::vec3 lo = glm::vec3(node.texels[2 * c]), hi = glm::vec3(node.texels[2 * c + 1]);
-      glm::vec3 t0 = (lo - origin) * inv, t1 = (hi - origin) * inv;
-      glm::vec3 tn = glm::min(t0, t1), tf = glm::max(t0, t1);
-      float near = std::max(std::max(tn.x, tn.y), std::max(tn.z, 0.0f));
-      float far = std::min(std::min(tf.x, tf.y) * gpu::kSlabWiden, std::min(tf.z * gpu::kSlabWiden, tBest));
-      if (!(near <= far)) continue;
+      if (!slabHit(Aabb{glm::vec3(node.texels[2 * c]), glm::vec3(node.texels[2 * c + 1])}, origin, inv, tBest)) continue;
       uint32_t ref = asUint(node.texels[2 * c].w), count = asUint(node.texels[2 * c + 1].w);
-      if (count == 0) {
-        stack.push_back(ref);
-        continue;
-      }
-      for (uint32_t tri = ref; tri < ref + count; ++tri) {
-        glm::vec3 h = gpu::intersectTriangle(shear, pos[3 * tri], pos[3 * tri + 1], pos[3 * tri + 2], tBest);
-        if (h.x > 0.0f) {
-          tBest = h.x;
-          best = {h.x, h.y, h.z, tri};
-          if (anyHit) return best;
-        }
-      }
+      if (count == 0) stack.push_back(ref);
+      else if (intersectLeaf(shear, pos, ref, count, tBest, best, anyHit)) return best;
+    }
+  }
+  return best;
+}
+
+HostHit traceHostWide(const Bvh& bvh, std::span<const glm::vec3> pos, glm::vec3 origin, glm::vec3 dir, float tMax, bool anyHit) {
+  gpu::RayShear shear = gpu::makeRayShear(origin, dir);
+  glm::vec3 inv = gpu::safeInverse(dir);
+  HostHit best;
+  float tBest = tMax;
+  std::vector<uint32_t> stack{0};
+  while (!stack.empty()) {
+    const BvhWideNode& node = bvh.wideNodes[stack.back()];
+    stack.pop_back();
+    for (int c = 0; c < 4; ++c) {
+      uint32_t entry = node.texels[3][c];
+      if (entry == kBvhEmptySlot || !slabHit(wideChildBox(node, c), origin, inv, tBest)) continue;
+      if (!(entry & kBvhLeafTag)) stack.push_back(entry);
+      else if (intersectLeaf(shear, pos, entry & 0x07ffffffu, ((entry >> 27) & 0xfu) + 1u, tBest, best, anyHit)) return best;
     }
   }
   return best;

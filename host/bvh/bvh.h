@@ -75,5 +75,8 @@ struct HostHit {
 };
 HostHit traceHost(const Bvh& bvh, std::span<const glm::vec3> orderedPositions, glm::vec3 origin, glm::vec3 dir, float tMax,
                   bool anyHit);
+// The same over the 4-wide layout, each child box decoded exactly as its node encodes it (wideChildBox).
+HostHit traceHostWide(const Bvh& bvh, std::span<const glm::vec3> orderedPositions, glm::vec3 origin, glm::vec3 dir, float tMax,
+                      bool anyHit);
 
 }  // namespace vkmc
