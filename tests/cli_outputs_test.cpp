@@ -82,7 +82,11 @@ TEST(CliOutputs, AFifoIsWrittenDirectlyAndStaysAFifo) {
   // The read end open first (without blocking), so vkmc finds a reader; the report (~2 KB) fits the pipe.
   int readEnd = open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
   ASSERT_GE(readEnd, 0);
-  RunResult r = runVkmc(render(cornell()) + " -o " + (dir() / "f.exr").string() + " --report " + fifo.string());
+  // Through a symlink, as /dev/stdout leads to a pipe: the link and the FIFO must both survive.
+  fs::path link = dir() / "report.link";
+  fs::remove(link);
+  fs::create_symlink(fifo, link);
+  RunResult r = runVkmc(render(cornell()) + " -o " + (dir() / "f.exr").string() + " --report " + link.string());
   std::string received;
   char buf[4096];
   for (ssize_t n; (n = read(readEnd, buf, sizeof(buf))) > 0;) received.append(buf, size_t(n));
@@ -92,6 +96,7 @@ TEST(CliOutputs, AFifoIsWrittenDirectlyAndStaysAFifo) {
   struct stat st {};
   ASSERT_EQ(stat(fifo.c_str(), &st), 0);
   EXPECT_TRUE(S_ISFIFO(st.st_mode));
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
 }
 
 TEST(CliOutputs, AFailedOutputLeavesEveryExistingOutputIntact) {

@@ -135,15 +135,17 @@ void OutputSet::commit() {
   std::vector<Staged> staged;
   std::vector<std::pair<std::string, const std::string*>> direct;
   for (const auto& [path, bytes] : files_) {
-    std::string target = resolved(path);
+    // What the path names once symlinks are followed (stat follows them; /dev/stdout may lead to a pipe, whose
+    // link target is no path at all): anything but a regular file is written directly through the path itself.
     struct stat st {};
-    bool exists = ::stat(target.c_str(), &st) == 0;
+    bool exists = ::stat(path.c_str(), &st) == 0;
     if (exists && S_ISDIR(st.st_mode)) throw Error("cannot write '" + path + "': it is a folder");
     if (exists && !S_ISREG(st.st_mode)) {
       if (!S_ISCHR(st.st_mode) && !S_ISFIFO(st.st_mode)) throw Error("cannot write '" + path + "': not a file, device or FIFO");
       direct.emplace_back(path, &bytes);
       continue;
     }
+    std::string target = resolved(path);
     int fd = -1;
     std::unique_ptr<PendingTemporary> tmp;
     for (int attempt = 0; fd < 0 && attempt < 100; ++attempt) {
