@@ -114,18 +114,23 @@ class BoundedScan : public nlohmann::json_sax<nlohmann::json> {
 
 }  // namespace
 
-uint64_t scanGltfJson(std::string_view json, const InputLimits& limits) {
+GltfJsonFacts scanGltfJson(std::string_view json, const InputLimits& limits) {
   BoundedScan scan(limits);
   if (!nlohmann::json::sax_parse(json.begin(), json.end(), &scan) || !scan.problem.empty())
     throw Error(scan.problem.empty() ? std::string("invalid JSON") : scan.problem);
-  // Bounded now: read what the file declares about its buffers.
+  // Bounded now: read what the file declares about its buffers and extensions.
   nlohmann::json doc = nlohmann::json::parse(json.begin(), json.end());
-  uint64_t largest = 0;
-  if (doc.is_object() && doc.contains("buffers") && doc["buffers"].is_array())
+  GltfJsonFacts facts;
+  if (!doc.is_object()) return facts;
+  if (doc.contains("buffers") && doc["buffers"].is_array())
     for (const auto& b : doc["buffers"])
       if (b.is_object() && b.contains("byteLength") && b["byteLength"].is_number_unsigned())
-        largest = std::max<uint64_t>(largest, b["byteLength"].get<uint64_t>());
-  return largest;
+        facts.largestBuffer = std::max<uint64_t>(facts.largestBuffer, b["byteLength"].get<uint64_t>());
+  for (auto [key, list] : {std::pair{"extensionsUsed", &facts.extensionsUsed}, std::pair{"extensionsRequired", &facts.extensionsRequired}})
+    if (doc.contains(key) && doc[key].is_array())
+      for (const auto& e : doc[key])
+        if (e.is_string()) list->push_back(e.get<std::string>());
+  return facts;
 }
 
 }  // namespace vkmc

@@ -23,8 +23,14 @@ std::vector<unsigned char> readRegularFile(const std::string& path, uint64_t max
 // The JSON chunk of a GLB container whose header, chunk lengths and alignment are consistent with its size.
 std::string_view glbJsonChunk(const std::vector<unsigned char>& glb);
 
+// What the loader needs to know before tinygltf parses the file.
+struct GltfJsonFacts {
+  uint64_t largestBuffer = 0;  // the largest declared buffers[].byteLength
+  std::vector<std::string> extensionsUsed, extensionsRequired;
+};
+
 // Throws vkmc::Error when the JSON is malformed, nested deeper than limits.maxJsonDepth or holds more than
-// limits.maxJsonValues values. Returns the largest declared buffers[].byteLength (0 if none).
-uint64_t scanGltfJson(std::string_view json, const InputLimits& limits);
+// limits.maxJsonValues values.
+GltfJsonFacts scanGltfJson(std::string_view json, const InputLimits& limits);
 
 }  // namespace vkmc

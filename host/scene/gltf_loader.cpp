@@ -17,6 +17,7 @@
 
 #include "../shaders/shared/geometry.h"
 #include "error.h"
+#include "scene/gltf_extensions.h"
 
 namespace vkmc {
 namespace {
@@ -96,6 +97,22 @@ AccessorView viewAccessor(const tinygltf::Model& model, int index, const char* w
   out.componentType = a.componentType;
   out.type = a.type;
   return out;
+}
+
+// Triangle lists, strips and fans (glTF 2.0 section 3.7.2.1): how many triangles a primitive of `elements`
+// vertices makes, and which element is corner k of triangle t (strips alternate their winding so every
+// triangle keeps the first one's orientation).
+bool isTriangleMode(int mode) {
+  return mode == -1 || mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN;
+}
+size_t triangleCount(int mode, size_t elements) {
+  if (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) return elements >= 3 ? elements - 2 : 0;
+  return elements / 3;
+}
+size_t cornerElement(int mode, size_t t, int k) {
+  if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) return k == 0 ? t : k == 1 ? t + 1 + t % 2 : t + 2 - t % 2;
+  if (mode == TINYGLTF_MODE_TRIANGLE_FAN) return k == 0 ? t + 1 : k == 1 ? t + 2 : 0;
+  return 3 * t + k;
 }
 
 glm::vec3 readVec3(const AccessorView& v, size_t i) {
@@ -190,7 +207,7 @@ class Flattener {
     glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
     bool flip = glm::determinant(glm::mat3(world)) < 0.0f;  // mirroring swaps the winding
     for (const tinygltf::Primitive& prim : model_.meshes[meshIndex].primitives) {
-      if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1) {
+      if (!isTriangleMode(prim.mode)) {
         ++nonTrianglePrimitives;
         continue;
       }
@@ -220,16 +237,18 @@ class Flattener {
         throw Error("primitive refers to missing material " + std::to_string(materialIndex));
       uint32_t materialId = materialIndex < 0 ? static_cast<uint32_t>(scene_.materials.size() - 1)  // default material
                                               : static_cast<uint32_t>(materialIndex);
-      size_t vertexCount = indices ? indices->count : positions.count;
-      if (scene_.triangleCount() + vertexCount / 3 > maxTriangles_)
+      size_t triangles = triangleCount(prim.mode, indices ? indices->count : positions.count);
+      if (scene_.triangleCount() + triangles > maxTriangles_)
         throw Error("scene too big: more than " + std::to_string(maxTriangles_) +
                     " triangles after instancing (what the device's buffers and this machine's memory hold)");
-      for (size_t t = 0; t + 3 <= vertexCount; t += 3) {
+      for (size_t t = 0; t < triangles; ++t) {
         uint32_t idx[3];
         for (int k = 0; k < 3; ++k) {
-          idx[k] = indices ? readIndex(*indices, t + k) : static_cast<uint32_t>(t + k);
-          if (idx[k] >= positions.count)
-            throw Error("index " + std::to_string(idx[k]) + " out of range (" + std::to_string(positions.count) + " vertices)");
+          size_t element = cornerElement(prim.mode, t, k);
+          size_t vertex = indices ? readIndex(*indices, element) : element;
+          if (vertex >= positions.count)
+            throw Error("index " + std::to_string(vertex) + " out of range (" + std::to_string(positions.count) + " vertices)");
+          idx[k] = static_cast<uint32_t>(vertex);
         }
         if (flip) std::swap(idx[1], idx[2]);
         glm::vec3 p[3], n[3];
@@ -322,11 +341,11 @@ class InstanceCounter {
     uint64_t total = 0;
     if (node.mesh >= 0 && node.mesh < static_cast<int>(model_.meshes.size()))
       for (const tinygltf::Primitive& prim : model_.meshes[node.mesh].primitives) {
-        if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1) continue;
+        if (!isTriangleMode(prim.mode)) continue;
         auto pos = prim.attributes.find("POSITION");
         int accessor = prim.indices >= 0 ? prim.indices : pos == prim.attributes.end() ? -1 : pos->second;
         if (accessor >= 0 && accessor < static_cast<int>(model_.accessors.size()))
-          total = saturatingAdd(total, model_.accessors[accessor].count / 3);
+          total = saturatingAdd(total, triangleCount(prim.mode, model_.accessors[accessor].count));
       }
     for (int child : node.children) total = saturatingAdd(total, trianglesUnder(child, depth + 1));
     memo_[nodeIndex] = total;
@@ -378,10 +397,13 @@ Scene loadGltf(const std::string& path, const LoadLimits& limits) {
 Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, const std::string& baseDir,
                          const std::string& path, const LoadLimits& limits) {
   tinygltf::Model model;
+  std::vector<std::string> extensionWarnings;
   try {
     std::string_view json = binary ? glbJsonChunk(bytes)
                                    : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-    uint64_t largestBuffer = scanGltfJson(json, limits.input);
+    GltfJsonFacts facts = scanGltfJson(json, limits.input);
+    extensionWarnings = checkExtensions(facts.extensionsUsed, facts.extensionsRequired);
+    uint64_t largestBuffer = facts.largestBuffer;
     // Buffers must match their declared byteLength exactly (tinygltf checks after reading); images are not
     // decoded yet, so anything beyond the largest buffer or 256 MiB is refused before it is read.
     SafeFs safeFs{std::min(limits.input.maxExternalFileBytes, std::max<uint64_t>(largestBuffer, uint64_t(1) << 28))};
@@ -410,7 +432,7 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
   if (usesTextures) scene.warnings.push_back("textures are not supported yet and were ignored");
   scene.usesTextures = usesTextures;
   for (const std::string& e : model.extensionsUsed) scene.hasPunctualLights |= e == "KHR_lights_punctual";
-  if (scene.hasPunctualLights) scene.warnings.push_back("KHR_lights_punctual lights are not supported yet and were ignored");
+  scene.warnings.insert(scene.warnings.end(), extensionWarnings.begin(), extensionWarnings.end());
 
   std::vector<int> roots;
   if (!model.scenes.empty()) {

@@ -1,0 +1,71 @@
+// The extension table: one row per extension vkmc knows, with what it ignores of it.
+#include "scene/gltf_extensions.h"
+
+#include <algorithm>
+#include <string_view>
+
+#include "error.h"
+
+namespace vkmc {
+namespace {
+
+struct ExtensionRow {
+  std::string_view name;
+  std::string_view ignored;  // empty: implemented in full
+};
+
+constexpr ExtensionRow kExtensions[] = {
+    {"KHR_materials_emissive_strength", ""},
+    {"KHR_materials_specular", "its specularColorFactor and textures are ignored (specularFactor is used)"},
+    {"KHR_lights_punctual", "its lights are ignored"},
+    {"KHR_texture_transform", "texture transforms are ignored (textures are not used yet)"},
+    {"KHR_texture_basisu", "its textures are ignored (textures are not used yet)"},
+    {"EXT_texture_webp", "its textures are ignored (textures are not used yet)"},
+    {"EXT_texture_avif", "its textures are ignored (textures are not used yet)"},
+    {"KHR_materials_transmission", "transmission is ignored: such surfaces render opaque"},
+    {"KHR_materials_volume", "volumes are ignored"},
+    {"KHR_materials_ior", "the index of refraction is ignored"},
+    {"KHR_materials_clearcoat", "clearcoat layers are ignored"},
+    {"KHR_materials_sheen", "sheen is ignored"},
+    {"KHR_materials_iridescence", "iridescence is ignored"},
+    {"KHR_materials_anisotropy", "anisotropy is ignored"},
+    {"KHR_materials_dispersion", "dispersion is ignored"},
+    {"KHR_materials_diffuse_transmission", "diffuse transmission is ignored"},
+    {"KHR_materials_unlit", "unlit materials are shaded as lit ones"},
+    {"KHR_materials_variants", "only each primitive's default material is used"},
+    {"KHR_draco_mesh_compression", "Draco-compressed meshes are not decoded (their uncompressed fallbacks are used)"},
+    {"EXT_meshopt_compression", "meshopt-compressed buffers are not decoded (their fallbacks are used)"},
+    {"KHR_mesh_quantization", "quantized vertex attributes are not decoded"},
+    {"EXT_mesh_gpu_instancing", "only one instance of each instanced mesh is drawn"},
+    {"KHR_animation_pointer", "animations are ignored (vkmc renders the rest pose)"},
+    {"KHR_xmp_json_ld", "metadata is ignored"},
+};
+
+const ExtensionRow* find(const std::string& name) {
+  for (const ExtensionRow& row : kExtensions)
+    if (row.name == name) return &row;
+  return nullptr;
+}
+
+}  // namespace
+
+std::vector<std::string> checkExtensions(const std::vector<std::string>& used, const std::vector<std::string>& required) {
+  for (const std::string& name : required) {
+    const ExtensionRow* row = find(name);
+    if (!row) throw Error("the file requires extension " + name + ", which vkmc does not know");
+    if (!row->ignored.empty())
+      throw Error("the file requires extension " + name + ", which vkmc does not implement in full: " + std::string(row->ignored));
+  }
+  std::vector<std::string> names = used;
+  for (const std::string& name : required)
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  std::vector<std::string> warnings;
+  for (const std::string& name : names) {
+    const ExtensionRow* row = find(name);
+    if (!row) warnings.push_back("extension " + name + " is unknown to vkmc and ignored");
+    else if (!row->ignored.empty()) warnings.push_back("extension " + name + ": " + std::string(row->ignored));
+  }
+  return warnings;
+}
+
+}  // namespace vkmc
