@@ -130,3 +130,22 @@ TEST(Cli, MissingOutputFolderFailsBeforeRendering) {
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
 }
+
+TEST(Cli, ASceneWithoutEmittersIsLitByAWhiteEnvironmentAndSaysSo) {
+  vkmc::test::GltfSpec dark = vkmc::test::quadSpec();
+  dark.materialJson = R"({"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.5,0.5,1]}})";
+  std::string scene = vkmc::test::writeGltf(workDir(), "dark", dark);
+  fs::path report = workDir() / "dark.json";
+  std::string common = "render " + scene + " --width 16 --height 16 --spp 4 -q -o " + (workDir() / "dark.exr").string() +
+                       " --report " + report.string();
+  RunResult lit = runVkmc(common);
+  ASSERT_EQ(lit.code, 0) << lit.err;
+  EXPECT_NE(lit.err.find("no emitters: it is lit by a uniform white environment"), std::string::npos) << lit.err;
+  nlohmann::json j = nlohmann::json::parse(slurp(report));
+  EXPECT_GT(j["mean"][0].get<double>(), 0.1);
+  EXPECT_EQ(j["background"][0].get<double>(), 1.0);
+  RunResult black = runVkmc(common + " --background 0,0,0");  // asked for: black, without a word
+  ASSERT_EQ(black.code, 0) << black.err;
+  EXPECT_EQ(black.err, "");
+  EXPECT_EQ(nlohmann::json::parse(slurp(report))["mean"][0].get<double>(), 0.0);
+}

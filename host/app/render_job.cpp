@@ -35,8 +35,8 @@ void validateOptions(const RenderOptions& o) {
     if (p && !glm::all(glm::lessThanEqual(glm::abs(*p), glm::vec3(gpu::kMaxSceneCoordinate))))
       throw Error("--look-from and --look-at must be finite and within +-1e11 (float ray tests overflow beyond)");
   if (!(o.fovDegrees > 0.0f && o.fovDegrees < 179.0f)) throw Error("--fov must be in (0, 179) degrees");
-  for (int c = 0; c < 3; ++c)
-    if (!(o.background[c] >= 0.0f) || !std::isfinite(o.background[c])) throw Error("--background must be finite and non-negative");
+  for (int c = 0; c < 3 && o.background; ++c)
+    if (!((*o.background)[c] >= 0.0f) || !std::isfinite((*o.background)[c])) throw Error("--background must be finite and non-negative");
   if (!(o.timeBudget >= 0.0) || o.timeBudget > 1e6) throw Error("--time-budget must be between 0 and 1e6 seconds");
 }
 
@@ -121,7 +121,13 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
   settings.features = options.specialize ? scanFeatures(scene) : allFeatures(scanFeatures(scene));
   out.features = settings.features;
   settings.seed = options.seed;
-  settings.background = options.background;
+  out.background = options.background.value_or(glm::vec3(0.0f));
+  if (!options.background && out.sceneInfo.emissiveTriangles == 0) {
+    out.background = glm::vec3(1.0f);
+    out.warnings.push_back("the scene has no emitters: it is lit by a uniform white environment of radiance 1 "
+                           "(--background sets another; --background 0,0,0 renders it black)");
+  }
+  settings.background = out.background;
   settings.camera = makeCameraRig(camera, width, height);
   settings.progress = options.progress;
   settings.timeBudget = options.timeBudget;
@@ -246,6 +252,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
               {"max_leaf_size", r.bvh.maxLeafSize}, {"sah_cost", r.bvh.sahCost}, {"build_seconds", r.bvh.buildSeconds}};
   j["max_bounces"] = s.maxBounces;
   j["specialized_for"] = {{"emitters", r.features.emitters()}, {"glossy", r.features.glossy}, {"specialized", o.specialize}};
+  j["background"] = {r.background.x, r.background.y, r.background.z};
   j["warnings"] = r.warnings;
   return j;
 }

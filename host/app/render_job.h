@@ -24,7 +24,9 @@ struct RenderOptions {
   std::optional<uint32_t> cameraIndex;
   std::optional<glm::vec3> lookFrom, lookAt;
   float fovDegrees = 45.0f;
-  glm::vec3 background{0.0f};
+  // Radiance seen by escaped rays. Unset: black, except that a scene without emitters is lit by a uniform white
+  // environment (radiance 1) with a warning saying so, rather than rendering black without a word.
+  std::optional<glm::vec3> background;
   bool progress = true;
   double timeBudget = 0.0;        // seconds; 0 = render spp samples
   std::string referencePath;      // EXR to compare with: mse, relmse, efficiency in the report
@@ -53,6 +55,7 @@ struct RenderOutcome {
   double pilotSeconds = 0.0;           // efficiency roulette's pilot, included in stats.seconds
   SceneFeatures features;              // what the pipelines were specialized for
   std::optional<RouletteTable> roulette;
+  glm::vec3 background{0.0f};  // what escaped rays saw
 };
 
 // Throws vkmc::Error on bad options or input, before anything is written.
