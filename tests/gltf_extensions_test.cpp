@@ -83,3 +83,14 @@ TEST(GltfExtensions, TriangleStripsAndFansBecomeTrianglesFacingTheSameWay) {
     EXPECT_EQ(s.positions[3 * t + 2], glm::vec3(0.5f, 0.5f, 0)) << "every fan triangle ends at the centre";
   }
 }
+
+TEST(GltfExtensions, OnlyASpecularColourOrTextureIsWarnedAbout) {
+  GltfSpec factor = test::quadSpec();
+  factor.materialJson = R"({"extensions":{"KHR_materials_specular":{"specularFactor":0}}})";
+  Scene plain = loadGltf(test::writeGltf(dir(), "specular_factor", factor));
+  EXPECT_TRUE(plain.warnings.empty()) << plain.warnings[0];
+  EXPECT_EQ(plain.materials[0].specular, 0.0f);
+  GltfSpec colour = test::quadSpec();
+  colour.materialJson = R"({"extensions":{"KHR_materials_specular":{"specularColorFactor":[1,0,0]}}})";
+  EXPECT_TRUE(hasWarning(loadGltf(test::writeGltf(dir(), "specular_colour", colour)), "material 0: KHR_materials_specular's specularColorFactor"));
+}

@@ -155,7 +155,7 @@ double extensionNumber(const tinygltf::ExtensionMap& ext, const char* extension,
   return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
 }
 
-Material convertMaterial(const tinygltf::Material& m, int index, bool& usesTextures) {
+Material convertMaterial(const tinygltf::Material& m, int index, bool& usesTextures, std::vector<std::string>& warnings) {
   Material out;
   const auto& pbr = m.pbrMetallicRoughness;
   std::string name = "material " + std::to_string(index);
@@ -168,6 +168,16 @@ Material convertMaterial(const tinygltf::Material& m, int index, bool& usesTextu
   if (m.emissiveFactor.size() == 3) out.emission = glm::vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
   double strength = extensionNumber(m.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
   out.specular = static_cast<float>(extensionNumber(m.extensions, "KHR_materials_specular", "specularFactor", 1.0));
+  if (auto spec = m.extensions.find("KHR_materials_specular"); spec != m.extensions.end()) {
+    // specularFactor is used; a specular colour or texture is not yet (the materials issue).
+    const tinygltf::Value& v = spec->second;
+    bool colour = false;
+    if (v.Has("specularColorFactor") && v.Get("specularColorFactor").IsArray())
+      for (int c = 0; c < 3 && c < int(v.Get("specularColorFactor").ArrayLen()); ++c)
+        colour |= v.Get("specularColorFactor").Get(c).IsNumber() && v.Get("specularColorFactor").Get(c).GetNumberAsDouble() != 1.0;
+    if (colour || v.Has("specularTexture") || v.Has("specularColorTexture"))
+      warnings.push_back(name + ": KHR_materials_specular's specularColorFactor and textures are ignored (specularFactor is used)");
+  }
   if (!std::isfinite(strength) || strength < 0.0) throw Error(name + ": emissiveStrength is not a finite non-negative number");
   out.emission *= static_cast<float>(strength);
   out.doubleSided = m.doubleSided;
@@ -426,7 +436,7 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
   scene.path = path;
   bool usesTextures = false;
   for (size_t i = 0; i < model.materials.size(); ++i)
-    scene.materials.push_back(convertMaterial(model.materials[i], static_cast<int>(i), usesTextures));
+    scene.materials.push_back(convertMaterial(model.materials[i], static_cast<int>(i), usesTextures, scene.warnings));
   Material fallback;  // glTF default material: white, fully metallic and rough (Lambert here)
   scene.materials.push_back(fallback);
   if (usesTextures) scene.warnings.push_back("textures are not supported yet and were ignored");
