@@ -29,14 +29,6 @@ std::string quadUsing(const std::string& name, const std::string& used, const st
   return path;
 }
 
-std::string errorOf(const std::string& path) {
-  try {
-    loadGltf(path);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
 
 bool hasWarning(const Scene& s, const std::string& text) {
   for (const std::string& w : s.warnings)
@@ -46,13 +38,13 @@ bool hasWarning(const Scene& s, const std::string& text) {
 }  // namespace
 
 TEST(GltfExtensions, RequiredExtensionsVkmcDoesNotImplementAreRefusedByName) {
-  std::string draco = errorOf(quadUsing("draco", "\"KHR_draco_mesh_compression\"", "\"KHR_draco_mesh_compression\""));
+  std::string draco = test::loadError(quadUsing("draco", "\"KHR_draco_mesh_compression\"", "\"KHR_draco_mesh_compression\""));
   EXPECT_NE(draco.find("requires extension KHR_draco_mesh_compression"), std::string::npos) << draco;
-  std::string unknown = errorOf(quadUsing("unknown", "\"VENDOR_magic\"", "\"VENDOR_magic\""));
+  std::string unknown = test::loadError(quadUsing("unknown", "\"VENDOR_magic\"", "\"VENDOR_magic\""));
   EXPECT_NE(unknown.find("requires extension VENDOR_magic, which vkmc does not know"), std::string::npos) << unknown;
-  std::string quantized = errorOf(quadUsing("quantized", "\"KHR_mesh_quantization\"", "\"KHR_mesh_quantization\""));
+  std::string quantized = test::loadError(quadUsing("quantized", "\"KHR_mesh_quantization\"", "\"KHR_mesh_quantization\""));
   EXPECT_NE(quantized.find("KHR_mesh_quantization"), std::string::npos) << quantized;
-  EXPECT_EQ(errorOf(quadUsing("strength", "\"KHR_materials_emissive_strength\"", "\"KHR_materials_emissive_strength\"")), "");
+  EXPECT_EQ(test::loadError(quadUsing("strength", "\"KHR_materials_emissive_strength\"", "\"KHR_materials_emissive_strength\"")), "");
 }
 
 TEST(GltfExtensions, UsedExtensionsThatAreIgnoredAreNamedInWarnings) {

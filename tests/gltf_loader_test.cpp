@@ -17,14 +17,6 @@ std::filesystem::path dir() {
   static auto d = test::makeTempDir("loader");
   return d;
 }
-std::string errorOf(const std::string& path) {
-  try {
-    loadGltf(path);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
 }  // namespace
 
 TEST(GltfLoader, LoadsIndexedQuadWithEveryIndexWidth) {
@@ -84,7 +76,7 @@ TEST(GltfLoader, SkipsAndCountsZeroAreaTriangles) {
 TEST(GltfLoader, SkipsNonTrianglePrimitivesWithAWarning) {
   GltfSpec s = test::quadSpec();
   s.mode = 1;  // lines
-  EXPECT_NE(errorOf(test::writeGltf(dir(), "lines", s)).find("no triangles"), std::string::npos);
+  EXPECT_NE(test::loadError(test::writeGltf(dir(), "lines", s)).find("no triangles"), std::string::npos);
 }
 
 TEST(GltfLoader, RejectsMalformedInputWithOneLine) {
@@ -126,7 +118,7 @@ TEST(GltfLoader, RejectsMalformedInputWithOneLine) {
     cases.push_back({"overflow", s, "number overflow"});
   }
   for (const Case& c : cases) {
-    std::string msg = errorOf(test::writeGltf(dir(), c.name, c.spec));
+    std::string msg = test::loadError(test::writeGltf(dir(), c.name, c.spec));
     EXPECT_NE(msg.find(c.expect), std::string::npos) << c.name << ": got '" << msg << "'";
     EXPECT_EQ(msg.find('\n'), std::string::npos) << c.name << ": message is not one line";
   }
@@ -135,13 +127,13 @@ TEST(GltfLoader, RejectsMalformedInputWithOneLine) {
 TEST(GltfLoader, RejectsTruncatedFiles) {
   auto path = dir() / "truncated.gltf";
   std::ofstream(path) << R"({"asset":{"version":"2.0"},"meshes":[{"primitives":[{"attrib)";
-  std::string msg = errorOf(path.string());
+  std::string msg = test::loadError(path.string());
   EXPECT_NE(msg.find("cannot load"), std::string::npos) << msg;
   EXPECT_EQ(msg.find('\n'), std::string::npos);
   auto glb = dir() / "truncated.glb";
   std::ofstream(glb, std::ios::binary) << std::string("glTF\x02\x00\x00\x00\xff\x00\x00\x00", 12);
-  EXPECT_NE(errorOf(glb.string()).find("cannot load"), std::string::npos);
-  EXPECT_NE(errorOf((dir() / "absent.gltf").string()).find("cannot open"), std::string::npos);
+  EXPECT_NE(test::loadError(glb.string()).find("cannot load"), std::string::npos);
+  EXPECT_NE(test::loadError((dir() / "absent.gltf").string()).find("cannot open"), std::string::npos);
 }
 
 TEST(GltfLoader, RejectsExponentialInstancingQuickly) {
@@ -158,6 +150,6 @@ TEST(GltfLoader, RejectsExponentialInstancingQuickly) {
   auto bomb = dir() / "bomb.gltf";
   std::ofstream(bomb) << json;
   auto start = std::chrono::steady_clock::now();
-  EXPECT_NE(errorOf(bomb.string()).find("scene too big"), std::string::npos);
+  EXPECT_NE(test::loadError(bomb.string()).find("scene too big"), std::string::npos);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
 }

@@ -1,10 +1,14 @@
 // glTF writer for tests.
 #include "test_scenes.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <fstream>
 #include <random>
 #include <sstream>
+
+#include "error.h"
 
 namespace vkmc::test {
 
@@ -63,6 +67,17 @@ std::string writeGltf(const std::filesystem::path& dir, const std::string& name,
   std::ofstream(gltf) << j.str();
   if (spec.writeBin) std::ofstream(dir / (name + ".bin"), std::ios::binary) << bin;
   return gltf.string();
+}
+
+std::string loadError(const std::string& path, const LoadLimits& limits) {
+  try {
+    loadGltf(path, limits);
+  } catch (const Error& e) {
+    std::string msg = e.what();
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << "not one line: " << msg;
+    return msg;
+  }
+  return "";
 }
 
 }  // namespace vkmc::test

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/gltf_loader.h"
+
 namespace vkmc::test {
 
 struct GltfSpec {
@@ -24,5 +26,8 @@ std::filesystem::path makeTempDir(const std::string& tag);
 
 // A unit quad in the z = 0 plane facing +z, as two triangles.
 GltfSpec quadSpec();
+
+// The one-line error loading `path` gives ("" when it loads); a message of more than one line fails the test.
+std::string loadError(const std::string& path, const LoadLimits& limits = {});
 
 }  // namespace vkmc::test
