@@ -85,22 +85,22 @@ TEST(Bvh, QuantizedWideBoxesContainTheirTrianglesAndStayTight) {
     // Tight bounds of a child entry: its leaf's triangles, or everything under an inner node.
     std::function<Aabb(uint32_t)> tight = [&](uint32_t entry) {
       Aabb box;
-      if (entry & kBvhLeafTag) {
-        uint32_t first = entry & 0x07ffffffu, count = ((entry >> 27) & 0xfu) + 1u;
+      if (gpu::bvhIsLeaf(entry)) {
+        uint32_t first = gpu::bvhLeafFirst(entry), count = gpu::bvhLeafCount(entry);
         for (uint32_t t = first; t < first + count; ++t) box.grow(reorder(t));
         return box;
       }
       for (int c = 0; c < 4; ++c)
-        if (bvh.wideNodes[entry].texels[3][c] != kBvhEmptySlot) box.grow(tight(bvh.wideNodes[entry].texels[3][c]));
+        if (bvh.wideNodes[entry].texels[3][c] != gpu::kBvhEmptySlot) box.grow(tight(bvh.wideNodes[entry].texels[3][c]));
       return box;
     };
     int children = 0, loose = 0;
     for (const BvhWideNode& node : bvh.wideNodes) {
       Aabb all;
       for (int c = 0; c < 4; ++c)
-        if (node.texels[3][c] != kBvhEmptySlot) all.grow(tight(node.texels[3][c]));
+        if (node.texels[3][c] != gpu::kBvhEmptySlot) all.grow(tight(node.texels[3][c]));
       for (int c = 0; c < 4; ++c) {
-        if (node.texels[3][c] == kBvhEmptySlot) continue;
+        if (node.texels[3][c] == gpu::kBvhEmptySlot) continue;
         ++children;
         Aabb q = wideChildBox(node, c), t = tight(node.texels[3][c]);
         for (int a = 0; a < 3; ++a) {

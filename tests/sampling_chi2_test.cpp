@@ -8,6 +8,7 @@
 #include "../shaders/shared/light_sampling.h"
 #include "../shaders/shared/rng.h"
 #include "../shaders/shared/sampling.h"
+#include "scene_layout.h"
 #include "chi2.h"
 #include "render/alias_table.h"
 
@@ -202,13 +203,17 @@ TEST(Chi2, AliasTableReproducesItsWeights) {
     expected[i] = weights[i] / total * kSamples;
     EXPECT_NEAR(table[i].pmf, weights[i] / total, 1e-6 * (1 + weights[i] / total));
   }
+  // The light entries as the device holds them (the triangle is the entry's own index here).
+  std::vector<uvec4> entries;
+  for (uint32_t i = 0; i < table.size(); ++i) entries.push_back(encodeLightEntry(table[i].probability, table[i].alias, i, table[i].pmf));
+  const uint32_t n = uint32_t(entries.size());
   for (uint32_t s = 0; s < kSamples; ++s) {
-    // The kernel's selection: u * n picks an entry, the fraction decides between it and its alias.
-    float u = randomUnit(pathKey(8u, s, 0u), 0u);
-    float scaled = u * float(table.size());
-    uint32_t i = std::min<uint32_t>(uint32_t(scaled), uint32_t(table.size() - 1));
-    uint32_t pick = (scaled - float(i)) < table[i].probability ? i : table[i].alias;
-    observed[pick] += 1.0;
+    // The kernel's selection (scene_layout.h): u * n picks a slot, the fraction decides between it and its alias.
+    float scaled = randomUnit(pathKey(8u, s, 0u), 0u) * float(n);
+    uint32_t slot = aliasSlot(scaled, n);
+    uvec4 chosen = entries[aliasChoice(scaled, slot, entries[slot])];
+    ASSERT_EQ(lightEntryPmf(chosen), table[lightEntryTriangle(chosen)].pmf);
+    observed[lightEntryTriangle(chosen)] += 1.0;
   }
   auto r = test::chi2FromCounts(observed, expected);
   EXPECT_GT(r.pValue, test::sidakLevel(kTests)) << r.table;

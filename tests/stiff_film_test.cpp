@@ -15,7 +15,7 @@ TEST(StiffFilm, HundredMillionSamplesKeepTheMean) {
   float naive = 0.0f;
   uint64_t ones = 0;
   for (uint64_t b = 0; b < total / batch; ++b) {
-    FilmBatchPixel px{};
+    gpu::FilmPixel px{};
     uint32_t bits = gpu::hashU32(static_cast<uint32_t>(b) * 2u + 1u), bits2 = gpu::hashU32(static_cast<uint32_t>(b) * 2u + 2u);
     for (uint32_t s = 0; s < batch; ++s) {
       float v = ((s < 32 ? bits >> s : bits2 >> (s - 32)) & 1u) ? 1.0f : 0.0f;

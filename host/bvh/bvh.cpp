@@ -227,17 +227,18 @@ BvhWideNode quantizeBoxes(const std::vector<Child>& children) {
   BvhWideNode out{};
   Aabb all;
   for (const Child& c : children) all.grow(c.box);
-  out.texels[1] = glm::uvec4(0xffffffffu, 0u, 0xffffffffu, 0u);  // empty slots: lo = 255 > hi = 0
-  out.texels[2] = glm::uvec4(0xffffffffu, 0u, 0u, 0u);
-  out.texels[3] = glm::uvec4(kBvhEmptySlot);
-  uint32_t exponents = 0;
+  using namespace gpu;
+  out.texels[kBvhWideXyPlanesTexel] = glm::uvec4(kBvhWideEmptyLoWord, kBvhWideEmptyHiWord, kBvhWideEmptyLoWord, kBvhWideEmptyHiWord);
+  out.texels[kBvhWideZPlanesTexel] = glm::uvec4(kBvhWideEmptyLoWord, kBvhWideEmptyHiWord, 0u, 0u);
+  out.texels[kBvhWideChildTexel] = glm::uvec4(kBvhEmptySlot);
+  glm::uvec3 exponents(0u);
   for (int axis = 0; axis < 3; ++axis) {
     // One float below the lowest child, so that plane 0 is strictly below it too (unless that overflows); never
     // a denormal, which a GPU that flushes denormals would read as 0 (the next normal float down instead).
     float below = std::nextafter(all.min[axis], -std::numeric_limits<float>::infinity());
     if (std::abs(below) < std::numeric_limits<float>::min()) below = all.min[axis] > 0.0f ? 0.0f : -std::numeric_limits<float>::min();
     const float origin = std::isfinite(below) ? below : all.min[axis];
-    out.texels[0][axis] = asUint(origin);
+    out.texels[kBvhWideGridTexel][axis] = asUint(origin);
     // Start from the smallest power of two with 255 steps >= the extent (an estimate: the extent's double may
     // be rounded), within the normal floats; one step coarser whenever a child's top does not fit.
     int e = 0;
@@ -264,15 +265,15 @@ BvhWideNode quantizeBoxes(const std::vector<Child>& children) {
       }
       if (fits) break;
     }
-    exponents |= uint32_t(biased) << (8 * axis);
-    for (size_t i = 0; i < children.size(); ++i) {
-      uint32_t& loWord = axis < 2 ? out.texels[1][2 * axis] : out.texels[2][0];
-      uint32_t& hiWord = axis < 2 ? out.texels[1][2 * axis + 1] : out.texels[2][1];
-      loWord = (loWord & ~(0xffu << (8 * i))) | (qlo[i] << (8 * i));
-      hiWord = (hiWord & ~(0xffu << (8 * i))) | (qhi[i] << (8 * i));
+    exponents[axis] = uint32_t(biased);
+    uint32_t& loWord = axis < 2 ? out.texels[kBvhWideXyPlanesTexel][2 * axis] : out.texels[kBvhWideZPlanesTexel][0];
+    uint32_t& hiWord = axis < 2 ? out.texels[kBvhWideXyPlanesTexel][2 * axis + 1] : out.texels[kBvhWideZPlanesTexel][1];
+    for (uint32_t i = 0; i < children.size(); ++i) {
+      loWord = bvhWideSetPlaneSteps(loWord, i, qlo[i]);
+      hiWord = bvhWideSetPlaneSteps(hiWord, i, qhi[i]);
     }
   }
-  out.texels[0].w = exponents;
+  out.texels[kBvhWideGridTexel].w = bvhWideStepExponents(exponents);
   return out;
 }
 
@@ -312,15 +313,15 @@ std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary) {
       const Child& c = children[i];
       uint32_t entry;
       if (c.count > 0) {
-        if (c.count > 8 || c.ref >= (1u << 27)) throw Error("BVH leaf of " + std::to_string(c.count) + " triangles at " +
+        if (c.count > gpu::kBvhMaxLeafSize || c.ref >= gpu::kBvhLeafFirstLimit) throw Error("BVH leaf of " + std::to_string(c.count) + " triangles at " +
                                                             std::to_string(c.ref) + " does not fit the 4-wide node layout");
-        entry = kBvhLeafTag | ((c.count - 1u) << 27) | c.ref;
+        entry = gpu::bvhLeafEntry(c.ref, c.count);
       } else {
         entry = static_cast<uint32_t>(wide.size());
         wide.emplace_back();
         tasks.push_back({c.ref, entry});
       }
-      out.texels[3][i] = entry;
+      out.texels[gpu::kBvhWideChildTexel][i] = entry;
     }
     wide[w] = out;
   }
@@ -444,10 +445,10 @@ HostHit traceHostWide(const Bvh& bvh, std::span<const glm::vec3> pos, glm::vec3 
     const BvhWideNode& node = bvh.wideNodes[stack.back()];
     stack.pop_back();
     for (int c = 0; c < 4; ++c) {
-      uint32_t entry = node.texels[3][c];
-      if (entry == kBvhEmptySlot || !slabHit(wideChildBox(node, c), origin, inv, tBest)) continue;
-      if (!(entry & kBvhLeafTag)) stack.push_back(entry);
-      else if (intersectLeaf(shear, pos, entry & 0x07ffffffu, ((entry >> 27) & 0xfu) + 1u, tBest, best, anyHit)) return best;
+      uint32_t entry = node.texels[gpu::kBvhWideChildTexel][c];
+      if (entry == gpu::kBvhEmptySlot || !slabHit(wideChildBox(node, c), origin, inv, tBest)) continue;
+      if (!gpu::bvhIsLeaf(entry)) stack.push_back(entry);
+      else if (intersectLeaf(shear, pos, gpu::bvhLeafFirst(entry), gpu::bvhLeafCount(entry), tBest, best, anyHit)) return best;
     }
   }
   return best;
@@ -466,14 +467,15 @@ float roundedPlane(float origin, double qs, bool up) {
 
 Aabb wideChildBox(const BvhWideNode& node, int i) {
   Aabb box;
-  if (node.texels[3][i] == kBvhEmptySlot) return box;
-  for (int axis = 0; axis < 3; ++axis) {
-    double step = std::ldexp(1.0, int((node.texels[0].w >> (8 * axis)) & 0xffu) - 127);
-    float origin = asFloat(node.texels[0][axis]);
-    uint32_t lo = axis < 2 ? node.texels[1][2 * axis] : node.texels[2][0];
-    uint32_t hi = axis < 2 ? node.texels[1][2 * axis + 1] : node.texels[2][1];
-    box.min[axis] = roundedPlane(origin, ((lo >> (8 * i)) & 0xffu) * step, false);
-    box.max[axis] = roundedPlane(origin, ((hi >> (8 * i)) & 0xffu) * step, true);
+  using namespace gpu;
+  if (node.texels[kBvhWideChildTexel][i] == kBvhEmptySlot) return box;
+  const glm::uvec4 grid = node.texels[kBvhWideGridTexel];
+  const glm::vec3 step = bvhWideStep(grid.w);  // powers of two: exact in double too
+  for (uint32_t axis = 0; axis < 3; ++axis) {
+    glm::uvec2 words = bvhWidePlaneWords(node.texels[kBvhWideXyPlanesTexel], node.texels[kBvhWideZPlanesTexel], axis);
+    float origin = asFloat(grid[axis]);
+    box.min[axis] = roundedPlane(origin, double(bvhWidePlaneSteps(words.x)[i]) * double(step[axis]), false);
+    box.max[axis] = roundedPlane(origin, double(bvhWidePlaneSteps(words.y)[i]) * double(step[axis]), true);
   }
   return box;
 }

@@ -6,36 +6,25 @@
 #include <span>
 #include <vector>
 
+#include "../shaders/shared/bvh_layout.h"
 #include "scene/scene.h"
 
 namespace vkmc {
 
-// GPU node: four RGBA32F texels. Child c: (min.xyz, ref) and (max.xyz, count), ref/count as float bits.
-// count > 0: leaf, triangles [ref, ref + count) of the reordered triangle array; count == 0: inner node ref.
+// The node layouts the kernels read, each four texels (shaders/shared/bvh_layout.h defines the encodings).
 struct BvhGpuNode {
-  glm::vec4 texels[4];  // lo0, hi0, lo1, hi1
+  glm::vec4 texels[gpu::kBvhNodeTexels];  // binary: lo0, hi0, lo1, hi1
 };
 static_assert(sizeof(BvhGpuNode) == 64);
 
-// 4-wide GPU node, collapsed from the binary tree (the traversal kernels walk this one): four RGBA32UI texels,
-// one cache line. The child boxes are quantized to 8 bits per plane on a grid over the node's box, rounded
-// outwards so a child's box only grows (Ylitie et al. 2017); 64 bytes instead of 112 for float planes, and 4
-// fetches per step instead of 7, which is what a node step costs on llvmpipe.
-//   texel 0: the grid's origin xyz (float bits), w: its step exponents, biased as a float's (step = 2^(e - 127)),
-//            in bytes 0, 1, 2 for x, y, z
-//   texel 1: the planes lo.x, hi.x, lo.y, hi.y, each a uint with child i's step count in byte i
-//   texel 2: the planes lo.z, hi.z; zw unused
-//   texel 3: the four child entries: a wide node index, a leaf entry (kBvhLeafTag | (count - 1) << 27 | first,
-//            count <= 8) or kBvhEmptySlot
-// Plane value = origin + steps * step. Fewer, wider steps than the binary walk, and 4 box tests as vec4 arithmetic.
+// 4-wide node, collapsed from the binary tree (the traversal kernels walk this one): 64 bytes instead of 112 for
+// float planes, and 4 fetches per step instead of 7, which is what a node step costs on llvmpipe.
 struct BvhWideNode {
-  glm::uvec4 texels[4];
+  glm::uvec4 texels[gpu::kBvhNodeTexels];
 };
 static_assert(sizeof(BvhWideNode) == 64);
 // The box of child `i` (empty when the slot is), exactly as the node encodes it.
 Aabb wideChildBox(const BvhWideNode& node, int i);
-inline constexpr uint32_t kBvhLeafTag = 0x80000000u;
-inline constexpr uint32_t kBvhEmptySlot = 0x7f7fffffu;  // FLT_MAX's bits: no NaN on the way through a float texel
 
 struct BvhStats {
   uint32_t innerNodes = 0;

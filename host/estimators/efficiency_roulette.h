@@ -18,9 +18,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "../shaders/shared/layout.h"
+
 namespace vkmc {
 
-inline constexpr uint32_t kRouletteTableDepths = 16;
+using gpu::kRouletteTableDepths;  // depths with their own scale (layout.h: the kernels index the same table)
 
 struct PilotPath {
   float radiance = 0.0f;  // luminance of the sample's final estimate L

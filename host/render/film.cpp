@@ -9,11 +9,12 @@ namespace vkmc {
 Film::Film(uint32_t w, uint32_t h)
     : width(w), height(h), sum(3 * pixels(), 0.0), sumSq(3 * pixels(), 0.0), count(pixels(), 0), nonfinite(pixels(), 0) {}
 
-void Film::addBatch(const FilmBatchPixel* px) {
+void Film::addBatch(const gpu::FilmPixel* px) {
+  const double unscale = 1.0 / double(gpu::kFilmHighScale);  // 2^96: exact
   for (size_t p = 0; p < pixels(); ++p) {
     for (int c = 0; c < 3; ++c) {
-      sum[3 * p + c] += px[p].sum[c] + std::ldexp(double(px[p].sumHigh[c]), 96);
-      sumSq[3 * p + c] += px[p].sumSq[c] + std::ldexp(double(px[p].sumSqHigh[c]), 192);
+      sum[3 * p + c] += px[p].sum[c] + double(px[p].sumHigh[c]) * unscale;
+      sumSq[3 * p + c] += px[p].sumSq[c] + double(px[p].sumSqHigh[c]) * (unscale * unscale);
     }
     count[p] += static_cast<uint64_t>(px[p].sum[3]);
     nonfinite[p] += static_cast<uint64_t>(px[p].sumSq[3]);

@@ -6,15 +6,9 @@
 #include <cstdint>
 #include <vector>
 
-namespace vkmc {
+#include "../shaders/shared/layout.h"
 
-// Mirrors gpu::FilmPixel (layout.h) without pulling the shared header into every includer.
-struct FilmBatchPixel {
-  float sum[4];        // rgb, finite samples
-  float sumSq[4];      // rgb, non-finite samples
-  float sumHigh[4];    // rgb of channels >= 2^56, times 2^-96
-  float sumSqHigh[4];  // their squares
-};
+namespace vkmc {
 
 struct Film {
   uint32_t width = 0, height = 0;
@@ -26,7 +20,8 @@ struct Film {
   Film() = default;
   // Folds one batch of the GPU's float partial sums (at most 64 samples a pixel) into the double sums: the
   // float error stays that of 64 additions however many batches follow.
-  void addBatch(const struct FilmBatchPixel* batch);
+  // Adds one batch of the device film (gpu::FilmPixel per pixel).
+  void addBatch(const gpu::FilmPixel* batch);
   Film(uint32_t w, uint32_t h);
   size_t pixels() const { return static_cast<size_t>(width) * height; }
   double mean(size_t pixel, int c) const;

@@ -5,25 +5,26 @@
 
 #include <bit>
 #include <glm/gtc/packing.hpp>
+#include <string_view>
 
 #include "../shaders/shared/geometry.h"
 #include "../shaders/shared/layout.h"
 #include "../shaders/shared/sampling.h"
+#include "../shaders/shared/scene_layout.h"
 #include "error.h"
 #include "render/alias_table.h"
 
 namespace vkmc {
 namespace {
 
-uint32_t encodeOctahedral(glm::vec3 n) {
-  n /= (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
-  glm::vec2 e(n.x, n.y);
-  if (n.z < 0.0f) {
-    glm::vec2 s(n.x >= 0.0f ? 1.0f : -1.0f, n.y >= 0.0f ? 1.0f : -1.0f);
-    e = (1.0f - glm::abs(glm::vec2(n.y, n.x))) * s;
-  }
-  return glm::packSnorm2x16(e);
+// A texel format named by its GLSL image-format qualifier (layout.h's TEXEL_FORMAT_*).
+VkFormat formatOfQualifier(std::string_view qualifier) {
+  if (qualifier == "rgba32f") return VK_FORMAT_R32G32B32A32_SFLOAT;
+  if (qualifier == "rgba32ui") return VK_FORMAT_R32G32B32A32_UINT;
+  throw Error("internal error: no VkFormat for the texel format " + std::string(qualifier));
 }
+#define VKMC_TOKEN_TEXT(x) #x
+#define VKMC_MACRO_TEXT(x) VKMC_TOKEN_TEXT(x)
 
 vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, uint32_t binding, const char* name) {
   uint64_t texels = bytes / 16;
@@ -39,7 +40,13 @@ vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, uin
 }  // namespace
 
 VkFormat sceneTexelFormat(uint32_t binding) {
-  return binding == BINDING_TRIANGLES ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R32G32B32A32_UINT;
+  switch (binding) {
+    case BINDING_TRIANGLES: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_TRIANGLES));
+    case BINDING_TRIANGLE_INFO: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_TRIANGLE_INFO));
+    case BINDING_BVH_NODES: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_BVH_NODES));
+    case BINDING_LIGHTS: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_LIGHTS));
+  }
+  throw Error("internal error: binding " + std::to_string(binding) + " is not a scene texel binding");
 }
 
 uint64_t maxSceneTriangles(const vk::Context& ctx) {
@@ -90,22 +97,22 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
     if (uniformLightSelection) std::fill(power.begin(), power.end(), 1.0);
     std::vector<AliasEntry> table = buildAliasTable(power);
     for (size_t k = 0; k < table.size(); ++k) {
-      lightTexels.emplace_back(std::bit_cast<uint32_t>(table[k].probability), table[k].alias, lightTriangles[k],
-                               std::bit_cast<uint32_t>(table[k].pmf));
+      lightTexels.push_back(gpu::encodeLightEntry(table[k].probability, table[k].alias, lightTriangles[k], table[k].pmf));
       lightPmf[lightTriangles[k]] = table[k].pmf;
     }
   } else {
     lightTexels.emplace_back(0u, 0u, 0u, 0u);  // bound but never read (SPEC_HAS_LIGHTS = 0)
   }
 
-  std::vector<glm::vec4> triTexels(3 * n);
+  std::vector<glm::vec4> triTexels(gpu::kTriangleTexels * n);
   std::vector<glm::uvec4> infoTexels(n);
   for (uint32_t i = 0; i < n; ++i) {
     uint32_t src = bvh.triangleOrder[i];
-    for (int k = 0; k < 3; ++k) triTexels[3 * i + k] = glm::vec4(scene.positions[3 * src + k], 0.0f);
-    triTexels[3 * i + 1].w = lightPmf[i];
-    infoTexels[i] = glm::uvec4(encodeOctahedral(scene.normals[3 * src]), encodeOctahedral(scene.normals[3 * src + 1]),
-                               encodeOctahedral(scene.normals[3 * src + 2]), scene.materialIds[src]);
+    glm::vec4* texels = &triTexels[gpu::kTriangleTexels * i];
+    for (int k = 0; k < 3; ++k) texels[k] = glm::vec4(scene.positions[3 * src + k], 0.0f);
+    texels[gpu::kTriangleLightPmfTexel].w = lightPmf[i];
+    infoTexels[i] = gpu::encodeTriangleInfo(scene.normals[3 * src], scene.normals[3 * src + 1], scene.normals[3 * src + 2],
+                                            scene.materialIds[src]);
   }
 
   std::vector<gpu::Material> mats;

@@ -338,8 +338,7 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
 }
 
 void PathRenderer::foldFilm(Film& film) {
-  static_assert(sizeof(FilmBatchPixel) == sizeof(gpu::FilmPixel));
-  film.addBatch(static_cast<const FilmBatchPixel*>(film_.mapped()));
+  film.addBatch(static_cast<const gpu::FilmPixel*>(film_.mapped()));
   // The running pixel estimate that shadow-ray roulette compares tiny contributions against.
   auto* estimate = static_cast<float*>(pixelEstimate_.mapped());
   for (size_t p = 0; p < film.pixels(); ++p)

@@ -2,6 +2,7 @@
 #extension GL_KHR_shader_subgroup_arithmetic : require
 // Declarations every kernel shares: version, spec constants, push constants, scene and queue bindings.
 #include "layout.h"
+#include "scene_layout.h"
 #include "rng.h"
 #include "sampling.h"
 #include "geometry.h"
@@ -34,10 +35,10 @@ layout(push_constant, std430) uniform Push { PushConstants pc; };
 // vector gather, while a texelFetch is an out-of-line sampler call (every live register spilled around it; the
 // walk was 10-15% slower with it) and an SSBO load is a loop over the lanes (shared/LAVAPIPE.md,
 // docs/performance.md).
-layout(binding = BINDING_TRIANGLES, rgba32f) uniform readonly imageBuffer triangles;
-layout(binding = BINDING_TRIANGLE_INFO, rgba32ui) uniform readonly uimageBuffer triangleInfo;
-layout(binding = BINDING_BVH_NODES, rgba32ui) uniform readonly uimageBuffer bvhNodes;
-layout(binding = BINDING_LIGHTS, rgba32ui) uniform readonly uimageBuffer lights;
+layout(binding = BINDING_TRIANGLES, TEXEL_FORMAT_TRIANGLES) uniform readonly imageBuffer triangles;
+layout(binding = BINDING_TRIANGLE_INFO, TEXEL_FORMAT_TRIANGLE_INFO) uniform readonly uimageBuffer triangleInfo;
+layout(binding = BINDING_BVH_NODES, TEXEL_FORMAT_BVH_NODES) uniform readonly uimageBuffer bvhNodes;
+layout(binding = BINDING_LIGHTS, TEXEL_FORMAT_LIGHTS) uniform readonly uimageBuffer lights;
 layout(binding = BINDING_MATERIALS, std430) readonly buffer Materials { Material materials[]; };
 layout(binding = BINDING_PATHS, std430) buffer Paths { PathState paths[]; };
 layout(binding = BINDING_HITS, std430) buffer Hits { vec4 hits[]; };
@@ -60,9 +61,9 @@ uint outQueueBase() { return ((pc.bounce + 1u) & 1u) * pc.queueCapacity; }
 uint inQueueCount() { return (pc.bounce & 1u) == 0u ? control.counts.x : control.counts.y; }
 
 void triangleVertices(uint tri, out vec3 v0, out vec3 v1, out vec3 v2) {
-  v0 = imageLoad(triangles, int(3u * tri)).xyz;
-  v1 = imageLoad(triangles, int(3u * tri + 1u)).xyz;
-  v2 = imageLoad(triangles, int(3u * tri + 2u)).xyz;
+  v0 = imageLoad(triangles, int(kTriangleTexels * tri)).xyz;
+  v1 = imageLoad(triangles, int(kTriangleTexels * tri + 1u)).xyz;
+  v2 = imageLoad(triangles, int(kTriangleTexels * tri + 2u)).xyz;
 }
 
 bool allFinite(vec3 v) { return !any(isnan(v)) && !any(isinf(v)); }

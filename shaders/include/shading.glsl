@@ -25,9 +25,8 @@ SurfacePoint surfaceAt(uint tri, vec2 b12, vec3 wo) {
   s.frontFace = dot(s.ng, wo) > 0.0;
   if (!s.frontFace) s.ng = -s.ng;
   uvec4 info = imageLoad(triangleInfo, int(tri));
-  s.material = info.w;
-  vec3 n = b.x * decodeOctahedral(unpackSnorm2x16(info.x)) + b.y * decodeOctahedral(unpackSnorm2x16(info.y)) +
-           b.z * decodeOctahedral(unpackSnorm2x16(info.z));
+  s.material = triangleInfoMaterial(info);
+  vec3 n = triangleInfoNormal(info, b);
   float len = length(n);
   vec3 ns = len > 0.0 ? n / len : s.ng;
   if (dot(ns, s.ng) < 0.0) ns = -ns;
@@ -81,15 +80,14 @@ float lightPdf(uint tri, float pmf, vec3 p, float dist2, float cosLight) {
   return pmf * dist2 / (area * cosLight);
 }
 
-// Alias-table pick of one emissive triangle: x = triangle, y = pmf bits.
-uvec2 selectLight(float u) {
+// Alias-table pick of one emissive triangle: its light entry (scene_layout.h).
+uvec4 selectLight(float u) {
   uint n = uint(imageSize(lights));
   float scaled = u * float(n);
-  uint i = min(uint(scaled), n - 1u);
-  uvec4 e = imageLoad(lights, int(i));
-  uint pick = (scaled - float(i)) < uintBitsToFloat(e.x) ? i : e.y;
-  uvec4 chosen = pick == i ? e : imageLoad(lights, int(pick));
-  return uvec2(chosen.z, chosen.w);
+  uint slot = aliasSlot(scaled, n);
+  uvec4 e = imageLoad(lights, int(slot));
+  uint pick = aliasChoice(scaled, slot, e);
+  return pick == slot ? e : imageLoad(lights, int(pick));
 }
 
 // Light sample j of `samples` at s: the shadow ray to trace, carrying the contribution it adds if unoccluded;
@@ -97,10 +95,11 @@ uvec2 selectLight(float u) {
 bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo, uint j, uint samples, out ShadowRay ray) {
   uint depth = path.info.z;
   uint key = path.info.y;
-  uvec2 light = selectLight(randomUnit(key, lightDim(depth, j, 0u)));
-  float pmf = uintBitsToFloat(light.y);
+  uvec4 light = selectLight(randomUnit(key, lightDim(depth, j, 0u)));
+  uint lightTri = lightEntryTriangle(light);
+  float pmf = lightEntryPmf(light);
   vec3 v0, v1, v2;
-  triangleVertices(light.x, v0, v1, v2);
+  triangleVertices(lightTri, v0, v1, v2);
   vec4 cr = scaledTriangleCross(v0, v1, v2);
   float area = 0.5 * length(cr.xyz) * cr.w * cr.w;
   if (!(area > 0.0)) return false;
@@ -130,7 +129,7 @@ bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo
   if (!(dist2 > 0.0)) return false;
   vec3 wi = toLight * inversesqrt(dist2);
   float cosLight = dot(nl, -wi);
-  Material lm = materials[imageLoad(triangleInfo, int(light.x)).w];
+  Material lm = materials[triangleInfoMaterial(imageLoad(triangleInfo, int(lightTri)))];
   if (!emitsToward(lm, cosLight > 0.0)) return false;
   cosLight = abs(cosLight);
   if (cosLight <= 0.0 || dot(s.ng, wi) <= 0.0) return false;
@@ -166,7 +165,7 @@ vec3 emissionAt(PathState path, SurfacePoint s, Material m, uint tri, vec4 hit, 
     if (kMis == kMisNone) {
       weight = 0.0;  // light sampling alone accounts for direct light
     } else {
-      float pmf = imageLoad(triangles, int(3u * tri + 1u)).w;
+      float pmf = imageLoad(triangles, int(kTriangleTexels * tri + kTriangleLightPmfTexel)).w;
       float cosLight = max(dot(s.ng, wo), 1e-30);
       float pl = lightPdf(tri, pmf, path.origin.xyz, hit.x * hit.x, cosLight);
       weight = misWeight(path.direction.w, float(lightSamplesAt(path.info.z - 1u)) * pl);

@@ -17,14 +17,13 @@
 // shader loops after 65535 iterations (LP_MAX_TGSI_LOOP_ITERATIONS) without any error; a walk of 400k leaves
 // measured complete, but a walk that did not end on its own must never pass for a hit or a miss: `complete`
 // says whether it did.
+#include "bvh_layout.h"
 #define TRAVERSAL_STACK_SIZE 96
-const uint kLeafTag = 0x80000000u;
-const uint kNoEntry = 0xffffffffu;
+const uint kNoEntry = kBvhNoEntry;
 
-uint leafEntry(uint first, uint count) { return kLeafTag | ((count - 1u) << 27u) | first; }
-uint leafFirst(uint entry) { return entry & 0x07ffffffu; }
-uint leafEnd(uint entry) { return leafFirst(entry) + ((entry >> 27u) & 0xfu) + 1u; }
-bool isLeaf(uint entry) { return entry != kNoEntry && (entry & kLeafTag) != 0u; }
+uint leafFirst(uint entry) { return bvhLeafFirst(entry); }
+uint leafEnd(uint entry) { return bvhLeafFirst(entry) + bvhLeafCount(entry); }
+bool isLeaf(uint entry) { return bvhIsLeaf(entry); }
 
 // The triangles of a leaf entry against the ray; true when one of them is the new closest hit (in best).
 bool intersectLeaf(uint entry, RayShear shear, inout vec4 best) {
@@ -51,8 +50,6 @@ void countWalkSteps(uvec3 steps) {
   if (subgroupElect()) atomicAdd(control.walkStats.w, slowest * gl_SubgroupSize);
 }
 
-const uint kEmptySlot = 0x7f7fffffu;  // kBvhEmptySlot
-
 // One compare-exchange of a sorting network on (distance, entry) pairs.
 void orderPair(inout float da, inout uint ea, inout float db, inout uint eb) {
   bool swap = db < da;
@@ -68,20 +65,20 @@ void orderPair(inout float da, inout uint ea, inout float db, inout uint eb) {
 vec4 maxSel(vec4 a, vec4 b) { return mix(b, a, greaterThan(a, b)); }
 vec4 minSel(vec4 a, vec4 b) { return mix(b, a, lessThan(a, b)); }
 
-// Child i's steps in byte i of each plane word (BvhWideNode), as floats.
-vec4 planeSteps(uint word) { return vec4((uvec4(word) >> uvec4(0u, 8u, 16u, 24u)) & 0xffu); }
+// Child i's steps in byte i of each plane word (bvh_layout.h), as floats.
+vec4 planeSteps(uint word) { return vec4(bvhWidePlaneSteps(word)); }
 
 // The 4 child boxes of an inner node against the ray: returns how many are hit, their entries near to far
 // first in e. A plane is origin + steps * step on the node's grid; the ray's distance to it is
 // steps * (step * invDir) + (origin - rayOrigin) * invDir: one fma per plane. nearIsHigh picks, per axis,
 // which plane the ray meets first (by its direction's sign).
 uint hitChildren(uint node, vec3 invDir, vec3 origin, bvec3 nearIsHigh, float tMax, out uvec4 e) {
-  int base = int(4u * node);
-  uvec4 grid = imageLoad(bvhNodes, base);
-  uvec4 xy = imageLoad(bvhNodes, base + 1);
-  uvec2 z = imageLoad(bvhNodes, base + 2).xy;
-  e = imageLoad(bvhNodes, base + 3);
-  vec3 step = uintBitsToFloat(((uvec3(grid.w) >> uvec3(0u, 8u, 16u)) & 0xffu) << 23u);
+  int base = int(kBvhNodeTexels * node);
+  uvec4 grid = imageLoad(bvhNodes, base + int(kBvhWideGridTexel));
+  uvec4 xy = imageLoad(bvhNodes, base + int(kBvhWideXyPlanesTexel));
+  uvec2 z = imageLoad(bvhNodes, base + int(kBvhWideZPlanesTexel)).xy;
+  e = imageLoad(bvhNodes, base + int(kBvhWideChildTexel));
+  vec3 step = bvhWideStep(grid.w);
   vec3 s = step * invDir;  // exact: step is a power of two
   vec3 o = (uintBitsToFloat(grid.xyz) - origin) * invDir;
   vec4 nx = fma(planeSteps(nearIsHigh.x ? xy.y : xy.x), vec4(s.x), vec4(o.x));
@@ -93,7 +90,7 @@ uint hitChildren(uint node, vec3 invDir, vec3 origin, bvec3 nearIsHigh, float tM
   vec4 tNear = maxSel(maxSel(nx, ny), maxSel(nz, vec4(0.0)));
   // The far distance is widened by 2 gamma(3) (Ize 2013) so rounding never culls a box a ray grazes.
   vec4 tFar = minSel(minSel(minSel(fx, fy), fz) * kSlabWiden, vec4(tMax));
-  bvec4 hit = bvec4(uvec4(lessThanEqual(tNear, tFar)) & uvec4(notEqual(e, uvec4(kEmptySlot))));
+  bvec4 hit = bvec4(uvec4(lessThanEqual(tNear, tFar)) & uvec4(notEqual(e, uvec4(kBvhEmptySlot))));
   vec4 dist = mix(vec4(3.0e38), tNear, hit);
   orderPair(dist.x, e.x, dist.y, e.y);
   orderPair(dist.z, e.z, dist.w, e.w);
@@ -170,7 +167,7 @@ void nodeStep(inout Walk w, vec3 invDir, vec3 origin, bvec3 nearIsHigh, float tM
   int shift = 0;
   uint pushA = kNoEntry, pushB = kNoEntry, pushC = kNoEntry;
   uint next0 = w.node, next1 = w.stack.s0.x;  // the entries up next, for the handoff
-  if (w.node != kNoEntry && (w.node & kLeafTag) == 0u) {
+  if (w.node != kNoEntry && !isLeaf(w.node)) {
     uvec4 e;
     uint n = hitChildren(w.node, invDir, origin, nearIsHigh, tMax, e);
     shift = int(n) - 1;
@@ -290,8 +287,8 @@ vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete)
   uint sp = 0u;
   uint current = 0u;
   while (current != kNoEntry) {
-    while (current != kNoEntry && (current & kLeafTag) == 0u) {
-      int base = int(4u * current);
+    while (current != kNoEntry && !bvhIsLeaf(current)) {
+      int base = int(kBvhNodeTexels * current);
       vec4 a0 = uintBitsToFloat(imageLoad(bvhNodes, base)), a1 = uintBitsToFloat(imageLoad(bvhNodes, base + 1));
       vec4 b0 = uintBitsToFloat(imageLoad(bvhNodes, base + 2)), b1 = uintBitsToFloat(imageLoad(bvhNodes, base + 3));
       vec3 l0 = a0.xyz * invDir - originScaled, h0 = a1.xyz * invDir - originScaled;
@@ -304,8 +301,8 @@ vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete)
       float far1 = min(min(f1.x, f1.y) * kSlabWiden, min(f1.z * kSlabWiden, best.x));
       bool hit0 = near0 <= far0, hit1 = near1 <= far1;
       uint count0 = floatBitsToUint(a1.w), count1 = floatBitsToUint(b1.w);
-      uint e0 = count0 > 0u ? leafEntry(floatBitsToUint(a0.w), count0) : floatBitsToUint(a0.w);
-      uint e1 = count1 > 0u ? leafEntry(floatBitsToUint(b0.w), count1) : floatBitsToUint(b0.w);
+      uint e0 = count0 > 0u ? bvhLeafEntry(floatBitsToUint(a0.w), count0) : floatBitsToUint(a0.w);
+      uint e1 = count1 > 0u ? bvhLeafEntry(floatBitsToUint(b0.w), count1) : floatBitsToUint(b0.w);
       if (hit0 && hit1) {
         bool oneFirst = near1 < near0;
         current = oneFirst ? e1 : e0;
@@ -318,7 +315,7 @@ vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete)
         current = sp > 0u ? stack[--sp] : kNoEntry;
       }
     }
-    while (current != kNoEntry && (current & kLeafTag) != 0u) {
+    while (current != kNoEntry && bvhIsLeaf(current)) {
       if (intersectLeaf(current, shear, best) && anyHit) return best;
       current = sp > 0u ? stack[--sp] : kNoEntry;
     }

@@ -4,10 +4,10 @@
 #include "glsl_cpp.h"
 
 // Descriptor bindings of the single set used by every kernel.
-#define BINDING_TRIANGLES 0       // imageBuffer RGBA32F, 3 texels per triangle: v0|unused, v1|light pmf, v2|unused
-#define BINDING_TRIANGLE_INFO 1   // uimageBuffer RGBA32UI, 1 texel per triangle: octahedral n0, n1, n2, material id
-#define BINDING_BVH_NODES 2       // uimageBuffer RGBA32UI: BvhWideNode, 4 texels (BvhGpuNode with VKMC_BVH2)
-#define BINDING_LIGHTS 3          // uimageBuffer RGBA32UI, 1 texel per emissive triangle: alias entry
+#define BINDING_TRIANGLES 0       // imageBuffer: triangle vertices and light pmfs (scene_layout.h)
+#define BINDING_TRIANGLE_INFO 1   // uimageBuffer: per-triangle normals and material (scene_layout.h)
+#define BINDING_BVH_NODES 2       // uimageBuffer: BVH nodes (bvh_layout.h)
+#define BINDING_LIGHTS 3          // uimageBuffer: light alias table (scene_layout.h)
 #define BINDING_MATERIALS 4       // Material[]
 #define BINDING_PATHS 5           // PathState[]
 #define BINDING_HITS 6            // vec4[] (t, b1, b2, triangle bits)
@@ -23,6 +23,13 @@
 #define BINDING_QUEUE_STATS 16    // uvec2[kQueueStatsBounces]: per bounce, paths queued (x) and shadow rays (y)
 #define BINDING_DEEP_WALKS 17     // uint[]: items whose walk outgrew the register stack (deferred_walk.glsl)
 #define BINDING_COUNT 18
+
+// Texel formats of the scene bindings as GLSL image-format qualifiers (common.glsl declares the bindings with
+// them); the host derives each VkFormat from the same token (sceneTexelFormat in host/render/gpu_scene.cpp).
+#define TEXEL_FORMAT_TRIANGLES rgba32f
+#define TEXEL_FORMAT_TRIANGLE_INFO rgba32ui
+#define TEXEL_FORMAT_BVH_NODES rgba32ui
+#define TEXEL_FORMAT_LIGHTS rgba32ui
 
 // Specialization constant ids.
 #define SPEC_WORKGROUP_SIZE 0

@@ -64,16 +64,6 @@ VKMC_FN float powerHeuristic(float pdfA, float pdfB) {
   return a + b > 0.0f ? a / (a + b) : 0.0f;
 }
 
-// Octahedral unit vectors (decode side; the host encodes).
-VKMC_FN vec3 decodeOctahedral(vec2 e) {
-  vec3 v = vec3(e.x, e.y, 1.0f - abs(e.x) - abs(e.y));
-  if (v.z < 0.0f) {
-    vec2 s = vec2(v.x >= 0.0f ? 1.0f : -1.0f, v.y >= 0.0f ? 1.0f : -1.0f);
-    v = vec3((1.0f - abs(vec2(v.y, v.x))) * s, v.z);
-  }
-  return normalize(v);
-}
-
 // Splitting and Russian roulette as one mechanism (as in EARS): a factor q yields floor(q + u) children,
 // each weighted 1 / q, so the expected total weight is one. q < 1 is roulette, q > 1 splitting.
 VKMC_FN uint splitCount(float q, float u) { return uint(floor(q + u)); }

@@ -1,0 +1,59 @@
+// The scene texels: the host writes them (host/render/gpu_scene.cpp), the kernels read them (common.glsl,
+// shading.glsl). Encode and decode side by side; both languages compile this file.
+//   triangles (BINDING_TRIANGLES, RGBA32F): kTriangleTexels per triangle, the vertices in xyz; texel
+//       kTriangleLightPmfTexel's w holds the triangle's light-selection pmf (0 unless it emits), the others' w 0
+//   triangle info (BINDING_TRIANGLE_INFO, RGBA32UI): one texel per triangle, the three vertex normals
+//       (octahedral, 2 x 16-bit snorm each) and the material id
+//   lights (BINDING_LIGHTS, RGBA32UI): one alias-table entry per emissive triangle (Walker/Vose):
+//       (keep probability as float bits, alias slot, triangle, selection pmf as float bits)
+#ifndef VKMC_SCENE_LAYOUT_H
+#define VKMC_SCENE_LAYOUT_H
+#include "glsl_cpp.h"
+VKMC_BEGIN_NAMESPACE
+
+VKMC_CONST uint kTriangleTexels = 3u;
+VKMC_CONST uint kTriangleLightPmfTexel = 1u;
+
+// Octahedral unit vectors (Cigolle et al. 2014) in 2 x 16-bit snorm.
+VKMC_FN uint encodeOctahedral(vec3 n) {
+  n /= (abs(n.x) + abs(n.y) + abs(n.z));
+  vec2 e = vec2(n.x, n.y);
+  if (n.z < 0.0f) {
+    vec2 s = vec2(n.x >= 0.0f ? 1.0f : -1.0f, n.y >= 0.0f ? 1.0f : -1.0f);
+    e = (1.0f - abs(vec2(n.y, n.x))) * s;
+  }
+  return packSnorm2x16(e);
+}
+VKMC_FN vec3 decodeOctahedral(uint bits) {
+  vec2 e = unpackSnorm2x16(bits);
+  vec3 v = vec3(e.x, e.y, 1.0f - abs(e.x) - abs(e.y));
+  if (v.z < 0.0f) {
+    vec2 s = vec2(v.x >= 0.0f ? 1.0f : -1.0f, v.y >= 0.0f ? 1.0f : -1.0f);
+    v = vec3((1.0f - abs(vec2(v.y, v.x))) * s, v.z);
+  }
+  return normalize(v);
+}
+
+VKMC_FN uvec4 encodeTriangleInfo(vec3 n0, vec3 n1, vec3 n2, uint material) {
+  return uvec4(encodeOctahedral(n0), encodeOctahedral(n1), encodeOctahedral(n2), material);
+}
+VKMC_FN uint triangleInfoMaterial(uvec4 info) { return info.w; }
+// The shading normal at barycentrics b, unnormalized (the interpolation of the decoded vertex normals).
+VKMC_FN vec3 triangleInfoNormal(uvec4 info, vec3 b) {
+  return b.x * decodeOctahedral(info.x) + b.y * decodeOctahedral(info.y) + b.z * decodeOctahedral(info.z);
+}
+
+VKMC_FN uvec4 encodeLightEntry(float keepProbability, uint alias, uint triangle, float pmf) {
+  return uvec4(floatBitsToUint(keepProbability), alias, triangle, floatBitsToUint(pmf));
+}
+VKMC_FN uint lightEntryTriangle(uvec4 entry) { return entry.z; }
+VKMC_FN float lightEntryPmf(uvec4 entry) { return uintBitsToFloat(entry.w); }
+// The alias pick of u in [0, 1) among n entries: scaled = u n selects the slot, whose entry keeps it when the
+// fraction is below its keep probability and sends it to its alias otherwise.
+VKMC_FN uint aliasSlot(float scaled, uint n) { return min(uint(scaled), n - 1u); }
+VKMC_FN uint aliasChoice(float scaled, uint slot, uvec4 slotEntry) {
+  return (scaled - float(slot)) < uintBitsToFloat(slotEntry.x) ? slot : slotEntry.y;
+}
+
+VKMC_END_NAMESPACE
+#endif
