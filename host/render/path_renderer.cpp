@@ -219,8 +219,8 @@ void PathRenderer::collectPilot(uint32_t pathCount) {
   for (uint32_t i = 0; i < pathCount; ++i) {
     PilotPath p;
     p.radiance = gpu::luminance(glm::vec3(paths[i].radiance));
-    p.lastDepth = paths[i].info.z;
-    p.pixel = paths[i].info.x;
+    p.lastDepth = paths[i].depth;
+    p.pixel = paths[i].pixel;
     for (uint32_t d = 0; d < kRouletteTableDepths; ++d) {
       p.beta[d] = stats[i * kRouletteTableDepths + d].x;
       p.gathered[d] = stats[i * kRouletteTableDepths + d].y;
@@ -254,16 +254,16 @@ gpu::PushConstants PathRenderer::passConstants(uint32_t firstPixel, uint32_t pix
 // Ray counts and non-finite values by stage, from the control block after a pass.
 void PathRenderer::collectCounters(RenderStats& stats) {
   const auto* control = static_cast<const gpu::Control*>(control_.mapped());
-  stats.cameraRays += control->totals.x;
-  stats.extensionRays += control->totals.y;
-  stats.shadowRays += control->totals.z;
-  stats.primaryRays += control->totals.x;
-  stats.nonfiniteEmission += control->nonfinite.x;
-  stats.nonfiniteLightSamples += control->nonfinite.y;
-  stats.nonfiniteThroughput += control->nonfinite.z;
-  stats.traversalsCut += control->nonfinite.w;
-  stats.deepWalks += control->deepTotals.x;
-  stats.deepWalksTraced += control->deepTotals.y;
+  stats.cameraRays += control->cameraRays;
+  stats.extensionRays += control->extensionRays;
+  stats.shadowRays += control->shadowRays;
+  stats.primaryRays += control->cameraRays;
+  stats.nonfiniteEmission += control->nonfiniteEmission;
+  stats.nonfiniteLightSamples += control->nonfiniteLightSamples;
+  stats.nonfiniteThroughput += control->nonfiniteThroughput;
+  stats.traversalsCut += control->walksCut;
+  stats.deepWalks += control->deepWalksDeferred;
+  stats.deepWalksTraced += control->deepWalksTraced;
 }
 
 // Megakernel: one dispatch follows every path of the pass to its end, then accumulate; one submit.
@@ -328,7 +328,7 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
     ctx_.submitAndWait(cmd);
     timer_->collect(stats.stageSeconds);
     first = false;
-    uint32_t alive = (bounce & 1u) == 0u ? control->counts.x : control->counts.y;
+    uint32_t alive = control->rayQueueCount[bounce & 1u];
     if (alive == 0) break;
     if (bounce >= depthCap) throw Error("internal error: paths alive past the depth cap");
   }

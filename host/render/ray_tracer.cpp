@@ -64,13 +64,13 @@ std::vector<glm::vec4> RayTracer::trace(std::span<const gpu::TestRay> rays, bool
                            offsetof(gpu::Control, deepArgs));
     timer.end(cmd);
   });
-  deepWalks_ = control->deepTotals.x;
+  deepWalks_ = control->deepWalksDeferred;
   const double perRay = n ? 1.0 / double(n) : 0.0;
-  walkStats_ = {control->walkStats.x * perRay, control->walkStats.y * perRay, control->walkStats.z * perRay,
-                control->walkStats.w * perRay};
-  if (control->deepTotals.y != control->deepTotals.x)
-    throw Error("internal error: " + std::to_string(control->deepTotals.x) + " walks deferred, " +
-                std::to_string(control->deepTotals.y) + " traced by the deep pass");
+  walkStats_ = {control->walkIterations * perRay, control->walkNodeSteps * perRay, control->walkTriangleTests * perRay,
+                control->walkSlowestLaneIterations * perRay};
+  if (control->deepWalksTraced != control->deepWalksDeferred)
+    throw Error("internal error: " + std::to_string(control->deepWalksDeferred) + " walks deferred, " +
+                std::to_string(control->deepWalksTraced) + " traced by the deep pass");
   std::map<std::string, double> seconds;
   timer.collect(seconds);
   if (gpuSeconds) *gpuSeconds = seconds.empty() ? 0.0 : seconds.begin()->second;

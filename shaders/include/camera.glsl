@@ -21,7 +21,10 @@ PathState cameraPath(uint id) {
   p.direction = vec4(dir, 0.0);
   p.throughput = vec4(1.0);
   p.radiance = vec4(0.0);
-  p.info = uvec4(pixel, key, 0u, id);
+  p.pixel = pixel;
+  p.rngKey = key;
+  p.depth = 0u;
+  p.rootPath = id;
   if (kCameraRouletteQ > 0.0) {
     bool survives = randomUnit(key, kDimCameraRoulette) >= kCameraRouletteQ;
     p.throughput.rgb = vec3(survives ? 1.0 / (1.0 - kCameraRouletteQ) : 0.0);

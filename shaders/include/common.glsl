@@ -58,7 +58,7 @@ uint invocationIndex() {
 
 uint inQueueBase() { return (pc.bounce & 1u) * pc.queueCapacity; }
 uint outQueueBase() { return ((pc.bounce + 1u) & 1u) * pc.queueCapacity; }
-uint inQueueCount() { return (pc.bounce & 1u) == 0u ? control.counts.x : control.counts.y; }
+uint inQueueCount() { return (pc.bounce & 1u) == 0u ? control.rayQueueCount[0] : control.rayQueueCount[1]; }
 
 void triangleVertices(uint tri, out vec3 v0, out vec3 v1, out vec3 v2) {
   v0 = imageLoad(triangles, int(kTriangleTexels * tri)).xyz;

@@ -26,7 +26,7 @@ bool deferWalk(uint item) {
   if (slot >= capacity) return false;
   deepWalks[slot] = item;
   if (slot % gl_WorkGroupSize.x == 0u) atomicAdd(control.deepArgs.x, 1u);
-  atomicAdd(control.deepTotals.x, 1u);
+  atomicAdd(control.deepWalksDeferred, 1u);
   return true;
 }
 
@@ -35,7 +35,7 @@ bool deferWalk(uint item) {
 bool traceItem(uint item, vec3 origin, vec3 dir, float tMax, bool anyHit, out vec4 hit, out bool complete) {
 #ifdef VKMC_DEEP_PASS
   hit = traceRayDeep(origin, dir, tMax, anyHit, complete);
-  atomicAdd(control.deepTotals.y, 1u);
+  atomicAdd(control.deepWalksTraced, 1u);
   return true;
 #else
   bool overflow;

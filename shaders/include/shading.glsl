@@ -93,8 +93,8 @@ uvec4 selectLight(float u) {
 // Light sample j of `samples` at s: the shadow ray to trace, carrying the contribution it adds if unoccluded;
 // false when the sample adds nothing (or was rouletted away).
 bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo, uint j, uint samples, out ShadowRay ray) {
-  uint depth = path.info.z;
-  uint key = path.info.y;
+  uint depth = path.depth;
+  uint key = path.rngKey;
   uvec4 light = selectLight(randomUnit(key, lightDim(depth, j, 0u)));
   uint lightTri = lightEntryTriangle(light);
   float pmf = lightEntryPmf(light);
@@ -141,16 +141,16 @@ bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo
   // MIS over one BSDF sample and `samples` light samples: the light technique's pdf counts samples times.
   float weight = kMis == kMisNone ? 1.0 : misWeight(float(samples) * pdf, techniquePdf(gm, woLocal, wiLocal));
   vec3 contribution = path.throughput.rgb * f * lm.emission.rgb * (wiLocal.z * weight / (pdf * float(samples)));
-  if (!allFinite(contribution)) atomicAdd(control.nonfinite.y, 1u);  // still queued: it poisons the sample
+  if (!allFinite(contribution)) atomicAdd(control.nonfiniteLightSamples, 1u);  // still queued: it poisons the sample
   else if (!(maxComponent(contribution) > 0.0)) return false;
-  if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * pixelEstimate[path.info.x]) {
+  if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * pixelEstimate[path.pixel]) {
     if (randomUnit(key, lightDim(depth, j, 3u)) < kShadowRouletteQ) return false;
     contribution /= 1.0 - kShadowRouletteQ;
   }
   vec3 origin = offsetRayOrigin(s.p, s.pError, s.ng, wi);
   vec3 target = offsetRayOrigin(pl, plError, nl, -wi);
   ray.origin = vec4(origin, 1.0 - 1e-4);
-  ray.direction = vec4(target - origin, uintBitsToFloat(path.info.w));
+  ray.direction = vec4(target - origin, uintBitsToFloat(path.rootPath));
   ray.contribution = vec4(contribution, 0.0);
   return true;
 }
@@ -168,7 +168,7 @@ vec3 emissionAt(PathState path, SurfacePoint s, Material m, uint tri, vec4 hit, 
       float pmf = imageLoad(triangles, int(kTriangleTexels * tri + kTriangleLightPmfTexel)).w;
       float cosLight = max(dot(s.ng, wo), 1e-30);
       float pl = lightPdf(tri, pmf, path.origin.xyz, hit.x * hit.x, cosLight);
-      weight = misWeight(path.direction.w, float(lightSamplesAt(path.info.z - 1u)) * pl);
+      weight = misWeight(path.direction.w, float(lightSamplesAt(path.depth - 1u)) * pl);
     }
   }
   return path.throughput.rgb * m.emission.rgb * weight;
@@ -189,8 +189,8 @@ bool continuationIsUseful(uint depth) {
 // throughput (counted: it poisons the sample, which accumulate counts and excludes, never dropped silently).
 bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3 woLocal, uint c, float q,
                   inout vec3 gathered, out PathState next) {
-  uint depth = path.info.z;
-  uint ckey = childKey(path.info.y, depth, c);
+  uint depth = path.depth;
+  uint ckey = childKey(path.rngKey, depth, c);
   vec3 u = vec3(randomUnit(ckey, bounceDim(depth, kDimBsdfLobe)), randomUnit(ckey, bounceDim(depth, kDimBsdf)),
                 randomUnit(ckey, bounceDim(depth, kDimBsdf + 1u)));
   vec3 wiLocal = sampleTechnique(gm, woLocal, u);
@@ -199,7 +199,7 @@ bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3
   bool continues = pdf > 0.0 && wiLocal.z > 0.0 && dot(wi, s.ng) > 0.0;
   vec3 beta = continues ? path.throughput.rgb * bsdfEval(gm, woLocal, wiLocal) * (wiLocal.z / (pdf * q)) : vec3(0.0);
   if (!allFinite(beta)) {
-    atomicAdd(control.nonfinite.z, 1u);
+    atomicAdd(control.nonfiniteThroughput, 1u);
     gathered += beta;
     return false;
   }
@@ -231,7 +231,10 @@ bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3
   next.origin = vec4(offsetRayOrigin(s.p, s.pError, s.ng, wi), 0.0);
   next.direction = vec4(wi, pdf);
   next.throughput = vec4(beta, splitWeight);
-  next.info = uvec4(path.info.x, ckey, depth + 1u, path.info.w);
+  next.pixel = path.pixel;
+  next.rngKey = ckey;
+  next.depth = depth + 1u;
+  next.rootPath = path.rootPath;
   next.radiance = path.radiance;
   return continues;
 }

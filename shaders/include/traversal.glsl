@@ -43,11 +43,11 @@ bool intersectLeaf(uint entry, RayShear shear, inout vec4 best) {
 #ifndef VKMC_BVH2
 // Adds a walk's step counts to Control.walkStats (only kernels built with SPEC_WALK_STATS = 1 call it).
 void countWalkSteps(uvec3 steps) {
-  atomicAdd(control.walkStats.x, steps.x);
-  atomicAdd(control.walkStats.y, steps.y);
-  atomicAdd(control.walkStats.z, steps.z);
+  atomicAdd(control.walkIterations, steps.x);
+  atomicAdd(control.walkNodeSteps, steps.y);
+  atomicAdd(control.walkTriangleTests, steps.z);
   uint slowest = subgroupMax(steps.x);
-  if (subgroupElect()) atomicAdd(control.walkStats.w, slowest * gl_SubgroupSize);
+  if (subgroupElect()) atomicAdd(control.walkSlowestLaneIterations, slowest * gl_SubgroupSize);
 }
 
 // One compare-exchange of a sorting network on (distance, entry) pairs.

@@ -7,10 +7,10 @@
 
 void main() {
   uint id = invocationIndex();
-  if (kCameraRouletteQ == 0.0 && id == 0u) control.counts.x = pc.pathCount;
+  if (kCameraRouletteQ == 0.0 && id == 0u) control.rayQueueCount[0] = pc.pathCount;
   if (id >= pc.pathCount) return;
   PathState p = cameraPath(id);
   paths[id] = p;
   if (kCameraRouletteQ == 0.0) rayQueues[id] = id;
-  else if (p.throughput.x > 0.0) rayQueues[atomicAdd(control.counts.x, 1u)] = id;
+  else if (p.throughput.x > 0.0) rayQueues[atomicAdd(control.rayQueueCount[0], 1u)] = id;
 }

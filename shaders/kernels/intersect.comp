@@ -16,7 +16,7 @@ void main() {
   if (!traceItem(slot, p.origin.xyz, p.direction.xyz, 3.0e38, false, hit, complete)) return;
   hits[id] = hit;
   if (!complete) {  // counted, and the sample poisoned so accumulate excludes it: never a silently wrong hit
-    atomicAdd(control.nonfinite.w, 1u);
-    paths[p.info.w].radiance.r = uintBitsToFloat(0x7fc00000u);
+    atomicAdd(control.walksCut, 1u);
+    paths[p.rootPath].radiance.r = uintBitsToFloat(0x7fc00000u);
   }
 }

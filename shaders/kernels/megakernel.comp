@@ -60,7 +60,7 @@ void main() {
       }
       s = surfaceAt(tri, hit.yz, wo);
       Material m = materials[s.material];
-      uint depth = path.info.z;
+      uint depth = path.depth;
       gathered = emissionAt(path, s, m, tri, hit, wo);
       gm = gltfMaterial(m);
       woLocal = wo * s.frame;
@@ -78,8 +78,8 @@ void main() {
     }
     if (!tracingLightSample) {
       PathState next;
-      alive = continuationIsUseful(path.info.z) && continuePath(path, id, s, gm, woLocal, 0u, 1.0, gathered, next);
-      if (!allFinite(gathered)) atomicAdd(control.nonfinite.x, 1u);
+      alive = continuationIsUseful(path.depth) && continuePath(path, id, s, gm, woLocal, 0u, 1.0, gathered, next);
+      if (!allFinite(gathered)) atomicAdd(control.nonfiniteEmission, 1u);
       radiance += gathered;
       if (alive) {
         path = next;
@@ -89,8 +89,8 @@ void main() {
   }
   paths[id].radiance = vec4(radiance, 0.0);
   // Ray counts, one atomic per path and counter (llvmpipe runs atomics lane by lane).
-  if (camera > 0u) atomicAdd(control.totals.x, camera);
-  if (extension > 0u) atomicAdd(control.totals.y, extension);
-  if (shadow > 0u) atomicAdd(control.totals.z, shadow);
-  if (cut > 0u) atomicAdd(control.nonfinite.w, cut);
+  if (camera > 0u) atomicAdd(control.cameraRays, camera);
+  if (extension > 0u) atomicAdd(control.extensionRays, extension);
+  if (shadow > 0u) atomicAdd(control.shadowRays, shadow);
+  if (cut > 0u) atomicAdd(control.walksCut, cut);
 }

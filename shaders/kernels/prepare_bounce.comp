@@ -9,11 +9,10 @@ void main() {
   uint n = inQueueCount();
   control.rayArgs = uvec4((n + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x, 1u, 1u, 0u);
   queueStats[min(pc.bounce, kQueueStatsBounces - 1u)].x += n;  // queue occupancy, for bench-kernels
-  if (pc.bounce == 0u) control.totals.x += n;
-  else control.totals.y += n;
-  if ((pc.bounce & 1u) == 0u) control.counts.y = 0u;
-  else control.counts.x = 0u;
-  control.counts.z = 0u;
+  if (pc.bounce == 0u) control.cameraRays += n;
+  else control.extensionRays += n;
+  control.rayQueueCount[(pc.bounce + 1u) & 1u] = 0u;
+  control.shadowQueueCount = 0u;
   control.deepArgs = uvec4(0u, 1u, 1u, 0u);  // intersect's deferred walks start empty
   uint accumulateGroups = (pc.pixelCount + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x;
   control.accumulateArgs = uvec4(n == 0u ? accumulateGroups : 0u, 1u, 1u, 0u);

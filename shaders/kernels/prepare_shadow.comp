@@ -6,9 +6,9 @@
 
 void main() {
   if (gl_GlobalInvocationID.x != 0u) return;
-  uint n = control.counts.z;
+  uint n = control.shadowQueueCount;
   control.shadowArgs = uvec4((n + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x, 1u, 1u, 0u);
   queueStats[min(pc.bounce, kQueueStatsBounces - 1u)].y += n;
-  control.totals.z += n;
+  control.shadowRays += n;
   control.deepArgs = uvec4(0u, 1u, 1u, 0u);  // the shadow stage's deferred walks start empty
 }

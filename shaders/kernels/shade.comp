@@ -16,7 +16,7 @@
 // splitting a path is its own root and is alone in its slot during this dispatch; with splitting, siblings add
 // concurrently, hence the atomics.
 void addToSample(uint id, uint root, vec3 value) {
-  if (!allFinite(value)) atomicAdd(control.nonfinite.x, 1u);
+  if (!allFinite(value)) atomicAdd(control.nonfiniteEmission, 1u);
   else if (!(maxComponent(abs(value)) > 0.0)) return;
 #ifdef VKMC_FLOAT_ATOMICS
   if (kBsdfSamples > 1.0) {
@@ -36,18 +36,18 @@ void main() {
   PathState path = paths[id];
   vec4 hit = hits[id];
   uint tri = floatBitsToUint(hit.w);
-  uint root = path.info.w;
+  uint root = path.rootPath;
   vec3 wo = -path.direction.xyz;
   // Pilot of efficiency roulette: what the sample had gathered when the previous vertex decided to go on.
-  if (kRecordDepthStats != 0u && path.info.z >= 1u && path.info.z <= kRouletteTableDepths)
-    depthStats[id * kRouletteTableDepths + path.info.z - 1u].y = luminance(path.radiance.rgb);
+  if (kRecordDepthStats != 0u && path.depth >= 1u && path.depth <= kRouletteTableDepths)
+    depthStats[id * kRouletteTableDepths + path.depth - 1u].y = luminance(path.radiance.rgb);
   if (tri == kMissPrimitive) {
     addToSample(id, root, path.throughput.rgb * pc.background.rgb);
     return;
   }
   SurfacePoint s = surfaceAt(tri, hit.yz, wo);
   Material m = materials[s.material];
-  uint depth = path.info.z;
+  uint depth = path.depth;
   vec3 gathered = emissionAt(path, s, m, tri, hit, wo);
   GltfMaterial gm = gltfMaterial(m);
   vec3 woLocal = wo * s.frame;
@@ -55,17 +55,17 @@ void main() {
     uint samples = lightSamplesAt(depth);
     for (uint j = 0u; j < samples; ++j) {
       ShadowRay ray;
-      if (prepareLightSample(path, s, gm, wo, j, samples, ray)) shadowRays[atomicAdd(control.counts.z, 1u)] = ray;
+      if (prepareLightSample(path, s, gm, wo, j, samples, ray)) shadowRays[atomicAdd(control.shadowQueueCount, 1u)] = ray;
     }
   }
 
   // BSDF continuations: q = kBsdfSamples at split depths gives floor(q + u) children weighted 1/q; child 0
   // continues in this slot, the others take slots from the pool (none left: no split, weight 1, unbiased).
   float q = (kBsdfSamples > 1.0 && depth < kSplitDepth) ? kBsdfSamples : 1.0;
-  uint children = continuationIsUseful(depth) ? (q > 1.0 ? splitCount(q, randomUnit(path.info.y, bounceDim(depth, kDimSplit))) : 1u) : 0u;
+  uint children = continuationIsUseful(depth) ? (q > 1.0 ? splitCount(q, randomUnit(path.rngKey, bounceDim(depth, kDimSplit))) : 1u) : 0u;
   uint firstChild = 0u;
   if (children > 1u) {
-    uint base = atomicAdd(control.counts.w, children - 1u);
+    uint base = atomicAdd(control.splitChildren, children - 1u);
     if (pc.pathCount + base + children - 1u > pc.queueCapacity) {
       children = 1u;
       q = 1.0;
@@ -80,9 +80,12 @@ void main() {
     paths[target].origin = next.origin;
     paths[target].direction = next.direction;
     paths[target].throughput = next.throughput;
-    paths[target].info = next.info;
+    paths[target].pixel = next.pixel;
+    paths[target].rngKey = next.rngKey;
+    paths[target].depth = next.depth;
+    paths[target].rootPath = next.rootPath;
     if (c > 0u) paths[target].radiance = vec4(0.0);
-    rayQueues[outQueueBase() + atomicAdd(control.counts[((pc.bounce + 1u) & 1u)], 1u)] = target;
+    rayQueues[outQueueBase() + atomicAdd(control.rayQueueCount[(pc.bounce + 1u) & 1u], 1u)] = target;
   }
   addToSample(id, root, gathered);
 }

@@ -12,13 +12,13 @@
 
 void main() {
   uint slot;
-  if (!walkItem(control.counts.z, slot)) return;
+  if (!walkItem(control.shadowQueueCount, slot)) return;
   ShadowRay s = shadowRays[slot];
   vec4 h;
   bool complete;
   if (!traceItem(slot, s.origin.xyz, s.direction.xyz, s.origin.w, true, h, complete)) return;
   if (!complete) {  // as in intersect: counted, and the sample poisoned
-    atomicAdd(control.nonfinite.w, 1u);
+    atomicAdd(control.walksCut, 1u);
     s.contribution.rgb = vec3(uintBitsToFloat(0x7fc00000u));
   } else if (floatBitsToUint(h.w) != kMissPrimitive) {
     return;

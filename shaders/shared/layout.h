@@ -81,7 +81,10 @@ struct PathState {
   vec4 direction;   // xyz: unit direction, w: pdf of the direction
   vec4 throughput;  // rgb: path throughput, w: product of the split factors that divided it (roulette undoes none)
   vec4 radiance;    // rgb: radiance gathered so far, w: unused
-  uvec4 info;       // x: pixel, y: rng key, z: depth (scattering events so far), w: root path (its sample)
+  uint pixel;
+  uint rngKey;      // random-number key (a split child gets its own)
+  uint depth;       // scattering events so far
+  uint rootPath;    // the slot of the path's sample, where its radiance accumulates
 };
 
 struct ShadowRay {
@@ -111,19 +114,25 @@ VKMC_CONST float kFilmHighScale = 1.2621774483536188886587657e-29f;  // 2^-96
 
 // Queue counters and indirect dispatch arguments (x,y,z used; w pads to 16 bytes).
 struct Control {
-  uvec4 counts;          // x, y: ray queue sizes (ping-pong), z: shadow queue size, w: split children allocated
-  uvec4 rayArgs;         // dispatch of intersect and shade
-  uvec4 shadowArgs;      // dispatch of shadow
-  uvec4 accumulateArgs;  // dispatch of accumulate: non-zero only once no path is alive
-  uvec4 totals;          // x: camera rays, y: extension rays, z: shadow rays, w: unused
+  uint rayQueueCount[2];   // ray queue sizes, ping-pong by bounce parity
+  uint shadowQueueCount;
+  uint splitChildren;      // path slots handed to split children this pass
+  uvec4 rayArgs;           // dispatch of intersect and shade (x, y, z)
+  uvec4 shadowArgs;        // dispatch of shadow
+  uvec4 accumulateArgs;    // dispatch of accumulate: non-zero only once no path is alive
+  uint cameraRays, extensionRays, shadowRays, unusedTotal;
   // Non-finite values by the stage that produced them (the sample is then excluded by accumulate):
-  uvec4 nonfinite;       // x: emission and other gathered radiance, y: light-sample contributions,
-                         // z: continuation throughput, w: BVH walks cut short (llvmpipe's loop limit, a full deep queue)
-  uvec4 deepArgs;        // dispatch of the deferred deep walks: x groups, y = z = 1, w: walks deferred
-  uvec4 deepTotals;      // x: walks deferred in all (one that finds the deep queue full is cut short: nonfinite.w),
-                         // y: walks the deep passes traced (equals x once every deep pass has run)
-  uvec4 walkStats;       // SPEC_WALK_STATS: loop iterations, node steps, triangle tests (summed over rays), and
-                         // the iterations of each subgroup's slowest lane (summed over subgroups, times 8 lanes)
+  uint nonfiniteEmission;      // emission and other gathered radiance
+  uint nonfiniteLightSamples;  // light-sample contributions
+  uint nonfiniteThroughput;    // continuation throughput
+  uint walksCut;               // BVH walks cut short (llvmpipe's loop limit, a full deep queue)
+  uvec4 deepArgs;          // dispatch of the deferred deep walks: x groups, y = z = 1, w: walks deferred
+  uint deepWalksDeferred;  // in all (one that finds the deep queue full is cut short: walksCut)
+  uint deepWalksTraced;    // by the deep passes (equals deepWalksDeferred once every deep pass has run)
+  uint unusedDeep0, unusedDeep1;
+  // SPEC_WALK_STATS, summed over rays: loop iterations, node steps, triangle tests, and the iterations of each
+  // subgroup's slowest lane (summed over subgroups, times the subgroup size).
+  uint walkIterations, walkNodeSteps, walkTriangleTests, walkSlowestLaneIterations;
 };
 
 struct TestRay {
@@ -168,13 +177,15 @@ VKMC_END_NAMESPACE
 #ifdef __cplusplus
 namespace vkmc::gpu {
 static_assert(sizeof(PathState) == 80);
-static_assert(offsetof(PathState, info) == 64);
+static_assert(offsetof(PathState, pixel) == 64 && offsetof(PathState, rootPath) == 76);
 static_assert(sizeof(ShadowRay) == 48);
 static_assert(sizeof(Material) == 48);
 static_assert(sizeof(FilmPixel) == 64);
 static_assert(sizeof(Control) == 144);
 static_assert(offsetof(Control, deepArgs) == 96);
 static_assert(offsetof(Control, rayArgs) == 16 && offsetof(Control, accumulateArgs) == 48);
+static_assert(offsetof(Control, cameraRays) == 64 && offsetof(Control, walksCut) == 92);
+static_assert(offsetof(Control, deepWalksDeferred) == 112 && offsetof(Control, walkIterations) == 128);
 static_assert(sizeof(TestRay) == 32);
 static_assert(sizeof(PushConstants) == 128);
 static_assert(offsetof(PushConstants, cameraOrigin) == 32);
