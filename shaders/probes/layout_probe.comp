@@ -1,0 +1,99 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// The GLSL side of every host <-> GPU encoding, for tests/layout_probe_test.cpp: one invocation reads what the
+// host wrote and writes it back word by word, by field name, so the test compares the two languages' views.
+// kEchoStructs = 1: the fields of PathState, ShadowRay, Material, FilmPixel, Control and PushConstants, each
+// read from a buffer the host filled with a pattern. kEchoStructs = 0: the scene texels decoded with the shared
+// functions (scene_layout.h, bvh_layout.h): pc.pathCount triangles, pc.pixelCount light picks, pc.width wide
+// nodes and pc.height leaf entries.
+#include "common.glsl"
+#include "bvh_layout.h"
+
+layout(constant_id = 100) const uint kEchoStructs = 1u;
+layout(binding = BINDING_TEST_HITS, std430) writeonly buffer Words { uint words[]; };
+
+uint next = 0u;
+void put(uint v) { words[next++] = v; }
+void putf(float v) { put(floatBitsToUint(v)); }
+void put3(vec3 v) { putf(v.x); putf(v.y); putf(v.z); }
+void put4(vec4 v) { putf(v.x); putf(v.y); putf(v.z); putf(v.w); }
+void put4u(uvec4 v) { put(v.x); put(v.y); put(v.z); put(v.w); }
+
+void echoStructs() {
+  PathState p = paths[0];
+  put4(p.origin); put4(p.direction); put4(p.throughput); put4(p.radiance);
+  put(p.pixel); put(p.rngKey); put(p.depth); put(p.rootPath);
+  ShadowRay r = shadowRays[0];
+  put4(r.origin); put4(r.direction); put4(r.contribution);
+  Material m = materials[0];
+  put4(m.baseColor); put4(m.emission); put4(m.params);
+  FilmPixel f = film[0];
+  put4(f.sum); put4(f.sumSq); put4(f.sumHigh); put4(f.sumSqHigh);
+  put(control.rayQueueCount[0]); put(control.rayQueueCount[1]); put(control.shadowQueueCount); put(control.splitChildren);
+  put4u(control.rayArgs); put4u(control.shadowArgs); put4u(control.accumulateArgs);
+  put(control.cameraRays); put(control.extensionRays); put(control.shadowRays); put(control.unusedTotal);
+  put(control.nonfiniteEmission); put(control.nonfiniteLightSamples); put(control.nonfiniteThroughput); put(control.walksCut);
+  put4u(control.deepArgs);
+  put(control.deepWalksDeferred); put(control.deepWalksTraced); put(control.unusedDeep0); put(control.unusedDeep1);
+  put(control.walkIterations); put(control.walkNodeSteps); put(control.walkTriangleTests); put(control.walkSlowestLaneIterations);
+  put(pc.pathCount); put(pc.firstPixel); put(pc.sampleIndex); put(pc.bounce);
+  put(pc.width); put(pc.height); put(pc.seed); put(pc.queueCapacity);
+  put4(pc.cameraOrigin); put4(pc.cameraForward); put4(pc.cameraRight); put4(pc.cameraUp); put4(pc.background);
+  put(pc.pixelCount); put(pc.samplesPerPass); put(pc.unused0); put(pc.unused1);
+}
+
+void decodeScene() {
+  for (uint t = 0u; t < pc.pathCount; ++t) {
+    vec3 v0, v1, v2;
+    triangleVertices(t, v0, v1, v2);
+    put3(v0); put3(v1); put3(v2);
+    putf(imageLoad(triangles, int(kTriangleTexels * t + kTriangleLightPmfTexel)).w);
+    uvec4 info = imageLoad(triangleInfo, int(t));
+    put(triangleInfoMaterial(info));
+    for (uint k = 0u; k < 3u; ++k) {
+      vec3 n = decodeOctahedral(info[k]);
+      put3(n);
+      put(encodeOctahedral(n));
+    }
+  }
+  uint lightCount = uint(imageSize(lights));
+  for (uint k = 0u; k < pc.pixelCount; ++k) {
+    float scaled = (float(k) + 0.5) / float(pc.pixelCount) * float(lightCount);
+    uint slot = aliasSlot(scaled, lightCount);
+    uvec4 chosen = imageLoad(lights, int(aliasChoice(scaled, slot, imageLoad(lights, int(slot)))));
+    put(lightEntryTriangle(chosen));
+    putf(lightEntryPmf(chosen));
+  }
+  for (uint w = 0u; w < pc.width; ++w) {
+    int base = int(kBvhNodeTexels * w);
+    uvec4 grid = imageLoad(bvhNodes, base + int(kBvhWideGridTexel));
+    uvec4 xy = imageLoad(bvhNodes, base + int(kBvhWideXyPlanesTexel));
+    uvec4 z = imageLoad(bvhNodes, base + int(kBvhWideZPlanesTexel));
+    put3(uintBitsToFloat(grid.xyz));
+    put3(bvhWideStep(grid.w));
+    for (uint axis = 0u; axis < 3u; ++axis) {
+      uvec2 planes = bvhWidePlaneWords(xy, z, axis);
+      put4u(bvhWidePlaneSteps(planes.x));
+      put4u(bvhWidePlaneSteps(planes.y));
+    }
+    uvec4 children = imageLoad(bvhNodes, base + int(kBvhWideChildTexel));
+    for (uint c = 0u; c < 4u; ++c) {
+      uint e = children[c];
+      bool leaf = e != kBvhEmptySlot && bvhIsLeaf(e);
+      put(leaf ? 1u : 0u);
+      put(leaf ? bvhLeafFirst(e) : e);
+      put(leaf ? bvhLeafCount(e) : 0u);
+    }
+  }
+  for (uint i = 0u; i < pc.height; ++i) {
+    uint first = (i * 2654435761u) % kBvhLeafFirstLimit, count = 1u + i % kBvhMaxLeafSize;
+    uint e = bvhLeafEntry(first, count);
+    put(e); put(bvhLeafFirst(e)); put(bvhLeafCount(e)); put(bvhIsLeaf(e) ? 1u : 0u);
+  }
+}
+
+void main() {
+  if (invocationIndex() != 0u) return;
+  if (kEchoStructs != 0u) echoStructs();
+  else decodeScene();
+}
