@@ -1,6 +1,8 @@
 // The camera path of sample id / pixelCount of pixel firstPixel + id % pixelCount (path id = sample *
 // pixelCount + pixel offset, so accumulate can walk one pixel's samples). Camera-ray roulette (the lecture's bad
 // example): with probability q a sample is 0 (throughput 0), survivors weigh 1/(1-q).
+#include "roulette.h"
+
 PathState cameraPath(uint id) {
   uint pixel = pc.firstPixel + id % pc.pixelCount;
   uint key = pathKey(pc.seed, pixel, pc.sampleIndex + id / pc.pixelCount);
@@ -26,8 +28,8 @@ PathState cameraPath(uint id) {
   p.depth = 0u;
   p.rootPath = id;
   if (kCameraRouletteQ > 0.0) {
-    bool survives = randomUnit(key, kDimCameraRoulette) >= kCameraRouletteQ;
-    p.throughput.rgb = vec3(survives ? 1.0 / (1.0 - kCameraRouletteQ) : 0.0);
+    RouletteStep rr = fixedRoulette(kCameraRouletteQ, randomUnit(key, kDimCameraRoulette));
+    p.throughput.rgb = vec3(rr.survives ? 1.0 / rr.survival : 0.0);
   }
   return p;
 }

@@ -4,6 +4,8 @@
 // results go: queues between dispatches, or the next iteration of one invocation's loop.
 #include "bsdf_gltf.h"
 #include "light_sampling.h"
+#include "mis.h"
+#include "roulette.h"
 
 struct SurfacePoint {
   vec3 p;
@@ -59,25 +61,14 @@ vec3 bsdfEval(GltfMaterial gm, vec3 wo, vec3 wi) {
   return gltfBsdfEval(gm, wo, wi);
 }
 
-float misWeight(float pdfThis, float pdfOther) {
-  if (kMis == kMisBalance) return balanceHeuristic(pdfThis, pdfOther);
-  if (kMis == kMisPower) return powerHeuristic(pdfThis, pdfOther);
-  return 1.0;
-}
-
-uint lightSamplesAt(uint depth) { return depth < kSplitDepth ? kLightSamples : 1u; }
+uint lightSamplesAt(uint depth) { return splitFactorAt(depth, kSplitDepth, kLightSamples); }
 
 // Solid-angle pdf with which light sampling from p picks this point of emitter `tri`; pmf = selection pmf.
 float lightPdf(uint tri, float pmf, vec3 p, float dist2, float cosLight) {
   vec3 v0, v1, v2;
   triangleVertices(tri, v0, v1, v2);
-  if (kLightSampling == kLightSamplingSolidAngle) {
-    float omega = triangleSolidAngle(p, v0, v1, v2);
-    if (useSphericalSampling(omega)) return pmf / omega;
-  }
-  vec4 c = scaledTriangleCross(v0, v1, v2);
-  float area = 0.5 * length(c.xyz) * c.w * c.w;
-  return pmf * dist2 / (area * cosLight);
+  float area = scaledCrossArea(scaledTriangleCross(v0, v1, v2));
+  return triangleLightPdfAt(kLightSampling, p, v0, v1, v2, pmf, area, dist2, cosLight);
 }
 
 // Alias-table pick of one emissive triangle: its light entry (scene_layout.h).
@@ -101,29 +92,12 @@ bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo
   vec3 v0, v1, v2;
   triangleVertices(lightTri, v0, v1, v2);
   vec4 cr = scaledTriangleCross(v0, v1, v2);
-  float area = 0.5 * length(cr.xyz) * cr.w * cr.w;
+  float area = scaledCrossArea(cr);
   if (!(area > 0.0)) return false;
   vec3 nl = normalize(cr.xyz);
   vec2 u = vec2(randomUnit(key, lightDim(depth, j, 1u)), randomUnit(key, lightDim(depth, j, 2u)));
-  vec3 pl;
-  vec3 plError;
-  float pdf = 0.0;
-  bool spherical = false;
-  if (kLightSampling == kLightSamplingSolidAngle) {
-    float omega = triangleSolidAngle(s.p, v0, v1, v2);
-    spherical = useSphericalSampling(omega);
-    if (spherical) {
-      vec3 w = sampleSphericalTriangle(s.p, v0, v1, v2, u, omega);
-      pl = pointOnTrianglePlane(s.p, w, v0, nl);
-      plError = gammaBound(16.0) * (abs(pl) + abs(v0) + abs(v1) + abs(v2));
-      pdf = pmf / omega;
-    }
-  }
-  if (!spherical) {
-    vec3 b = sampleUniformTriangle(u);
-    pl = b.x * v0 + b.y * v1 + b.z * v2;
-    plError = barycentricError(b, v0, v1, v2);
-  }
+  TriangleLightSample ls = sampleTriangleLight(kLightSampling, s.p, v0, v1, v2, nl, u);
+  vec3 pl = ls.point;
   vec3 toLight = pl - s.p;
   float dist2 = dot(toLight, toLight);
   if (!(dist2 > 0.0)) return false;
@@ -133,22 +107,23 @@ bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo
   if (!emitsToward(lm, cosLight > 0.0)) return false;
   cosLight = abs(cosLight);
   if (cosLight <= 0.0 || dot(s.ng, wi) <= 0.0) return false;
-  if (!spherical) pdf = pmf * dist2 / (area * cosLight);
+  float pdf = triangleLightPdf(ls.spherical, ls.solidAngle, pmf, area, dist2, cosLight);
   vec3 wiLocal = wi * s.frame;
   vec3 woLocal = wo * s.frame;
   if (wiLocal.z <= 0.0 || !(pdf > 0.0)) return false;
   vec3 f = bsdfEval(gm, woLocal, wiLocal);
   // MIS over one BSDF sample and `samples` light samples: the light technique's pdf counts samples times.
-  float weight = kMis == kMisNone ? 1.0 : misWeight(float(samples) * pdf, techniquePdf(gm, woLocal, wiLocal));
+  float weight = kMis == kMisNone ? 1.0 : misWeight(kMis, float(samples) * pdf, techniquePdf(gm, woLocal, wiLocal));
   vec3 contribution = path.throughput.rgb * f * lm.emission.rgb * (wiLocal.z * weight / (pdf * float(samples)));
   if (!allFinite(contribution)) atomicAdd(control.nonfiniteLightSamples, 1u);  // still queued: it poisons the sample
   else if (!(maxComponent(contribution) > 0.0)) return false;
   if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * pixelEstimate[path.pixel]) {
-    if (randomUnit(key, lightDim(depth, j, 3u)) < kShadowRouletteQ) return false;
-    contribution /= 1.0 - kShadowRouletteQ;
+    RouletteStep rr = fixedRoulette(kShadowRouletteQ, randomUnit(key, lightDim(depth, j, 3u)));
+    if (!rr.survives) return false;
+    contribution /= rr.survival;
   }
   vec3 origin = offsetRayOrigin(s.p, s.pError, s.ng, wi);
-  vec3 target = offsetRayOrigin(pl, plError, nl, -wi);
+  vec3 target = offsetRayOrigin(pl, ls.pointError, nl, -wi);
   ray.origin = vec4(origin, 1.0 - 1e-4);
   ray.direction = vec4(target - origin, uintBitsToFloat(path.rootPath));
   ray.contribution = vec4(contribution, 0.0);
@@ -168,7 +143,7 @@ vec3 emissionAt(PathState path, SurfacePoint s, Material m, uint tri, vec4 hit, 
       float pmf = imageLoad(triangles, int(kTriangleTexels * tri + kTriangleLightPmfTexel)).w;
       float cosLight = max(dot(s.ng, wo), 1e-30);
       float pl = lightPdf(tri, pmf, path.origin.xyz, hit.x * hit.x, cosLight);
-      weight = misWeight(path.direction.w, float(lightSamplesAt(path.depth - 1u)) * pl);
+      weight = misWeight(kMis, path.direction.w, float(lightSamplesAt(path.depth - 1u)) * pl);
     }
   }
   return path.throughput.rgb * m.emission.rgb * weight;
@@ -206,25 +181,16 @@ bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3
   float splitWeight = path.throughput.w * q;  // roulette judges a child by its unsplit throughput
   continues = continues && maxComponent(beta) > 0.0;
 
-  if (continues && depth + 1u >= kRouletteDepth && kRouletteMode != kRouletteNone) {
+  if (continues && rouletteApplies(depth, kRouletteDepth) && kRouletteMode != kRouletteNone) {
     float r = randomUnit(ckey, bounceDim(depth, kDimRoulette));
-    if (kRouletteMode == kRouletteFixed) {
-      // F' = (F - q c) / (1 - q) with probability 1 - q, else c: unbiased for any c.
-      vec3 cValue = beta * kRouletteC;
-      if (r < kRouletteQ) {
-        gathered += cValue;
-        continues = false;
-      } else {
-        gathered -= cValue * (kRouletteQ / (1.0 - kRouletteQ));
-        beta /= 1.0 - kRouletteQ;
-      }
-    } else {
-      float unsplit = maxComponent(beta) * splitWeight;
-      float scale = kRouletteMode == kRouletteEfficiency ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] : 1.0;
-      float survival = rouletteSurvival(unsplit, scale, kRouletteMaxSurvival);
-      continues = splitCount(survival, r) > 0u;
-      beta /= survival;
-    }
+    float scale = kRouletteMode == kRouletteEfficiency ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] : 1.0;
+    RouletteStep rr = kRouletteMode == kRouletteFixed ? fixedRoulette(kRouletteQ, r)
+                                                      : throughputRoulette(maxComponent(beta) * splitWeight, scale, r);
+    vec3 cValue = beta * kRouletteC;  // the fixed mode's constant c, as throughput
+    if (kRouletteMode == kRouletteFixed && rr.survives) gathered -= cValue * fixedRouletteCompensation(kRouletteQ);
+    if (kRouletteMode == kRouletteFixed && !rr.survives) gathered += cValue;
+    continues = rr.survives;
+    beta /= rr.survival;
   }
   if (kRecordDepthStats != 0u && depth < kRouletteTableDepths && continues)
     depthStats[id * kRouletteTableDepths + depth].x = maxComponent(beta);

@@ -4,7 +4,7 @@
 // every ray hits a Lambertian surface of albedo a that emits Le (L = Le / (1 - a)). Intersection is left out:
 // a 5-sigma interval of 0.1% needs ~2.5e7 paths of ~1 / (1 - a) vertices each, hours through the wavefront on
 // lavapipe, seconds here. What remains is exactly the per-vertex code of shade.comp for a Lambertian scene:
-// cosine sampling and its pdf, the BRDF weight, the roulette decision (rouletteSurvival, splitCount), the
+// cosine sampling and its pdf, the BRDF weight, the roulette decision (roulette.h's throughputRoulette), the
 // random-number dimensions, float throughput over thousands of vertices.
 //
 // One flat loop, one vertex per iteration: a lane starts a new path when one ends until it has spent its vertex
@@ -17,6 +17,7 @@
 #include "layout.h"
 #include "rng.h"
 #include "sampling.h"
+#include "roulette.h"
 
 layout(local_size_x_id = SPEC_WORKGROUP_SIZE) in;
 layout(push_constant, std430) uniform Push { FurnaceProbePush probe; };
@@ -30,11 +31,11 @@ bool continuePath(uint key, uint depth, inout float beta) {
   float pdf = cosineHemispherePdf(wi.z);
   if (!(pdf > 0.0 && wi.z > 0.0)) return false;
   beta *= probe.albedo * kInvPi * (wi.z / pdf);
-  if (depth + 1u < probe.rouletteDepth) return true;
+  if (!rouletteApplies(depth, probe.rouletteDepth)) return true;
   float scale = probe.rouletteMode == kRouletteEfficiency ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] : 1.0;
-  float survival = rouletteSurvival(beta, scale, kRouletteMaxSurvival);
-  if (splitCount(survival, randomUnit(key, bounceDim(depth, kDimRoulette))) == 0u) return false;
-  beta /= survival;
+  RouletteStep rr = throughputRoulette(beta, scale, randomUnit(key, bounceDim(depth, kDimRoulette)));
+  if (!rr.survives) return false;
+  beta /= rr.survival;
   return true;
 }
 

@@ -139,6 +139,7 @@ VKMC_FN vec4 scaledTriangleCross(vec3 v0, vec3 v1, vec3 v2) {
   float inv = 1.0f / s;
   return vec4(cross(e1 * inv, e2 * inv), s);
 }
+VKMC_FN float scaledCrossArea(vec4 c) { return 0.5f * length(vec3(c.x, c.y, c.z)) * c.w * c.w; }
 
 // Directions with a zero component would give 0 * inf = NaN in the slab test. The bound keeps every slab
 // distance finite in scenes within the loader's coordinate range (kMaxSceneCoordinate: 2e11 * 1e26 < FLT_MAX), so

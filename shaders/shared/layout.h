@@ -62,11 +62,6 @@ VKMC_CONST uint kWorkgroupSize = 64u;
 VKMC_CONST uint kMaterialDoubleSided = 1u;   // Material.emission.w bit
 VKMC_CONST uint kCameraPerspective = 0u;
 VKMC_CONST uint kCameraOrthographic = 1u;
-// Throughput roulette survives with min(max(beta), kRouletteMaxSurvival). The cap below 1 ends every path with
-// probability 1 (no hidden depth cap), but while beta >= cap each survival multiplies beta by a / cap for a
-// surface of albedo a, so the second moment grows like (a^2 / cap)^n: a cap of 0.95 (Mitsuba's) gives infinite
-// variance above albedo 0.975. 0.999 keeps the variance finite up to albedo 0.9995 and still ends paths.
-VKMC_CONST float kRouletteMaxSurvival = 0.999f;
 VKMC_CONST uint kRouletteTableDepths = 16u;  // depths with their own efficiency-roulette scale
 VKMC_CONST uint kQueueStatsBounces = 64u;    // queue occupancy is recorded per bounce up to here (the last sums the rest)
 VKMC_CONST uint kMisNone = 0u, kMisBalance = 1u, kMisPower = 2u;

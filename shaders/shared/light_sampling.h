@@ -3,6 +3,8 @@
 #ifndef VKMC_LIGHT_SAMPLING_H
 #define VKMC_LIGHT_SAMPLING_H
 #include "glsl_cpp.h"
+#include "geometry.h"
+#include "layout.h"
 #include "sampling.h"
 VKMC_BEGIN_NAMESPACE
 
@@ -71,6 +73,50 @@ VKMC_FN vec3 sampleSphericalTriangle(vec3 p, vec3 v0, vec3 v1, vec3 v2, vec2 u, 
 VKMC_FN vec3 pointOnTrianglePlane(vec3 p, vec3 w, vec3 a, vec3 n) {
   float dn = dot(w, n);
   return dn != 0.0f ? p + w * (dot(a - p, n) / dn) : a;
+}
+
+// Light sampling of one emissive triangle (v0, v1, v2, unit normal nl) from p: the sampled point, a bound on its
+// rounding error, and which technique drew it. kLightSamplingSolidAngle falls back to area sampling where the
+// spherical construction is ill-conditioned (useSphericalSampling); triangleLightPdf gives the pdf of the pair.
+struct TriangleLightSample {
+  vec3 point;
+  vec3 pointError;
+  bool spherical;
+  float solidAngle;  // the triangle's, from p (when spherical)
+};
+
+VKMC_FN TriangleLightSample sampleTriangleLight(uint technique, vec3 p, vec3 v0, vec3 v1, vec3 v2, vec3 nl, vec2 u) {
+  TriangleLightSample s;
+  s.spherical = false;
+  s.solidAngle = 0.0f;
+  if (technique == kLightSamplingSolidAngle) {
+    s.solidAngle = triangleSolidAngle(p, v0, v1, v2);
+    s.spherical = useSphericalSampling(s.solidAngle);
+  }
+  if (s.spherical) {
+    vec3 w = sampleSphericalTriangle(p, v0, v1, v2, u, s.solidAngle);
+    s.point = pointOnTrianglePlane(p, w, v0, nl);
+    s.pointError = gammaBound(16.0f) * (abs(s.point) + abs(v0) + abs(v1) + abs(v2));
+  } else {
+    vec3 b = sampleUniformTriangle(u);
+    s.point = b.x * v0 + b.y * v1 + b.z * v2;
+    s.pointError = barycentricError(b, v0, v1, v2);
+  }
+  return s;
+}
+
+// The solid-angle pdf of a sample times the triangle's selection pmf: pmf / solid angle when sampled spherically,
+// else pmf dist^2 / (area cos) for a point at squared distance dist2 seen under cosLight.
+VKMC_FN float triangleLightPdf(bool spherical, float solidAngle, float pmf, float area, float dist2, float cosLight) {
+  return spherical ? pmf / solidAngle : pmf * dist2 / (area * cosLight);
+}
+
+// The same pdf for a point found otherwise (a BSDF-sampled ray, for MIS): the technique decided as sampling does.
+VKMC_FN float triangleLightPdfAt(uint technique, vec3 p, vec3 v0, vec3 v1, vec3 v2, float pmf, float area, float dist2,
+                                 float cosLight) {
+  float omega = technique == kLightSamplingSolidAngle ? triangleSolidAngle(p, v0, v1, v2) : 0.0f;
+  bool spherical = technique == kLightSamplingSolidAngle && useSphericalSampling(omega);
+  return triangleLightPdf(spherical, omega, pmf, area, dist2, cosLight);
 }
 
 VKMC_END_NAMESPACE

@@ -22,6 +22,24 @@ VKMC_FN vec2 sampleUniformDiskConcentric(vec2 u) {
   return r * vec2(cos(theta), sin(theta));
 }
 
+// Inverse of sampleUniformDiskConcentric (pbrt-v4's InvertUniformDiskConcentricSample).
+VKMC_FN vec2 invertUniformDiskConcentricSample(vec2 p) {
+  float theta = atan(p.y, p.x);  // -pi .. pi
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  vec2 o;
+  if (abs(theta) < kPi / 4.0f || abs(theta) > 3.0f * kPi / 4.0f) {
+    r = p.x < 0.0f ? -r : r;
+    o.x = r;
+    if (p.x < 0.0f) o.y = (p.y < 0.0f ? kPi + theta : theta - kPi) * r / (kPi / 4.0f);
+    else o.y = theta * r / (kPi / 4.0f);
+  } else {
+    r = p.y < 0.0f ? -r : r;
+    o.y = r;
+    o.x = (p.y < 0.0f ? -(kPi / 2.0f + theta) : kPi / 2.0f - theta) * r / (kPi / 4.0f);
+  }
+  return 0.5f * (o + vec2(1.0f));
+}
+
 // Local frame: z is the normal.
 VKMC_FN vec3 sampleCosineHemisphere(vec2 u) {
   vec2 d = sampleUniformDiskConcentric(u);
@@ -29,6 +47,7 @@ VKMC_FN vec3 sampleCosineHemisphere(vec2 u) {
   return vec3(d.x, d.y, z);
 }
 VKMC_FN float cosineHemispherePdf(float cosTheta) { return max(cosTheta, 0.0f) * kInvPi; }
+VKMC_FN vec2 invertCosineHemisphereSample(vec3 w) { return invertUniformDiskConcentricSample(vec2(w.x, w.y)); }
 
 VKMC_FN vec3 sampleUniformHemisphere(vec2 u) {
   float z = u.x;
@@ -37,8 +56,10 @@ VKMC_FN vec3 sampleUniformHemisphere(vec2 u) {
   return vec3(r * cos(phi), r * sin(phi), z);
 }
 VKMC_FN float uniformHemispherePdf(float cosTheta) { return cosTheta > 0.0f ? 0.5f * kInvPi : 0.0f; }
-
-VKMC_FN float balanceHeuristic(float pdfA, float pdfB) { return pdfA + pdfB > 0.0f ? pdfA / (pdfA + pdfB) : 0.0f; }
+VKMC_FN vec2 invertUniformHemisphereSample(vec3 w) {
+  float phi = atan(w.y, w.x);
+  return vec2(w.z, (phi < 0.0f ? phi + 2.0f * kPi : phi) / (2.0f * kPi));
+}
 
 // Barycentrics (b0, b1, b2) uniform over the triangle's area; pdf = 1 / area.
 VKMC_FN vec3 sampleUniformTriangle(vec2 u) {
@@ -46,6 +67,10 @@ VKMC_FN vec3 sampleUniformTriangle(vec2 u) {
   float b0 = 1.0f - su;
   float b1 = u.y * su;
   return vec3(b0, b1, 1.0f - b0 - b1);
+}
+VKMC_FN vec2 invertUniformTriangleSample(vec3 b) {
+  float su = 1.0f - b.x;
+  return vec2(su * su, su > 0.0f ? b.y / su : 0.0f);
 }
 
 // Duff et al. 2017: orthonormal basis without a branch on the normal's direction; columns are t, b, n.
@@ -57,21 +82,6 @@ VKMC_FN mat3 basisFromNormal(vec3 n) {
   vec3 bt = vec3(b, s + n.y * n.y * a, -n.y);
   return mat3(t, bt, n);
 }
-
-VKMC_FN float powerHeuristic(float pdfA, float pdfB) {
-  float a = pdfA * pdfA;
-  float b = pdfB * pdfB;
-  return a + b > 0.0f ? a / (a + b) : 0.0f;
-}
-
-// Splitting and Russian roulette as one mechanism (as in EARS): a factor q yields floor(q + u) children,
-// each weighted 1 / q, so the expected total weight is one. q < 1 is roulette, q > 1 splitting.
-VKMC_FN uint splitCount(float q, float u) { return uint(floor(q + u)); }
-
-// Survival probability of throughput-driven roulette: s = min(scale * max(unsplit beta), cap), where scale = 1
-// is throughput roulette and scale = k_d the efficiency-optimized one (host/estimators/efficiency_roulette.h);
-// a survivor's throughput is divided by s. The shade stage and the analytic furnace probe share this.
-VKMC_FN float rouletteSurvival(float unsplitThroughput, float scale, float cap) { return min(scale * unsplitThroughput, cap); }
 
 VKMC_FN float maxComponent(vec3 v) { return max(v.x, max(v.y, v.z)); }
 VKMC_FN float luminance(vec3 c) { return dot(c, vec3(0.2126f, 0.7152f, 0.0722f)); }

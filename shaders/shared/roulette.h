@@ -1,0 +1,55 @@
+// Russian roulette and splitting as pure functions, shared by the path kernels (shading.glsl, camera.glsl), the
+// analytic furnace probe and the host's tests. A survivor's value is divided by its survival probability, so
+// every rule here is unbiased.
+#ifndef VKMC_ROULETTE_H
+#define VKMC_ROULETTE_H
+#include "glsl_cpp.h"
+VKMC_BEGIN_NAMESPACE
+
+// Throughput roulette survives with min(max(beta), kRouletteMaxSurvival). The cap below 1 ends every path with
+// probability 1 (no hidden depth cap), but while beta >= cap each survival multiplies beta by a / cap for a
+// surface of albedo a, so the second moment grows like (a^2 / cap)^n: a cap of 0.95 (Mitsuba's) gives infinite
+// variance above albedo 0.975. 0.999 keeps the variance finite up to albedo 0.9995 and still ends paths.
+VKMC_CONST float kRouletteMaxSurvival = 0.999f;
+
+// One roulette decision: whether the path survives, and the probability a survivor's throughput is divided by.
+struct RouletteStep {
+  bool survives;
+  float survival;
+};
+
+// Fixed roulette with termination probability q. With a constant c it is the lecture's
+// F' = (F - q c) / (1 - q) with probability 1 - q, else c (unbiased for any c): a terminated path gathers
+// c * throughput, a survivor gives up fixedRouletteCompensation(q) * c * throughput. Shadow and camera rays use c = 0.
+VKMC_FN RouletteStep fixedRoulette(float q, float r) {
+  RouletteStep s;
+  s.survives = !(r < q);
+  s.survival = 1.0f - q;
+  return s;
+}
+VKMC_FN float fixedRouletteCompensation(float q) { return q / (1.0f - q); }
+
+// Throughput roulette (scale 1) or the efficiency-optimized one (scale k_d, host/estimators/efficiency_roulette.h):
+// survival min(scale * max(unsplit beta), cap), through splitCount so that a factor above 1 would split.
+VKMC_FN float rouletteSurvival(float unsplitThroughput, float scale, float cap) { return min(scale * unsplitThroughput, cap); }
+
+// Splitting and Russian roulette as one mechanism (as in EARS): a factor q yields floor(q + u) children,
+// each weighted 1 / q, so the expected total weight is one. q < 1 is roulette, q > 1 splitting.
+VKMC_FN uint splitCount(float q, float u) { return uint(floor(q + u)); }
+
+VKMC_FN RouletteStep throughputRoulette(float unsplitThroughput, float scale, float r) {
+  RouletteStep s;
+  s.survival = rouletteSurvival(unsplitThroughput, scale, kRouletteMaxSurvival);
+  s.survives = splitCount(s.survival, r) > 0u;
+  return s;
+}
+
+// Roulette decides at the continuation from vertex `depth` once depth + 1 reaches the first roulette depth.
+VKMC_FN bool rouletteApplies(uint depth, uint firstRouletteDepth) { return depth + 1u >= firstRouletteDepth; }
+
+// The splitting factor at a vertex: `factor` (light samples M, or BSDF continuations K) below splitDepth, else 1.
+VKMC_FN uint splitFactorAt(uint depth, uint splitDepth, uint factor) { return depth < splitDepth ? factor : 1u; }
+VKMC_FN float splitFactorAt(uint depth, uint splitDepth, float factor) { return (factor > 1.0f && depth < splitDepth) ? factor : 1.0f; }
+
+VKMC_END_NAMESPACE
+#endif
