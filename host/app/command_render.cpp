@@ -56,12 +56,18 @@ void applyEstimatorFlag(EstimatorConfig& e, const EstimatorParam& p, const std::
   }
 }
 
-// The estimator file, then the flags over it.
+// The estimator file, then the flags over it. A file's name that flags changed says so ("name + rr_q=0.3"), so
+// the report does not echo the file's name for a configuration that is not the file's.
 EstimatorConfig estimatorFrom(const RenderArgs& a, const CLI::App& cmd) {
   EstimatorConfig e;
   if (!a.estimatorFile.empty()) e = loadEstimatorFile(a.estimatorFile);
-  for (const EstimatorParam& p : estimatorParams())
-    if (cmd.count(p.flag())) applyEstimatorFlag(e, p, a.estimatorValues.at(p.key));
+  std::string overrides;
+  for (const EstimatorParam& p : estimatorParams()) {
+    if (!cmd.count(p.flag())) continue;
+    applyEstimatorFlag(e, p, a.estimatorValues.at(p.key));
+    overrides += (overrides.empty() ? "" : ", ") + std::string(p.key) + "=" + p.text(p.get(e));
+  }
+  if (!e.name.empty() && !overrides.empty()) e.name += " + " + overrides;
   return e;
 }
 
