@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "estimators/estimator_params.h"
 #include "io/exr.h"
 #include "cli_run.h"
 #include "test_scenes.h"
@@ -61,6 +62,31 @@ TEST(Cli, DepthCapIsReportedAsBiased) {
   auto j = nlohmann::json::parse(slurp(report));
   EXPECT_FALSE(j["estimator"]["unbiased"]);
   EXPECT_NE(std::string(j["estimator"]["bias"]).find("truncation"), std::string::npos);
+}
+
+TEST(Cli, FlagsOverridingAnEstimatorFileAreNamedInTheEcho) {
+  fs::path file = workDir() / "named_estimator.json", report = workDir() / "named.json";
+  std::ofstream(file) << R"({"name": "fixed q", "rr": "fixed", "rr_q": 0.5})";
+  std::string common = "render " + cornell() + " --width 8 --height 8 --spp 1 -q -o " + (workDir() / "named.exr").string() +
+                       " --report " + report.string() + " --estimator " + file.string();
+  RunResult plain = runVkmc(common);
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_EQ(nlohmann::json::parse(slurp(report))["estimator"]["name"], "fixed q");
+  RunResult overridden = runVkmc(common + " --rr-q 0.25 --nee off");
+  ASSERT_EQ(overridden.code, 0) << overridden.err;
+  auto e = nlohmann::json::parse(slurp(report))["estimator"];
+  EXPECT_EQ(e["name"], "fixed q + rr_q=0.25, nee=off");
+  EXPECT_EQ(e["rr_q"], 0.25);
+  EXPECT_EQ(e["rr"], "fixed");
+}
+
+TEST(Cli, RenderHelpListsEveryEstimatorFlagWithItsValuesAndDefault) {
+  RunResult r = runVkmc("render --help");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const vkmc::EstimatorParam& p : vkmc::estimatorParams()) {
+    EXPECT_NE(r.out.find(p.flag() + " "), std::string::npos) << p.flag();
+    EXPECT_NE(r.out.find(p.helpText()), std::string::npos) << p.helpText();
+  }
 }
 
 TEST(Cli, BadInputFailsCleanlyAndWritesNothing) {

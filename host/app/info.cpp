@@ -6,6 +6,7 @@
 
 #include "../shaders/shared/layout.h"
 #include "bvh/bvh.h"
+#include "estimators/estimator_params.h"
 #include "render/gpu_scene.h"
 #include "render/path_renderer.h"
 #include "scene/camera_rig.h"
@@ -14,29 +15,24 @@
 
 namespace vkmc {
 namespace {
+// Estimator constants are named by their key; the rest are the scene's and the renderer's own.
 const char* specName(uint32_t id) {
   switch (id) {
     case SPEC_WORKGROUP_SIZE: return "workgroup_size";
-    case SPEC_MAX_DEPTH: return "max_depth";
-    case SPEC_RR_DEPTH: return "rr_depth";
     case SPEC_HAS_LIGHTS: return "has_lights";
     case SPEC_HAS_GLOSSY: return "has_glossy";
-    case SPEC_NEE: return "nee";
-    case SPEC_MIS: return "mis";
-    case SPEC_BSDF_SAMPLING: return "bsdf_sampling";
-    case SPEC_LIGHT_SAMPLING: return "light_sampling";
-    case SPEC_RR_MODE: return "rr_mode";
-    case SPEC_RR_Q: return "rr_q";
-    case SPEC_RR_C: return "rr_c";
-    case SPEC_LIGHT_SAMPLES: return "light_samples";
-    case SPEC_SPLIT_DEPTH: return "split_depth";
-    case SPEC_SHADOW_RR_THRESHOLD: return "shadow_rr";
-    case SPEC_SHADOW_RR_Q: return "shadow_rr_q";
-    case SPEC_CAMERA_RR_Q: return "camera_rr";
-    case SPEC_BSDF_SAMPLES: return "bsdf_samples";
+    case SPEC_RR_MODE: return "rr_mode";  // the key rr, named as info has always shown it
     case SPEC_RECORD_DEPTH_STATS: return "record_depth_stats";
-    default: return "?";
   }
+  for (const EstimatorParam& p : estimatorParams())
+    if (p.specId == int(id)) return p.key;
+  return "?";
+}
+
+bool isFloatSpec(uint32_t id) {
+  for (const EstimatorParam& p : estimatorParams())
+    if (p.specId == int(id)) return p.kind == ParamKind::Real;
+  return false;
 }
 }  // namespace
 
@@ -73,10 +69,8 @@ int runInfo(const RenderOptions& options) {
   std::printf("spec consts  ");
   int n = 0;
   for (const vk::SpecConstant& s : plan.specs) {
-    bool isFloat = s.id == SPEC_RR_Q || s.id == SPEC_RR_C || s.id == SPEC_SHADOW_RR_THRESHOLD || s.id == SPEC_SHADOW_RR_Q ||
-                   s.id == SPEC_CAMERA_RR_Q || s.id == SPEC_BSDF_SAMPLES;
     const char* sep = n == 0 ? "" : (n % 5 == 0 ? "\n              " : ", ");
-    if (isFloat) std::printf("%s%s=%g", sep, specName(s.id), std::bit_cast<float>(s.value));
+    if (isFloatSpec(s.id)) std::printf("%s%s=%g", sep, specName(s.id), std::bit_cast<float>(s.value));
     else std::printf("%s%s=%u", sep, specName(s.id), s.value);
     ++n;
   }

@@ -20,7 +20,6 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 constexpr uint32_t kMaxImageSide = 16384;
 constexpr uint32_t kMaxSpp = 1u << 24;
-constexpr uint32_t kMaxDepthLimit = 100000;
 }  // namespace
 
 void validateOptions(const RenderOptions& o) {
@@ -28,7 +27,6 @@ void validateOptions(const RenderOptions& o) {
   for (auto side : {o.width, o.height})
     if (side && (*side == 0 || *side > kMaxImageSide))
       throw Error("--width and --height must be between 1 and " + std::to_string(kMaxImageSide));
-  if (o.estimator.maxDepth > kMaxDepthLimit) throw Error("--max-depth must be at most " + std::to_string(kMaxDepthLimit) + " (0 = no cap)");
   o.estimator.validate();
   if (o.lookFrom.has_value() != o.lookAt.has_value()) throw Error("--look-from and --look-at go together");
   for (const auto& p : {o.lookFrom, o.lookAt})
@@ -40,18 +38,9 @@ void validateOptions(const RenderOptions& o) {
   if (!(o.timeBudget >= 0.0) || o.timeBudget > 1e6) throw Error("--time-budget must be between 0 and 1e6 seconds");
 }
 
-RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options) {
-  validateOptions(options);
-  auto t = Clock::now();
-  Scene scene = loadGltf(options.scenePath, deviceLoadLimits(ctx));
-  double load = since(t);
-  RenderOutcome out = runRender(ctx, options, std::move(scene));
-  out.setup.load = load;
-  return out;
-}
-
-RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene scene) {
-  validateOptions(options);
+namespace {
+// The render itself, on options already validated by whichever runRender was called.
+RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene scene) {
   std::optional<ExrImage> reference;
   if (!options.referencePath.empty()) reference = readExr(options.referencePath);
   RenderOutcome out;
@@ -179,6 +168,22 @@ RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene sc
   out.roulette = roulette;
   if (reference) out.error = compareImages(filmToImage(out.film), *reference);
   return out;
+}
+}  // namespace
+
+RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options) {
+  validateOptions(options);
+  auto t = Clock::now();
+  Scene scene = loadGltf(options.scenePath, deviceLoadLimits(ctx));
+  double load = since(t);
+  RenderOutcome out = renderScene(ctx, options, std::move(scene));
+  out.setup.load = load;
+  return out;
+}
+
+RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene scene) {
+  validateOptions(options);
+  return renderScene(ctx, options, std::move(scene));
 }
 
 nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {

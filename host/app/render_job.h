@@ -58,7 +58,8 @@ struct RenderOutcome {
   glm::vec3 background{0.0f};  // what escaped rays saw
 };
 
-// Throws vkmc::Error on bad options or input, before anything is written.
+// Throws vkmc::Error on bad options or input, before anything is written. Both runRender call it first, so
+// their callers need not.
 void validateOptions(const RenderOptions& options);
 RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options);
 // The same with a scene already in memory (options.scenePath only names it).
