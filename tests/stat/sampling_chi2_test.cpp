@@ -8,7 +8,7 @@
 #include "../shaders/shared/light_sampling.h"
 #include "../shaders/shared/rng.h"
 #include "../shaders/shared/sampling.h"
-#include "chi2.h"
+#include "support/chi2.h"
 #include "render/alias_table.h"
 
 using namespace vkmc;

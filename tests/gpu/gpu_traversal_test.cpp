@@ -4,7 +4,7 @@
 #include <random>
 
 #include "../shaders/shared/geometry.h"
-#include "adversarial_geometry.h"
+#include "support/adversarial_geometry.h"
 #include "bvh/bvh.h"
 #include "render/gpu_scene.h"
 #include "render/ray_tracer.h"
@@ -75,7 +75,7 @@ TEST(GpuTraversal, ClosestAndAnyHitAgreeWithBruteForce) {
 }
 
 // llvmpipe has a hang guard that ends shader loops after 65535 iterations (LP_MAX_TGSI_LOOP_ITERATIONS) without
-// an error; the analytic furnace probe lost paths to it (tests/stiff_furnace_test.cpp). A BVH walk flags a walk
+// an error; the analytic furnace probe lost paths to it (tests/stiff/stiff_furnace_test.cpp). A BVH walk flags a walk
 // that did not end on its own (t = NaN here; counted and excluded in renders). A ray through the common box of
 // 400k coincident triangles, one per leaf, missing them all, visits every one of the 400k leaves: on llvmpipe
 // (Mesa 22.3) that walk completes, and must come back as a miss, not as a cut or a false hit. Every child box

@@ -6,8 +6,8 @@
 
 #include "analysis/error_metrics.h"
 #include "app/render_job.h"
-#include "render_helpers.h"
-#include "stability_row.h"
+#include "support/render_helpers.h"
+#include "support/stability_row.h"
 #include "scene/gltf_loader.h"
 
 using namespace vkmc;

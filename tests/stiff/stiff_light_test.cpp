@@ -3,8 +3,8 @@
 // in one image (each directly seen emitter keeps its value to float precision).
 #include <gtest/gtest.h>
 
-#include "render_helpers.h"
-#include "stability_row.h"
+#include "support/render_helpers.h"
+#include "support/stability_row.h"
 
 using namespace vkmc;
 using namespace vkmc::test;

@@ -4,7 +4,7 @@
 
 #include "../shaders/shared/bsdf_gltf.h"
 #include "../shaders/shared/rng.h"
-#include "stability_row.h"
+#include "support/stability_row.h"
 
 using namespace vkmc::gpu;
 

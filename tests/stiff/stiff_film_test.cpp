@@ -5,7 +5,7 @@
 
 #include "../shaders/shared/rng.h"
 #include "render/film.h"
-#include "stability_row.h"
+#include "support/stability_row.h"
 
 using namespace vkmc;
 

@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "io/exr.h"
-#include "cli_run.h"
-#include "test_scenes.h"
+#include "support/cli_run.h"
+#include "support/test_scenes.h"
 
 namespace fs = std::filesystem;
 using vkmc::test::cornell;

@@ -9,7 +9,7 @@
 #include "../shaders/shared/light_sampling.h"
 #include "../shaders/shared/rng.h"
 #include "spirv/sampling_probe_spv.h"
-#include "render_helpers.h"
+#include "support/render_helpers.h"
 #include "vk/kernel.h"
 
 using namespace vkmc;

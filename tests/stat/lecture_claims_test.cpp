@@ -2,7 +2,7 @@
 // comparisons belong to benchmarks, not tests.
 #include <gtest/gtest.h>
 
-#include "render_helpers.h"
+#include "support/render_helpers.h"
 
 using namespace vkmc;
 using namespace vkmc::test;

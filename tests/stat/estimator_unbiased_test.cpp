@@ -4,7 +4,7 @@
 // measured variances. Fixed seeds make them stable; the two renders use independent seeds.
 #include <gtest/gtest.h>
 
-#include "render_helpers.h"
+#include "support/render_helpers.h"
 
 using namespace vkmc;
 using namespace vkmc::test;

@@ -9,7 +9,7 @@
 #include "../shaders/shared/geometry.h"
 #include "../shaders/shared/rng.h"
 #include "../shaders/shared/sampling.h"
-#include "adversarial_geometry.h"
+#include "support/adversarial_geometry.h"
 #include "bvh/bvh.h"
 #include "scene/gltf_loader.h"
 

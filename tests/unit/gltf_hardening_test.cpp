@@ -10,7 +10,7 @@
 
 #include "error.h"
 #include "scene/gltf_loader.h"
-#include "test_scenes.h"
+#include "support/test_scenes.h"
 
 using namespace vkmc;
 using vkmc::test::GltfSpec;

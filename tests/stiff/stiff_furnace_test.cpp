@@ -12,9 +12,9 @@
 #include <cstring>
 
 #include "../shaders/shared/layout.h"
-#include "render_helpers.h"
+#include "support/render_helpers.h"
 #include "spirv/roulette_furnace_spv.h"
-#include "stability_row.h"
+#include "support/stability_row.h"
 #include "vk/kernel.h"
 
 using namespace vkmc;

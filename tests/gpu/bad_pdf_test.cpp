@@ -7,7 +7,7 @@
 
 #include "../shaders/shared/layout.h"
 #include "spirv/pdf_demo_spv.h"
-#include "render_helpers.h"
+#include "support/render_helpers.h"
 #include "vk/kernel.h"
 
 using namespace vkmc;

@@ -3,10 +3,10 @@
 
 #include <fstream>
 
-#include "render_helpers.h"
+#include "support/render_helpers.h"
 #include "scene/gltf_loader.h"
-#include "test_scenes.h"
-#include "stability_row.h"
+#include "support/test_scenes.h"
+#include "support/stability_row.h"
 
 using namespace vkmc;
 using namespace vkmc::test;

@@ -9,7 +9,7 @@
 #include <chrono>
 #include <thread>
 
-#include "cli_run.h"
+#include "support/cli_run.h"
 #include "error.h"
 #include "io/exr.h"
 

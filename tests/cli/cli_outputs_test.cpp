@@ -15,8 +15,8 @@
 
 #include <thread>
 
-#include "adversarial_geometry.h"
-#include "cli_run.h"
+#include "support/adversarial_geometry.h"
+#include "support/cli_run.h"
 
 namespace fs = std::filesystem;
 using namespace vkmc::test;

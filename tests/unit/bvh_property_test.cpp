@@ -5,7 +5,7 @@
 
 #include <functional>
 
-#include "adversarial_geometry.h"
+#include "support/adversarial_geometry.h"
 
 using namespace vkmc;
 using namespace vkmc::test;
