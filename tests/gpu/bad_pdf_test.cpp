@@ -8,6 +8,7 @@
 #include "../shaders/shared/layout.h"
 #include "spirv/pdf_demo_spv.h"
 #include "support/render_helpers.h"
+#include "support/z_test.h"
 #include "vk/kernel.h"
 
 using namespace vkmc;
@@ -32,8 +33,8 @@ TEST(BadPdf, PdfShapedUnlikeTheIntegrandRaisesVariance) {
   for (const glm::vec4& s : sums) bad += s.x, badSq += s.y, uni += s.z, uniSq += s.w;
   double meanBad = bad / n, meanUni = uni / n;
   double varBad = badSq / n - meanBad * meanBad, varUni = uniSq / n - meanUni * meanUni;
-  EXPECT_NEAR(meanUni, 1.0, 5.0 * std::sqrt(varUni / n));
-  EXPECT_NEAR(meanBad, 1.0, 5.0 * std::sqrt(varBad / n));
+  EXPECT_TRUE(test::withinSigmas(test::zTest(meanUni, 1.0, std::sqrt(varUni / n)), 5.0)) << "uniform sampling";
+  EXPECT_TRUE(test::withinSigmas(test::zTest(meanBad, 1.0, std::sqrt(varBad / n)), 5.0)) << "the bad pdf";
   EXPECT_NEAR(varUni, 0.0099, 0.0099 * 0.05);
   EXPECT_NEAR(varBad, 99.99, 99.99 * 0.1);
   EXPECT_GT(varBad, 1000.0 * varUni);

@@ -4,8 +4,11 @@
 #include <gtest/gtest.h>
 
 #include "app/render_job.h"
+#include "support/z_test.h"
 
 using namespace vkmc;
+using vkmc::test::withinSigmas;
+using vkmc::test::zTest;
 
 namespace {
 RenderOptions furnaceOptions(uint32_t spp) {
@@ -35,7 +38,7 @@ TEST(Furnace, EveryPixelIsTwoWithinFiveSigmaWithoutDepthCap) {
     for (int c = 0; c < 3; ++c) {
       double sigma = std::sqrt(f.varianceOfMean(p, c));
       ASSERT_GT(sigma, 0.0) << "a furnace pixel with zero variance means the estimator is not random";
-      double z = std::abs(f.mean(p, c) - 2.0) / sigma;
+      double z = std::abs(zTest(f.mean(p, c), 2.0, sigma).z());
       worstZ = std::max(worstZ, z);
       outside += z > 5.0;
     }
@@ -43,7 +46,7 @@ TEST(Furnace, EveryPixelIsTwoWithinFiveSigmaWithoutDepthCap) {
   EXPECT_EQ(outside, 0) << "worst |z| = " << worstZ;
   glm::dvec3 mean = f.imageMean();
   glm::dvec3 var = f.imageMeanVarianceOfMean();
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], 2.0, 5.0 * std::sqrt(var[c] / f.pixels()));
+  for (int c = 0; c < 3; ++c) EXPECT_TRUE(withinSigmas(zTest(mean[c], 2.0, std::sqrt(var[c] / f.pixels())), 5.0)) << "channel " << c;
   EXPECT_GT(r.stats.maxBounces, 10u) << "without a cap some paths must run long";
 }
 
@@ -54,6 +57,7 @@ TEST(Furnace, DepthCapTruncatesToTheGeometricSeries) {
   RenderOutcome r = runRender(context(), o);
   glm::dvec3 mean = r.film.imageMean();
   glm::dvec3 var = r.film.imageMeanVarianceOfMean();
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], 1.75, 5.0 * std::sqrt(var[c] / r.film.pixels()) + 1e-6);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_TRUE(withinSigmas(zTest(mean[c], 1.75, std::sqrt(var[c] / r.film.pixels()), 1e-6), 5.0)) << "channel " << c;
   EXPECT_LE(r.stats.maxBounces, 3u);
 }

@@ -77,10 +77,10 @@ ProbeResult runFurnaceProbe(float albedo, uint32_t mode, const std::array<float,
       if (paths > 200'000'000) break;  // the test below reports the interval it could not resolve
     }
   }
-  double n = double(r.paths);
-  r.mean = sum / n;
-  r.sigma = std::sqrt(std::max(0.0, sumSq / n - r.mean * r.mean) / n);
-  r.meanVertices = vertices / n;
+  SampleMean estimate = sampleMean(sum, sumSq, double(r.paths));
+  r.mean = estimate.mean;
+  r.sigma = estimate.sigma;
+  r.meanVertices = vertices / double(r.paths);
   return r;
 }
 
@@ -108,11 +108,11 @@ TEST_P(HighAlbedoFurnace, RouletteIsUnbiasedToATenthOfAPercent) {
     e.maxDepth = 0;
     RenderOutcome r = renderWith(c.scene, e, 8, 8, 64);
     RegionStats s = whole(r.film);
-    double sigma = std::sqrt(s.variance.x);
+    ZTest t = zTest(s.mean.x, expected, std::sqrt(s.variance.x));
     EXPECT_EQ(r.film.totalNonfinite(), 0u);
-    EXPECT_NEAR(s.mean.x, expected, 5.0 * sigma) << "full render, " << modeName;
-    stabilityRow("1", name + modeName + " roulette, full render (4096 paths)", std::to_string(expected), s.mean.x, sigma,
-                 std::abs(s.mean.x - expected) < 5.0 * sigma);
+    EXPECT_TRUE(withinSigmas(t, 5.0)) << "full render, " << modeName;
+    stabilityRow("1", name + modeName + " roulette, full render (4096 paths)", std::to_string(expected), s.mean.x, t.sigma,
+                 t.within(5.0));
     if (mode == RouletteMode::Efficiency) {
       ASSERT_TRUE(r.roulette.has_value());
       scales = r.roulette->scale;
@@ -124,7 +124,8 @@ TEST_P(HighAlbedoFurnace, RouletteIsUnbiasedToATenthOfAPercent) {
     ProbeResult p = runFurnaceProbe(c.albedo, mode, scales, 1e-3);
     EXPECT_EQ(p.cutLanes, 0u) << "llvmpipe's loop limiter ended lanes early";
     EXPECT_LT(5.0 * p.sigma, 1e-3 * expected) << modeName << ": the interval must resolve 0.1%";
-    EXPECT_NEAR(p.mean, expected, 5.0 * p.sigma) << modeName << " roulette over " << p.paths << " paths";
+    ZTest t = zTest(p.mean, expected, p.sigma);
+    EXPECT_TRUE(withinSigmas(t, 5.0)) << modeName << " roulette over " << p.paths << " paths";
     // Throughput roulette survives with probability ~a: paths of 1 / (1 - a) vertices on average, as in theory.
     if (mode == gpu::kRouletteThroughput) {
       EXPECT_NEAR(p.meanVertices, expected, 0.01 * expected);
@@ -132,8 +133,7 @@ TEST_P(HighAlbedoFurnace, RouletteIsUnbiasedToATenthOfAPercent) {
     char what[160];
     std::snprintf(what, sizeof(what), "%s%s roulette, no cap, %.1fM paths (analytic furnace probe)", name.c_str(), modeName,
                   double(p.paths) * 1e-6);
-    stabilityRow("1", what, std::to_string(expected), p.mean, p.sigma,
-                 std::abs(p.mean - expected) < 5.0 * p.sigma && 5.0 * p.sigma < 1e-3 * expected);
+    stabilityRow("1", what, std::to_string(expected), p.mean, p.sigma, t.within(5.0) && 5.0 * p.sigma < 1e-3 * expected);
     std::printf("%s%s roulette: mean %.6f (expected %.6f), sigma %.3g (%.4f%%), %.1f vertices per path\n", name.c_str(),
                 modeName, p.mean, expected, p.sigma, 100.0 * p.sigma / expected, p.meanVertices);
   }

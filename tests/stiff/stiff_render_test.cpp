@@ -34,17 +34,17 @@ TEST(StiffRender, TinyIntenseLightMatchesTheAnalyticRadiance) {
   for (uint32_t j = 0; j < n; ++j)
     for (uint32_t i = 0; i < n; ++i) expectedMean += tinyLightPixel(i, j, n) / (n * n);
   RegionStats s = whole(r.film);
-  double z = (s.mean.x - expectedMean) / std::sqrt(s.variance.x);
-  EXPECT_LT(std::abs(z), 3.0) << "image mean " << s.mean.x << " expected " << expectedMean;
-  stabilityRow("2", "tiny intense light (1 mm^2, Le 1e6): image mean", std::to_string(expectedMean), s.mean.x, std::sqrt(s.variance.x),
-               std::abs(z) < 3.0);
+  ZTest image = zTest(s.mean.x, expectedMean, std::sqrt(s.variance.x));
+  EXPECT_TRUE(belowSigmas(image, 3.0)) << "image mean";
+  stabilityRow("2", "tiny intense light (1 mm^2, Le 1e6): image mean", std::to_string(expectedMean), s.mean.x, image.sigma,
+               image.below(3.0));
   for (auto [i, j] : {std::pair{8u, 8u}, std::pair{3u, 12u}, std::pair{0u, 0u}}) {
     size_t p = size_t(j) * n + i;
-    double expected = tinyLightPixel(i, j, n), sigma = std::sqrt(r.film.varianceOfMean(p, 0));
-    double zp = (r.film.mean(p, 0) - expected) / sigma;
-    EXPECT_LT(std::abs(zp), 3.0) << "pixel " << i << "," << j;
+    double expected = tinyLightPixel(i, j, n);
+    ZTest pixel = zTest(r.film.mean(p, 0), expected, std::sqrt(r.film.varianceOfMean(p, 0)));
+    EXPECT_TRUE(belowSigmas(pixel, 3.0)) << "pixel " << i << "," << j;
     stabilityRow("2", "tiny intense light: pixel (" + std::to_string(i) + "," + std::to_string(j) + ")", std::to_string(expected),
-                 r.film.mean(p, 0), sigma, std::abs(zp) < 3.0);
+                 r.film.mean(p, 0), pixel.sigma, pixel.below(3.0));
   }
   // BSDF sampling alone finds a 1e-6 sr light about once in ten million samples: the estimate stays finite and
   // non-negative (nearly black) and its sampled variance is no evidence of accuracy, which the report shows.
@@ -77,7 +77,7 @@ TEST(StiffRender, RouletteAndSplittingAtTheEdges) {
   RenderOutcome half = renderWith("furnace.gltf", oneDecision(0.5f), 16, 16, 256);
   RenderOutcome a = renderWith("furnace.gltf", oneDecision(0.999f), 16, 16, 256);
   RegionStats sa = whole(a.film);
-  EXPECT_LT(maxZ(sa, glm::dvec3(1.5)), 5.0) << sa.mean.x;
+  EXPECT_TRUE(regionMatches(sa, glm::dvec3(1.5), 5.0));
   stabilityRow("9", "fixed roulette q = 0.999, one decision (furnace, cap 1)", "1.5", sa.mean.x, std::sqrt(sa.variance.x),
                maxZ(sa, glm::dvec3(1.5)) < 5.0);
   double v0 = whole(none.film).variance.x, growthHalf = whole(half.film).variance.x - v0, growth = sa.variance.x - v0;
@@ -95,7 +95,7 @@ TEST(StiffRender, RouletteAndSplittingAtTheEdges) {
   RenderOutcome b = renderWith("furnace.gltf", never, 16, 16, 64);
   RegionStats sb = whole(b.film);
   double truncated = 2.0 * (1.0 - std::pow(0.5, 9));
-  EXPECT_LT(maxZ(sb, glm::dvec3(truncated)), 5.0) << sb.mean.x;
+  EXPECT_TRUE(regionMatches(sb, glm::dvec3(truncated), 5.0));
   stabilityRow("9", "fixed roulette q = 0, c = 0.7, depth cap 8", std::to_string(truncated), sb.mean.x, std::sqrt(sb.variance.x),
                maxZ(sb, glm::dvec3(truncated)) < 5.0);
 
@@ -104,7 +104,7 @@ TEST(StiffRender, RouletteAndSplittingAtTheEdges) {
   RenderOutcome c = renderWith("furnace.gltf", split, 16, 16, 64);
   RenderOutcome base = renderWith("furnace.gltf", EstimatorConfig{}, 16, 16, 64);
   RegionStats sc = whole(c.film), sbase = whole(base.film);
-  EXPECT_LT(maxZ(sc, glm::dvec3(2.0)), 5.0) << sc.mean.x;
+  EXPECT_TRUE(regionMatches(sc, glm::dvec3(2.0), 5.0));
   // 64 continuations per camera sample: the variance of what follows the first hit falls about 64-fold, so
   // the per-sample variance must drop well below the unsplit one.
   EXPECT_LT(sc.variance.x, 0.1 * sbase.variance.x);
@@ -159,10 +159,10 @@ TEST(StiffRender, DepthCapTruncationMatchesTheoryOnTheStiffFurnace) {
     RenderOutcome r = renderWith("furnace_stiff.gltf", c, 8, 8, 16);
     RegionStats s = whole(r.film);
     double expected = (1.0 - std::pow(0.99, cap + 1.0)) / (1.0 - 0.99);
-    double sigma = std::sqrt(s.variance.x);
-    EXPECT_NEAR(s.mean.x, expected, 5.0 * sigma + 1e-6 * expected) << "cap " << cap;
-    EXPECT_LT(sigma, 1e-3 * expected) << "the test must resolve 0.1%";
+    ZTest t = zTest(s.mean.x, expected, std::sqrt(s.variance.x), 1e-6 * expected);
+    EXPECT_TRUE(withinSigmas(t, 5.0)) << "cap " << cap;
+    EXPECT_LT(t.sigma, 1e-3 * expected) << "the test must resolve 0.1%";
     stabilityRow("1", "albedo 0.99 furnace, depth cap " + std::to_string(cap) + ", no roulette: truncation theory",
-                 std::to_string(expected), s.mean.x, sigma, std::abs(s.mean.x - expected) < 5.0 * sigma + 1e-6 * expected);
+                 std::to_string(expected), s.mean.x, t.sigma, t.within(5.0));
   }
 }

@@ -1,5 +1,5 @@
 // Rendering helpers for statistical render tests: one shared Vulkan context, region statistics from the
-// film's per-pixel variance of the mean, and two-sample z-tests.
+// film's per-pixel variance of the mean, and their z-tests (z_test.h).
 #pragma once
 #include <glm/glm.hpp>
 
@@ -7,10 +7,12 @@
 
 #include <algorithm>
 #include <initializer_list>
+#include <vector>
 
 #include "../shaders/shared/layout.h"
 #include "app/render_job.h"
 #include "vk/kernel.h"
+#include "z_test.h"
 
 namespace vkmc::test {
 
@@ -76,20 +78,29 @@ inline RegionStats region(const Film& f, uint32_t x0, uint32_t y0, uint32_t x1, 
 
 inline RegionStats whole(const Film& f) { return region(f, 0, 0, f.width, f.height); }
 
-// Largest |z| of the difference of two independent estimates, over the channels.
-inline double maxZ(const RegionStats& a, const RegionStats& b) {
-  double z = 0;
-  for (int c = 0; c < 3; ++c) {
-    double s = std::sqrt(a.variance[c] + b.variance[c]);
-    if (s > 0) z = std::max(z, std::abs(a.mean[c] - b.mean[c]) / s);
-  }
-  return z;
+// The colour channels of two independent region estimates as z-tests (z_test.h).
+inline std::vector<ZTest> channelZTests(const RegionStats& a, const RegionStats& b) {
+  std::vector<ZTest> t;
+  for (int c = 0; c < 3; ++c) t.push_back(zTest2(a.mean[c], a.variance[c], b.mean[c], b.variance[c]));
+  return t;
 }
 
-inline double maxZ(const RegionStats& a, glm::dvec3 exact) {
+inline std::vector<ZTest> channelZTests(const RegionStats& a, glm::dvec3 exact) {
   RegionStats b;
   b.mean = exact;
-  return maxZ(a, b);
+  return channelZTests(a, b);
+}
+
+// Largest |z| of the difference of two independent estimates (or of one against an exact value), over the channels.
+inline double maxZ(const RegionStats& a, const RegionStats& b) { return maxAbsZ(channelZTests(a, b)); }
+inline double maxZ(const RegionStats& a, glm::dvec3 exact) { return maxAbsZ(channelZTests(a, exact)); }
+
+// gtest forms of maxZ(...) < k, whose failure message lists each channel's test.
+inline ::testing::AssertionResult regionsAgree(const RegionStats& a, const RegionStats& b, double k) {
+  return allBelowSigmas(channelZTests(a, b), k);
+}
+inline ::testing::AssertionResult regionMatches(const RegionStats& a, glm::dvec3 exact, double k) {
+  return allBelowSigmas(channelZTests(a, exact), k);
 }
 
 }  // namespace vkmc::test

@@ -4,8 +4,11 @@
 #include "../shaders/shared/layout.h"
 #include "../shaders/shared/rng.h"
 #include "../shaders/shared/sampling.h"
+#include "support/z_test.h"
 
 using namespace vkmc::gpu;
+using vkmc::test::withinSigmas;
+using vkmc::test::zTest;
 
 TEST(Layout, Std430SizesMatchGlsl) {
   EXPECT_EQ(sizeof(PathState), 80u);
@@ -31,9 +34,9 @@ TEST(Rng, UniformAndDecorrelatedAcrossDimensions) {
     sumSq += a * a;
     cross += (a - 0.5) * (b - 0.5);
   }
-  EXPECT_NEAR(sum / n, 0.5, 5 * std::sqrt(1.0 / 12 / n));
-  EXPECT_NEAR(sumSq / n - (sum / n) * (sum / n), 1.0 / 12, 5 * std::sqrt(1.0 / 180 / n));
-  EXPECT_NEAR(cross / n, 0.0, 5 * (1.0 / 12) / std::sqrt(double(n)));
+  EXPECT_TRUE(withinSigmas(zTest(sum / n, 0.5, std::sqrt(1.0 / 12 / n)), 5)) << "mean";
+  EXPECT_TRUE(withinSigmas(zTest(sumSq / n - (sum / n) * (sum / n), 1.0 / 12, std::sqrt(1.0 / 180 / n)), 5)) << "variance";
+  EXPECT_TRUE(withinSigmas(zTest(cross / n, 0.0, (1.0 / 12) / std::sqrt(double(n))), 5)) << "covariance of neighbours";
 }
 
 TEST(Sampling, CosineHemisphereMatchesItsPdfMoments) {
@@ -48,7 +51,7 @@ TEST(Sampling, CosineHemisphereMatchesItsPdfMoments) {
     sum += w.z;
   }
   double sigma = std::sqrt((0.5 - 4.0 / 9.0) / n);  // Var[cos] = E[cos^2] - E[cos]^2 = 1/2 - 4/9
-  EXPECT_NEAR(sum / n, 2.0 / 3.0, 5 * sigma);
+  EXPECT_TRUE(withinSigmas(zTest(sum / n, 2.0 / 3.0, sigma), 5));
 }
 
 TEST(Sampling, UniformTriangleBarycentricsHaveUniformMeans) {
@@ -62,7 +65,7 @@ TEST(Sampling, UniformTriangleBarycentricsHaveUniformMeans) {
     sum += dvec3(b);
   }
   double sigma = std::sqrt(1.0 / 18.0 / n);  // Var of a barycentric coordinate under the uniform law: 1/18
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(sum[c] / n, 1.0 / 3.0, 5 * sigma);
+  for (int c = 0; c < 3; ++c) EXPECT_TRUE(withinSigmas(zTest(sum[c] / n, 1.0 / 3.0, sigma), 5)) << "coordinate " << c;
 }
 
 TEST(Sampling, BasisIsOrthonormal) {
