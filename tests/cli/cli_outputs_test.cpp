@@ -17,6 +17,7 @@
 
 #include "support/adversarial_geometry.h"
 #include "support/cli_run.h"
+#include "support/param_name.h"
 
 namespace fs = std::filesystem;
 using namespace vkmc::test;
@@ -42,27 +43,68 @@ std::string emissiveSoup(const Soup& soup, const std::string& name, const std::s
 
 double reportMean(const fs::path& report) { return nlohmann::json::parse(slurp(report))["mean"][0].get<double>(); }
 
+// Output paths that collide with each other or with the input (scene), x a path no run may create.
+struct Collision {
+  const char* name;
+  std::string (*args)(const fs::path& scene, const fs::path& x);
+  const char* expect;
+};
+void PrintTo(const Collision& c, std::ostream* os) { *os << c.name; }
+class CollidingPaths : public ::testing::TestWithParam<Collision> {};
+
+// A scene whose camera has an aspect ratio of 5.96e-8, written once.
+const std::string& thinCamera() {
+  static const std::string camera = [] {
+    std::string camera = writeGltf(dir(), "thin_camera", [] {
+      GltfSpec s = quadSpec();
+      s.nodeExtra = "\"camera\":0";
+      return s;
+    }());
+    std::string json = slurp(camera);
+    json.replace(json.find("\"scene\":0,"), 10,
+                 "\"scene\":0,\"cameras\":[{\"type\":\"perspective\",\"perspective\":{\"yfov\":0.8,\"znear\":0.1,\"aspectRatio\":5.96e-8}}],");
+    std::ofstream(camera) << json;
+    return camera;
+  }();
+  return camera;
+}
+
+struct Absurd {
+  const char* name;
+  std::string (*args)();
+  const char* expect;
+};
+void PrintTo(const Absurd& c, std::ostream* os) { *os << c.name; }
+class AbsurdNumbers : public ::testing::TestWithParam<Absurd> {};
+
 }  // namespace
 
-TEST(CliOutputs, PathsCollidingWithEachOtherOrAnInputAreRefused) {
+TEST_P(CollidingPaths, AreRefused) {
   fs::path scene = dir() / "scene.gltf";
   fs::copy_file(cornell(), scene, fs::copy_options::overwrite_existing);
   std::string before = slurp(scene);
   fs::path x = dir() / "x";
-  struct Case {
-    std::string args, expect;
-  };
-  for (const Case& c : {Case{"-o " + scene.string(), "is an input"},
-                        Case{"-o " + x.string() + " --png " + x.string(), "name the same file"},
-                        Case{"-o " + x.string() + ".exr --report " + x.string() + ".exr", "name the same file"},
-                        Case{"-o " + (dir() / "." / "x.exr").string() + " --png " + (dir() / "x.exr").string(), "name the same file"}}) {
-    RunResult r = runVkmc(render(scene.string()) + " " + c.args);
-    EXPECT_EQ(r.code, 1) << c.args;
-    EXPECT_NE(r.err.find(c.expect), std::string::npos) << c.args << ": " << r.err;
-  }
+  const std::string args = GetParam().args(scene, x);
+  RunResult r = runVkmc(render(scene.string()) + " " + args);
+  EXPECT_EQ(r.code, 1) << args;
+  EXPECT_NE(r.err.find(GetParam().expect), std::string::npos) << args << ": " << r.err;
   EXPECT_EQ(slurp(scene), before);
   EXPECT_FALSE(fs::exists(x));
 }
+
+INSTANTIATE_TEST_SUITE_P(
+    CliOutputs, CollidingPaths,
+    ::testing::Values(
+        Collision{"output_is_the_input", [](const fs::path& scene, const fs::path&) { return "-o " + scene.string(); }, "is an input"},
+        Collision{"exr_and_png", [](const fs::path&, const fs::path& x) { return "-o " + x.string() + " --png " + x.string(); },
+                  "name the same file"},
+        Collision{"exr_and_report",
+                  [](const fs::path&, const fs::path& x) { return "-o " + x.string() + ".exr --report " + x.string() + ".exr"; },
+                  "name the same file"},
+        Collision{"exr_and_png_through_a_dot",
+                  [](const fs::path&, const fs::path&) { return "-o " + (dir() / "." / "x.exr").string() + " --png " + (dir() / "x.exr").string(); },
+                  "name the same file"}),
+    [](const auto& info) { return std::string(info.param.name); });
 
 TEST(CliOutputs, ASymlinkKeepsPointingAtItsReplacedTarget) {
   fs::path target = dir() / "target.json", link = dir() / "link.json";
@@ -159,38 +201,39 @@ TEST(CliOutputs, ALongValidOutputNameIsWritten) {
   EXPECT_TRUE(fs::is_regular_file(exr));
 }
 
-TEST(CliOutputs, AbsurdNumbersAreRefusedWithOneLine) {
-  std::string camera = writeGltf(dir(), "thin_camera", [] {
-    GltfSpec s = quadSpec();
-    s.nodeExtra = "\"camera\":0";
-    return s;
-  }());
-  std::string json = slurp(camera);
-  json.replace(json.find("\"scene\":0,"), 10,
-               "\"scene\":0,\"cameras\":[{\"type\":\"perspective\",\"perspective\":{\"yfov\":0.8,\"znear\":0.1,\"aspectRatio\":5.96e-8}}],");
-  std::ofstream(camera) << json;
-  struct Case {
-    std::string args, expect;
-  };
-  for (const Case& c : {Case{render(cornell()) + " --exposure nan", "--exposure"},
-                        Case{render(cornell()) + " --look-from 1e20,0,0 --look-at 0,0,0", "within +-1e11"},
-                        Case{"render " + camera + " --spp 1 -q", "aspect ratio"}}) {
-    RunResult r = runVkmc(c.args + " -o " + (dir() / "absurd.exr").string());
-    EXPECT_EQ(r.code, 1) << c.args;
-    EXPECT_NE(r.err.find(c.expect), std::string::npos) << c.args << ": " << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  }
+TEST_P(AbsurdNumbers, AreRefusedWithOneLine) {
+  const std::string args = GetParam().args();
+  RunResult r = runVkmc(args + " -o " + (dir() / "absurd.exr").string());
+  EXPECT_EQ(r.code, 1) << args;
+  EXPECT_NE(r.err.find(GetParam().expect), std::string::npos) << args << ": " << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_FALSE(fs::exists(dir() / "absurd.exr"));
 }
 
-TEST(CliOutputs, SpheresAtTheOriginHugeGroundsAndBrightLightsRender) {
+INSTANTIATE_TEST_SUITE_P(
+    CliOutputs, AbsurdNumbers,
+    ::testing::Values(Absurd{"exposure_nan", [] { return render(cornell()) + " --exposure nan"; }, "--exposure"},
+                      Absurd{"look_from_1e20", [] { return render(cornell()) + " --look-from 1e20,0,0 --look-at 0,0,0"; }, "within +-1e11"},
+                      Absurd{"camera_aspect_ratio_6e_8", [] { return "render " + thinCamera() + " --spp 1 -q"; }, "aspect ratio"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+class SphereAtTheOrigin : public ::testing::TestWithParam<double> {};
+
+TEST_P(SphereAtTheOrigin, Renders) {
+  const double radius = GetParam();
   fs::path report = dir() / "scene.json";
-  for (double radius : {0.5, 1.0, 1024.0}) {  // refused by the BVH quantizer before
-    RunResult r = runVkmc(render(emissiveSoup(uvSphere(radius, 32, 16), "sphere", R"({"emissiveFactor":[1,1,1],"doubleSided":true})")) + " -o " + (dir() / "s.exr").string() +
-                          " --report " + report.string());
-    ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_GT(reportMean(report), 0.1);
-  }
+  RunResult r = runVkmc(render(emissiveSoup(uvSphere(radius, 32, 16), "sphere", R"({"emissiveFactor":[1,1,1],"doubleSided":true})")) + " -o " + (dir() / "s.exr").string() +
+                        " --report " + report.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_GT(reportMean(report), 0.1);
+}
+
+// Radii once refused by the BVH quantizer.
+INSTANTIATE_TEST_SUITE_P(CliOutputs, SphereAtTheOrigin, ::testing::Values(0.5, 1.0, 1024.0),
+                         [](const auto& info) { return paramName("radius " + shortNumber(info.param)); });
+
+TEST(CliOutputs, HugeGroundsAndBrightLightsRender) {
+  fs::path report = dir() / "scene.json";
   // A ground of half-size 3e9 (its normal overflowed float and it was dropped as zero-area).
   Soup ground = box(glm::vec3(-3e9f, 0.0f, -3e9f), glm::vec3(3e9f, 0.0f, 3e9f), "ground");
   RunResult r = runVkmc(render(emissiveSoup(ground, "ground", R"({"emissiveFactor":[1,1,1],"doubleSided":true})")) +

@@ -63,67 +63,89 @@ TEST(Cli, DepthCapIsReportedAsBiased) {
   EXPECT_NE(std::string(j["estimator"]["bias"]).find("truncation"), std::string::npos);
 }
 
-TEST(Cli, BadInputFailsCleanlyAndWritesNothing) {
-  fs::path d = workDir();
-  vkmc::test::GltfSpec nan = vkmc::test::quadSpec();
-  nan.positions[0] = std::numeric_limits<float>::infinity();
-  std::string nanScene = vkmc::test::writeGltf(d, "nan", nan);
-  vkmc::test::GltfSpec idx = vkmc::test::quadSpec();
-  idx.indices[0] = 77;
-  std::string idxScene = vkmc::test::writeGltf(d, "idx", idx);
-  vkmc::test::GltfSpec acc = vkmc::test::quadSpec();
-  acc.positionCountOverride = 1000;
-  std::string accScene = vkmc::test::writeGltf(d, "acc", acc);
-  vkmc::test::GltfSpec nobin = vkmc::test::quadSpec();
-  nobin.writeBin = false;
-  std::string nobinScene = vkmc::test::writeGltf(d, "nobin", nobin);
-  vkmc::test::GltfSpec empty = vkmc::test::quadSpec();
-  empty.positions = {0, 0, 0, 1, 1, 1, 2, 2, 2};
-  empty.indices = {0, 1, 2};
-  std::string emptyScene = vkmc::test::writeGltf(d, "empty", empty);
-  std::ofstream(d / "broken.gltf") << "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [";
-
-  struct Case {
-    std::string args, expect;
-    int code;
-  };
-  std::vector<Case> cases = {
-      {(d / "broken.gltf").string(), "cannot load", 1},
-      {(d / "missing.gltf").string(), "cannot open", 1},
-      {nobinScene, "cannot load", 1},
-      {accScene, "runs past the end", 1},
-      {idxScene, "out of range", 1},
-      {nanScene, "NaN or infinite position", 1},
-      {emptyScene, "no triangles", 1},
-      {cornell() + " --spp 0", "--spp", 1},
-      {cornell() + " --width -4", "--width", 1},
-      {cornell() + " --width 100000", "--width", 1},
-      {cornell() + " --width 16384 --height 16384", "too large", 1},
-      {cornell() + " --max-depth -1", "--max-depth", 1},
-      {cornell() + " --look-from 1,2,3", "--look-at", 1},
-      {cornell() + " --look-from 1,2 --look-at 0,0,0", "--look-from", 1},
-      {cornell() + " --camera 5", "out of range", 1},
-      {cornell() + " --fov 0 --look-from 0,0,5 --look-at 0,0,0", "--fov", 1},
-      {cornell() + " --background nan,0,0", "--background", 1},
-      {cornell() + " --spp abc", "spp", 2},
-      {cornell() + " --no-such-flag", "no-such-flag", 2},
-  };
-  const std::string good = "GOOD EXISTING FILE";
-  for (const Case& c : cases) {
-    SCOPED_TRACE(c.args);
-    fs::path out = d / "out.exr";
-    std::ofstream(out) << good;
-    fs::path report = d / "bad_report.json";
-    fs::remove(report);
-    RunResult r = runVkmc("render " + c.args + " -q -o " + out.string() + " --report " + report.string());
-    EXPECT_EQ(r.code, c.code);
-    EXPECT_NE(r.err.find(c.expect), std::string::npos) << "stderr: " << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "stderr: " << r.err;
-    EXPECT_EQ(slurp(out), good) << "a failed run touched the existing output";
-    EXPECT_FALSE(fs::exists(report));
-    for (const auto& f : fs::directory_iterator(d)) EXPECT_EQ(f.path().string().find(".vkmc-"), std::string::npos);
-  }
+namespace {
+// The bad scenes of the rows below, written once into workDir() on first use.
+const fs::path& badScenes() {
+  static const fs::path d = [] {
+    fs::path d = workDir();
+    vkmc::test::GltfSpec nan = vkmc::test::quadSpec();
+    nan.positions[0] = std::numeric_limits<float>::infinity();
+    vkmc::test::writeGltf(d, "nan", nan);
+    vkmc::test::GltfSpec idx = vkmc::test::quadSpec();
+    idx.indices[0] = 77;
+    vkmc::test::writeGltf(d, "idx", idx);
+    vkmc::test::GltfSpec acc = vkmc::test::quadSpec();
+    acc.positionCountOverride = 1000;
+    vkmc::test::writeGltf(d, "acc", acc);
+    vkmc::test::GltfSpec nobin = vkmc::test::quadSpec();
+    nobin.writeBin = false;
+    vkmc::test::writeGltf(d, "nobin", nobin);
+    vkmc::test::GltfSpec empty = vkmc::test::quadSpec();
+    empty.positions = {0, 0, 0, 1, 1, 1, 2, 2, 2};
+    empty.indices = {0, 1, 2};
+    vkmc::test::writeGltf(d, "empty", empty);
+    std::ofstream(d / "broken.gltf") << "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [";
+    return d;
+  }();
+  return d;
 }
+
+// A bad command line: a file of badScenes() (or the Cornell box when scene is empty) and flags.
+struct BadInput {
+  const char* name;
+  const char* scene;
+  const char* flags;
+  const char* expect;
+  int code;
+  std::string args() const {
+    std::string a = *scene ? (badScenes() / scene).string() : cornell();
+    return *flags ? a + " " + flags : a;
+  }
+};
+void PrintTo(const BadInput& c, std::ostream* os) { *os << (*c.scene ? c.scene : "cornell_box.gltf") << " " << c.flags; }
+
+class CliBadInput : public ::testing::TestWithParam<BadInput> {};
+}  // namespace
+
+TEST_P(CliBadInput, FailsCleanlyAndWritesNothing) {
+  const BadInput& c = GetParam();
+  fs::path d = badScenes();
+  SCOPED_TRACE(c.args());
+  fs::path out = d / "out.exr";
+  const std::string good = "GOOD EXISTING FILE";
+  std::ofstream(out) << good;
+  fs::path report = d / "bad_report.json";
+  fs::remove(report);
+  RunResult r = runVkmc("render " + c.args() + " -q -o " + out.string() + " --report " + report.string());
+  EXPECT_EQ(r.code, c.code);
+  EXPECT_NE(r.err.find(c.expect), std::string::npos) << "stderr: " << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "stderr: " << r.err;
+  EXPECT_EQ(slurp(out), good) << "a failed run touched the existing output";
+  EXPECT_FALSE(fs::exists(report));
+  for (const auto& f : fs::directory_iterator(d)) EXPECT_EQ(f.path().string().find(".vkmc-"), std::string::npos);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cli, CliBadInput,
+                         ::testing::Values(BadInput{"broken_gltf", "broken.gltf", "", "cannot load", 1},
+                                           BadInput{"missing_gltf", "missing.gltf", "", "cannot open", 1},
+                                           BadInput{"missing_bin", "nobin.gltf", "", "cannot load", 1},
+                                           BadInput{"accessor_past_the_end", "acc.gltf", "", "runs past the end", 1},
+                                           BadInput{"index_out_of_range", "idx.gltf", "", "out of range", 1},
+                                           BadInput{"infinite_position", "nan.gltf", "", "NaN or infinite position", 1},
+                                           BadInput{"no_triangles", "empty.gltf", "", "no triangles", 1},
+                                           BadInput{"spp_0", "", "--spp 0", "--spp", 1},
+                                           BadInput{"width_negative", "", "--width -4", "--width", 1},
+                                           BadInput{"width_100000", "", "--width 100000", "--width", 1},
+                                           BadInput{"image_too_large", "", "--width 16384 --height 16384", "too large", 1},
+                                           BadInput{"max_depth_negative", "", "--max-depth -1", "--max-depth", 1},
+                                           BadInput{"look_from_without_look_at", "", "--look-from 1,2,3", "--look-at", 1},
+                                           BadInput{"look_from_two_numbers", "", "--look-from 1,2 --look-at 0,0,0", "--look-from", 1},
+                                           BadInput{"camera_out_of_range", "", "--camera 5", "out of range", 1},
+                                           BadInput{"fov_0", "", "--fov 0 --look-from 0,0,5 --look-at 0,0,0", "--fov", 1},
+                                           BadInput{"background_nan", "", "--background nan,0,0", "--background", 1},
+                                           BadInput{"spp_not_a_number", "", "--spp abc", "spp", 2},
+                                           BadInput{"unknown_flag", "", "--no-such-flag", "no-such-flag", 2}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 TEST(Cli, MissingOutputFolderFailsBeforeRendering) {
   RunResult r = runVkmc("render " + cornell() + " -q -o /nonexistent-folder/x.exr");

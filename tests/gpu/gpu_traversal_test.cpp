@@ -11,6 +11,14 @@
 
 using namespace vkmc;
 
+namespace {
+// One device for every test and row here, as a renderer keeps one.
+vk::Context& context() {
+  static vk::Context ctx;
+  return ctx;
+}
+}  // namespace
+
 TEST(GpuTraversal, ClosestAndAnyHitAgreeWithBruteForce) {
   std::mt19937 rng(21);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
@@ -35,7 +43,7 @@ TEST(GpuTraversal, ClosestAndAnyHitAgreeWithBruteForce) {
   for (uint32_t t : bvh.triangleOrder)
     for (int k = 0; k < 3; ++k) ordered.push_back(scene.positions[3 * t + k]);
 
-  vk::Context ctx;
+  vk::Context& ctx = context();
   GpuScene gpuScene(ctx, scene, bvh);
   RayTracer tracer(ctx, gpuScene);
   std::vector<gpu::TestRay> rays;
@@ -81,45 +89,49 @@ TEST(GpuTraversal, ClosestAndAnyHitAgreeWithBruteForce) {
 // (Mesa 22.3) that walk completes, and must come back as a miss, not as a cut or a false hit. Every child box
 // of that pile is hit, so the walk pushes 3 entries per level of the 4-wide tree (~27 for 400k leaves): more than
 // the 12-entry register stack holds, so this also checks the deep pass the trace kernel defers such walks to.
-TEST(GpuTraversal, AWalkOfHundredsOfThousandsOfLeavesCompletes) {
-  vk::Context ctx;
-  for (uint32_t count : {1000u, 400000u}) {
-    Scene scene;
-    scene.materials.push_back(Material{});
-    std::vector<Aabb> bounds(count);
-    for (uint32_t i = 0; i < count; ++i) {
-      for (glm::vec3 v : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)}) {
-        scene.positions.push_back(v);
-        scene.normals.push_back(glm::vec3(0, 0, 1));
-        scene.bounds.grow(v);
-        bounds[i].grow(v);
-      }
-      scene.materialIds.push_back(0);
+class PileOfLeaves : public ::testing::TestWithParam<uint32_t> {};
+
+TEST_P(PileOfLeaves, AWalkThroughEveryLeafCompletes) {
+  const uint32_t count = GetParam();
+  vk::Context& ctx = context();
+  Scene scene;
+  scene.materials.push_back(Material{});
+  std::vector<Aabb> bounds(count);
+  for (uint32_t i = 0; i < count; ++i) {
+    for (glm::vec3 v : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)}) {
+      scene.positions.push_back(v);
+      scene.normals.push_back(glm::vec3(0, 0, 1));
+      scene.bounds.grow(v);
+      bounds[i].grow(v);
     }
-    BvhOptions oneTrianglePerLeaf;
-    oneTrianglePerLeaf.maxLeafSize = 1;
-    Bvh bvh = buildBvh(bounds, oneTrianglePerLeaf);
-    ASSERT_EQ(bvh.stats.leaves, count);
-    GpuScene gpuScene(ctx, scene, bvh);
-    RayTracer tracer(ctx, gpuScene);
-    // Inside every leaf's box (the unit square), outside every triangle (x + y > 1).
-    std::vector<gpu::TestRay> rays(64, gpu::TestRay{glm::vec4(0.9f, 0.9f, 1.0f, 1e30f), glm::vec4(0, 0, -1, 0)});
-    std::vector<glm::vec4> hits = tracer.trace(rays, false);
-    if (count == 400000u) {
-      EXPECT_EQ(tracer.deepWalks(), rays.size()) << "each walk should have run in the deep pass";
-    }
-    for (const glm::vec4& h : hits) {
-      EXPECT_FALSE(std::isnan(h.x)) << count << " leaves: the walk was cut short";
-      EXPECT_EQ(glm::floatBitsToUint(h.w), gpu::kMissPrimitive) << count << " leaves";
-    }
-    // And the same pile hit inside a triangle: the closest hit is found.
-    rays.assign(64, gpu::TestRay{glm::vec4(0.2f, 0.2f, 1.0f, 1e30f), glm::vec4(0, 0, -1, 0)});
-    hits = tracer.trace(rays, false);
-    for (const glm::vec4& h : hits) EXPECT_FLOAT_EQ(h.x, 1.0f) << count << " leaves";
-    // Any-hit through the same pile: its deep pass too.
-    EXPECT_NE(glm::floatBitsToUint(tracer.trace(rays, true)[63].w), gpu::kMissPrimitive) << count << " leaves";
+    scene.materialIds.push_back(0);
   }
+  BvhOptions oneTrianglePerLeaf;
+  oneTrianglePerLeaf.maxLeafSize = 1;
+  Bvh bvh = buildBvh(bounds, oneTrianglePerLeaf);
+  ASSERT_EQ(bvh.stats.leaves, count);
+  GpuScene gpuScene(ctx, scene, bvh);
+  RayTracer tracer(ctx, gpuScene);
+  // Inside every leaf's box (the unit square), outside every triangle (x + y > 1).
+  std::vector<gpu::TestRay> rays(64, gpu::TestRay{glm::vec4(0.9f, 0.9f, 1.0f, 1e30f), glm::vec4(0, 0, -1, 0)});
+  std::vector<glm::vec4> hits = tracer.trace(rays, false);
+  if (count == 400000u) {
+    EXPECT_EQ(tracer.deepWalks(), rays.size()) << "each walk should have run in the deep pass";
+  }
+  for (const glm::vec4& h : hits) {
+    EXPECT_FALSE(std::isnan(h.x)) << count << " leaves: the walk was cut short";
+    EXPECT_EQ(glm::floatBitsToUint(h.w), gpu::kMissPrimitive) << count << " leaves";
+  }
+  // And the same pile hit inside a triangle: the closest hit is found.
+  rays.assign(64, gpu::TestRay{glm::vec4(0.2f, 0.2f, 1.0f, 1e30f), glm::vec4(0, 0, -1, 0)});
+  hits = tracer.trace(rays, false);
+  for (const glm::vec4& h : hits) EXPECT_FLOAT_EQ(h.x, 1.0f) << count << " leaves";
+  // Any-hit through the same pile: its deep pass too.
+  EXPECT_NE(glm::floatBitsToUint(tracer.trace(rays, true)[63].w), gpu::kMissPrimitive) << count << " leaves";
 }
+
+INSTANTIATE_TEST_SUITE_P(GpuTraversal, PileOfLeaves, ::testing::Values(1000u, 400000u),
+                         [](const auto& info) { return "leaves" + std::to_string(info.param); });
 
 // The adversarial soups of bvh_property_test (spheres and boxes at the origin, flat boxes, +-0 and denormals,
 // far-away and mixed-scale geometry) through the GPU walks of both node layouts, against brute force.
@@ -137,7 +149,7 @@ TEST_P(GpuTraversalProperty, BothLayoutsAgreeWithBruteForce) {
   }
   Bvh bvh = buildBvh(scene.triangleBounds());
   std::vector<glm::vec3> pos = test::ordered(soup, bvh);
-  static vk::Context ctx;
+  vk::Context& ctx = context();
   GpuScene gpuScene(ctx, scene, bvh, false, true);
   std::vector<test::Ray> rays = test::raysAt(soup, 2000, 9);
   std::vector<gpu::TestRay> gpuRays;

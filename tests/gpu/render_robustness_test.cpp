@@ -33,6 +33,28 @@ RenderOptions smallOptions(const std::string& name) {
   return o;
 }
 
+struct Transform {
+  const char* name;
+  float scale;
+  glm::vec3 shift;
+};
+void PrintTo(const Transform& t, std::ostream* os) { *os << "scale " << t.scale << " shift " << t.shift.x << "," << t.shift.y << "," << t.shift.z; }
+class ScaledCornellBox : public ::testing::TestWithParam<Transform> {};
+
+struct NamedScene {
+  std::string name, path;
+};
+void PrintTo(const NamedScene& s, std::ostream* os) { *os << s.path; }
+class SpecializedAndGeneralPipelines : public ::testing::TestWithParam<NamedScene> {};
+
+struct IntegratorCase {
+  const char* name;
+  const char* scene;
+  const char* estimator;
+};
+void PrintTo(const IntegratorCase& c, std::ostream* os) { *os << c.scene << " " << c.estimator; }
+class MegakernelAndWavefront : public ::testing::TestWithParam<IntegratorCase> {};
+
 Scene transformed(const Scene& base, float scale, glm::vec3 shift) {
   Scene s = base;
   s.bounds = Aabb{};
@@ -45,32 +67,33 @@ Scene transformed(const Scene& base, float scale, glm::vec3 shift) {
 }
 }  // namespace
 
-TEST(RenderRobustness, CornellBoxRendersTheSameScaledAndTranslated) {
-  Scene base = loadGltf(std::string(VKMC_SOURCE_DIR) + "/scenes/cornell_box.gltf");
-  RenderOutcome ref = runRender(context(), smallOptions("reference"), base);
-  struct Variant {
-    float scale;
-    glm::vec3 shift;
-  };
-  for (Variant v : {Variant{1e-3f, glm::vec3(0.0f)}, Variant{1e4f, glm::vec3(0.0f)}, Variant{1.0f, glm::vec3(1e4f)},
-                    Variant{1e3f, glm::vec3(-3e4f, 1e4f, 2e4f)}}) {
-    SCOPED_TRACE("scale " + std::to_string(v.scale) + " shift " + std::to_string(v.shift.x));
-    RenderOutcome r = runRender(context(), smallOptions("variant"), transformed(base, v.scale, v.shift));
-    ASSERT_EQ(r.film.totalNonfinite(), 0u);
-    int outside = 0;
-    for (size_t p = 0; p < r.film.pixels(); ++p)
-      for (int c = 0; c < 3; ++c)
-        outside += !zTest2(ref.film.mean(p, c), ref.film.varianceOfMean(p, c), r.film.mean(p, c), r.film.varianceOfMean(p, c), 1e-7)
-                        .within(5.0);
-    EXPECT_EQ(outside, 0);
-    glm::dvec3 a = ref.film.imageMean(), b = r.film.imageMean();
-    glm::dvec3 va = ref.film.imageMeanVarianceOfMean(), vb = r.film.imageMeanVarianceOfMean();
+TEST_P(ScaledCornellBox, RendersTheSameAsTheUnscaledBox) {
+  // The unscaled render, once for every row.
+  static const Scene base = loadGltf(std::string(VKMC_SOURCE_DIR) + "/scenes/cornell_box.gltf");
+  static const RenderOutcome ref = runRender(context(), smallOptions("reference"), base);
+  const Transform v = GetParam();
+  SCOPED_TRACE("scale " + std::to_string(v.scale) + " shift " + std::to_string(v.shift.x));
+  RenderOutcome r = runRender(context(), smallOptions("variant"), transformed(base, v.scale, v.shift));
+  ASSERT_EQ(r.film.totalNonfinite(), 0u);
+  int outside = 0;
+  for (size_t p = 0; p < r.film.pixels(); ++p)
     for (int c = 0; c < 3; ++c)
-      EXPECT_TRUE(withinSigmas(zTest(a[c], b[c], std::sqrt((va[c] + vb[c]) / r.film.pixels())), 5.0)) << "image mean, channel " << c;
-    test::stabilityRow("6", "Cornell box scaled " + std::to_string(v.scale) + ", shifted " + std::to_string(v.shift.x) +
-                               ": pixels outside 5 sigma of the unscaled render", "0", outside, 0.0, outside == 0);
-  }
+      outside += !zTest2(ref.film.mean(p, c), ref.film.varianceOfMean(p, c), r.film.mean(p, c), r.film.varianceOfMean(p, c), 1e-7)
+                      .within(5.0);
+  EXPECT_EQ(outside, 0);
+  glm::dvec3 a = ref.film.imageMean(), b = r.film.imageMean();
+  glm::dvec3 va = ref.film.imageMeanVarianceOfMean(), vb = r.film.imageMeanVarianceOfMean();
+  for (int c = 0; c < 3; ++c)
+    EXPECT_TRUE(withinSigmas(zTest(a[c], b[c], std::sqrt((va[c] + vb[c]) / r.film.pixels())), 5.0)) << "image mean, channel " << c;
+  test::stabilityRow("6", "Cornell box scaled " + std::to_string(v.scale) + ", shifted " + std::to_string(v.shift.x) +
+                             ": pixels outside 5 sigma of the unscaled render", "0", outside, 0.0, outside == 0);
 }
+
+INSTANTIATE_TEST_SUITE_P(RenderRobustness, ScaledCornellBox,
+                         ::testing::Values(Transform{"scaled_1e_3", 1e-3f, glm::vec3(0.0f)}, Transform{"scaled_1e4", 1e4f, glm::vec3(0.0f)},
+                                           Transform{"shifted_1e4", 1.0f, glm::vec3(1e4f)},
+                                           Transform{"scaled_1e3_shifted_far", 1e3f, glm::vec3(-3e4f, 1e4f, 2e4f)}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 TEST(RenderRobustness, FiniteSamplesWhoseSquareOverflowsFloatStillCount) {
   // An emitter so bright (1e30) that the square of a sample overflows float: the film's high sums (scaled by
@@ -121,29 +144,32 @@ TEST(RenderRobustness, PerPixelZTestHasItsNominalFalsePositiveRate) {
   EXPECT_EQ(compareImages(a, b).zTestPassFraction, 1.0);
 }
 
-TEST(RenderRobustness, SpecializedAndGeneralPipelinesRenderTheSameImage) {
+TEST_P(SpecializedAndGeneralPipelines, RenderTheSameImage) {
   // The Cornell box (Lambertian: GGX compiled out when specialized) and a scene without emitters lit by the
   // background (no light-sampling code and no shadow stage when specialized).
-  for (const std::string& scene : {std::string(VKMC_SOURCE_DIR) + "/scenes/cornell_box.gltf",
-                                   std::string(VKMC_SHARED_SCENES) + "/Box/Box.gltf"}) {
-    if (!std::filesystem::exists(scene)) continue;
-    RenderOptions o;
-    o.scenePath = scene;
-    o.width = 32;
-    o.height = 32;
-    o.spp = 64;
-    o.progress = false;
-    o.background = glm::vec3(0.5f);
-    o.seed = 5;
-    ExrImage a = filmToImage(runRender(context(), o).film);
-    o.specialize = false;
-    o.seed = 6;
-    RenderOutcome general = runRender(context(), o);
-    ErrorMetrics m = compareImages(filmToImage(general.film), a);
-    EXPECT_EQ(m.zTestPassFraction, 1.0) << scene;
-    EXPECT_TRUE(withinSigmas(zTest(m.meanDifference, 0.0, std::sqrt(m.mse / (3.0 * 32 * 32))), 5.0)) << scene;
-  }
+  const std::string scene = GetParam().path;
+  if (!std::filesystem::exists(scene)) GTEST_SKIP() << "no " << scene;
+  RenderOptions o;
+  o.scenePath = scene;
+  o.width = 32;
+  o.height = 32;
+  o.spp = 64;
+  o.progress = false;
+  o.background = glm::vec3(0.5f);
+  o.seed = 5;
+  ExrImage a = filmToImage(runRender(context(), o).film);
+  o.specialize = false;
+  o.seed = 6;
+  RenderOutcome general = runRender(context(), o);
+  ErrorMetrics m = compareImages(filmToImage(general.film), a);
+  EXPECT_EQ(m.zTestPassFraction, 1.0) << scene;
+  EXPECT_TRUE(withinSigmas(zTest(m.meanDifference, 0.0, std::sqrt(m.mse / (3.0 * 32 * 32))), 5.0)) << scene;
 }
+
+INSTANTIATE_TEST_SUITE_P(RenderRobustness, SpecializedAndGeneralPipelines,
+                         ::testing::Values(NamedScene{"cornell_box", std::string(VKMC_SOURCE_DIR) + "/scenes/cornell_box.gltf"},
+                                           NamedScene{"shared_Box", std::string(VKMC_SHARED_SCENES) + "/Box/Box.gltf"}),
+                         [](const auto& info) { return info.param.name; });
 
 TEST(RenderRobustness, NonFiniteValuesAreCountedByTheStageThatProducedThem) {
   // A finite but enormous emitter (3e38): light-sample contributions overflow to infinity inside shade. They
@@ -170,10 +196,6 @@ TEST(RenderRobustness, NonFiniteValuesAreCountedByTheStageThatProducedThem) {
                      r.stats.nonfiniteLightSamples > 0 && finiteImage);
 }
 
-// The megakernel runs the wavefront's stage functions with the same random-number streams, so with the same seed
-// it must trace the very same paths: the same ray counts, and the same image up to float summation order. Then a
-// second seed: the same image within noise (per-pixel z-test). Cornell box (NEE + MIS), Veach's MIS scene
-// (glossy), four light samples per hit with fixed roulette, and camera-ray roulette.
 // A stack of 16k thin parallel layers in the Cornell box: a ray across it meets every layer's box, so the walk
 // down to the nearest layer pushes 3 entries per level of the 4-wide tree, past the 12-entry register stack,
 // then culls the rest (a short walk, unlike a pile of coincident triangles, which would meet llvmpipe's loop
@@ -211,38 +233,43 @@ TEST(RenderRobustness, WalksThatOutgrowTheRegisterStackRenderTheSameInBothIntegr
   EXPECT_EQ(m.zTestPassFraction, 1.0);
 }
 
-TEST(RenderRobustness, MegakernelAndWavefrontRenderTheSameImage) {
-  struct Variant {
-    const char* scene;
-    const char* estimator;
-  };
-  for (Variant v : {Variant{"cornell_box.gltf", "{}"}, Variant{"veach_mis.gltf", "{}"},
-                    Variant{"cornell_box.gltf", R"({"light_samples": 4, "split_depth": 2, "rr": "fixed", "rr_q": 0.3, "shadow_rr": 0.1})"},
-                    Variant{"furnace.gltf", R"({"camera_rr": 0.5, "rr": "efficiency"})"}}) {
-    RenderOptions o;
-    o.scenePath = std::string(VKMC_SOURCE_DIR) + "/scenes/" + v.scene;
-    o.width = 32;
-    o.height = 32;
-    o.spp = 32;
-    o.progress = false;
-    o.seed = 5;
-    o.estimator.applyJson(nlohmann::json::parse(v.estimator));
-    RenderOutcome wave = runRender(context(), o);
-    o.integrator = Integrator::Megakernel;
-    RenderOutcome mega = runRender(context(), o);
-    std::string what = std::string(v.scene) + " " + v.estimator;
-    EXPECT_EQ(mega.stats.cameraRays, wave.stats.cameraRays) << what;
-    EXPECT_EQ(mega.stats.extensionRays, wave.stats.extensionRays) << what;
-    EXPECT_EQ(mega.stats.shadowRays, wave.stats.shadowRays) << what;
-    size_t differ = 0;
-    for (size_t p = 0; p < wave.film.pixels(); ++p)
-      for (int c = 0; c < 3; ++c) {
-        double a = wave.film.mean(p, c), b = mega.film.mean(p, c);
-        differ += std::abs(a - b) > 1e-4 * (std::abs(a) + std::abs(b)) + 1e-7;
-      }
-    EXPECT_EQ(differ, 0u) << what << ": pixels that differ beyond summation order";
-    o.seed = 6;
-    ErrorMetrics m = compareImages(filmToImage(runRender(context(), o).film), filmToImage(wave.film));
-    EXPECT_EQ(m.zTestPassFraction, 1.0) << what;
-  }
+// The megakernel runs the wavefront's stage functions with the same random-number streams, so with the same seed
+// it must trace the very same paths: the same ray counts, and the same image up to float summation order. Then a
+// second seed: the same image within noise (per-pixel z-test). Cornell box (NEE + MIS), Veach's MIS scene
+// (glossy), four light samples per hit with fixed roulette, and camera-ray roulette.
+TEST_P(MegakernelAndWavefront, RenderTheSameImage) {
+  const IntegratorCase& v = GetParam();
+  RenderOptions o;
+  o.scenePath = std::string(VKMC_SOURCE_DIR) + "/scenes/" + v.scene;
+  o.width = 32;
+  o.height = 32;
+  o.spp = 32;
+  o.progress = false;
+  o.seed = 5;
+  o.estimator.applyJson(nlohmann::json::parse(v.estimator));
+  RenderOutcome wave = runRender(context(), o);
+  o.integrator = Integrator::Megakernel;
+  RenderOutcome mega = runRender(context(), o);
+  std::string what = std::string(v.scene) + " " + v.estimator;
+  EXPECT_EQ(mega.stats.cameraRays, wave.stats.cameraRays) << what;
+  EXPECT_EQ(mega.stats.extensionRays, wave.stats.extensionRays) << what;
+  EXPECT_EQ(mega.stats.shadowRays, wave.stats.shadowRays) << what;
+  size_t differ = 0;
+  for (size_t p = 0; p < wave.film.pixels(); ++p)
+    for (int c = 0; c < 3; ++c) {
+      double a = wave.film.mean(p, c), b = mega.film.mean(p, c);
+      differ += std::abs(a - b) > 1e-4 * (std::abs(a) + std::abs(b)) + 1e-7;
+    }
+  EXPECT_EQ(differ, 0u) << what << ": pixels that differ beyond summation order";
+  o.seed = 6;
+  ErrorMetrics m = compareImages(filmToImage(runRender(context(), o).film), filmToImage(wave.film));
+  EXPECT_EQ(m.zTestPassFraction, 1.0) << what;
 }
+
+INSTANTIATE_TEST_SUITE_P(
+    RenderRobustness, MegakernelAndWavefront,
+    ::testing::Values(IntegratorCase{"cornell_box", "cornell_box.gltf", "{}"}, IntegratorCase{"veach_mis", "veach_mis.gltf", "{}"},
+                      IntegratorCase{"cornell_box_light_splitting_fixed_rr_shadow_rr", "cornell_box.gltf",
+                                     R"({"light_samples": 4, "split_depth": 2, "rr": "fixed", "rr_q": 0.3, "shadow_rr": 0.1})"},
+                      IntegratorCase{"furnace_camera_rr_efficiency_rr", "furnace.gltf", R"({"camera_rr": 0.5, "rr": "efficiency"})"}),
+    [](const auto& info) { return std::string(info.param.name); });

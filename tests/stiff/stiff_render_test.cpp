@@ -150,19 +150,25 @@ TEST(StiffRender, DegenerateGeometryIsSkippedCountedAndHarmless) {
   stabilityRow("7", "a single triangle", "0 non-finite", double(single.film.totalNonfinite()), 0.0, single.film.totalNonfinite() == 0);
 }
 
-TEST(StiffRender, DepthCapTruncationMatchesTheoryOnTheStiffFurnace) {
+namespace {
+class DepthCapOnTheStiffFurnace : public ::testing::TestWithParam<uint32_t> {};
+}  // namespace
+
+TEST_P(DepthCapOnTheStiffFurnace, TruncationMatchesTheory) {
   // Case 1's truncation part: albedo 0.99, Le = 1, no roulette, cap D: L_D = (1 - 0.99^(D+1)) / (1 - 0.99).
-  for (uint32_t cap : {1u, 10u, 50u}) {
-    EstimatorConfig c;
-    c.rr = RouletteMode::None;
-    c.maxDepth = cap;
-    RenderOutcome r = renderWith("furnace_stiff.gltf", c, 8, 8, 16);
-    RegionStats s = whole(r.film);
-    double expected = (1.0 - std::pow(0.99, cap + 1.0)) / (1.0 - 0.99);
-    ZTest t = zTest(s.mean.x, expected, std::sqrt(s.variance.x), 1e-6 * expected);
-    EXPECT_TRUE(withinSigmas(t, 5.0)) << "cap " << cap;
-    EXPECT_LT(t.sigma, 1e-3 * expected) << "the test must resolve 0.1%";
-    stabilityRow("1", "albedo 0.99 furnace, depth cap " + std::to_string(cap) + ", no roulette: truncation theory",
-                 std::to_string(expected), s.mean.x, t.sigma, t.within(5.0));
-  }
+  const uint32_t cap = GetParam();
+  EstimatorConfig c;
+  c.rr = RouletteMode::None;
+  c.maxDepth = cap;
+  RenderOutcome r = renderWith("furnace_stiff.gltf", c, 8, 8, 16);
+  RegionStats s = whole(r.film);
+  double expected = (1.0 - std::pow(0.99, cap + 1.0)) / (1.0 - 0.99);
+  ZTest t = zTest(s.mean.x, expected, std::sqrt(s.variance.x), 1e-6 * expected);
+  EXPECT_TRUE(withinSigmas(t, 5.0)) << "cap " << cap;
+  EXPECT_LT(t.sigma, 1e-3 * expected) << "the test must resolve 0.1%";
+  stabilityRow("1", "albedo 0.99 furnace, depth cap " + std::to_string(cap) + ", no roulette: truncation theory",
+               std::to_string(expected), s.mean.x, t.sigma, t.within(5.0));
 }
+
+INSTANTIATE_TEST_SUITE_P(StiffRender, DepthCapOnTheStiffFurnace, ::testing::Values(1u, 10u, 50u),
+                         [](const auto& info) { return "cap" + std::to_string(info.param); });

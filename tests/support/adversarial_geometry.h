@@ -5,13 +5,13 @@
 #include <glm/glm.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "../shaders/shared/geometry.h"
 #include "bvh/bvh.h"
+#include "param_name.h"
 
 namespace vkmc::test {
 
@@ -19,12 +19,6 @@ struct Soup {
   std::string name;
   std::vector<glm::vec3> positions;  // 3 per triangle
 };
-
-inline std::string shortNumber(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%g", x);
-  return buf;
-}
 
 inline void addTriangle(Soup& s, glm::vec3 a, glm::vec3 b, glm::vec3 c) { s.positions.insert(s.positions.end(), {a, b, c}); }
 

@@ -19,15 +19,21 @@ std::filesystem::path dir() {
 }
 }  // namespace
 
-TEST(GltfLoader, LoadsIndexedQuadWithEveryIndexWidth) {
-  for (int ct : {5121, 5123, 5125}) {
-    GltfSpec s = test::quadSpec();
-    s.indexComponentType = ct;
-    Scene scene = loadGltf(test::writeGltf(dir(), "quad" + std::to_string(ct), s));
-    EXPECT_EQ(scene.triangleCount(), 2u);
-    EXPECT_EQ(scene.degenerateTriangles, 0u);
-  }
+// Index component types: 5121 u8, 5123 u16, 5125 u32.
+class IndexWidth : public ::testing::TestWithParam<int> {};
+
+TEST_P(IndexWidth, LoadsIndexedQuad) {
+  const int ct = GetParam();
+  GltfSpec s = test::quadSpec();
+  s.indexComponentType = ct;
+  Scene scene = loadGltf(test::writeGltf(dir(), "quad" + std::to_string(ct), s));
+  EXPECT_EQ(scene.triangleCount(), 2u);
+  EXPECT_EQ(scene.degenerateTriangles, 0u);
 }
+
+INSTANTIATE_TEST_SUITE_P(GltfLoader, IndexWidth, ::testing::Values(5121, 5123, 5125), [](const auto& info) {
+  return info.param == 5121 ? std::string("u8") : info.param == 5123 ? std::string("u16") : std::string("u32");
+});
 
 TEST(GltfLoader, LoadsNonIndexedAndAppliesNodeTransforms) {
   GltfSpec s = test::quadSpec();
@@ -79,13 +85,16 @@ TEST(GltfLoader, SkipsNonTrianglePrimitivesWithAWarning) {
   EXPECT_NE(test::loadError(test::writeGltf(dir(), "lines", s)).find("no triangles"), std::string::npos);
 }
 
-TEST(GltfLoader, RejectsMalformedInputWithOneLine) {
-  struct Case {
-    std::string name;
-    GltfSpec spec;
-    std::string expect;
-  };
-  std::vector<Case> cases;
+namespace {
+struct Malformed {
+  std::string name;
+  GltfSpec spec;
+  std::string expect;
+};
+void PrintTo(const Malformed& c, std::ostream* os) { *os << c.name; }
+
+std::vector<Malformed> malformedInputs() {
+  std::vector<Malformed> cases;
   {
     GltfSpec s = test::quadSpec();
     s.positions[4] = std::numeric_limits<float>::quiet_NaN();
@@ -117,12 +126,21 @@ TEST(GltfLoader, RejectsMalformedInputWithOneLine) {
     s.materialJson = R"({"pbrMetallicRoughness":{"baseColorFactor":[1e999,0,0,1]}})";
     cases.push_back({"overflow", s, "number overflow"});
   }
-  for (const Case& c : cases) {
-    std::string msg = test::loadError(test::writeGltf(dir(), c.name, c.spec));
-    EXPECT_NE(msg.find(c.expect), std::string::npos) << c.name << ": got '" << msg << "'";
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << c.name << ": message is not one line";
-  }
+  return cases;
 }
+
+class MalformedInput : public ::testing::TestWithParam<Malformed> {};
+}  // namespace
+
+TEST_P(MalformedInput, IsRejectedWithOneLine) {
+  const Malformed& c = GetParam();
+  std::string msg = test::loadError(test::writeGltf(dir(), c.name, c.spec));
+  EXPECT_NE(msg.find(c.expect), std::string::npos) << c.name << ": got '" << msg << "'";
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << c.name << ": message is not one line";
+}
+
+INSTANTIATE_TEST_SUITE_P(GltfLoader, MalformedInput, ::testing::ValuesIn(malformedInputs()),
+                         [](const auto& info) { return info.param.name; });
 
 TEST(GltfLoader, RejectsTruncatedFiles) {
   auto path = dir() / "truncated.gltf";
