@@ -82,13 +82,10 @@ TEST(GpuTraversal, ClosestAndAnyHitAgreeWithBruteForce) {
   EXPECT_GT(hits, 2000);
 }
 
-// llvmpipe has a hang guard that ends shader loops after 65535 iterations (LP_MAX_TGSI_LOOP_ITERATIONS) without
-// an error; the analytic furnace probe lost paths to it (tests/stiff/stiff_furnace_test.cpp). A BVH walk flags a walk
-// that did not end on its own (t = NaN here; counted and excluded in renders). A ray through the common box of
-// 400k coincident triangles, one per leaf, missing them all, visits every one of the 400k leaves: on llvmpipe
-// (Mesa 22.3) that walk completes, and must come back as a miss, not as a cut or a false hit. Every child box
-// of that pile is hit, so the walk pushes 3 entries per level of the 4-wide tree (~27 for 400k leaves): more than
-// the 12-entry register stack holds, so this also checks the deep pass the trace kernel defers such walks to.
+// llvmpipe ends shader loops after 65535 iterations without an error (docs/performance.md, "the loop limiter"); a
+// walk that did not end on its own comes back with t = NaN. A ray through the common box of a pile of coincident
+// triangles, one per leaf, missing them all, visits every leaf: it must come back as a miss, not as a cut or a
+// false hit. Every child box is hit, so the walk outgrows the 12-entry register stack and runs in the deep pass.
 class PileOfLeaves : public ::testing::TestWithParam<uint32_t> {};
 
 TEST_P(PileOfLeaves, AWalkThroughEveryLeafCompletes) {
