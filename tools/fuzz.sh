@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes the glTF loader and the BVH build with libFuzzer (clang, ASan, UBSan) for SECONDS (default 60):
 #   bash tools/fuzz.sh [SECONDS] [extra libFuzzer flags]
-# First it replays tests/fuzz_regressions/ (crafted files that once crashed or over-read) under the sanitizers.
+# First it replays tests/fuzz/regressions/ (crafted files that once crashed or over-read) under the sanitizers.
 # The corpus is seeded from scenes/, ../shared/scenes (files up to 1 MB, with their .bin files beside them) and
 # the regressions, and kept in build/fuzz/corpus between runs; findings are written to build/fuzz/findings/.
 # Exits 77 (skipped) when clang or its libFuzzer runtime is missing, non-zero on a finding.
@@ -22,11 +22,11 @@ for f in scenes/*.gltf scenes/*/*.gltf scenes/*.bin scenes/*/*.bin ../shared/sce
   [[ -f $f && $(stat -c %s "$f") -le 1048576 ]] || continue
   case $f in *.bin) cp "$f" "$out/seeds/";; *) cp "$f" "$out/seeds/$(basename "$(dirname "$f")")-$(basename "$f")";; esac
 done
-cp tests/fuzz_regressions/* "$out/seeds/"
+cp tests/fuzz/regressions/* "$out/seeds/"
 export VKMC_FUZZ_BASEDIR=$PWD/$out/seeds
 export ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # First the crafted files that once crashed or over-read (tools/fuzz/make_regressions.py), each run once.
-"$out/gltf_fuzzer" tests/fuzz_regressions/* 2>&1 | tail -n 3
+"$out/gltf_fuzzer" tests/fuzz/regressions/* 2>&1 | tail -n 3
 "$out/gltf_fuzzer" "$out/corpus" "$out/seeds" -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=4096 \
   -malloc_limit_mb=2048 -artifact_prefix="$out/findings/" -print_final_stats=1 "$@" 2>&1 | tail -n 25

@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""Writes tests/fuzz_regressions/: self-contained crafted glTF files that crashed, over-read or overflowed the
+"""Writes tests/fuzz/regressions/: self-contained crafted glTF files that crashed, over-read or overflowed the
 stack before vkmc's input checks (issue: the scene path must be trustworthy). tools/fuzz.sh replays each through
 the ASan/UBSan harness before fuzzing; the loader tests check the same cases' messages."""
 import base64, json, os, struct
 
 here = os.path.dirname(os.path.abspath(__file__))
-out = os.path.join(here, "..", "..", "tests", "fuzz_regressions")
+out = os.path.join(here, "..", "..", "tests", "fuzz", "regressions")
 os.makedirs(out, exist_ok=True)
 
 positions = [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0]

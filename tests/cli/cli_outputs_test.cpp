@@ -1,0 +1,268 @@
+// vkmc's outputs are written all or nothing and never replace what is not a regular file: FIFOs (standing in for
+// device nodes, which tests never touch) are written directly, symlinks keep pointing at their replaced target,
+// colliding paths are refused, a failed or interrupted commit leaves every existing output and no temporary.
+// Also the scenes and numbers that used to be refused or rendered wrong without a word.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+#include <thread>
+
+#include "support/adversarial_geometry.h"
+#include "support/cli_run.h"
+#include "support/param_name.h"
+
+namespace fs = std::filesystem;
+using namespace vkmc::test;
+
+extern char** environ;
+
+namespace {
+
+fs::path dir() {
+  static fs::path d = makeTempDir("outputs");
+  return d;
+}
+
+std::string render(const std::string& scene) { return "render " + scene + " --width 16 --height 16 --spp 1 -q"; }
+
+// A scene of one emissive (Le = 1) mesh from a soup.
+std::string emissiveSoup(const Soup& soup, const std::string& name, const std::string& material = "") {
+  GltfSpec spec;
+  for (glm::vec3 p : soup.positions) spec.positions.insert(spec.positions.end(), {p.x, p.y, p.z});
+  if (!material.empty()) spec.materialJson = material;
+  return writeGltf(dir(), name, spec);
+}
+
+double reportMean(const fs::path& report) { return nlohmann::json::parse(slurp(report))["mean"][0].get<double>(); }
+
+// Output paths that collide with each other or with the input (scene), x a path no run may create.
+struct Collision {
+  const char* name;
+  std::string (*args)(const fs::path& scene, const fs::path& x);
+  const char* expect;
+};
+void PrintTo(const Collision& c, std::ostream* os) { *os << c.name; }
+class CollidingPaths : public ::testing::TestWithParam<Collision> {};
+
+// A scene whose camera has an aspect ratio of 5.96e-8, written once.
+const std::string& thinCamera() {
+  static const std::string camera = [] {
+    std::string camera = writeGltf(dir(), "thin_camera", [] {
+      GltfSpec s = quadSpec();
+      s.nodeExtra = "\"camera\":0";
+      return s;
+    }());
+    std::string json = slurp(camera);
+    json.replace(json.find("\"scene\":0,"), 10,
+                 "\"scene\":0,\"cameras\":[{\"type\":\"perspective\",\"perspective\":{\"yfov\":0.8,\"znear\":0.1,\"aspectRatio\":5.96e-8}}],");
+    std::ofstream(camera) << json;
+    return camera;
+  }();
+  return camera;
+}
+
+struct Absurd {
+  const char* name;
+  std::string (*args)();
+  const char* expect;
+};
+void PrintTo(const Absurd& c, std::ostream* os) { *os << c.name; }
+class AbsurdNumbers : public ::testing::TestWithParam<Absurd> {};
+
+}  // namespace
+
+TEST_P(CollidingPaths, AreRefused) {
+  fs::path scene = dir() / "scene.gltf";
+  fs::copy_file(cornell(), scene, fs::copy_options::overwrite_existing);
+  std::string before = slurp(scene);
+  fs::path x = dir() / "x";
+  const std::string args = GetParam().args(scene, x);
+  RunResult r = runVkmc(render(scene.string()) + " " + args);
+  EXPECT_EQ(r.code, 1) << args;
+  EXPECT_NE(r.err.find(GetParam().expect), std::string::npos) << args << ": " << r.err;
+  EXPECT_EQ(slurp(scene), before);
+  EXPECT_FALSE(fs::exists(x));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    CliOutputs, CollidingPaths,
+    ::testing::Values(
+        Collision{"output_is_the_input", [](const fs::path& scene, const fs::path&) { return "-o " + scene.string(); }, "is an input"},
+        Collision{"exr_and_png", [](const fs::path&, const fs::path& x) { return "-o " + x.string() + " --png " + x.string(); },
+                  "name the same file"},
+        Collision{"exr_and_report",
+                  [](const fs::path&, const fs::path& x) { return "-o " + x.string() + ".exr --report " + x.string() + ".exr"; },
+                  "name the same file"},
+        Collision{"exr_and_png_through_a_dot",
+                  [](const fs::path&, const fs::path&) { return "-o " + (dir() / "." / "x.exr").string() + " --png " + (dir() / "x.exr").string(); },
+                  "name the same file"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(CliOutputs, ASymlinkKeepsPointingAtItsReplacedTarget) {
+  fs::path target = dir() / "target.json", link = dir() / "link.json";
+  std::ofstream(target) << "old";
+  fs::remove(link);
+  fs::create_symlink(target, link);
+  RunResult r = runVkmc(render(cornell()) + " -o " + (dir() / "l.exr").string() + " --report " + link.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
+  EXPECT_GT(reportMean(target), 0.0);
+}
+
+TEST(CliOutputs, AFifoIsWrittenDirectlyAndStaysAFifo) {
+  fs::path fifo = dir() / "report.fifo";
+  fs::remove(fifo);
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  // The read end open first (without blocking), so vkmc finds a reader; the report (~2 KB) fits the pipe.
+  int readEnd = open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(readEnd, 0);
+  // Through a symlink, as /dev/stdout leads to a pipe: the link and the FIFO must both survive.
+  fs::path link = dir() / "report.link";
+  fs::remove(link);
+  fs::create_symlink(fifo, link);
+  RunResult r = runVkmc(render(cornell()) + " -o " + (dir() / "f.exr").string() + " --report " + link.string());
+  std::string received;
+  char buf[4096];
+  for (ssize_t n; (n = read(readEnd, buf, sizeof(buf))) > 0;) received.append(buf, size_t(n));
+  close(readEnd);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_GT(nlohmann::json::parse(received)["mean"][0].get<double>(), 0.0);
+  struct stat st {};
+  ASSERT_EQ(stat(fifo.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
+}
+
+TEST(CliOutputs, AFailedOutputLeavesEveryExistingOutputIntact) {
+  // A FIFO nobody reads cannot be written: the render fails after rendering, at the commit.
+  fs::path fifo = dir() / "unread.fifo", exr = dir() / "kept.exr", report = dir() / "kept.json";
+  fs::remove(fifo);
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  std::ofstream(exr) << "GOOD EXR";
+  std::ofstream(report) << "GOOD REPORT";
+  RunResult r = runVkmc(render(cornell()) + " -o " + exr.string() + " --png " + fifo.string() + " --report " + report.string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("cannot write '" + fifo.string() + "'"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(exr), "GOOD EXR");
+  EXPECT_EQ(slurp(report), "GOOD REPORT");
+  EXPECT_FALSE(hasTemporaries(dir()));
+}
+
+TEST(CliOutputs, SigtermDuringTheCommitRemovesTheTemporaries) {
+  // The EXR goes to a FIFO whose reader never reads: vkmc blocks there once the pipe is full, after writing the
+  // other outputs' temporaries, which is where the signal must find it.
+  fs::path d = dir() / "signal";
+  fs::create_directories(d);
+  fs::path fifo = d / "exr.fifo";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  int readEnd = open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(readEnd, 0);
+  std::vector<std::string> args = {VKMC_BINARY, "render", cornell(), "--width", "256", "--height", "256", "--spp", "1", "-q",
+                                   "-o", fifo.string(), "--png", (d / "p.png").string(), "--report", (d / "r.json").string()};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid;
+  ASSERT_EQ(posix_spawn(&pid, VKMC_BINARY, nullptr, nullptr, argv.data(), environ), 0);
+  bool sawTemporaries = false, exited = false;
+  int status = 0;
+  for (int i = 0; i < 6000 && !sawTemporaries && !exited; ++i) {  // a hang guard of 10 minutes, not a timing assertion
+    sawTemporaries = hasTemporaries(d);
+    exited = !sawTemporaries && waitpid(pid, &status, WNOHANG) == pid;
+    if (!sawTemporaries && !exited) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  if (!sawTemporaries) {
+    if (!exited) kill(pid, SIGKILL), waitpid(pid, &status, 0);
+    close(readEnd);
+    FAIL() << "vkmc " << (exited ? "exited" : "never reached its commit") << " before writing its temporaries";
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // into the blocked FIFO write
+  kill(pid, SIGTERM);
+  waitpid(pid, &status, 0);
+  close(readEnd);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+  EXPECT_FALSE(hasTemporaries(d));
+  EXPECT_FALSE(fs::exists(d / "p.png"));
+  EXPECT_FALSE(fs::exists(d / "r.json"));
+}
+
+TEST(CliOutputs, ALongValidOutputNameIsWritten) {
+  fs::path exr = dir() / (std::string(248, 'n') + ".exr");  // 252 characters: a suffix would exceed NAME_MAX
+  RunResult r = runVkmc(render(cornell()) + " -o " + exr.string());
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(exr));
+}
+
+TEST_P(AbsurdNumbers, AreRefusedWithOneLine) {
+  const std::string args = GetParam().args();
+  RunResult r = runVkmc(args + " -o " + (dir() / "absurd.exr").string());
+  EXPECT_EQ(r.code, 1) << args;
+  EXPECT_NE(r.err.find(GetParam().expect), std::string::npos) << args << ": " << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(dir() / "absurd.exr"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    CliOutputs, AbsurdNumbers,
+    ::testing::Values(Absurd{"exposure_nan", [] { return render(cornell()) + " --exposure nan"; }, "--exposure"},
+                      Absurd{"look_from_1e20", [] { return render(cornell()) + " --look-from 1e20,0,0 --look-at 0,0,0"; }, "within +-1e11"},
+                      Absurd{"camera_aspect_ratio_6e_8", [] { return "render " + thinCamera() + " --spp 1 -q"; }, "aspect ratio"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+class SphereAtTheOrigin : public ::testing::TestWithParam<double> {};
+
+TEST_P(SphereAtTheOrigin, Renders) {
+  const double radius = GetParam();
+  fs::path report = dir() / "scene.json";
+  RunResult r = runVkmc(render(emissiveSoup(uvSphere(radius, 32, 16), "sphere", R"({"emissiveFactor":[1,1,1],"doubleSided":true})")) + " -o " + (dir() / "s.exr").string() +
+                        " --report " + report.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_GT(reportMean(report), 0.1);
+}
+
+// Radii once refused by the BVH quantizer.
+INSTANTIATE_TEST_SUITE_P(CliOutputs, SphereAtTheOrigin, ::testing::Values(0.5, 1.0, 1024.0),
+                         [](const auto& info) { return paramName("radius " + shortNumber(info.param)); });
+
+TEST(CliOutputs, HugeGroundsAndBrightLightsRender) {
+  fs::path report = dir() / "scene.json";
+  // A ground of half-size 3e9 (its normal overflowed float and it was dropped as zero-area).
+  Soup ground = box(glm::vec3(-3e9f, 0.0f, -3e9f), glm::vec3(3e9f, 0.0f, 3e9f), "ground");
+  RunResult r = runVkmc(render(emissiveSoup(ground, "ground", R"({"emissiveFactor":[1,1,1],"doubleSided":true})")) +
+                        " --look-from 0,10,0 --look-at 0,0,1 -o " + (dir() / "g.exr").string() + " --report " + report.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NEAR(reportMean(report), 1.0, 1e-3);
+  // Radiance 2e19: finite, but its square overflows float; it was counted as non-finite and dropped.
+  std::string bright = R"({"emissiveFactor":[1,1,1],"doubleSided":true,"extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":2e19}}})";
+  r = runVkmc(render(emissiveSoup(uvSphere(1.0, 32, 16), "bright", bright)) + " -o " + (dir() / "b.exr").string() +
+              " --report " + report.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(slurp(report));
+  EXPECT_EQ(j["nonfinite_samples"].get<uint64_t>(), 0u);
+  EXPECT_GT(j["mean"][0].get<double>(), 1e18);
+  EXPECT_TRUE(std::isfinite(j["mean_variance"][0].get<double>()));
+}
+
+TEST(CliOutputs, AnInstancingBombIsRefusedBeforeAnythingIsAllocated) {
+  // 2^25 instances of a quad (a 1 KB file) are 2^26 triangles, over any device's limit (at most 2^25): refused
+  // from the node graph's counts, before flattening (which took 10 GB and minutes before this check).
+  std::string path = writeGltf(dir(), "bomb", quadSpec());
+  std::string json = slurp(path), nodes = "\"nodes\":[";
+  for (int i = 0; i < 25; ++i) nodes += "{\"children\":[" + std::to_string(i + 1) + "," + std::to_string(i + 1) + "]},";
+  nodes += "{\"mesh\":0}],";
+  size_t a = json.find("\"nodes\":[{"), b = json.find("],", a) + 2;
+  json.replace(a, b - a, nodes);
+  std::ofstream(path) << json;
+  RunResult r = runVkmc(render(path) + " -o " + (dir() / "bomb.exr").string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("scene too big"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("67108864 instanced"), std::string::npos) << r.err;
+}

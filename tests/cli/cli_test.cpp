@@ -1,0 +1,199 @@
+// The vkmc binary end to end: a render with its report, and every bad input ending in one clear line on
+// stderr, a non-zero exit and no output file (a good existing output is never clobbered).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "estimators/estimator_params.h"
+#include "io/exr.h"
+#include "support/cli_run.h"
+#include "support/test_scenes.h"
+
+namespace fs = std::filesystem;
+using vkmc::test::cornell;
+using vkmc::test::RunResult;
+using vkmc::test::runVkmc;
+using vkmc::test::slurp;
+using vkmc::test::workDir;
+
+TEST(Cli, RenderWritesExrPngAndAConsistentReport) {
+  fs::path exr = workDir() / "ok.exr", png = workDir() / "ok.png", report = workDir() / "ok.json";
+  RunResult r = runVkmc("render " + cornell() + " --width 40 --height 30 --spp 4 -o " + exr.string() + " --png " + png.string() +
+               " --report " + report.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("Mrays/s"), std::string::npos);
+  ASSERT_TRUE(fs::exists(exr));
+  ASSERT_TRUE(fs::exists(png));
+  vkmc::ExrImage img = vkmc::readExr(exr.string());
+  EXPECT_EQ(img.width, 40);
+  EXPECT_EQ(img.height, 30);
+  EXPECT_EQ(img.channels.count("variance.G"), 1u);
+  EXPECT_EQ(img.channels["samples"][0], 4.0f);
+
+  auto j = nlohmann::json::parse(slurp(report));
+  for (const char* key : {"scene", "width", "height", "spp", "seconds", "setup_seconds", "gpu_seconds", "rays",
+                          "mrays_per_second", "nonfinite_samples", "mean", "mean_variance", "device"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["width"], 40);
+  EXPECT_EQ(j["spp"], 4);
+  EXPECT_EQ(j["nonfinite_samples"], 0);
+  double rays = j["rays"], seconds = j["seconds"], mrays = j["mrays_per_second"];
+  EXPECT_NEAR(rays / seconds * 1e-6, mrays, 1e-9 * mrays);
+  EXPECT_EQ(rays, double(j["ray_counts"]["camera"]) + double(j["ray_counts"]["extension"]) + double(j["ray_counts"]["shadow"]));
+  EXPECT_EQ(j["ray_counts"]["camera"], 40 * 30 * 4);
+  EXPECT_GT(double(j["gpu_seconds"]), 0.0);
+  EXPECT_LE(double(j["gpu_seconds"]), seconds * 1.05);
+  EXPECT_TRUE(j["estimator"]["unbiased"]);
+  EXPECT_GT(double(j["mean"][0]), 0.0);
+  // The EXR's image mean is the report's mean.
+  double sum = 0;
+  for (float v : img.channels["R"]) sum += v;
+  EXPECT_NEAR(sum / (40 * 30), double(j["mean"][0]), 1e-5);
+}
+
+TEST(Cli, DepthCapIsReportedAsBiased) {
+  fs::path report = workDir() / "capped.json";
+  RunResult r = runVkmc("render " + cornell() + " --width 16 --height 16 --spp 1 --max-depth 3 -q -o " + (workDir() / "capped.exr").string() +
+               " --report " + report.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto j = nlohmann::json::parse(slurp(report));
+  EXPECT_FALSE(j["estimator"]["unbiased"]);
+  EXPECT_NE(std::string(j["estimator"]["bias"]).find("truncation"), std::string::npos);
+}
+
+TEST(Cli, FlagsOverridingAnEstimatorFileAreNamedInTheEcho) {
+  fs::path file = workDir() / "named_estimator.json", report = workDir() / "named.json";
+  std::ofstream(file) << R"({"name": "fixed q", "rr": "fixed", "rr_q": 0.5})";
+  std::string common = "render " + cornell() + " --width 8 --height 8 --spp 1 -q -o " + (workDir() / "named.exr").string() +
+                       " --report " + report.string() + " --estimator " + file.string();
+  RunResult plain = runVkmc(common);
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_EQ(nlohmann::json::parse(slurp(report))["estimator"]["name"], "fixed q");
+  RunResult overridden = runVkmc(common + " --rr-q 0.25 --nee off");
+  ASSERT_EQ(overridden.code, 0) << overridden.err;
+  auto e = nlohmann::json::parse(slurp(report))["estimator"];
+  EXPECT_EQ(e["name"], "fixed q + rr_q=0.25, nee=off");
+  EXPECT_EQ(e["rr_q"], 0.25);
+  EXPECT_EQ(e["rr"], "fixed");
+}
+
+TEST(Cli, RenderHelpListsEveryEstimatorFlagWithItsValuesAndDefault) {
+  RunResult r = runVkmc("render --help");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const vkmc::EstimatorParam& p : vkmc::estimatorParams()) {
+    EXPECT_NE(r.out.find(p.flag() + " "), std::string::npos) << p.flag();
+    EXPECT_NE(r.out.find(p.helpText()), std::string::npos) << p.helpText();
+  }
+}
+
+namespace {
+// The bad scenes of the rows below, written once into workDir() on first use.
+const fs::path& badScenes() {
+  static const fs::path d = [] {
+    fs::path d = workDir();
+    vkmc::test::GltfSpec nan = vkmc::test::quadSpec();
+    nan.positions[0] = std::numeric_limits<float>::infinity();
+    vkmc::test::writeGltf(d, "nan", nan);
+    vkmc::test::GltfSpec idx = vkmc::test::quadSpec();
+    idx.indices[0] = 77;
+    vkmc::test::writeGltf(d, "idx", idx);
+    vkmc::test::GltfSpec acc = vkmc::test::quadSpec();
+    acc.positionCountOverride = 1000;
+    vkmc::test::writeGltf(d, "acc", acc);
+    vkmc::test::GltfSpec nobin = vkmc::test::quadSpec();
+    nobin.writeBin = false;
+    vkmc::test::writeGltf(d, "nobin", nobin);
+    vkmc::test::GltfSpec empty = vkmc::test::quadSpec();
+    empty.positions = {0, 0, 0, 1, 1, 1, 2, 2, 2};
+    empty.indices = {0, 1, 2};
+    vkmc::test::writeGltf(d, "empty", empty);
+    std::ofstream(d / "broken.gltf") << "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [";
+    return d;
+  }();
+  return d;
+}
+
+// A bad command line: a file of badScenes() (or the Cornell box when scene is empty) and flags.
+struct BadInput {
+  const char* name;
+  const char* scene;
+  const char* flags;
+  const char* expect;
+  int code;
+  std::string args() const {
+    std::string a = *scene ? (badScenes() / scene).string() : cornell();
+    return *flags ? a + " " + flags : a;
+  }
+};
+void PrintTo(const BadInput& c, std::ostream* os) { *os << (*c.scene ? c.scene : "cornell_box.gltf") << " " << c.flags; }
+
+class CliBadInput : public ::testing::TestWithParam<BadInput> {};
+}  // namespace
+
+TEST_P(CliBadInput, FailsCleanlyAndWritesNothing) {
+  const BadInput& c = GetParam();
+  fs::path d = badScenes();
+  SCOPED_TRACE(c.args());
+  fs::path out = d / "out.exr";
+  const std::string good = "GOOD EXISTING FILE";
+  std::ofstream(out) << good;
+  fs::path report = d / "bad_report.json";
+  fs::remove(report);
+  RunResult r = runVkmc("render " + c.args() + " -q -o " + out.string() + " --report " + report.string());
+  EXPECT_EQ(r.code, c.code);
+  EXPECT_NE(r.err.find(c.expect), std::string::npos) << "stderr: " << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "stderr: " << r.err;
+  EXPECT_EQ(slurp(out), good) << "a failed run touched the existing output";
+  EXPECT_FALSE(fs::exists(report));
+  for (const auto& f : fs::directory_iterator(d)) EXPECT_EQ(f.path().string().find(".vkmc-"), std::string::npos);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cli, CliBadInput,
+                         ::testing::Values(BadInput{"broken_gltf", "broken.gltf", "", "cannot load", 1},
+                                           BadInput{"missing_gltf", "missing.gltf", "", "cannot open", 1},
+                                           BadInput{"missing_bin", "nobin.gltf", "", "cannot load", 1},
+                                           BadInput{"accessor_past_the_end", "acc.gltf", "", "runs past the end", 1},
+                                           BadInput{"index_out_of_range", "idx.gltf", "", "out of range", 1},
+                                           BadInput{"infinite_position", "nan.gltf", "", "NaN or infinite position", 1},
+                                           BadInput{"no_triangles", "empty.gltf", "", "no triangles", 1},
+                                           BadInput{"spp_0", "", "--spp 0", "--spp", 1},
+                                           BadInput{"width_negative", "", "--width -4", "--width", 1},
+                                           BadInput{"width_100000", "", "--width 100000", "--width", 1},
+                                           BadInput{"image_too_large", "", "--width 16384 --height 16384", "too large", 1},
+                                           BadInput{"max_depth_negative", "", "--max-depth -1", "--max-depth", 1},
+                                           BadInput{"look_from_without_look_at", "", "--look-from 1,2,3", "--look-at", 1},
+                                           BadInput{"look_from_two_numbers", "", "--look-from 1,2 --look-at 0,0,0", "--look-from", 1},
+                                           BadInput{"camera_out_of_range", "", "--camera 5", "out of range", 1},
+                                           BadInput{"fov_0", "", "--fov 0 --look-from 0,0,5 --look-at 0,0,0", "--fov", 1},
+                                           BadInput{"background_nan", "", "--background nan,0,0", "--background", 1},
+                                           BadInput{"spp_not_a_number", "", "--spp abc", "spp", 2},
+                                           BadInput{"unknown_flag", "", "--no-such-flag", "no-such-flag", 2}),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(Cli, MissingOutputFolderFailsBeforeRendering) {
+  RunResult r = runVkmc("render " + cornell() + " -q -o /nonexistent-folder/x.exr");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+}
+
+TEST(Cli, ASceneWithoutEmittersIsLitByAWhiteEnvironmentAndSaysSo) {
+  vkmc::test::GltfSpec dark = vkmc::test::quadSpec();
+  dark.materialJson = R"({"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.5,0.5,1]}})";
+  std::string scene = vkmc::test::writeGltf(workDir(), "dark", dark);
+  fs::path report = workDir() / "dark.json";
+  std::string common = "render " + scene + " --width 16 --height 16 --spp 4 -q -o " + (workDir() / "dark.exr").string() +
+                       " --report " + report.string();
+  RunResult lit = runVkmc(common);
+  ASSERT_EQ(lit.code, 0) << lit.err;
+  EXPECT_NE(lit.err.find("no emitters: it is lit by a uniform white environment"), std::string::npos) << lit.err;
+  nlohmann::json j = nlohmann::json::parse(slurp(report));
+  EXPECT_GT(j["mean"][0].get<double>(), 0.1);
+  EXPECT_EQ(j["background"][0].get<double>(), 1.0);
+  RunResult black = runVkmc(common + " --background 0,0,0");  // asked for: black, without a word
+  ASSERT_EQ(black.code, 0) << black.err;
+  EXPECT_EQ(black.err, "");
+  EXPECT_EQ(nlohmann::json::parse(slurp(report))["mean"][0].get<double>(), 0.0);
+}

@@ -1,0 +1,237 @@
+// The GLSL side of every host <-> GPU encoding: shaders/probes/layout_probe.comp reads, by field name, structs the
+// host filled with a pattern, and decodes the scene texels GpuScene wrote with the shared functions. A field
+// whose std430 offset differs from the C++ one, a texel format that differs, or an encoding that the two
+// languages compile differently fails here.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstring>
+#include <random>
+
+#include "bvh/bvh.h"
+#include "bvh_layout.h"
+#include "layout.h"
+#include "render/gpu_scene.h"
+#include "support/render_helpers.h"
+#include "scene_layout.h"
+#include "spirv/layout_probe_spv.h"
+
+using namespace vkmc;
+
+namespace {
+
+constexpr uint32_t kSpecEchoStructs = 100;  // layout_probe.comp's constant_id
+
+// Words in the order the probe writes them.
+struct Words {
+  std::vector<uint32_t> w;
+  void put(uint32_t v) { w.push_back(v); }
+  void putf(float v) { put(std::bit_cast<uint32_t>(v)); }
+  void put3(glm::vec3 v) { putf(v.x), putf(v.y), putf(v.z); }
+  void put4(glm::vec4 v) { putf(v.x), putf(v.y), putf(v.z), putf(v.w); }
+  void put4u(glm::uvec4 v) { put(v.x), put(v.y), put(v.z), put(v.w); }
+};
+
+// Every 4-byte word a distinct float (first, first + 1, ...): a field read at another offset reads another value.
+template <typename T>
+T patterned(float first) {
+  static_assert(sizeof(T) % 4 == 0);
+  std::array<float, sizeof(T) / 4> words;
+  for (size_t i = 0; i < words.size(); ++i) words[i] = first + float(i);
+  return std::bit_cast<T>(words);
+}
+
+// The probe's echo, field by field, from the C++ view of the same bytes.
+Words echoedByName(const gpu::PathState& p, const gpu::ShadowRay& r, const gpu::Material& m, const gpu::FilmPixel& f,
+                   const gpu::Control& c, const gpu::PushConstants& pc) {
+  Words e;
+  e.put4(p.origin), e.put4(p.direction), e.put4(p.throughput), e.put4(p.radiance);
+  e.put(p.pixel), e.put(p.rngKey), e.put(p.depth), e.put(p.rootPath);
+  e.put4(r.origin), e.put4(r.direction), e.put4(r.contribution);
+  e.put4(m.baseColor), e.put4(m.emission), e.put4(m.params);
+  e.put4(f.sum), e.put4(f.sumSq), e.put4(f.sumHigh), e.put4(f.sumSqHigh);
+  e.put(c.rayQueueCount[0]), e.put(c.rayQueueCount[1]), e.put(c.shadowQueueCount), e.put(c.splitChildren);
+  e.put4u(c.rayArgs), e.put4u(c.shadowArgs), e.put4u(c.accumulateArgs);
+  e.put(c.cameraRays), e.put(c.extensionRays), e.put(c.shadowRays), e.put(c.unusedTotal);
+  e.put(c.nonfiniteEmission), e.put(c.nonfiniteLightSamples), e.put(c.nonfiniteThroughput), e.put(c.walksCut);
+  e.put4u(c.deepArgs);
+  e.put(c.deepWalksDeferred), e.put(c.deepWalksTraced), e.put(c.unusedDeep0), e.put(c.unusedDeep1);
+  e.put(c.walkIterations), e.put(c.walkNodeSteps), e.put(c.walkTriangleTests), e.put(c.walkSlowestLaneIterations);
+  e.put(pc.pathCount), e.put(pc.firstPixel), e.put(pc.sampleIndex), e.put(pc.bounce);
+  e.put(pc.width), e.put(pc.height), e.put(pc.seed), e.put(pc.queueCapacity);
+  e.put4(pc.cameraOrigin), e.put4(pc.cameraForward), e.put4(pc.cameraRight), e.put4(pc.cameraUp), e.put4(pc.background);
+  e.put(pc.pixelCount), e.put(pc.samplesPerPass), e.put(pc.unused0), e.put(pc.unused1);
+  return e;
+}
+
+// Random triangles with random (also downward) vertex normals, every fifth emissive with its own power.
+Scene probeScene() {
+  Scene s;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  for (int k = 0; k < 4; ++k) {
+    Material m;
+    m.baseColor = glm::vec3(0.2f * float(k + 1));
+    if (k > 1) m.emission = glm::vec3(float(k), 1.0f, 0.5f);
+    s.materials.push_back(m);
+  }
+  for (uint32_t t = 0; t < 60; ++t) {
+    for (int k = 0; k < 3; ++k) {
+      glm::vec3 p(u(rng), u(rng), u(rng));
+      s.positions.push_back(p);
+      s.normals.push_back(glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + glm::vec3(0.0f, 0.0f, 1e-3f)));
+      s.bounds.grow(p);
+    }
+    s.materialIds.push_back(t % 5 == 0 ? 2u + t % 2u : t % 2u);
+  }
+  return s;
+}
+
+struct Probe {
+  vk::Context& ctx = test::sharedContext();
+  Scene scene = probeScene();
+  Bvh bvh = buildBvh(scene.triangleBounds());
+  GpuScene gpuScene{ctx, scene, bvh};
+  vk::KernelLayout layout{ctx};
+  vk::Buffer out{ctx, 1u << 20, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible};
+  vk::Buffer placeholder{ctx, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal};
+  Probe() {
+    test::bindPlaceholders(layout, placeholder, {});
+    gpuScene.bindTo(layout);
+    layout.bindStorage(BINDING_TEST_HITS, out);
+  }
+  std::vector<uint32_t> run(bool echo, const gpu::PushConstants& pc, size_t words) {
+    vk::Kernel kernel(ctx, layout, "layout_probe", kSpirv_layout_probe,
+                      {{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {kSpecEchoStructs, echo ? 1u : 0u}});
+    std::memset(out.mapped(), 0, out.size());
+    ctx.runCommands([&](VkCommandBuffer cmd) { vk::dispatch(cmd, layout, kernel, &pc, sizeof(pc), 1); });
+    std::vector<uint32_t> w(words);
+    std::memcpy(w.data(), out.mapped(), words * 4);
+    return w;
+  }
+};
+
+template <typename T>
+vk::Buffer bufferHolding(vk::Context& ctx, const T& value) {
+  vk::Buffer b(ctx, sizeof(T), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
+  std::memcpy(b.mapped(), &value, sizeof(T));
+  return b;
+}
+
+template <typename T>
+std::vector<T> downloaded(const vk::Buffer& b) {
+  std::vector<T> v(b.size() / sizeof(T));
+  const_cast<vk::Buffer&>(b).download(v.data(), v.size() * sizeof(T));
+  return v;
+}
+
+}  // namespace
+
+TEST(LayoutProbe, GlslReadsEveryStructFieldAtItsCppOffset) {
+  Probe probe;
+  auto path = patterned<gpu::PathState>(1000.0f);
+  auto ray = patterned<gpu::ShadowRay>(2000.0f);
+  auto material = patterned<gpu::Material>(3000.0f);
+  auto pixel = patterned<gpu::FilmPixel>(4000.0f);
+  auto control = patterned<gpu::Control>(5000.0f);
+  auto pc = patterned<gpu::PushConstants>(6000.0f);
+  vk::Buffer paths = bufferHolding(probe.ctx, path), rays = bufferHolding(probe.ctx, ray),
+             materials = bufferHolding(probe.ctx, material), film = bufferHolding(probe.ctx, pixel),
+             controlBuffer = bufferHolding(probe.ctx, control);
+  probe.layout.bindStorage(BINDING_PATHS, paths);
+  probe.layout.bindStorage(BINDING_SHADOW_QUEUE, rays);
+  probe.layout.bindStorage(BINDING_MATERIALS, materials);
+  probe.layout.bindStorage(BINDING_FILM, film);
+  probe.layout.bindStorage(BINDING_CONTROL, controlBuffer);
+  Words expected = echoedByName(path, ray, material, pixel, control, pc);
+  // Every word of every struct is echoed once: no field is left out of the comparison.
+  ASSERT_EQ(expected.w.size() * 4, sizeof(path) + sizeof(ray) + sizeof(material) + sizeof(pixel) + sizeof(control) + sizeof(pc));
+  std::vector<uint32_t> got = probe.run(true, pc, expected.w.size());
+  for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], expected.w[i]) << "echoed word " << i;
+}
+
+TEST(LayoutProbe, GlslDecodesTheSceneTexelsAsTheHostEncodedThem) {
+  Probe probe;
+  const Scene& scene = probe.scene;
+  const uint32_t triangles = uint32_t(scene.triangleCount()), picks = 97, nodes = uint32_t(probe.bvh.wideNodes.size()),
+                 leafEntries = 64;
+  gpu::PushConstants pc{};
+  pc.pathCount = triangles, pc.pixelCount = picks, pc.width = nodes, pc.height = leafEntries;
+  const size_t words = triangles * 23 + picks * 2 + nodes * 42 + leafEntries * 4;
+  std::vector<uint32_t> got = probe.run(false, pc, words);
+  // The host's view of the same texels, decoded with the C++ build of the same functions.
+  auto triTexels = downloaded<glm::vec4>(probe.gpuScene.triangles());
+  auto infoTexels = downloaded<glm::uvec4>(probe.gpuScene.triangleInfo());
+  auto lightTexels = downloaded<glm::uvec4>(probe.gpuScene.lights());
+  size_t at = 0;
+  auto next = [&] { return got[at++]; };
+  auto nextf = [&] { return std::bit_cast<float>(got[at++]); };
+  double pmfTotal = 0.0;
+  std::vector<float> pmfOf(triangles);
+  for (uint32_t t = 0; t < triangles; ++t) {
+    const uint32_t src = probe.bvh.triangleOrder[t];
+    for (int k = 0; k < 3; ++k)
+      for (int a = 0; a < 3; ++a) EXPECT_EQ(nextf(), scene.positions[3 * src + k][a]) << "triangle " << t;
+    pmfOf[t] = nextf();
+    EXPECT_EQ(pmfOf[t], triTexels[gpu::kTriangleTexels * t + gpu::kTriangleLightPmfTexel].w);
+    EXPECT_EQ(pmfOf[t] > 0.0f, scene.materials[scene.materialIds[src]].isEmissive()) << "triangle " << t;
+    pmfTotal += pmfOf[t];
+    EXPECT_EQ(next(), scene.materialIds[src]);
+    for (int k = 0; k < 3; ++k) {
+      glm::vec3 host = gpu::decodeOctahedral(infoTexels[t][k]), device;
+      for (int a = 0; a < 3; ++a) device[a] = nextf();
+      for (int a = 0; a < 3; ++a) EXPECT_NEAR(device[a], host[a], 1e-6f) << "normal " << k << " of triangle " << t;
+      EXPECT_GT(glm::dot(device, scene.normals[3 * src + k]), 0.99999f) << "16-bit octahedral normal of triangle " << t;
+      // Re-encoding a decoded normal: the same bits up to one snorm step per component (rounding of ties).
+      glm::ivec2 d = glm::ivec2(glm::unpackSnorm2x16(next()) * 32767.0f) -
+                     glm::ivec2(glm::unpackSnorm2x16(gpu::encodeOctahedral(host)) * 32767.0f);
+      EXPECT_LE(std::max(std::abs(d.x), std::abs(d.y)), 1) << "normal " << k << " of triangle " << t;
+    }
+  }
+  EXPECT_NEAR(pmfTotal, 1.0, 1e-5);
+  const uint32_t lights = uint32_t(lightTexels.size());
+  for (uint32_t k = 0; k < picks; ++k) {
+    float scaled = (float(k) + 0.5f) / float(picks) * float(lights);
+    uint32_t slot = gpu::aliasSlot(scaled, lights);
+    glm::uvec4 chosen = lightTexels[gpu::aliasChoice(scaled, slot, lightTexels[slot])];
+    uint32_t tri = next();
+    EXPECT_EQ(tri, gpu::lightEntryTriangle(chosen)) << "light pick " << k;
+    EXPECT_EQ(nextf(), gpu::lightEntryPmf(chosen)) << "light pick " << k;
+    ASSERT_LT(tri, triangles);
+    EXPECT_EQ(gpu::lightEntryPmf(chosen), pmfOf[tri]) << "the entry's pmf is its triangle's";
+  }
+  for (uint32_t n = 0; n < nodes; ++n) {
+    const BvhWideNode& node = probe.bvh.wideNodes[n];
+    const glm::uvec4 grid = node.texels[gpu::kBvhWideGridTexel];
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(next(), grid[a]) << "origin of node " << n;
+    glm::vec3 step = gpu::bvhWideStep(grid.w);
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(nextf(), step[a]) << "step of node " << n;
+    for (uint32_t axis = 0; axis < 3; ++axis) {
+      glm::uvec2 planes =
+          gpu::bvhWidePlaneWords(node.texels[gpu::kBvhWideXyPlanesTexel], node.texels[gpu::kBvhWideZPlanesTexel], axis);
+      for (uint32_t word : {planes.x, planes.y})
+        for (int c = 0; c < 4; ++c) EXPECT_EQ(next(), gpu::bvhWidePlaneSteps(word)[c]) << "planes of node " << n;
+    }
+    for (int c = 0; c < 4; ++c) {
+      uint32_t e = node.texels[gpu::kBvhWideChildTexel][c];
+      bool leaf = e != gpu::kBvhEmptySlot && gpu::bvhIsLeaf(e);
+      EXPECT_EQ(next(), leaf ? 1u : 0u) << "child " << c << " of node " << n;
+      EXPECT_EQ(next(), leaf ? gpu::bvhLeafFirst(e) : e);
+      EXPECT_EQ(next(), leaf ? gpu::bvhLeafCount(e) : 0u);
+    }
+  }
+  for (uint32_t i = 0; i < leafEntries; ++i) {
+    uint32_t first = (i * 2654435761u) % gpu::kBvhLeafFirstLimit, count = 1u + i % gpu::kBvhMaxLeafSize;
+    EXPECT_EQ(next(), gpu::bvhLeafEntry(first, count));
+    EXPECT_EQ(next(), first);
+    EXPECT_EQ(next(), count);
+    EXPECT_EQ(next(), 1u);
+  }
+  EXPECT_EQ(at, words);
+}
+
+TEST(LayoutProbe, SceneTexelFormatsComeFromTheGlslDeclarations) {
+  EXPECT_EQ(sceneTexelFormat(BINDING_TRIANGLES), VK_FORMAT_R32G32B32A32_SFLOAT);
+  for (uint32_t b : {BINDING_TRIANGLE_INFO, BINDING_BVH_NODES, BINDING_LIGHTS})
+    EXPECT_EQ(sceneTexelFormat(b), VK_FORMAT_R32G32B32A32_UINT) << "binding " << b;
+}

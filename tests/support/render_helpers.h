@@ -1,0 +1,106 @@
+// Rendering helpers for statistical render tests: one shared Vulkan context, region statistics from the
+// film's per-pixel variance of the mean, and their z-tests (z_test.h).
+#pragma once
+#include <glm/glm.hpp>
+
+#include <string>
+
+#include <algorithm>
+#include <initializer_list>
+#include <vector>
+
+#include "../shaders/shared/layout.h"
+#include "app/render_job.h"
+#include "vk/kernel.h"
+#include "z_test.h"
+
+namespace vkmc::test {
+
+inline vk::Context& sharedContext() {
+  static vk::Context ctx;
+  return ctx;
+}
+
+// Appends the quad o, o + u, o + u + v, o + v (front face along u x v) to an in-memory scene.
+inline void addQuad(Scene& s, glm::vec3 o, glm::vec3 u, glm::vec3 v, uint32_t material) {
+  glm::vec3 n = glm::normalize(glm::cross(u, v));
+  for (glm::vec3 p : {o, o + u, o + u + v, o, o + u + v, o + v}) {
+    s.positions.push_back(p);
+    s.normals.push_back(n);
+    s.bounds.grow(p);
+  }
+  s.materialIds.insert(s.materialIds.end(), {material, material});
+}
+
+// Binds a placeholder buffer to every storage binding a standalone test kernel declares but never touches.
+inline void bindPlaceholders(vk::KernelLayout& layout, const vk::Buffer& placeholder, std::initializer_list<uint32_t> except) {
+  for (uint32_t b = BINDING_MATERIALS; b < BINDING_COUNT; ++b)
+    if (std::find(except.begin(), except.end(), b) == except.end()) layout.bindStorage(b, placeholder);
+}
+
+inline std::string scenePath(const std::string& name) { return std::string(VKMC_SOURCE_DIR) + "/scenes/" + name; }
+
+inline RenderOutcome renderWith(const std::string& scene, const EstimatorConfig& e, uint32_t w, uint32_t h, uint32_t spp,
+                                uint32_t seed = 4242) {
+  RenderOptions o;
+  o.scenePath = scenePath(scene);
+  o.width = w;
+  o.height = h;
+  o.spp = spp;
+  o.seed = seed;
+  o.estimator = e;
+  o.progress = false;
+  return runRender(sharedContext(), o);
+}
+
+// Mean over a pixel rectangle [x0, x1) x [y0, y1) and the variance of that mean (pixels are independent).
+struct RegionStats {
+  glm::dvec3 mean{0.0};
+  glm::dvec3 variance{0.0};
+};
+
+inline RegionStats region(const Film& f, uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1) {
+  RegionStats r;
+  double n = 0;
+  for (uint32_t y = y0; y < y1; ++y)
+    for (uint32_t x = x0; x < x1; ++x) {
+      size_t p = size_t(y) * f.width + x;
+      for (int c = 0; c < 3; ++c) {
+        r.mean[c] += f.mean(p, c);
+        r.variance[c] += f.varianceOfMean(p, c);
+      }
+      n += 1;
+    }
+  r.mean /= n;
+  r.variance /= n * n;
+  return r;
+}
+
+inline RegionStats whole(const Film& f) { return region(f, 0, 0, f.width, f.height); }
+
+// The colour channels of two independent region estimates as z-tests (z_test.h).
+inline std::vector<ZTest> channelZTests(const RegionStats& a, const RegionStats& b) {
+  std::vector<ZTest> t;
+  for (int c = 0; c < 3; ++c) t.push_back(zTest2(a.mean[c], a.variance[c], b.mean[c], b.variance[c]));
+  return t;
+}
+
+inline std::vector<ZTest> channelZTests(const RegionStats& a, glm::dvec3 exact) {
+  RegionStats b;
+  b.mean = exact;
+  return channelZTests(a, b);
+}
+
+// Largest |z| of the difference of two independent estimates (or of one against an exact value), over the channels.
+inline double maxZ(const RegionStats& a, const RegionStats& b) { return maxAbsZ(channelZTests(a, b)); }
+inline double maxZ(const RegionStats& a, glm::dvec3 exact) { return maxAbsZ(channelZTests(a, exact)); }
+
+// gtest forms of maxZ(...) < k, whose failure message lists each channel's test.
+inline ::testing::AssertionResult regionsAgree(const RegionStats& a, const RegionStats& b, double k) {
+  return allBelowSigmas(channelZTests(a, b), k);
+}
+inline ::testing::AssertionResult regionMatches(const RegionStats& a, glm::dvec3 exact, double k) {
+  return allBelowSigmas(channelZTests(a, exact), k);
+}
+
+}  // namespace vkmc::test

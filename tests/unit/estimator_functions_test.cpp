@@ -1,0 +1,104 @@
+// The shared estimator functions (shaders/shared/sampling.h, light_sampling.h, roulette.h, mis.h) as pure
+// functions: each sampling map with its inverse (round trip), each pdf against the measure it claims, roulette
+// and splitting unbiased in closed form, MIS weights a partition of unity.
+#include <gtest/gtest.h>
+
+#include "light_sampling.h"
+#include "mis.h"
+#include "rng.h"
+#include "roulette.h"
+#include "sampling.h"
+#include "support/z_test.h"
+
+using namespace vkmc::gpu;
+
+namespace {
+vec2 uniformPair(uint i, uint seed) {
+  uint key = pathKey(seed, i, 0u);
+  return vec2(randomUnit(key, 0u), randomUnit(key, 1u));
+}
+}  // namespace
+
+TEST(EstimatorFunctions, SamplingMapsInvertToTheirRandomNumbers) {
+  for (uint i = 0; i < 20000; ++i) {
+    vec2 u = uniformPair(i, 11u);
+    vec2 t = invertUniformTriangleSample(sampleUniformTriangle(u));
+    EXPECT_NEAR(t.x, u.x, 1e-5f) << "triangle, u = " << u.x << "," << u.y;
+    if (u.x > 1e-3f) EXPECT_NEAR(t.y, u.y, 2e-3f) << "triangle, u = " << u.x << "," << u.y;  // ill-posed at the apex
+    vec2 h = invertUniformHemisphereSample(sampleUniformHemisphere(u));
+    EXPECT_NEAR(h.x, u.x, 1e-5f);
+    if (u.x < 0.999f) EXPECT_NEAR(std::fmod(h.y - u.y + 1.5f, 1.0f) - 0.5f, 0.0f, 1e-4f) << "hemisphere phi";
+    vec3 w = sampleCosineHemisphere(u);
+    vec2 c = invertCosineHemisphereSample(w);
+    EXPECT_NEAR(c.x, u.x, 1e-4f) << "cosine, u = " << u.x << "," << u.y;
+    EXPECT_NEAR(c.y, u.y, 1e-4f) << "cosine, u = " << u.x << "," << u.y;
+  }
+}
+
+TEST(EstimatorFunctions, AreaSampledLightPdfIntegratesToTheSolidAngle) {
+  // E[1 / pdf] over area samples is the triangle's solid angle (pmf 1); spherical samples have pdf 1 / solid angle.
+  vec3 p(0.1f, -0.2f, 0.0f), v0(-1.0f, -0.5f, 2.0f), v1(1.5f, -0.4f, 2.5f), v2(0.2f, 1.2f, 1.6f);
+  vec4 cr = scaledTriangleCross(v0, v1, v2);
+  vec3 nl = normalize(vec3(cr));
+  float area = scaledCrossArea(cr), omega = triangleSolidAngle(p, v0, v1, v2);
+  double sum = 0, sumSq = 0;
+  const uint n = 200000;
+  for (uint i = 0; i < n; ++i) {
+    vec2 u = uniformPair(i, 12u);
+    TriangleLightSample a = sampleTriangleLight(kLightSamplingArea, p, v0, v1, v2, nl, u);
+    ASSERT_FALSE(a.spherical);
+    vec3 d = a.point - p;
+    float dist2 = dot(d, d), cosLight = std::abs(dot(nl, normalize(d)));
+    float pdf = triangleLightPdf(a.spherical, a.solidAngle, 1.0f, area, dist2, cosLight);
+    EXPECT_FLOAT_EQ(pdf, triangleLightPdfAt(kLightSamplingArea, p, v0, v1, v2, 1.0f, area, dist2, cosLight));
+    sum += 1.0 / pdf, sumSq += 1.0 / (double(pdf) * pdf);
+    TriangleLightSample s = sampleTriangleLight(kLightSamplingSolidAngle, p, v0, v1, v2, nl, u);
+    ASSERT_TRUE(s.spherical);
+    EXPECT_FLOAT_EQ(triangleLightPdf(s.spherical, s.solidAngle, 1.0f, area, 1.0f, 1.0f), 1.0f / omega);
+    EXPECT_NEAR(dot(s.point - v0, nl), 0.0f, 1e-5f) << "spherical sample off the triangle's plane";
+  }
+  auto [mean, sigma] = vkmc::test::sampleMean(sum, sumSq, n);
+  EXPECT_TRUE(vkmc::test::withinSigmas(vkmc::test::zTest(mean, omega, sigma), 5.0));
+}
+
+TEST(EstimatorFunctions, RouletteKeepsTheExpectedValue) {
+  // Over r uniform, fixed roulette's F' = survives ? (F - q c) / (1 - q) : c has mean F; throughput roulette's
+  // F / survival on survival has mean F; splitCount(q, u) has mean q.
+  const int n = 100000;
+  for (float q : {0.1f, 0.5f, 0.9f}) {
+    double fixedMean = 0, splitMean = 0;
+    const double f = 2.0, c = 0.7;
+    for (int i = 0; i < n; ++i) {
+      float r = (float(i) + 0.5f) / float(n);
+      RouletteStep s = fixedRoulette(q, r);
+      fixedMean += s.survives ? (f - fixedRouletteCompensation(q) * (1.0 - q) * c) / s.survival : c;
+      splitMean += splitCount(q * 3.0f, r);
+    }
+    EXPECT_NEAR(fixedMean / n, f, 1e-4) << "fixed roulette, q " << q;
+    EXPECT_NEAR(splitMean / n, q * 3.0, 1e-4) << "splitCount, q " << q;
+  }
+  for (float beta : {0.01f, 0.3f, 0.999f, 5.0f}) {
+    double mean = 0;
+    for (int i = 0; i < n; ++i) {
+      RouletteStep s = throughputRoulette(beta, 1.0f, (float(i) + 0.5f) / float(n));
+      if (s.survives) mean += beta / s.survival;
+    }
+    EXPECT_NEAR(mean / n, beta, 2e-4 * beta) << "throughput roulette, beta " << beta;
+    EXPECT_LE(throughputRoulette(beta, 1.0f, 0.5f).survival, kRouletteMaxSurvival);
+  }
+  EXPECT_TRUE(rouletteApplies(2u, 3u));
+  EXPECT_FALSE(rouletteApplies(1u, 3u));
+  EXPECT_EQ(splitFactorAt(0u, 1u, 4u), 4u);
+  EXPECT_EQ(splitFactorAt(1u, 1u, 4u), 1u);
+  EXPECT_EQ(splitFactorAt(0u, 2u, 2.5f), 2.5f);
+}
+
+TEST(EstimatorFunctions, MisWeightsOfTwoTechniquesSumToOne) {
+  for (uint i = 0; i < 1000; ++i) {
+    vec2 u = uniformPair(i, 13u);
+    float a = std::exp(20.0f * u.x - 10.0f), b = std::exp(20.0f * u.y - 10.0f);
+    for (uint h : {kMisBalance, kMisPower}) EXPECT_NEAR(misWeight(h, a, b) + misWeight(h, b, a), 1.0f, 1e-6f);
+    EXPECT_EQ(misWeight(kMisNone, a, b), 1.0f);
+  }
+  EXPECT_EQ(misWeight(kMisPower, 0.0f, 0.0f), 0.0f);
+}
