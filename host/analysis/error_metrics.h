@@ -29,6 +29,4 @@ ErrorMetrics compareImages(const ExrImage& image, const ExrImage& reference, dou
 // Per-pixel squared error (R, G, B) and relMSE (Y): an EXR heat map.
 ExrImage errorHeatmap(const ExrImage& image, const ExrImage& reference);
 
-ExrImage filmToImage(const class Film& film);
-
 }  // namespace vkmc

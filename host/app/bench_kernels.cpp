@@ -12,8 +12,8 @@
 #include "bvh/bvh.h"
 #include "error.h"
 #include "render/gpu_scene.h"
-#include "render/benchmark_rays.h"
-#include "render/ray_tracer.h"
+#include "bench/benchmark_rays.h"
+#include "bench/ray_tracer.h"
 #include "scene/gltf_loader.h"
 #include "io/exr.h"
 #include "io/output_files.h"
@@ -124,7 +124,7 @@ nlohmann::json printKernels(const std::string& name, const Samples& s) {
           {"shadow_rays_by_bounce", s.shadowRaysByBounce}};
 }
 
-// The traversal alone, on the ray arrays of render/benchmark_rays.h (camera rays, then four diffuse bounce rays
+// The traversal alone, on the ray arrays of bench/benchmark_rays.h (camera rays, then four diffuse bounce rays
 // per hit), through the 4-wide BVH and, interleaved, the binary one. Mrays/s from the trace kernel's timestamps.
 struct TraceRates {
   std::vector<double> primary, diffuse, diffuseBinary;

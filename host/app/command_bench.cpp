@@ -1,11 +1,11 @@
-// `vkmc bench STUDY`: an error-against-time study (analysis/study.h) and where its outputs went.
+// `vkmc bench STUDY`: an error-against-time study (app/study.h) and where its outputs went.
 #include <CLI/CLI.hpp>
 
 #include <fstream>
 #include <iostream>
 #include <memory>
 
-#include "analysis/study.h"
+#include "app/study.h"
 #include "app/commands.h"
 
 namespace vkmc {
@@ -16,7 +16,7 @@ Command addBenchCommand(CLI::App& app) {
   };
   auto a = std::make_shared<BenchArgs>();
   CLI::App* bench = app.add_subcommand("bench", "error-against-time study: renders, results.csv/json, SVG plot, summary, images");
-  bench->add_option("study", a->studyPath, "study file (JSON; see host/analysis/study.h and scenes/studies/)")->required();
+  bench->add_option("study", a->studyPath, "study file (JSON; see host/app/study.h and scenes/studies/)")->required();
   bench->add_option("-o,--output", a->outDir, "output folder (default bench-<study name>)");
   return {bench, [a] {
             Study study = loadStudy(a->studyPath);

@@ -9,7 +9,6 @@
 #include <ImfStdIO.h>
 
 
-#include "analysis/error_metrics.h"
 #include "error.h"
 #include "io/output_files.h"
 
@@ -40,6 +39,28 @@ std::string encodeExr(const ExrImage& image) {
 }
 
 void writeExr(const std::string& path, const ExrImage& image) { writeFileAtomically(path, encodeExr(image)); }
+
+ExrImage filmToImage(const Film& film) {
+  ExrImage img;
+  img.width = static_cast<int>(film.width);
+  img.height = static_cast<int>(film.height);
+  const char* rgb[] = {"R", "G", "B"};
+  const char* var[] = {"variance.R", "variance.G", "variance.B"};
+  for (int c = 0; c < 3; ++c) {
+    auto& m = img.channels[rgb[c]];
+    auto& v = img.channels[var[c]];
+    m.resize(film.pixels());
+    v.resize(film.pixels());
+    for (size_t p = 0; p < film.pixels(); ++p) {
+      m[p] = static_cast<float>(film.mean(p, c));
+      v[p] = static_cast<float>(film.varianceOfMean(p, c));
+    }
+  }
+  auto& s = img.channels["samples"];
+  s.resize(film.pixels());
+  for (size_t p = 0; p < film.pixels(); ++p) s[p] = static_cast<float>(film.count[p]);
+  return img;
+}
 
 void writeFilmExr(const std::string& path, const Film& film) { writeExr(path, filmToImage(film)); }
 std::string encodeFilmExr(const Film& film) { return encodeExr(filmToImage(film)); }

@@ -15,6 +15,8 @@ struct ExrImage {
 
 // Channels R, G, B (mean), variance.R/G/B (variance of the mean), samples. Written all or nothing
 // (io/output_files.h): a failed run never leaves a partial or clobbered file.
+// The film as an image: mean R, G, B and the variance of each mean (variance.R, .G, .B).
+ExrImage filmToImage(const Film& film);
 void writeFilmExr(const std::string& path, const Film& film);
 void writeExr(const std::string& path, const ExrImage& image);
 std::string encodeFilmExr(const Film& film);

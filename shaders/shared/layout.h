@@ -155,7 +155,7 @@ struct PushConstants {
   uint unused0, unused1;
 };
 
-// Push constants of the analytic furnace probe (shaders/kernels/roulette_furnace.comp).
+// Push constants of the analytic furnace probe (shaders/probes/roulette_furnace.comp).
 struct FurnaceProbePush {
   float albedo;       // Lambertian albedo of the surface every ray hits
   float emission;     // its emitted radiance Le: L = Le / (1 - albedo)

@@ -1,4 +1,4 @@
-// The lecture's bad-pdf counterexample, computed by a compute kernel (shaders/kernels/pdf_demo.comp): sampling
+// The lecture's bad-pdf counterexample, computed by a compute kernel (shaders/probes/pdf_demo.comp): sampling
 // by a pdf shaped unlike the integrand keeps the mean but makes the variance far worse than uniform sampling.
 // Exact values: uniform variance 0.0099; bad-pdf variance 0.0099 * 101^2 + 0.9901 * (1/9901)^2 - 1 = 99.99.
 #include <gtest/gtest.h>

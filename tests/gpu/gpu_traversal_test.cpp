@@ -7,7 +7,7 @@
 #include "support/adversarial_geometry.h"
 #include "bvh/bvh.h"
 #include "render/gpu_scene.h"
-#include "render/ray_tracer.h"
+#include "bench/ray_tracer.h"
 
 using namespace vkmc;
 

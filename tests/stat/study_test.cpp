@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "analysis/study.h"
+#include "app/study.h"
 #include "error.h"
 
 namespace fs = std::filesystem;

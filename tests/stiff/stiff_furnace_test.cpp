@@ -3,7 +3,7 @@
 //
 // Through the whole wavefront that takes ~2.5e7 paths of 100-1000 vertices (the roulette estimator's relative
 // standard deviation per path is ~1 here): hours on lavapipe. So the 0.1% claim is tested on the analytic
-// furnace probe (shaders/kernels/roulette_furnace.comp: shade's per-vertex continuation and roulette code with
+// furnace probe (shaders/probes/roulette_furnace.comp: shade's per-vertex continuation and roulette code with
 // the intersection left out), with the efficiency-roulette scales the real renderer's pilot chooses on the
 // furnace scenes; and the real renders of those scenes are checked against the same answer at their own 5 sigma.
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Traversal baseline: the same incoherent rays traced by vkmc's closest-hit kernel (on the Vulkan device) and by
 // Embree 3's rtcIntersect1 (on the host, the same number of threads as lavapipe's), in one run, side by side.
-// Rays come from vkmc (render/benchmark_rays.h: four diffuse bounce rays per primary hit), or from a dump
+// Rays come from vkmc (bench/benchmark_rays.h: four diffuse bounce rays per primary hit), or from a dump
 // (`--rays FILE`, written with `--dump DIR`). Built only when Debian's libembree-dev is installed; run with
 // tools/embree_baseline.sh, which installs it.
 #include <embree3/rtcore.h>
@@ -18,9 +18,9 @@
 
 #include "error.h"
 #include "io/exr.h"
-#include "render/benchmark_rays.h"
+#include "bench/benchmark_rays.h"
 #include "render/gpu_scene.h"
-#include "render/ray_tracer.h"
+#include "bench/ray_tracer.h"
 #include "scene/gltf_loader.h"
 #include "vk/context.h"
 

@@ -1,5 +1,5 @@
 // Study runner: reference (given or cached), interleaved ladder of renders, results, plot and summary.
-#include "analysis/study.h"
+#include "app/study.h"
 
 #include <algorithm>
 #include <chrono>

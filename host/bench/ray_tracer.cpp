@@ -1,5 +1,5 @@
 // Ray-array tracing with the trace_rays kernel.
-#include "render/ray_tracer.h"
+#include "bench/ray_tracer.h"
 
 #include <cstring>
 #include <map>

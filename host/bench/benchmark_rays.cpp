@@ -1,4 +1,4 @@
-#include "render/benchmark_rays.h"
+#include "bench/benchmark_rays.h"
 
 #include <cstring>
 #include <fstream>
@@ -9,7 +9,7 @@
 #include "error.h"
 #include "io/exr.h"
 #include "io/output_files.h"
-#include "render/ray_tracer.h"
+#include "bench/ray_tracer.h"
 #include "scene/camera_rig.h"
 
 namespace vkmc {
