@@ -14,20 +14,7 @@
 #include "../shaders/shared/layout.h"
 #include "../shaders/shared/sampling.h"
 #include "error.h"
-#include "render/background_warm_up.h"
-#include "spirv/accumulate_spv.h"
-#include "spirv/camera_rays_spv.h"
-#include "spirv/intersect_deep_spv.h"
-#include "spirv/intersect_spv.h"
-#include "spirv/megakernel_spv.h"
-#include "spirv/prepare_bounce_spv.h"
-#include "spirv/prepare_shadow_spv.h"
-#include "spirv/shade_atomic_spv.h"
-#include "spirv/shade_spv.h"
-#include "spirv/shadow_atomic_deep_spv.h"
-#include "spirv/shadow_atomic_spv.h"
-#include "spirv/shadow_deep_spv.h"
-#include "spirv/shadow_spv.h"
+#include "render/path_pool.h"
 
 namespace vkmc {
 
@@ -39,10 +26,6 @@ constexpr uint32_t kLaterChunkBounces = 16;
 constexpr uint32_t kSamplesPerBatch = 64;  // samples in a float batch sum before it is folded into double
 }  // namespace
 
-struct PathRenderer::Kernels {
-  std::unique_ptr<vk::Kernel> camera, prepareBounce, intersect, intersectDeep, shade, prepareShadow, shadow, shadowDeep,
-      accumulate, megakernel;
-};
 
 const char* toString(Integrator i) { return i == Integrator::Megakernel ? "megakernel" : "wavefront"; }
 
@@ -57,63 +40,57 @@ uint32_t PathRenderer::groupsFor(uint32_t n) const { return (n + settings_.workg
 PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings)
     : ctx_(ctx), scene_(scene), settings_(settings) {
   const auto& limits = ctx.properties().limits;
-  // Below 32 the indirect dispatch of a full path pool (~1.7M paths) would pass 65535 workgroups.
-  const uint32_t ws = settings.workgroupSize;
-  if (ws != 32 && ws != 64 && ws != 128 && ws != 256)
-    throw Error("--workgroup must be 32, 64, 128 or 256 (got " + std::to_string(ws) + ")");
-  if (ws > limits.maxComputeWorkGroupSize[0] || ws > limits.maxComputeWorkGroupInvocations)
-    throw Error("--workgroup " + std::to_string(ws) + " exceeds this device's limit of " +
-                std::to_string(std::min(limits.maxComputeWorkGroupSize[0], limits.maxComputeWorkGroupInvocations)));
-  uint64_t pixels = static_cast<uint64_t>(settings.width) * settings.height;
-  uint64_t filmBytes = pixels * sizeof(gpu::FilmPixel);
-  if (filmBytes > limits.maxStorageBufferRange)
-    throw Error("image " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + " is too large: its film needs " +
-                std::to_string(filmBytes >> 20) + " MiB, the device's storage-buffer limit is " +
-                std::to_string(limits.maxStorageBufferRange >> 20) + " MiB");
-  uint64_t plannedSamples = settings.timeBudget > 0.0 ? std::min<uint64_t>(settings.spp, 64) : settings.spp;
-  capacity_ = static_cast<uint32_t>(std::min<uint64_t>(pixels * plannedSamples, settings.maxPathsPerPass));
-  capacity_ = std::min<uint32_t>(capacity_, limits.maxStorageBufferRange / sizeof(gpu::PathState));
+  checkDeviceLimits(settings, limits);
   const EstimatorConfig& est = settings.estimator;
-  est.validate();
   const bool megakernel = settings.integrator == Integrator::Megakernel;
   if (megakernel && est.splitsPaths())
     throw Error("bsdf_samples > 1 (splitting paths) needs the wavefront integrator's path pool; use --integrator wavefront");
   if (est.needsFloatAtomics() && !ctx.hasFloatAtomics())
     throw Error("light_samples > 1 needs buffer float atomics (VK_EXT_shader_atomic_float), which this device lacks");
-  // The pool holds camera paths and split children; each pooled path queues up to M shadow rays per bounce.
-  const uint32_t poolFactor = est.pathPoolFactor();
-  capacity_ = std::min<uint32_t>(capacity_, limits.maxStorageBufferRange / (sizeof(gpu::PathState) * poolFactor));
-  capacity_ = std::min<uint32_t>(capacity_, limits.maxStorageBufferRange / (sizeof(gpu::ShadowRay) * est.lightSamples * poolFactor));
-  capacity_ = std::max(capacity_, 1u);
-  pool_ = capacity_ * poolFactor;
-
-  auto storage = [&](VkDeviceSize bytes, vk::MemoryKind kind = vk::MemoryKind::DeviceLocal, VkBufferUsageFlags extra = 0) {
-    deviceBytes_ += bytes;
-    return vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | extra, kind);
-  };
-  paths_ = storage(uint64_t(pool_) * sizeof(gpu::PathState));
-  // The megakernel keeps hits and queues in registers: placeholders are bound.
-  hits_ = storage(megakernel ? 16 : uint64_t(pool_) * 16);
-  queues_ = storage(megakernel ? 16 : uint64_t(pool_) * 8);
   // A scene without emitters has no shadow stage: its queue is not allocated (a placeholder is bound).
   hasShadowStage_ = settings.features.emitters() && est.nee && !megakernel;
-  const uint64_t shadowSlots = hasShadowStage_ ? uint64_t(pool_) * est.lightSamples : 0;
-  shadowQueue_ = storage(hasShadowStage_ ? shadowSlots * sizeof(gpu::ShadowRay) : 16);
+  const PathPoolSize size = sizePathPool(settings, limits, hasShadowStage_);
+  capacity_ = size.cameraPaths;
+  pool_ = size.slots;
+  allocateBuffers(uint64_t(settings.width) * settings.height, size);
+  bindBuffers();
+  auto start = Clock::now();
+  std::memset(control_.mapped(), 0, sizeof(gpu::Control));
+  kernels_ = buildRenderKernels(ctx, *layout_, settings, hasShadowStage_, pool_);
+  timer_ = std::make_unique<vk::GpuTimer>(ctx, 2 * (8 + 5 * kFirstChunkBounces));
+  pipelineSeconds_ = since(start);
+}
+
+// Every buffer a pass uses; the megakernel keeps hits and queues in registers, so placeholders stand in for them.
+void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
+  const bool megakernel = settings_.integrator == Integrator::Megakernel;
+  auto storage = [&](VkDeviceSize bytes, vk::MemoryKind kind = vk::MemoryKind::DeviceLocal, VkBufferUsageFlags extra = 0) {
+    deviceBytes_ += bytes;
+    return vk::Buffer(ctx_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | extra, kind);
+  };
+  paths_ = storage(uint64_t(pool_) * sizeof(gpu::PathState));
+  hits_ = storage(megakernel ? 16 : uint64_t(pool_) * 16);
+  queues_ = storage(megakernel ? 16 : uint64_t(pool_) * 8);
+  shadowQueue_ = storage(hasShadowStage_ ? size.shadowSlots * sizeof(gpu::ShadowRay) : 16);
   // Room for every item of the larger trace stage, so a deferred walk is never turned away in practice.
-  deepWalks_ = storage(megakernel ? 16 : std::max<uint64_t>(pool_, shadowSlots) * sizeof(uint32_t));
+  deepWalks_ = storage(megakernel ? 16 : std::max<uint64_t>(pool_, size.shadowSlots) * sizeof(uint32_t));
   control_ = storage(sizeof(gpu::Control), vk::MemoryKind::HostVisible, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
-  film_ = storage(filmBytes, vk::MemoryKind::HostVisible);
+  film_ = storage(pixels * sizeof(gpu::FilmPixel), vk::MemoryKind::HostVisible);
+  std::memset(film_.mapped(), 0, pixels * sizeof(gpu::FilmPixel));
   pixelEstimate_ = storage(pixels * sizeof(float), vk::MemoryKind::HostVisible);
   std::memset(pixelEstimate_.mapped(), 0, pixels * sizeof(float));
   rouletteTable_ = storage(gpu::kRouletteTableDepths * sizeof(float), vk::MemoryKind::HostVisible);
   std::array<float, kRouletteTableDepths> noRoulette;
   noRoulette.fill(std::numeric_limits<float>::infinity());
   setRouletteScales(noRoulette);
-  depthStats_ = storage(settings.recordDepthStats ? uint64_t(pool_) * gpu::kRouletteTableDepths * 8 : 16,
+  depthStats_ = storage(settings_.recordDepthStats ? uint64_t(pool_) * gpu::kRouletteTableDepths * 8 : 16,
                         vk::MemoryKind::HostVisible);
+  queueStats_ = storage(gpu::kQueueStatsBounces * 8, vk::MemoryKind::HostVisible);
+}
 
-  layout_ = std::make_unique<vk::KernelLayout>(ctx);
-  scene.bindTo(*layout_);
+void PathRenderer::bindBuffers() {
+  layout_ = std::make_unique<vk::KernelLayout>(ctx_);
+  scene_.bindTo(*layout_);
   layout_->bindStorage(BINDING_PATHS, paths_);
   layout_->bindStorage(BINDING_HITS, hits_);
   layout_->bindStorage(BINDING_RAY_QUEUES, queues_);
@@ -124,89 +101,11 @@ PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const Render
   layout_->bindStorage(BINDING_PIXEL_ESTIMATE, pixelEstimate_);
   layout_->bindStorage(BINDING_ROULETTE_TABLE, rouletteTable_);
   layout_->bindStorage(BINDING_DEPTH_STATS, depthStats_);
-  queueStats_ = storage(gpu::kQueueStatsBounces * 8, vk::MemoryKind::HostVisible);
   layout_->bindStorage(BINDING_QUEUE_STATS, queueStats_);
-
-  auto start = Clock::now();
-  const KernelPlan plan = planKernels(settings);
-  const std::vector<vk::SpecConstant>& specs = plan.specs;
-  // Every kernel this render dispatches, and whether a helper thread compiles it (see BackgroundWarmUp): about
-  // half of the compile time each, the helper taking the tracing kernels.
-  struct Planned {
-    std::unique_ptr<vk::Kernel>* slot;
-    const char* name;
-    std::span<const uint32_t> spirv;
-    bool helper;
-  };
-  std::vector<Planned> planned;
-  auto spv = [](const auto& words) { return std::span<const uint32_t>(words); };
-  kernels_ = std::make_unique<Kernels>();
-  Kernels& k = *kernels_;
-  if (megakernel) {
-    planned.push_back({&k.megakernel, "megakernel", kSpirv_megakernel, false});
-  } else {
-    planned.push_back({&k.camera, "camera_rays", kSpirv_camera_rays, false});
-    planned.push_back({&k.prepareBounce, "prepare_bounce", kSpirv_prepare_bounce, false});
-    planned.push_back({&k.intersect, "intersect", kSpirv_intersect, true});
-    planned.push_back({&k.intersectDeep, "intersect_deep", kSpirv_intersect_deep, true});
-    planned.push_back({&k.shade, "shade", est.splitsPaths() ? spv(kSpirv_shade_atomic) : spv(kSpirv_shade), false});
-    if (hasShadowStage_) {
-      const bool atomics = est.needsFloatAtomics();
-      planned.push_back({&k.prepareShadow, "prepare_shadow", kSpirv_prepare_shadow, false});
-      planned.push_back({&k.shadow, "shadow", atomics ? spv(kSpirv_shadow_atomic) : spv(kSpirv_shadow), false});
-      planned.push_back({&k.shadowDeep, "shadow_deep", atomics ? spv(kSpirv_shadow_atomic_deep) : spv(kSpirv_shadow_deep), true});
-    }
-  }
-  planned.push_back({&k.accumulate, "accumulate", kSpirv_accumulate, true});
-  std::vector<KernelSource> helperShare;
-  if (compilesAtFirstDispatch(ctx))
-    for (const Planned& p : planned)
-      if (p.helper) helperShare.push_back({p.name, p.spirv, specs});
-  BackgroundWarmUp helper(std::move(helperShare));
-  for (const Planned& p : planned) *p.slot = std::make_unique<vk::Kernel>(ctx, *layout_, p.name, p.spirv, specs);
-  timer_ = std::make_unique<vk::GpuTimer>(ctx, 2 * (8 + 5 * kFirstChunkBounces));
-
-  // Warm-up: every kernel once on empty queues, so the driver's compile is not timed as rendering; the helper's
-  // share last, once it has compiled them into the cache.
-  std::memset(control_.mapped(), 0, sizeof(gpu::Control));
-  std::memset(film_.mapped(), 0, filmBytes);
-  gpu::PushConstants pc{};
-  pc.width = settings.width;
-  pc.height = settings.height;
-  pc.queueCapacity = pool_;
-  for (bool helperShare : {false, true}) {
-    if (helperShare) helper.wait();
-    ctx.runCommands([&](VkCommandBuffer cmd) {
-      for (const Planned& p : planned)
-        if (p.helper == helperShare) vk::dispatch(cmd, *layout_, **p.slot, &pc, sizeof(pc), 1);
-    });
-  }
-  pipelineSeconds_ = since(start);
 }
 
 PathRenderer::~PathRenderer() = default;
 
-KernelPlan planKernels(const RenderSettings& s) {
-  KernelPlan plan;
-  const EstimatorConfig& est = s.estimator;
-  bool shadows = s.features.emitters() && est.nee;
-  if (s.integrator == Integrator::Megakernel) {
-    plan.kernels = {"megakernel", "accumulate"};
-  } else {
-    plan.kernels = {"camera_rays", "prepare_bounce", "intersect", est.splitsPaths() ? "shade (float atomics)" : "shade"};
-  }
-  if (shadows && s.integrator == Integrator::Wavefront) {
-    plan.kernels.push_back("prepare_shadow");
-    plan.kernels.push_back(est.needsFloatAtomics() ? "shadow (float atomics)" : "shadow");
-  }
-  if (s.integrator == Integrator::Wavefront) plan.kernels.push_back("accumulate");
-  plan.specs = {{SPEC_WORKGROUP_SIZE, s.workgroupSize},
-                {SPEC_HAS_LIGHTS, s.features.emitters() ? 1u : 0u},
-                {SPEC_HAS_GLOSSY, s.features.glossy ? 1u : 0u},
-                {SPEC_RECORD_DEPTH_STATS, s.recordDepthStats ? 1u : 0u}};
-  for (const vk::SpecConstant& c : est.specConstants()) plan.specs.push_back(c);
-  return plan;
-}
 
 void PathRenderer::setRouletteScales(const std::array<float, kRouletteTableDepths>& scales) {
   std::memcpy(rouletteTable_.mapped(), scales.data(), sizeof(float) * scales.size());
@@ -271,12 +170,42 @@ uint32_t PathRenderer::renderMegakernelPass(const gpu::PushConstants& pc, Render
   std::memset(control_.mapped(), 0, sizeof(gpu::Control));
   VkCommandBuffer cmd = ctx_.beginCommands();
   timer_->reset(cmd);
-  vk::dispatch(cmd, *layout_, *kernels_->megakernel, &pc, sizeof(pc), groupsFor(pc.pathCount), timer_.get());
-  vk::dispatch(cmd, *layout_, *kernels_->accumulate, &pc, sizeof(pc), groupsFor(pc.pixelCount), timer_.get());
+  vk::dispatch(cmd, *layout_, *kernels_.megakernel, &pc, sizeof(pc), groupsFor(pc.pathCount), timer_.get());
+  vk::dispatch(cmd, *layout_, *kernels_.accumulate, &pc, sizeof(pc), groupsFor(pc.pixelCount), timer_.get());
   ctx_.submitAndWait(cmd);
   timer_->collect(stats.stageSeconds);
   collectCounters(stats);
   return 0;
+}
+
+void PathRenderer::recordCameraRays(VkCommandBuffer cmd, const gpu::PushConstants& pc, uint32_t paths) {
+  vk::dispatch(cmd, *layout_, *kernels_.camera, &pc, sizeof(pc), groupsFor(paths), timer_.get());
+}
+
+// One bounce: queue sizes into dispatch arguments, intersection (and its deep pass), shading, shadow rays.
+void PathRenderer::recordBounce(VkCommandBuffer cmd, const gpu::PushConstants& pc, bool prepared) {
+  vk::GpuTimer* timer = timer_.get();
+  if (!prepared) vk::dispatch(cmd, *layout_, *kernels_.prepareBounce, &pc, sizeof(pc), 1, timer);
+  // A trace stage's time includes its deep pass (the walks it deferred).
+  if (timer) timer->begin(cmd, pc.bounce == 0 ? "intersect_primary" : "intersect");
+  vk::dispatchIndirect(cmd, *layout_, *kernels_.intersect, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs));
+  vk::dispatchIndirect(cmd, *layout_, *kernels_.intersectDeep, &pc, sizeof(pc), control_, offsetof(gpu::Control, deepArgs));
+  if (timer) timer->end(cmd);
+  vk::dispatchIndirect(cmd, *layout_, *kernels_.shade, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs), timer);
+  if (!hasShadowStage_) return;
+  vk::dispatch(cmd, *layout_, *kernels_.prepareShadow, &pc, sizeof(pc), 1, timer);
+  if (timer) timer->begin(cmd, "shadow");
+  vk::dispatchIndirect(cmd, *layout_, *kernels_.shadow, &pc, sizeof(pc), control_, offsetof(gpu::Control, shadowArgs));
+  vk::dispatchIndirect(cmd, *layout_, *kernels_.shadowDeep, &pc, sizeof(pc), control_, offsetof(gpu::Control, deepArgs));
+  if (timer) timer->end(cmd);
+}
+
+// The end of a chunk: prepares the next bounce, and accumulates the film once no path is alive (the device arms
+// the dispatch).
+void PathRenderer::recordAccumulate(VkCommandBuffer cmd, const gpu::PushConstants& pc) {
+  vk::dispatch(cmd, *layout_, *kernels_.prepareBounce, &pc, sizeof(pc), 1, timer_.get());
+  vk::dispatchIndirect(cmd, *layout_, *kernels_.accumulate, &pc, sizeof(pc), control_, offsetof(gpu::Control, accumulateArgs),
+                       timer_.get());
 }
 
 uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples,
@@ -300,31 +229,14 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
     chunk = std::max(chunk, 1u);
     VkCommandBuffer cmd = ctx_.beginCommands();
     timer_->reset(cmd);
-    vk::GpuTimer* timer = timer_.get();
-    if (first) vk::dispatch(cmd, *layout_, *kernels_->camera, &pc, sizeof(pc), groupsFor(count), timer);
+    if (first) recordCameraRays(cmd, pc, count);
     for (uint32_t b = bounce; b < bounce + chunk; ++b) {
       pc.bounce = b;
-      // The chunk-end prepare of the previous chunk already prepared this bounce.
-      if (first || b != bounce) vk::dispatch(cmd, *layout_, *kernels_->prepareBounce, &pc, sizeof(pc), 1, timer);
-      // A trace stage's time includes its deep pass (the walks it deferred).
-      if (timer) timer->begin(cmd, b == 0 ? "intersect_primary" : "intersect");
-      vk::dispatchIndirect(cmd, *layout_, *kernels_->intersect, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs));
-      vk::dispatchIndirect(cmd, *layout_, *kernels_->intersectDeep, &pc, sizeof(pc), control_, offsetof(gpu::Control, deepArgs));
-      if (timer) timer->end(cmd);
-      vk::dispatchIndirect(cmd, *layout_, *kernels_->shade, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs), timer);
-      if (hasShadowStage_) {
-        vk::dispatch(cmd, *layout_, *kernels_->prepareShadow, &pc, sizeof(pc), 1, timer);
-        if (timer) timer->begin(cmd, "shadow");
-        vk::dispatchIndirect(cmd, *layout_, *kernels_->shadow, &pc, sizeof(pc), control_, offsetof(gpu::Control, shadowArgs));
-        vk::dispatchIndirect(cmd, *layout_, *kernels_->shadowDeep, &pc, sizeof(pc), control_, offsetof(gpu::Control, deepArgs));
-        if (timer) timer->end(cmd);
-      }
+      recordBounce(cmd, pc, /*prepared=*/!first && b == bounce);  // the last chunk's end prepared its first bounce
     }
     bounce += chunk;
     pc.bounce = bounce;
-    vk::dispatch(cmd, *layout_, *kernels_->prepareBounce, &pc, sizeof(pc), 1, timer);
-    vk::dispatchIndirect(cmd, *layout_, *kernels_->accumulate, &pc, sizeof(pc), control_,
-                         offsetof(gpu::Control, accumulateArgs), timer);
+    recordAccumulate(cmd, pc);
     ctx_.submitAndWait(cmd);
     timer_->collect(stats.stageSeconds);
     first = false;

@@ -1,0 +1,44 @@
+// Path-pool sizing: the wavefront's size bounded by every buffer's storage range.
+#include "render/path_pool.h"
+
+#include <algorithm>
+#include <string>
+
+#include "../shaders/shared/layout.h"
+#include "error.h"
+
+namespace vkmc {
+
+void checkDeviceLimits(const RenderSettings& settings, const VkPhysicalDeviceLimits& limits) {
+  // Below 32 the indirect dispatch of a full path pool (~1.7M paths) would pass 65535 workgroups.
+  const uint32_t ws = settings.workgroupSize;
+  if (ws != 32 && ws != 64 && ws != 128 && ws != 256)
+    throw Error("--workgroup must be 32, 64, 128 or 256 (got " + std::to_string(ws) + ")");
+  if (ws > limits.maxComputeWorkGroupSize[0] || ws > limits.maxComputeWorkGroupInvocations)
+    throw Error("--workgroup " + std::to_string(ws) + " exceeds this device's limit of " +
+                std::to_string(std::min(limits.maxComputeWorkGroupSize[0], limits.maxComputeWorkGroupInvocations)));
+  uint64_t filmBytes = uint64_t(settings.width) * settings.height * sizeof(gpu::FilmPixel);
+  if (filmBytes > limits.maxStorageBufferRange)
+    throw Error("image " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + " is too large: its film needs " +
+                std::to_string(filmBytes >> 20) + " MiB, the device's storage-buffer limit is " +
+                std::to_string(limits.maxStorageBufferRange >> 20) + " MiB");
+}
+
+PathPoolSize sizePathPool(const RenderSettings& settings, const VkPhysicalDeviceLimits& limits, bool hasShadowStage) {
+  const EstimatorConfig& est = settings.estimator;
+  uint64_t pixels = static_cast<uint64_t>(settings.width) * settings.height;
+  uint64_t plannedSamples = settings.timeBudget > 0.0 ? std::min<uint64_t>(settings.spp, 64) : settings.spp;
+  uint32_t capacity = static_cast<uint32_t>(std::min<uint64_t>(pixels * plannedSamples, settings.maxPathsPerPass));
+  capacity = std::min<uint32_t>(capacity, limits.maxStorageBufferRange / sizeof(gpu::PathState));
+  // The pool holds camera paths and split children; each pooled path queues up to M shadow rays per bounce.
+  const uint32_t poolFactor = est.pathPoolFactor();
+  capacity = std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::PathState) * poolFactor));
+  capacity = std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::ShadowRay) * est.lightSamples * poolFactor));
+  PathPoolSize size;
+  size.cameraPaths = std::max(capacity, 1u);
+  size.slots = size.cameraPaths * poolFactor;
+  size.shadowSlots = hasShadowStage ? uint64_t(size.slots) * est.lightSamples : 0;
+  return size;
+}
+
+}  // namespace vkmc

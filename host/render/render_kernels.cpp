@@ -1,0 +1,101 @@
+// Kernel planning, building and warm-up for one render.
+#include "render/render_kernels.h"
+
+#include <span>
+#include <vector>
+
+#include "../shaders/shared/layout.h"
+#include "render/background_warm_up.h"
+#include "spirv/accumulate_spv.h"
+#include "spirv/camera_rays_spv.h"
+#include "spirv/intersect_deep_spv.h"
+#include "spirv/intersect_spv.h"
+#include "spirv/megakernel_spv.h"
+#include "spirv/prepare_bounce_spv.h"
+#include "spirv/prepare_shadow_spv.h"
+#include "spirv/shade_atomic_spv.h"
+#include "spirv/shade_spv.h"
+#include "spirv/shadow_atomic_deep_spv.h"
+#include "spirv/shadow_atomic_spv.h"
+#include "spirv/shadow_deep_spv.h"
+#include "spirv/shadow_spv.h"
+
+namespace vkmc {
+
+KernelPlan planKernels(const RenderSettings& s) {
+  KernelPlan plan;
+  const EstimatorConfig& est = s.estimator;
+  bool shadows = s.features.emitters() && est.nee;
+  if (s.integrator == Integrator::Megakernel) {
+    plan.kernels = {"megakernel", "accumulate"};
+  } else {
+    plan.kernels = {"camera_rays", "prepare_bounce", "intersect", est.splitsPaths() ? "shade (float atomics)" : "shade"};
+  }
+  if (shadows && s.integrator == Integrator::Wavefront) {
+    plan.kernels.push_back("prepare_shadow");
+    plan.kernels.push_back(est.needsFloatAtomics() ? "shadow (float atomics)" : "shadow");
+  }
+  if (s.integrator == Integrator::Wavefront) plan.kernels.push_back("accumulate");
+  plan.specs = {{SPEC_WORKGROUP_SIZE, s.workgroupSize},
+                {SPEC_HAS_LIGHTS, s.features.emitters() ? 1u : 0u},
+                {SPEC_HAS_GLOSSY, s.features.glossy ? 1u : 0u},
+                {SPEC_RECORD_DEPTH_STATS, s.recordDepthStats ? 1u : 0u}};
+  for (const vk::SpecConstant& c : est.specConstants()) plan.specs.push_back(c);
+  return plan;
+}
+
+RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, const RenderSettings& settings,
+                                 bool hasShadowStage, uint32_t pathSlots) {
+  const EstimatorConfig& est = settings.estimator;
+  const KernelPlan plan = planKernels(settings);
+  const std::vector<vk::SpecConstant>& specs = plan.specs;
+  // Every kernel this render dispatches, and whether a helper thread compiles it (see BackgroundWarmUp): about
+  // half of the compile time each, the helper taking the tracing kernels.
+  struct Planned {
+    std::unique_ptr<vk::Kernel>* slot;
+    const char* name;
+    std::span<const uint32_t> spirv;
+    bool helper;
+  };
+  std::vector<Planned> planned;
+  auto spv = [](const auto& words) { return std::span<const uint32_t>(words); };
+  RenderKernels k;
+  if (settings.integrator == Integrator::Megakernel) {
+    planned.push_back({&k.megakernel, "megakernel", kSpirv_megakernel, false});
+  } else {
+    planned.push_back({&k.camera, "camera_rays", kSpirv_camera_rays, false});
+    planned.push_back({&k.prepareBounce, "prepare_bounce", kSpirv_prepare_bounce, false});
+    planned.push_back({&k.intersect, "intersect", kSpirv_intersect, true});
+    planned.push_back({&k.intersectDeep, "intersect_deep", kSpirv_intersect_deep, true});
+    planned.push_back({&k.shade, "shade", est.splitsPaths() ? spv(kSpirv_shade_atomic) : spv(kSpirv_shade), false});
+    if (hasShadowStage) {
+      const bool atomics = est.needsFloatAtomics();
+      planned.push_back({&k.prepareShadow, "prepare_shadow", kSpirv_prepare_shadow, false});
+      planned.push_back({&k.shadow, "shadow", atomics ? spv(kSpirv_shadow_atomic) : spv(kSpirv_shadow), false});
+      planned.push_back({&k.shadowDeep, "shadow_deep", atomics ? spv(kSpirv_shadow_atomic_deep) : spv(kSpirv_shadow_deep), true});
+    }
+  }
+  planned.push_back({&k.accumulate, "accumulate", kSpirv_accumulate, true});
+  std::vector<KernelSource> helperShare;
+  if (compilesAtFirstDispatch(ctx))
+    for (const Planned& p : planned)
+      if (p.helper) helperShare.push_back({p.name, p.spirv, specs});
+  BackgroundWarmUp helper(std::move(helperShare));
+  for (const Planned& p : planned) *p.slot = std::make_unique<vk::Kernel>(ctx, layout, p.name, p.spirv, specs);
+
+  // Warm-up: every kernel once on empty queues; the helper's share last, once it has compiled them into the cache.
+  gpu::PushConstants pc{};
+  pc.width = settings.width;
+  pc.height = settings.height;
+  pc.queueCapacity = pathSlots;
+  for (bool helperShare : {false, true}) {
+    if (helperShare) helper.wait();
+    ctx.runCommands([&](VkCommandBuffer cmd) {
+      for (const Planned& p : planned)
+        if (p.helper == helperShare) vk::dispatch(cmd, layout, **p.slot, &pc, sizeof(pc), 1);
+    });
+  }
+  return k;
+}
+
+}  // namespace vkmc

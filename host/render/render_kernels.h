@@ -1,0 +1,25 @@
+// The kernels one render dispatches: chosen for its integrator and estimator, built with its specialization
+// constants, and warmed up once on empty queues so that the driver's first-dispatch compile is not timed as
+// rendering (llvmpipe compiles at first dispatch; a helper thread takes the tracing kernels, BackgroundWarmUp).
+#pragma once
+#include <memory>
+
+#include "render/render_settings.h"
+#include "vk/kernel.h"
+
+namespace vkmc {
+
+struct RenderKernels {
+  std::unique_ptr<vk::Kernel> camera, prepareBounce, intersect, intersectDeep, shade, prepareShadow, shadow, shadowDeep,
+      accumulate, megakernel;
+};
+
+// The kernels a render dispatches, with the specialization constants each is built with.
+KernelPlan planKernels(const RenderSettings& settings);
+
+// Builds and warms up the planned kernels on `layout` (whose buffers must be bound, the control block zeroed).
+// pathSlots is the pool size the warm-up's push constants announce.
+RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, const RenderSettings& settings,
+                                 bool hasShadowStage, uint32_t pathSlots);
+
+}  // namespace vkmc
