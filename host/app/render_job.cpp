@@ -8,6 +8,7 @@
 
 #include "../shaders/shared/geometry.h"
 #include "../shaders/shared/sampling.h"
+#include "app/roulette_pilot.h"
 #include "bvh/bvh.h"
 #include "error.h"
 #include "render/gpu_scene.h"
@@ -125,38 +126,11 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   std::optional<RouletteTable> roulette;
   double pilotSeconds = 0.0;
   if (options.estimator.rr == RouletteMode::Efficiency) {
-    // Pilot: no roulette, no splitting, a depth cap (its truncation only shortens the statistics), a few
-    // samples per pixel; its time is part of the estimator's cost and counts as render time.
-    RenderSettings pilotSettings = settings;
-    pilotSettings.estimator.rr = RouletteMode::None;
-    pilotSettings.estimator.maxDepth = options.estimator.maxDepth ? std::min(options.estimator.maxDepth, 24u) : 24u;
-    pilotSettings.estimator.bsdfSamples = 1.0f;
-    pilotSettings.estimator.splitDepth = 1;
-    pilotSettings.spp = std::min<uint32_t>(4, options.spp);
-    pilotSettings.timeBudget = 0.0;
-    pilotSettings.progress = false;
-    pilotSettings.recordDepthStats = true;
-    pilotSettings.integrator = Integrator::Wavefront;  // the shade stage records the pilot's statistics
-    PathRenderer pilot(ctx, gpuScene, pilotSettings);
-    out.setup.pipelines += pilot.pipelineSeconds();
-    RenderStats pilotStats;
-    Film pilotFilm = pilot.render(pilotStats);
-    // Relative to each pixel's mean, as relMSE is.
-    std::vector<double> weight(pilotFilm.pixels());
-    double variance = 0.0;
-    for (size_t p = 0; p < pilotFilm.pixels(); ++p) {
-      double m = gpu::luminance(glm::vec3(pilotFilm.mean(p, 0), pilotFilm.mean(p, 1), pilotFilm.mean(p, 2)));
-      weight[p] = 1.0 / (m * m + kRelMseEpsilon);
-      for (int c = 0; c < 3; ++c) variance += pilotFilm.varianceOfMean(p, c) * double(pilotFilm.count[p]) * weight[p];
-    }
-    variance /= 3.0 * std::max<size_t>(1, pilotFilm.pixels());
-    std::vector<PilotPath> pilotPaths = pilot.pilot();
-    for (PilotPath& pp : pilotPaths) pp.weight = static_cast<float>(weight[std::min<size_t>(pp.pixel, weight.size() - 1)]);
-    double raysPerVertex = double(pilotStats.extensionRays + pilotStats.shadowRays) /
-                           std::max(1.0, double(pilotStats.extensionRays));
-    // Roulette acts at the decision of vertex d when d + 1 >= rr_depth.
-    roulette = optimizeRouletteScales(pilotPaths, variance, raysPerVertex, std::max(options.estimator.rrDepth, 1u) - 1u);
-    pilotSeconds = pilotStats.seconds;
+    // Its time is part of the estimator's cost and counts as render time.
+    RoulettePilot pilot = runRoulettePilot(ctx, gpuScene, settings);
+    out.setup.pipelines += pilot.pipelineSeconds;
+    roulette = pilot.table;
+    pilotSeconds = pilot.seconds;
   }
   if (options.timeBudget > 0.0) settings.timeBudget = std::max(1e-3, options.timeBudget - pilotSeconds);
   PathRenderer renderer(ctx, gpuScene, settings);
