@@ -9,7 +9,7 @@ namespace vkmc {
 
 struct ErrorMetrics {
   double mse = 0.0;
-  double relmse = 0.0;        // mean over pixels and channels of (a - b)^2 / (b^2 + epsilon)
+  double relmse = 0.0;  // mean over pixels and channels of (a - b)^2 / (b^2 + epsilon)
   double rmse = 0.0;
   double meanAbsoluteError = 0.0;
   double meanDifference = 0.0;  // mean(a) - mean(b) over pixels and channels

@@ -23,7 +23,8 @@ std::string escapeXml(const std::string& s) {
   return out;
 }
 
-const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
+                         "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
 
 }  // namespace
 
@@ -70,8 +71,8 @@ std::string logLogSvg(const std::vector<PlotSeries>& series, const std::string& 
   auto py = [&](double y) { return top + ph - (std::log10(y) - ly0) / (ly1 - ly0) * ph; };
   std::ostringstream o;
   o << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 " << width << " "
-    << height << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 " << width
+    << " " << height << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   o << "<rect x=\"0\" y=\"0\" width=\"" << width << "\" height=\"" << height << "\" fill=\"white\"/>\n";
   o << "<text x=\"" << left + pw / 2 << "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">" << escapeXml(title) << "</text>\n";
   for (double e = lx0; e <= lx1; e += 1) {
@@ -84,8 +85,10 @@ std::string logLogSvg(const std::vector<PlotSeries>& series, const std::string& 
     o << "<line x1=\"" << left << "\" y1=\"" << y << "\" x2=\"" << left + pw << "\" y2=\"" << y << "\" stroke=\"#ddd\"/>\n";
     o << "<text x=\"" << left - 8 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">1e" << int(e) << "</text>\n";
   }
-  o << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\"" << ph << "\" fill=\"none\" stroke=\"black\"/>\n";
-  o << "<text x=\"" << left + pw / 2 << "\" y=\"" << height - 16 << "\" text-anchor=\"middle\">" << escapeXml(xLabel) << "</text>\n";
+  o << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\"" << ph
+    << "\" fill=\"none\" stroke=\"black\"/>\n";
+  o << "<text x=\"" << left + pw / 2 << "\" y=\"" << height - 16 << "\" text-anchor=\"middle\">" << escapeXml(xLabel)
+    << "</text>\n";
   o << "<text x=\"20\" y=\"" << top + ph / 2 << "\" text-anchor=\"middle\" transform=\"rotate(-90 20 " << top + ph / 2 << ")\">"
     << escapeXml(yLabel) << "</text>\n";
   for (size_t k = 0; k < series.size(); ++k) {
@@ -96,10 +99,11 @@ std::string logLogSvg(const std::vector<PlotSeries>& series, const std::string& 
       if (s.x[i] > 0 && s.y[i] > 0) o << px(s.x[i]) << "," << py(s.y[i]) << " ";
     o << "\"><title>" << escapeXml(s.label) << "</title></polyline>\n";
     for (size_t i = 0; i < s.x.size(); ++i)
-      if (s.x[i] > 0 && s.y[i] > 0) o << "<circle cx=\"" << px(s.x[i]) << "\" cy=\"" << py(s.y[i]) << "\" r=\"3\" fill=\"" << color << "\"/>\n";
+      if (s.x[i] > 0 && s.y[i] > 0)
+        o << "<circle cx=\"" << px(s.x[i]) << "\" cy=\"" << py(s.y[i]) << "\" r=\"3\" fill=\"" << color << "\"/>\n";
     double ly = top + 10 + 20 * k;
-    o << "<line x1=\"" << left + pw + 15 << "\" y1=\"" << ly << "\" x2=\"" << left + pw + 40 << "\" y2=\"" << ly << "\" stroke=\"" << color
-      << "\" stroke-width=\"2\"/>\n";
+    o << "<line x1=\"" << left + pw + 15 << "\" y1=\"" << ly << "\" x2=\"" << left + pw + 40 << "\" y2=\"" << ly << "\" stroke=\""
+      << color << "\" stroke-width=\"2\"/>\n";
     o << "<text x=\"" << left + pw + 46 << "\" y=\"" << ly + 4 << "\">" << escapeXml(s.label) << "</text>\n";
   }
   o << "</svg>\n";

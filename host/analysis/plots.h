@@ -17,8 +17,8 @@ std::string logLogSvg(const std::vector<PlotSeries>& series, const std::string& 
 // Least-squares slope and intercept of log y against log x.
 struct LogFit {
   double slope = 0.0, intercept = 0.0;
-  double at(double x) const;        // y at x
-  double inverse(double y) const;   // x at y
+  double at(double x) const;       // y at x
+  double inverse(double y) const;  // x at y
 };
 LogFit fitLogLog(const std::vector<double>& x, const std::vector<double>& y);
 

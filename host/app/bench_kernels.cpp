@@ -33,8 +33,10 @@ std::vector<std::string> defaultScenes() {
   std::vector<std::string> scenes;
   for (const char* candidate : {"scenes/cornell_box.gltf", "../shared/scenes/DamagedHelmet/DamagedHelmet.gltf",
                                 "../shared/scenes/MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.gltf"}) {
-    if (std::filesystem::exists(candidate)) scenes.emplace_back(candidate);
-    else std::fprintf(stderr, "vkmc: note: %s not found, skipped\n", candidate);
+    if (std::filesystem::exists(candidate))
+      scenes.emplace_back(candidate);
+    else
+      std::fprintf(stderr, "vkmc: note: %s not found, skipped\n", candidate);
   }
   return scenes;
 }
@@ -49,7 +51,8 @@ struct KernelSamples {
 };
 
 struct Samples {
-  std::vector<double> load, bvh, upload, pipelines, sps, primary, incoherent, total, tracePrimary, traceDiffuse, traceDiffuseBinary, gpu;
+  std::vector<double> load, bvh, upload, pipelines, sps, primary, incoherent, total, tracePrimary, traceDiffuse,
+      traceDiffuseBinary, gpu;
   uint32_t triangles = 0;
   double diffuseRays = 0;
   std::map<std::string, KernelSamples> kernels;
@@ -104,8 +107,13 @@ nlohmann::json printKernels(const std::string& name, const Samples& s) {
     double rate = secs > 0 ? k.items / secs * 1e-6 : 0.0, gbps = secs > 0 ? k.items * k.bytesPerItem / secs * 1e-9 : 0.0;
     std::printf("  %-18s %10.3f %6.1f%% %12.0f %10.2f %12.2f\n", kernel.c_str(), secs * 1e3, 100.0 * secs / std::max(gpu, 1e-12),
                 k.items, rate, gbps);
-    kernels.push_back({{"kernel", kernel}, {"seconds_per_frame", secs}, {"share", secs / std::max(gpu, 1e-12)}, {"items_per_frame", k.items},
-                       {"mitems_per_second", rate}, {"estimated_state_bytes_per_item", k.bytesPerItem}, {"estimated_gb_per_second", gbps}});
+    kernels.push_back({{"kernel", kernel},
+                       {"seconds_per_frame", secs},
+                       {"share", secs / std::max(gpu, 1e-12)},
+                       {"items_per_frame", k.items},
+                       {"mitems_per_second", rate},
+                       {"estimated_state_bytes_per_item", k.bytesPerItem},
+                       {"estimated_gb_per_second", gbps}});
   }
   if (s.megakernel) {
     std::printf("  (megakernel: no queues between stages, so no occupancy per bounce)\n");
@@ -116,11 +124,15 @@ nlohmann::json printKernels(const std::string& name, const Samples& s) {
   for (size_t b = 0; b < s.pathsByBounce.size(); ++b)
     if (s.pathsByBounce[b]) last = b;
   std::printf("  paths alive per bounce (%% of camera paths):");
-  for (size_t b = 0; b <= last && b < 16; ++b) std::printf(" %.1f", 100.0 * s.pathsByBounce[b] / std::max<uint64_t>(1, s.cameraRays));
+  for (size_t b = 0; b <= last && b < 16; ++b)
+    std::printf(" %.1f", 100.0 * s.pathsByBounce[b] / std::max<uint64_t>(1, s.cameraRays));
   std::printf("%s\n  shadow rays per bounce (per camera path):", last >= 16 ? " ..." : "");
-  for (size_t b = 0; b <= last && b < 16; ++b) std::printf(" %.2f", double(s.shadowRaysByBounce[b]) / std::max<uint64_t>(1, s.cameraRays));
+  for (size_t b = 0; b <= last && b < 16; ++b)
+    std::printf(" %.2f", double(s.shadowRaysByBounce[b]) / std::max<uint64_t>(1, s.cameraRays));
   std::printf("%s\n", last >= 16 ? " ..." : "");
-  return {{"gpu_seconds_per_frame", gpu}, {"kernels", kernels}, {"paths_by_bounce", s.pathsByBounce},
+  return {{"gpu_seconds_per_frame", gpu},
+          {"kernels", kernels},
+          {"paths_by_bounce", s.pathsByBounce},
           {"shadow_rays_by_bounce", s.shadowRaysByBounce}};
 }
 
@@ -160,7 +172,8 @@ TraceRates traceBenchmark(vk::Context& ctx, const std::string& path, int width, 
 
 // BVH quality: SAH cost of the binned build (the renderer's) against a full sweep build, with build times.
 int runSahBench(const BenchOptions& o, const std::vector<std::string>& scenes) {
-  std::printf("%-34s %9s %12s %10s %12s %10s %8s\n", "scene", "triangles", "SAH binned", "build s", "SAH sweep", "build s", "binned/");
+  std::printf("%-34s %9s %12s %10s %12s %10s %8s\n", "scene", "triangles", "SAH binned", "build s", "SAH sweep", "build s",
+              "binned/");
   std::printf("%-34s %9s %12s %10s %12s %10s %8s\n", "", "", "", "(1 core)", "", "", "sweep");
   nlohmann::json out = nlohmann::json::array();
   for (const std::string& path : scenes) {
@@ -178,9 +191,13 @@ int runSahBench(const BenchOptions& o, const std::vector<std::string>& scenes) {
     double ratio = binned.stats.sahCost / sweep.stats.sahCost;
     std::printf("%-34s %9zu %12.3f %10.3f %12.3f %10.3f %8.4f\n", std::filesystem::path(path).filename().c_str(), bounds.size(),
                 binned.stats.sahCost, median(binnedSeconds), sweep.stats.sahCost, sweep.stats.buildSeconds, ratio);
-    out.push_back({{"scene", path}, {"triangles", bounds.size()}, {"sah_binned", binned.stats.sahCost},
-                   {"binned_build_seconds", median(binnedSeconds)}, {"sah_sweep", sweep.stats.sahCost},
-                   {"sweep_build_seconds", sweep.stats.buildSeconds}, {"ratio", ratio}});
+    out.push_back({{"scene", path},
+                   {"triangles", bounds.size()},
+                   {"sah_binned", binned.stats.sahCost},
+                   {"binned_build_seconds", median(binnedSeconds)},
+                   {"sah_sweep", sweep.stats.sahCost},
+                   {"sweep_build_seconds", sweep.stats.buildSeconds},
+                   {"ratio", ratio}});
   }
   std::printf("SAH cost: expected traversal steps plus triangle tests per ray (cost 1 each); build s: median of --runs.\n");
   if (!o.jsonPath.empty()) writeFileAtomically(o.jsonPath, nlohmann::json{{"results", out}}.dump(2) + "\n");
@@ -190,7 +207,8 @@ int runSahBench(const BenchOptions& o, const std::vector<std::string>& scenes) {
 // Specialized against general pipelines, interleaved run by run: time per sample and pipeline set-up time.
 int runSpecializationBench(const BenchOptions& o, const std::vector<std::string>& scenes) {
   vk::Context ctx;
-  std::printf("device: %s; %dx%d, %d spp per run, %d runs; medians [min-max]\n", ctx.deviceName().c_str(), o.width, o.height, o.spp, o.runs);
+  std::printf("device: %s; %dx%d, %d spp per run, %d runs; medians [min-max]\n", ctx.deviceName().c_str(), o.width, o.height,
+              o.spp, o.runs);
   std::printf("%-34s %-12s %14s %22s %12s\n", "scene", "pipelines", "us per sample", "[min-max]", "pipelines s");
   nlohmann::json out = nlohmann::json::array();
   for (const std::string& scene : scenes) {
@@ -213,20 +231,25 @@ int runSpecializationBench(const BenchOptions& o, const std::vector<std::string>
     std::string name = std::filesystem::path(scene).filename().string();
     for (int general = 0; general < 2; ++general) {
       auto [lo, hi] = std::minmax_element(perSample[general].begin(), perSample[general].end());
-      std::printf("%-34s %-12s %14.3f %10.3f-%-10.3f %12.3f\n", name.c_str(), general ? "general" : "specialized", median(perSample[general]),
-                  *lo, *hi, median(pipes[general]));
+      std::printf("%-34s %-12s %14.3f %10.3f-%-10.3f %12.3f\n", name.c_str(), general ? "general" : "specialized",
+                  median(perSample[general]), *lo, *hi, median(pipes[general]));
     }
     std::printf("%-34s %-12s %14.2fx\n", "", "ratio", median(perSample[1]) / median(perSample[0]));
-    out.push_back({{"scene", scene}, {"specialized_us_per_sample", median(perSample[0])}, {"general_us_per_sample", median(perSample[1])},
-                   {"specialized_pipeline_seconds", median(pipes[0])}, {"general_pipeline_seconds", median(pipes[1])}});
+    out.push_back({{"scene", scene},
+                   {"specialized_us_per_sample", median(perSample[0])},
+                   {"general_us_per_sample", median(perSample[1])},
+                   {"specialized_pipeline_seconds", median(pipes[0])},
+                   {"general_pipeline_seconds", median(pipes[1])}});
   }
-  if (!o.jsonPath.empty()) writeFileAtomically(o.jsonPath, nlohmann::json{{"device", ctx.deviceName()}, {"results", out}}.dump(2) + "\n");
+  if (!o.jsonPath.empty())
+    writeFileAtomically(o.jsonPath, nlohmann::json{{"device", ctx.deviceName()}, {"results", out}}.dump(2) + "\n");
   return 0;
 }
 
 int runBenchKernels(const BenchOptions& o) {
   if (o.runs < 1 || o.runs > 1000) throw Error("--runs must be between 1 and 1000");
-  if (o.spp < 1 || o.width < 1 || o.height < 1 || o.width > 8192 || o.height > 8192) throw Error("bad --spp, --width or --height");
+  if (o.spp < 1 || o.width < 1 || o.height < 1 || o.width > 8192 || o.height > 8192)
+    throw Error("bad --spp, --width or --height");
   std::vector<std::string> scenes = o.scenes.empty() ? defaultScenes() : o.scenes;
   if (scenes.empty()) throw Error("no scenes to benchmark");
   if (o.specialization) return runSpecializationBench(o, scenes);
@@ -298,7 +321,8 @@ int runBenchKernels(const BenchOptions& o) {
     std::printf("%-34s %-10s %9u %7.3f %7.3f %8.3f %7.3f | %10.0f %9.2f %9.2f %9.2f | %9.2f %9.2f %9.2f  [samples/s %.0f-%.0f]\n",
                 caseName(i).c_str(), toString(cases[i].integrator), s.triangles, median(s.load), median(s.bvh), median(s.upload),
                 median(s.pipelines), median(s.sps), median(s.primary), median(s.incoherent), median(s.total),
-                median(s.tracePrimary), median(s.traceDiffuse), median(s.traceDiffuseBinary), range(s.sps).first, range(s.sps).second);
+                median(s.tracePrimary), median(s.traceDiffuse), median(s.traceDiffuseBinary), range(s.sps).first,
+                range(s.sps).second);
     out.push_back({{"scene", cases[i].scene},
                    {"integrator", toString(cases[i].integrator)},
                    {"triangles", s.triangles},
@@ -317,18 +341,20 @@ int runBenchKernels(const BenchOptions& o) {
                    {"pipeline_seconds_first_use", firstPipelines[i]},
                    {"workgroup_size", o.workgroupSize}});
   }
-  std::printf("primary/bounces: wavefront intersection stages (GPU time; none in the megakernel); total: all rays over\n"
-              "render wall time;\n"
-              "trace 1st/dif: the traversal kernel alone (4-wide BVH) on camera rays and on 4 cosine bounce rays per primary\n"
-              "hit; dif bvh2: the same bounce rays through the binary BVH, interleaved.\n"
-              "pipelines: creation plus first-dispatch compile, median of warm runs; first use in this process: %.3f s\n"
-              "(Mesa's on-disk shader cache may make even that warm; clear ~/.cache/mesa_shader_cache for a cold figure).\n",
-              firstPipelines.front());
+  std::printf(
+      "primary/bounces: wavefront intersection stages (GPU time; none in the megakernel); total: all rays over\n"
+      "render wall time;\n"
+      "trace 1st/dif: the traversal kernel alone (4-wide BVH) on camera rays and on 4 cosine bounce rays per primary\n"
+      "hit; dif bvh2: the same bounce rays through the binary BVH, interleaved.\n"
+      "pipelines: creation plus first-dispatch compile, median of warm runs; first use in this process: %.3f s\n"
+      "(Mesa's on-disk shader cache may make even that warm; clear ~/.cache/mesa_shader_cache for a cold figure).\n",
+      firstPipelines.front());
   for (size_t i = 0; i < cases.size(); ++i)
     out[i]["per_kernel"] = printKernels(caseName(i) + " [" + toString(cases[i].integrator) + "]", samples[i]);
-  std::printf("\nitems: rays for the tracing kernels and the megakernel, paths for camera_rays and shade, samples for\n"
-              "accumulate;\n"
-              "est. GB/s: path-state, queue, hit, shadow-ray and film bytes moved (BVH and triangle fetches not counted).\n");
+  std::printf(
+      "\nitems: rays for the tracing kernels and the megakernel, paths for camera_rays and shade, samples for\n"
+      "accumulate;\n"
+      "est. GB/s: path-state, queue, hit, shadow-ray and film bytes moved (BVH and triangle fetches not counted).\n");
   if (!o.jsonPath.empty())
     writeFileAtomically(o.jsonPath, nlohmann::json{{"device", ctx.deviceName()}, {"results", out}}.dump(2) + "\n");
   return 0;

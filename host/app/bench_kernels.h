@@ -14,7 +14,7 @@ struct BenchOptions {
   std::string jsonPath;
   bool specialization = false;  // compare specialized with general pipelines instead
   uint32_t workgroupSize = 64;
-  bool sah = false;  // BVH quality instead: binned against full-sweep SAH cost
+  bool sah = false;                                   // BVH quality instead: binned against full-sweep SAH cost
   std::vector<std::string> integrators{"wavefront"};  // each is benchmarked, interleaved run by run
 };
 

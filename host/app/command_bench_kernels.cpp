@@ -18,7 +18,8 @@ Command addBenchKernelsCommand(CLI::App& app) {
   bench->add_option("--height", o->height, "image height")->capture_default_str();
   bench->add_option("--json", o->jsonPath, "write the results as JSON");
   bench->add_flag("--specialization", o->specialization, "compare specialized with general (all-features) pipelines");
-  bench->add_option("--workgroup", o->workgroupSize, "invocations per workgroup of every kernel: 32, 64, 128, 256")->capture_default_str();
+  bench->add_option("--workgroup", o->workgroupSize, "invocations per workgroup of every kernel: 32, 64, 128, 256")
+      ->capture_default_str();
   bench->add_flag("--sah", o->sah, "BVH quality: SAH cost of the binned build against a full sweep build");
   bench->add_option("--integrator", o->integrators, "wavefront, megakernel or both (interleaved, side by side)")
       ->check(CLI::IsMember({"wavefront", "megakernel"}))

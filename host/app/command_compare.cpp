@@ -21,9 +21,16 @@ int run(const CompareArgs& a) {
   checkOutputPaths({{"--json", a.json}, {"--heatmap", a.heatmap}}, {a.image, a.reference});
   ExrImage img = readExr(a.image), ref = readExr(a.reference);
   ErrorMetrics e = compareImages(img, ref);
-  nlohmann::json j = {{"image", a.image}, {"reference", a.reference}, {"width", img.width}, {"height", img.height},
-                      {"mse", e.mse}, {"relmse", e.relmse}, {"relmse_epsilon", kRelMseEpsilon}, {"rmse", e.rmse},
-                      {"mean_absolute_error", e.meanAbsoluteError}, {"mean_difference", e.meanDifference}};
+  nlohmann::json j = {{"image", a.image},
+                      {"reference", a.reference},
+                      {"width", img.width},
+                      {"height", img.height},
+                      {"mse", e.mse},
+                      {"relmse", e.relmse},
+                      {"relmse_epsilon", kRelMseEpsilon},
+                      {"rmse", e.rmse},
+                      {"mean_absolute_error", e.meanAbsoluteError},
+                      {"mean_difference", e.meanDifference}};
   if (e.hasZTest) {
     j["ztest_pass_fraction"] = e.zTestPassFraction;
     j["ztest_threshold"] = e.zThreshold;

@@ -100,7 +100,8 @@ int run(RenderArgs& a, const CLI::App& cmd) {
   fillOptions(a, cmd);
   const RenderOptions& ro = a.options;
   // Output folders are checked before rendering, so a bad path fails in a second, not after the render.
-  checkOutputPaths({{"--output", a.out}, {"--png", a.png}, {"--report", a.report}}, {ro.scenePath, ro.referencePath, a.estimatorFile});
+  checkOutputPaths({{"--output", a.out}, {"--png", a.png}, {"--report", a.report}},
+                   {ro.scenePath, ro.referencePath, a.estimatorFile});
 
   vk::Context ctx;
   RenderOutcome result = runRender(ctx, ro);
@@ -137,8 +138,9 @@ Command addRenderCommand(CLI::App& app) {
   render->add_option("--look-from", a->lookFrom, "camera position x,y,z (overrides the file's camera)");
   render->add_option("--look-at", a->lookAt, "camera target x,y,z");
   render->add_option("--fov", ro.fovDegrees, "vertical field of view in degrees with --look-from")->capture_default_str();
-  render->add_option("--background", a->background,
-                     "uniform radiance r,g,b of escaped rays (default 0,0,0; 1,1,1 with a warning when the scene has no emitters)");
+  render->add_option(
+      "--background", a->background,
+      "uniform radiance r,g,b of escaped rays (default 0,0,0; 1,1,1 with a warning when the scene has no emitters)");
   render->add_option("--report", a->report, "JSON report file");
   render->add_option("--png", a->png, "sRGB PNG preview");
   render->add_option("--exposure", a->exposure, "PNG exposure in stops")->capture_default_str();
@@ -146,7 +148,8 @@ Command addRenderCommand(CLI::App& app) {
   render->add_option("--time-budget", ro.timeBudget, "render whole sample passes until this many seconds are spent (--spp caps)");
   render->add_option("--reference", ro.referencePath, "reference EXR: the report gains mse, relmse, efficiency");
   render->add_flag("--no-specialize", a->noSpecialize, "build general pipelines (every scene feature on), for comparison");
-  render->add_option("--workgroup", ro.workgroupSize, "invocations per workgroup of every kernel: 32, 64, 128, 256")->capture_default_str();
+  render->add_option("--workgroup", ro.workgroupSize, "invocations per workgroup of every kernel: 32, 64, 128, 256")
+      ->capture_default_str();
   render->add_option("--integrator", a->integrator, "wavefront (stage by stage) or megakernel (one dispatch per pass)")
       ->check(CLI::IsMember({"wavefront", "megakernel"}))
       ->capture_default_str();

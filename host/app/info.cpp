@@ -43,11 +43,12 @@ int runInfo(const RenderOptions& options) {
   std::printf("scene        %s\n", options.scenePath.c_str());
   std::printf("triangles    %u (%s), %llu zero-area skipped, %u materials, %zu cameras\n", f.triangles, f.sizeClass(),
               static_cast<unsigned long long>(scene.degenerateTriangles), f.materials, scene.cameras.size());
-  std::printf("features     emitters %s (%u emissive triangles), glossy %s, metallic %s, non-default specular %s,\n"
-              "             double-sided %s, textures %s, punctual lights %s\n",
-              f.emitters() ? "yes" : "no", f.emissiveTriangles, f.glossy ? "yes" : "no", f.metallic ? "yes" : "no",
-              f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.textures ? "yes" : "no",
-              f.punctualLights ? "yes" : "no");
+  std::printf(
+      "features     emitters %s (%u emissive triangles), glossy %s, metallic %s, non-default specular %s,\n"
+      "             double-sided %s, textures %s, punctual lights %s\n",
+      f.emitters() ? "yes" : "no", f.emissiveTriangles, f.glossy ? "yes" : "no", f.metallic ? "yes" : "no",
+      f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.textures ? "yes" : "no",
+      f.punctualLights ? "yes" : "no");
   std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   const BvhStats& b = bvh.stats;
@@ -65,13 +66,16 @@ int runInfo(const RenderOptions& options) {
   KernelPlan plan = planKernels(settings);
   std::printf("kernels      %s pipelines on %s:\n", options.specialize ? "specialized" : "general", ctx.deviceName().c_str());
   for (const std::string& k : plan.kernels) std::printf("               %s\n", k.c_str());
-  std::printf("              not dispatched: %s\n", plan.kernels.size() < 7 ? "prepare_shadow, shadow (no emitters or NEE off)" : "none");
+  std::printf("              not dispatched: %s\n",
+              plan.kernels.size() < 7 ? "prepare_shadow, shadow (no emitters or NEE off)" : "none");
   std::printf("spec consts  ");
   int n = 0;
   for (const vk::SpecConstant& s : plan.specs) {
     const char* sep = n == 0 ? "" : (n % 5 == 0 ? "\n              " : ", ");
-    if (isFloatSpec(s.id)) std::printf("%s%s=%g", sep, specName(s.id), std::bit_cast<float>(s.value));
-    else std::printf("%s%s=%u", sep, specName(s.id), s.value);
+    if (isFloatSpec(s.id))
+      std::printf("%s%s=%g", sep, specName(s.id), std::bit_cast<float>(s.value));
+    else
+      std::printf("%s%s=%u", sep, specName(s.id), s.value);
     ++n;
   }
   std::printf("\n");

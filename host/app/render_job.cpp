@@ -35,7 +35,8 @@ void validateOptions(const RenderOptions& o) {
       throw Error("--look-from and --look-at must be finite and within +-1e11 (float ray tests overflow beyond)");
   if (!(o.fovDegrees > 0.0f && o.fovDegrees < 179.0f)) throw Error("--fov must be in (0, 179) degrees");
   for (int c = 0; c < 3 && o.background; ++c)
-    if (!((*o.background)[c] >= 0.0f) || !std::isfinite((*o.background)[c])) throw Error("--background must be finite and non-negative");
+    if (!((*o.background)[c] >= 0.0f) || !std::isfinite((*o.background)[c]))
+      throw Error("--background must be finite and non-negative");
   if (!(o.timeBudget >= 0.0) || o.timeBudget > 1e6) throw Error("--time-budget must be between 0 and 1e6 seconds");
 }
 
@@ -114,8 +115,9 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.background = options.background.value_or(glm::vec3(0.0f));
   if (!options.background && out.sceneInfo.emissiveTriangles == 0) {
     out.background = glm::vec3(1.0f);
-    out.warnings.push_back("the scene has no emitters: it is lit by a uniform white environment of radiance 1 "
-                           "(--background sets another; --background 0,0,0 renders it black)");
+    out.warnings.push_back(
+        "the scene has no emitters: it is lit by a uniform white environment of radiance 1 "
+        "(--background sets another; --background 0,0,0 renders it black)");
   }
   settings.background = out.background;
   settings.camera = makeCameraRig(camera, width, height);
@@ -179,7 +181,9 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["gpu_seconds"] = s.gpuSeconds;
   j["stage_gpu_seconds"] = s.stageSeconds;
   j["rays"] = s.rays();
-  j["ray_counts"] = {{"camera", s.cameraRays}, {"extension", s.extensionRays}, {"shadow", s.shadowRays},
+  j["ray_counts"] = {{"camera", s.cameraRays},
+                     {"extension", s.extensionRays},
+                     {"shadow", s.shadowRays},
                      {"deep_walks", s.deepWalks}};  // rays whose walk outgrew the register stack (deep pass)
   j["mrays_per_second"] = s.seconds > 0.0 ? static_cast<double>(s.rays()) / s.seconds * 1e-6 : 0.0;
   j["nonfinite_samples"] = r.film.totalNonfinite();
@@ -196,7 +200,8 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   if (r.roulette) {
     nlohmann::json scales = nlohmann::json::array();
     for (float k : r.roulette->scale) scales.push_back(std::isfinite(k) ? nlohmann::json(k) : nlohmann::json("none"));
-    j["efficiency_roulette"] = {{"pilot_seconds", r.pilotSeconds}, {"scale_per_depth", scales},
+    j["efficiency_roulette"] = {{"pilot_seconds", r.pilotSeconds},
+                                {"scale_per_depth", scales},
                                 {"formula", "survival = min(scale[depth] * max(throughput), 0.999)"}};
   }
   if (o.timeBudget > 0.0) j["time_budget"] = o.timeBudget;
@@ -227,7 +232,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                      {"emissive_triangles", r.sceneInfo.emissiveTriangles},
                      {"materials", r.sceneInfo.materials},
                      {"degenerate_triangles_skipped", r.degenerateTriangles}};
-  j["bvh"] = {{"inner_nodes", r.bvh.innerNodes}, {"leaves", r.bvh.leaves},           {"max_depth", r.bvh.maxDepth},
+  j["bvh"] = {{"inner_nodes", r.bvh.innerNodes},    {"leaves", r.bvh.leaves},    {"max_depth", r.bvh.maxDepth},
               {"max_leaf_size", r.bvh.maxLeafSize}, {"sah_cost", r.bvh.sahCost}, {"build_seconds", r.bvh.buildSeconds}};
   j["max_bounces"] = s.maxBounces;
   j["specialized_for"] = {{"emitters", r.features.emitters()}, {"glossy", r.features.glossy}, {"specialized", o.specialize}};
@@ -252,16 +257,16 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 "variance    %.3g %.3g %.3g (image mean of the per-pixel variance of the mean)\n"
                 "non-finite  %llu samples excluded\n",
                 o.scenePath.c_str(), r.sceneInfo.triangles, r.sceneInfo.emissiveTriangles, r.device.c_str(), r.width, r.height,
-                s.samplesPerPixel, r.cameraName.c_str(),
-                o.estimator.summary().c_str(),
-                s.seconds, s.gpuSeconds, r.setup.total(), r.setup.load, r.setup.bvh, r.setup.upload, r.setup.pipelines,
-                (unsigned long long)s.rays(), (unsigned long long)s.cameraRays, (unsigned long long)s.extensionRays,
-                (unsigned long long)s.shadowRays, (unsigned long long)s.deepWalks, s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z,
-                var.x, var.y, var.z, (unsigned long long)r.film.totalNonfinite());
+                s.samplesPerPixel, r.cameraName.c_str(), o.estimator.summary().c_str(), s.seconds, s.gpuSeconds, r.setup.total(),
+                r.setup.load, r.setup.bvh, r.setup.upload, r.setup.pipelines, (unsigned long long)s.rays(),
+                (unsigned long long)s.cameraRays, (unsigned long long)s.extensionRays, (unsigned long long)s.shadowRays,
+                (unsigned long long)s.deepWalks, s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z, var.x,
+                var.y, var.z, (unsigned long long)r.film.totalNonfinite());
   std::string text = buf;
   if (r.error)
     text += "error       relMSE " + std::to_string(r.error->relmse) + ", MSE " + std::to_string(r.error->mse) +
-            ", efficiency 1/(relMSE x s) " + std::to_string(r.error->relmse > 0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0) + "\n";
+            ", efficiency 1/(relMSE x s) " + std::to_string(r.error->relmse > 0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0) +
+            "\n";
   for (const auto& w : r.warnings) text += "warning     " + w + "\n";
   return text;
 }

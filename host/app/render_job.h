@@ -28,10 +28,10 @@ struct RenderOptions {
   // environment (radiance 1) with a warning saying so, rather than rendering black without a word.
   std::optional<glm::vec3> background;
   bool progress = true;
-  double timeBudget = 0.0;        // seconds; 0 = render spp samples
-  std::string referencePath;      // EXR to compare with: mse, relmse, efficiency in the report
-  bool specialize = true;         // false: pipelines with every feature on (for comparison)
-  uint32_t workgroupSize = 64;    // invocations per workgroup of every kernel (32, 64, 128, 256)
+  double timeBudget = 0.0;      // seconds; 0 = render spp samples
+  std::string referencePath;    // EXR to compare with: mse, relmse, efficiency in the report
+  bool specialize = true;       // false: pipelines with every feature on (for comparison)
+  uint32_t workgroupSize = 64;  // invocations per workgroup of every kernel (32, 64, 128, 256)
   Integrator integrator = Integrator::Wavefront;
 };
 
@@ -52,8 +52,8 @@ struct RenderOutcome {
   std::string device;
   uint32_t width = 0, height = 0;
   std::optional<ErrorMetrics> error;  // against the reference, when one was given
-  double pilotSeconds = 0.0;           // efficiency roulette's pilot, included in stats.seconds
-  SceneFeatures features;              // what the pipelines were specialized for
+  double pilotSeconds = 0.0;          // efficiency roulette's pilot, included in stats.seconds
+  SceneFeatures features;             // what the pipelines were specialized for
   std::optional<RouletteTable> roulette;
   glm::vec3 background{0.0f};  // what escaped rays saw
 };

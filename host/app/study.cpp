@@ -67,7 +67,8 @@ Study loadStudy(const std::string& path) {
   auto count = [&](const char* key, uint32_t fallback, uint32_t lo, uint32_t hi) {
     if (!j.contains(key)) return fallback;
     if (!j[key].is_number_integer() || j[key].get<int64_t>() < lo || j[key].get<int64_t>() > hi)
-      throw Error(std::string("study: '") + key + "' must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+      throw Error(std::string("study: '") + key + "' must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                  "]");
     return j[key].get<uint32_t>();
   };
   s.width = count("width", 64, 1, 4096);
@@ -76,10 +77,13 @@ Study loadStudy(const std::string& path) {
   s.seed = count("seed", 1, 0, 1u << 30);
   if (j.contains("reference")) {
     const auto& r = j["reference"];
-    if (r.contains("exr") && r["exr"].is_string()) s.referenceExr = resolve(r["exr"].get<std::string>());
-    else if (r.contains("spp") && r["spp"].is_number_integer() && r["spp"].get<int64_t>() >= 1 && r["spp"].get<int64_t>() <= (1 << 20))
+    if (r.contains("exr") && r["exr"].is_string())
+      s.referenceExr = resolve(r["exr"].get<std::string>());
+    else if (r.contains("spp") && r["spp"].is_number_integer() && r["spp"].get<int64_t>() >= 1 &&
+             r["spp"].get<int64_t>() <= (1 << 20))
       s.referenceSpp = r["spp"].get<uint32_t>();
-    else throw Error("study: 'reference' must be {\"exr\": path} or {\"spp\": N}");
+    else
+      throw Error("study: 'reference' must be {\"exr\": path} or {\"spp\": N}");
   }
   if (!j.contains("configurations") || !j["configurations"].is_array() || j["configurations"].empty())
     throw Error("study: 'configurations' must be a non-empty array");
@@ -98,7 +102,8 @@ Study loadStudy(const std::string& path) {
   const auto& ladder = j[hasSeconds ? "seconds" : "spp"];
   if (!ladder.is_array() || ladder.empty()) throw Error("study: the ladder must be a non-empty array");
   for (const auto& v : ladder) {
-    if (!v.is_number() || !(v.get<double>() > 0.0) || v.get<double>() > 1e5) throw Error("study: ladder values must be positive numbers");
+    if (!v.is_number() || !(v.get<double>() > 0.0) || v.get<double>() > 1e5)
+      throw Error("study: ladder values must be positive numbers");
     if (!hasSeconds && v.get<double>() != std::floor(v.get<double>())) throw Error("study: spp ladder values must be integers");
     s.ladder.push_back(v.get<double>());
   }
@@ -131,7 +136,8 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
     referenceNote = study.referenceExr;
   } else {
     std::string key = readFile(study.scenePath) + "|" + std::to_string(study.width) + "x" + std::to_string(study.height) + "|" +
-                      std::to_string(study.referenceSpp) + "|" + study.configurations[0].estimator.toJson().dump() + "|vkmc-ref-1";
+                      std::to_string(study.referenceSpp) + "|" + study.configurations[0].estimator.toJson().dump() +
+                      "|vkmc-ref-1";
     char hex[17];
     std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(fnv1a(key)));
     fs::path cached = fs::path(cacheDir()) / "references" / (std::string(hex) + ".exr");
@@ -139,7 +145,8 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
       reference = readExr(cached.string());
       referenceNote = cached.string() + " (cached)";
     } else {
-      std::fprintf(stderr, "vkmc bench: rendering the reference (%u spp, %s)\n", study.referenceSpp, study.configurations[0].name.c_str());
+      std::fprintf(stderr, "vkmc bench: rendering the reference (%u spp, %s)\n", study.referenceSpp,
+                   study.configurations[0].name.c_str());
       RenderOptions o = options(study.configurations[0].estimator, 0x5eed0000u + study.seed);
       o.spp = study.referenceSpp;
       RenderOutcome r = runRender(ctx, o, scene);
@@ -150,14 +157,16 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
     }
   }
   if (uint32_t(reference.width) != study.width || uint32_t(reference.height) != study.height)
-    throw Error("reference is " + std::to_string(reference.width) + "x" + std::to_string(reference.height) + ", the study renders " +
-                std::to_string(study.width) + "x" + std::to_string(study.height));
+    throw Error("reference is " + std::to_string(reference.width) + "x" + std::to_string(reference.height) +
+                ", the study renders " + std::to_string(study.width) + "x" + std::to_string(study.height));
 
   // Warm-up (not recorded): every configuration once at the smallest rung.
   for (const auto& c : study.configurations) {
     RenderOptions o = options(c.estimator, study.seed);
-    if (study.timeLadder) o.timeBudget = study.ladder.front(), o.spp = 1u << 24;
-    else o.spp = static_cast<uint32_t>(study.ladder.front());
+    if (study.timeLadder)
+      o.timeBudget = study.ladder.front(), o.spp = 1u << 24;
+    else
+      o.spp = static_cast<uint32_t>(study.ladder.front());
     runRender(ctx, o, scene);
   }
 
@@ -167,8 +176,10 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
     for (uint32_t rep = 0; rep < study.repeats; ++rep)
       for (size_t c = 0; c < study.configurations.size(); ++c) {
         RenderOptions o = options(study.configurations[c].estimator, study.seed + rep * 7919u + uint32_t(rung) * 104729u);
-        if (study.timeLadder) o.timeBudget = study.ladder[rung], o.spp = 1u << 24;
-        else o.spp = static_cast<uint32_t>(study.ladder[rung]);
+        if (study.timeLadder)
+          o.timeBudget = study.ladder[rung], o.spp = 1u << 24;
+        else
+          o.spp = static_cast<uint32_t>(study.ladder[rung]);
         RenderOutcome r = runRender(ctx, o, scene);
         ExrImage img = filmToImage(r.film);
         ErrorMetrics e = compareImages(img, reference);
@@ -186,8 +197,8 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
         row.nonfinite = r.film.totalNonfinite();
         rows.push_back(row);
         if (rep == 0) images[{c, rung}] = std::move(img);
-        std::fprintf(stderr, "vkmc bench: %-24s rung %-6g repeat %u: %u spp, %.3f s, relMSE %.4g\n", row.configuration.c_str(), row.rung,
-                     rep, row.spp, row.seconds, row.relmse);
+        std::fprintf(stderr, "vkmc bench: %-24s rung %-6g repeat %u: %u spp, %.3f s, relMSE %.4g\n", row.configuration.c_str(),
+                     row.rung, rep, row.spp, row.seconds, row.relmse);
       }
 
   // results.csv / results.json
@@ -195,17 +206,26 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
   csv << "configuration,rung,repeat,spp,seconds,gpu_seconds,rays,mse,relmse,efficiency,nonfinite_samples\n";
   nlohmann::json jrows = nlohmann::json::array();
   for (const StudyRow& r : rows) {
-    csv << '"' << r.configuration << "\"," << r.rung << ',' << r.repeat << ',' << r.spp << ',' << r.seconds << ',' << r.gpuSeconds << ','
-        << r.rays << ',' << r.mse << ',' << r.relmse << ',' << r.efficiency << ',' << r.nonfinite << '\n';
-    jrows.push_back({{"config", r.configuration}, {"rung", r.rung}, {"repeat", r.repeat}, {"spp", r.spp}, {"seconds", r.seconds},
-                     {"gpu_seconds", r.gpuSeconds}, {"rays", r.rays}, {"mse", r.mse}, {"relmse", r.relmse}, {"efficiency", r.efficiency},
+    csv << '"' << r.configuration << "\"," << r.rung << ',' << r.repeat << ',' << r.spp << ',' << r.seconds << ',' << r.gpuSeconds
+        << ',' << r.rays << ',' << r.mse << ',' << r.relmse << ',' << r.efficiency << ',' << r.nonfinite << '\n';
+    jrows.push_back({{"config", r.configuration},
+                     {"rung", r.rung},
+                     {"repeat", r.repeat},
+                     {"spp", r.spp},
+                     {"seconds", r.seconds},
+                     {"gpu_seconds", r.gpuSeconds},
+                     {"rays", r.rays},
+                     {"mse", r.mse},
+                     {"relmse", r.relmse},
+                     {"efficiency", r.efficiency},
                      {"nonfinite_samples", r.nonfinite}});
   }
   OutputSet outputs;  // the study's files are written together, all or none
   outputs.add((fs::path(outDir) / "results.csv").string(), csv.str());
-  outputs.add((fs::path(outDir) / "results.json").string(),
-                      nlohmann::json{{"study", study.name}, {"device", ctx.deviceName()}, {"reference", referenceNote}, {"rows", jrows}}.dump(2) +
-                          "\n");
+  outputs.add(
+      (fs::path(outDir) / "results.json").string(),
+      nlohmann::json{{"study", study.name}, {"device", ctx.deviceName()}, {"reference", referenceNote}, {"rows", jrows}}.dump(2) +
+          "\n");
 
   // Medians per configuration and rung, fits, plot.
   struct Curve {
@@ -232,7 +252,7 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
     plot.push_back({study.configurations[c].name, curves[c].seconds, curves[c].relmse});
   }
   outputs.add((fs::path(outDir) / "error_vs_time.svg").string(),
-                      logLogSvg(plot, study.name + ": relMSE against render time", "seconds (median of repeats)", "relMSE"));
+              logLogSvg(plot, study.name + ": relMSE against render time", "seconds (median of repeats)", "relMSE"));
 
   // Equal time: the longest time every configuration reached; equal error: the smallest error all reached.
   double equalTime = 1e300, equalError = 0.0;
@@ -261,11 +281,13 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
     if (c == 0) baseEt = effT, baseEe = effE;
     double lo = 1e300, hi = 0.0;
     for (const StudyRow& r : rows)
-      if (r.configuration == study.configurations[c].name && r.rung == study.ladder.back()) lo = std::min(lo, r.relmse), hi = std::max(hi, r.relmse);
+      if (r.configuration == study.configurations[c].name && r.rung == study.ladder.back())
+        lo = std::min(lo, r.relmse), hi = std::max(hi, r.relmse);
     char line[640];
     std::snprintf(line, sizeof(line), "| %s | %.4g | %.3g | %.4g | %.3g | %.2f | %.2f | %.4g-%.4g | %llu |\n",
-                  study.configurations[c].name.c_str(), errAt, baseEt > 0 ? effT / baseEt : 0.0, timeTo, baseEe > 0 ? effE / baseEe : 0.0,
-                  curves[c].fit.slope, curves[c].fitSpp.slope, lo, hi, static_cast<unsigned long long>(curves[c].nonfinite));
+                  study.configurations[c].name.c_str(), errAt, baseEt > 0 ? effT / baseEt : 0.0, timeTo,
+                  baseEe > 0 ? effE / baseEe : 0.0, curves[c].fit.slope, curves[c].fitSpp.slope, lo, hi,
+                  static_cast<unsigned long long>(curves[c].nonfinite));
     md << line;
   }
   md << "\nAn unbiased estimator's error falls as 1/samples: slope -1 against spp, and against time when time grows\n"
@@ -280,7 +302,8 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
   for (size_t c = 0; c < curves.size(); ++c) {
     size_t best = 0;
     for (size_t rung = 1; rung < study.ladder.size(); ++rung)
-      if (std::abs(std::log(curves[c].seconds[rung] / equalTime)) < std::abs(std::log(curves[c].seconds[best] / equalTime))) best = rung;
+      if (std::abs(std::log(curves[c].seconds[rung] / equalTime)) < std::abs(std::log(curves[c].seconds[best] / equalTime)))
+        best = rung;
     sheet.push_back(images[{c, best}]);
     char label[160];
     std::snprintf(label, sizeof(label), "%s %.2fs", study.configurations[c].name.c_str(), curves[c].seconds[best]);

@@ -22,8 +22,10 @@ BenchmarkRays makeBenchmarkRays(const Scene& scene, const Bvh& bvh, RayTracer& t
     for (uint32_t x = 0; x < width; ++x) {
       glm::vec2 s(2.0f * (x + 0.5f) / width - 1.0f, 1.0f - 2.0f * (y + 0.5f) / height);
       glm::vec3 o = rig.origin, d = rig.forward;
-      if (rig.orthographic) o += s.x * rig.right + s.y * rig.up;
-      else d = glm::normalize(rig.forward + s.x * rig.right + s.y * rig.up);
+      if (rig.orthographic)
+        o += s.x * rig.right + s.y * rig.up;
+      else
+        d = glm::normalize(rig.forward + s.x * rig.right + s.y * rig.up);
       rays.primary.push_back({glm::vec4(o, 3e38f), glm::vec4(d, 0.0f)});
     }
   std::vector<glm::vec4> hits = tracer.trace(rays.primary, false);
@@ -37,7 +39,8 @@ BenchmarkRays makeBenchmarkRays(const Scene& scene, const Bvh& bvh, RayTracer& t
     if (glm::dot(n, glm::vec3(rays.primary[i].direction)) > 0.0f) n = -n;
     for (uint32_t k = 0; k < 4; ++k) {
       uint32_t key = gpu::pathKey(99u, static_cast<uint32_t>(i), k);
-      glm::vec3 w = gpu::basisFromNormal(n) * gpu::sampleCosineHemisphere(glm::vec2(gpu::randomUnit(key, 0), gpu::randomUnit(key, 1)));
+      glm::vec3 w =
+          gpu::basisFromNormal(n) * gpu::sampleCosineHemisphere(glm::vec2(gpu::randomUnit(key, 0), gpu::randomUnit(key, 1)));
       glm::vec3 o = gpu::offsetRayOrigin(p, gpu::barycentricError(b, v[0], v[1], v[2]), n, w);
       rays.diffuse.push_back({glm::vec4(o, 3e38f), glm::vec4(w, 0.0f)});
     }

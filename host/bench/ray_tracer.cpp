@@ -16,16 +16,18 @@ RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh, bo
   scene.bindTo(*layout_, binaryBvh);
   // The kernel declares every binding of the shared set; those it never touches still need a buffer.
   dummy_ = vk::Buffer(ctx, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
-  for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_FILM,
-                     BINDING_PIXEL_ESTIMATE, BINDING_ROULETTE_TABLE, BINDING_DEPTH_STATS, BINDING_QUEUE_STATS})
+  for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_FILM, BINDING_PIXEL_ESTIMATE,
+                     BINDING_ROULETTE_TABLE, BINDING_DEPTH_STATS, BINDING_QUEUE_STATS})
     layout_->bindStorage(b, dummy_);
   // The deep pass's dispatch arguments and counters (the trace kernels use nothing else of Control).
   control_ = vk::Buffer(ctx, sizeof(gpu::Control), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                         vk::MemoryKind::HostVisible);
   layout_->bindStorage(BINDING_CONTROL, control_);
-  std::span<const uint32_t> spirv = binaryBvh ? std::span<const uint32_t>(kSpirv_trace_rays_bvh2) : std::span<const uint32_t>(kSpirv_trace_rays);
+  std::span<const uint32_t> spirv =
+      binaryBvh ? std::span<const uint32_t>(kSpirv_trace_rays_bvh2) : std::span<const uint32_t>(kSpirv_trace_rays);
   auto specs = [](bool anyHit, bool counting) {
-    return std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, anyHit}, {SPEC_WALK_STATS, counting}};
+    return std::vector<vk::SpecConstant>{
+        {SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, anyHit}, {SPEC_WALK_STATS, counting}};
   };
   closest_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest", spirv, specs(false, walkStats));
   any_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any", spirv, specs(true, walkStats));
@@ -41,12 +43,14 @@ RayTracer::~RayTracer() = default;
 
 std::vector<glm::vec4> RayTracer::trace(std::span<const gpu::TestRay> rays, bool anyHit, double* gpuSeconds) {
   size_t n = rays.size();
-  vk::Buffer in(ctx_, std::max<size_t>(n, 1) * sizeof(gpu::TestRay), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
+  vk::Buffer in(ctx_, std::max<size_t>(n, 1) * sizeof(gpu::TestRay), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                vk::MemoryKind::HostVisible);
   vk::Buffer out(ctx_, std::max<size_t>(n, 1) * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
   if (n) std::memcpy(in.mapped(), rays.data(), n * sizeof(gpu::TestRay));
   layout_->bindStorage(BINDING_TEST_RAYS, in);
   layout_->bindStorage(BINDING_TEST_HITS, out);
-  vk::Buffer deep(ctx_, std::max<size_t>(n, 1) * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+  vk::Buffer deep(ctx_, std::max<size_t>(n, 1) * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                  vk::MemoryKind::DeviceLocal);
   layout_->bindStorage(BINDING_DEEP_WALKS, deep);
   auto* control = static_cast<gpu::Control*>(control_.mapped());
   std::memset(control, 0, sizeof(gpu::Control));

@@ -228,7 +228,8 @@ BvhWideNode quantizeBoxes(const std::vector<Child>& children) {
   Aabb all;
   for (const Child& c : children) all.grow(c.box);
   using namespace gpu;
-  out.texels[kBvhWideXyPlanesTexel] = glm::uvec4(kBvhWideEmptyLoWord, kBvhWideEmptyHiWord, kBvhWideEmptyLoWord, kBvhWideEmptyHiWord);
+  out.texels[kBvhWideXyPlanesTexel] =
+      glm::uvec4(kBvhWideEmptyLoWord, kBvhWideEmptyHiWord, kBvhWideEmptyLoWord, kBvhWideEmptyHiWord);
   out.texels[kBvhWideZPlanesTexel] = glm::uvec4(kBvhWideEmptyLoWord, kBvhWideEmptyHiWord, 0u, 0u);
   out.texels[kBvhWideChildTexel] = glm::uvec4(kBvhEmptySlot);
   glm::uvec3 exponents(0u);
@@ -236,7 +237,8 @@ BvhWideNode quantizeBoxes(const std::vector<Child>& children) {
     // One float below the lowest child, so that plane 0 is strictly below it too (unless that overflows); never
     // a denormal, which a GPU that flushes denormals would read as 0 (the next normal float down instead).
     float below = std::nextafter(all.min[axis], -std::numeric_limits<float>::infinity());
-    if (std::abs(below) < std::numeric_limits<float>::min()) below = all.min[axis] > 0.0f ? 0.0f : -std::numeric_limits<float>::min();
+    if (std::abs(below) < std::numeric_limits<float>::min())
+      below = all.min[axis] > 0.0f ? 0.0f : -std::numeric_limits<float>::min();
     const float origin = std::isfinite(below) ? below : all.min[axis];
     out.texels[kBvhWideGridTexel][axis] = asUint(origin);
     // Start from the smallest power of two with 255 steps >= the extent (an estimate: the extent's double may
@@ -313,8 +315,9 @@ std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary) {
       const Child& c = children[i];
       uint32_t entry;
       if (c.count > 0) {
-        if (c.count > gpu::kBvhMaxLeafSize || c.ref >= gpu::kBvhLeafFirstLimit) throw Error("BVH leaf of " + std::to_string(c.count) + " triangles at " +
-                                                            std::to_string(c.ref) + " does not fit the 4-wide node layout");
+        if (c.count > gpu::kBvhMaxLeafSize || c.ref >= gpu::kBvhLeafFirstLimit)
+          throw Error("BVH leaf of " + std::to_string(c.count) + " triangles at " + std::to_string(c.ref) +
+                      " does not fit the 4-wide node layout");
         entry = gpu::bvhLeafEntry(c.ref, c.count);
       } else {
         entry = static_cast<uint32_t>(wide.size());
@@ -428,8 +431,10 @@ HostHit traceHost(const Bvh& bvh, std::span<const glm::vec3> pos, glm::vec3 orig
     for (int c = 0; c < 2; ++c) {
       if (!slabHit(Aabb{glm::vec3(node.texels[2 * c]), glm::vec3(node.texels[2 * c + 1])}, origin, inv, tBest)) continue;
       uint32_t ref = asUint(node.texels[2 * c].w), count = asUint(node.texels[2 * c + 1].w);
-      if (count == 0) stack.push_back(ref);
-      else if (intersectLeaf(shear, pos, ref, count, tBest, best, anyHit)) return best;
+      if (count == 0)
+        stack.push_back(ref);
+      else if (intersectLeaf(shear, pos, ref, count, tBest, best, anyHit))
+        return best;
     }
   }
   return best;
@@ -447,8 +452,10 @@ HostHit traceHostWide(const Bvh& bvh, std::span<const glm::vec3> pos, glm::vec3 
     for (int c = 0; c < 4; ++c) {
       uint32_t entry = node.texels[gpu::kBvhWideChildTexel][c];
       if (entry == gpu::kBvhEmptySlot || !slabHit(wideChildBox(node, c), origin, inv, tBest)) continue;
-      if (!gpu::bvhIsLeaf(entry)) stack.push_back(entry);
-      else if (intersectLeaf(shear, pos, gpu::bvhLeafFirst(entry), gpu::bvhLeafCount(entry), tBest, best, anyHit)) return best;
+      if (!gpu::bvhIsLeaf(entry))
+        stack.push_back(entry);
+      else if (intersectLeaf(shear, pos, gpu::bvhLeafFirst(entry), gpu::bvhLeafCount(entry), tBest, best, anyHit))
+        return best;
     }
   }
   return best;

@@ -47,7 +47,7 @@ struct BvhOptions {
 };
 
 struct Bvh {
-  std::vector<BvhGpuNode> nodes;     // binary layout, node 0 is the root (host traversal, statistics)
+  std::vector<BvhGpuNode> nodes;        // binary layout, node 0 is the root (host traversal, statistics)
   std::vector<BvhWideNode> wideNodes;   // 4-wide layout, node 0 is the root (GPU traversal)
   std::vector<uint32_t> triangleOrder;  // GPU triangle i is input triangle triangleOrder[i]
   BvhStats stats;

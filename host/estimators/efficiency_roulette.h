@@ -25,16 +25,16 @@ namespace vkmc {
 using gpu::kRouletteTableDepths;  // depths with their own scale (layout.h: the kernels index the same table)
 
 struct PilotPath {
-  float radiance = 0.0f;  // luminance of the sample's final estimate L
-  float weight = 1.0f;    // 1 / (pixel mean^2 + epsilon): relative error weight of the path's pixel
-  uint32_t lastDepth = 0; // depth of the path's last vertex
+  float radiance = 0.0f;   // luminance of the sample's final estimate L
+  float weight = 1.0f;     // 1 / (pixel mean^2 + epsilon): relative error weight of the path's pixel
+  uint32_t lastDepth = 0;  // depth of the path's last vertex
   uint32_t pixel = 0;
   std::array<float, kRouletteTableDepths> beta{};      // max component of throughput at the decision; < 0: none
   std::array<float, kRouletteTableDepths> gathered{};  // luminance gathered up to and including depth d; < 0: none
 };
 
 struct RouletteTable {
-  std::array<float, kRouletteTableDepths> scale{};  // k_d; +inf: no roulette at that depth
+  std::array<float, kRouletteTableDepths> scale{};           // k_d; +inf: no roulette at that depth
   std::array<double, kRouletteTableDepths> predictedGain{};  // efficiency ratio predicted at each depth
 };
 

@@ -21,15 +21,19 @@ constexpr uint32_t valueOf(E e) {
 template <auto Field>
 double read(const EstimatorConfig& c) {
   auto v = c.*Field;
-  if constexpr (std::is_enum_v<decltype(v)>) return valueOf(v);
-  else return static_cast<double>(v);
+  if constexpr (std::is_enum_v<decltype(v)>)
+    return valueOf(v);
+  else
+    return static_cast<double>(v);
 }
 
 template <auto Field>
 void write(EstimatorConfig& c, double v) {
   using T = std::remove_cvref_t<decltype(c.*Field)>;
-  if constexpr (std::is_enum_v<T>) c.*Field = static_cast<T>(static_cast<uint32_t>(v));
-  else c.*Field = static_cast<T>(v);
+  if constexpr (std::is_enum_v<T>)
+    c.*Field = static_cast<T>(static_cast<uint32_t>(v));
+  else
+    c.*Field = static_cast<T>(v);
 }
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -45,7 +49,8 @@ constexpr Interval atLeast(double lo) { return {lo, kInfinity, false}; }
 template <auto Field>
 constexpr EstimatorParam count(const char* key, uint32_t def, uint32_t lo, uint32_t hi, int spec, const char* help,
                                const char* rangeNote = "") {
-  return {key, ParamKind::Count, double(def), double(lo), double(hi), false, rangeNote, {}, spec, help, &read<Field>, &write<Field>};
+  return {key,  ParamKind::Count, double(def),  double(lo), double(hi), false, rangeNote, {}, spec,
+          help, &read<Field>,     &write<Field>};
 }
 
 template <auto Field>
@@ -75,9 +80,8 @@ constexpr ParamName kBsdfSamplingNames[] = {{"uniform", valueOf(BsdfSampling::Un
 constexpr ParamName kLightSamplingNames[] = {{"area", valueOf(LightSampling::Area)},
                                              {"solid-angle", valueOf(LightSampling::SolidAngle)}};
 constexpr ParamName kLightSelectNames[] = {{"uniform", valueOf(LightSelect::Uniform)}, {"power", valueOf(LightSelect::Power)}};
-constexpr ParamName kMisNames[] = {{"none", valueOf(MisHeuristic::None)},
-                                   {"balance", valueOf(MisHeuristic::Balance)},
-                                   {"power", valueOf(MisHeuristic::Power)}};
+constexpr ParamName kMisNames[] = {
+    {"none", valueOf(MisHeuristic::None)}, {"balance", valueOf(MisHeuristic::Balance)}, {"power", valueOf(MisHeuristic::Power)}};
 
 using C = EstimatorConfig;
 // In the order of --help. The defaults are the renderer's (EstimatorConfig's constructor applies them).
@@ -92,16 +96,19 @@ constexpr EstimatorParam kParams[] = {
     real<&C::shadowRrThreshold>("shadow_rr", 0.0f, atLeast(0), SPEC_SHADOW_RR_THRESHOLD,
                                 "shadow-ray roulette threshold x pixel estimate; 0 = off"),
     real<&C::shadowRrQ>("shadow_rr_q", 0.5f, halfOpen(0, 1), SPEC_SHADOW_RR_Q, "termination probability of tiny shadow rays"),
-    real<&C::cameraRrQ>("camera_rr", 0.0f, halfOpen(0, 1), SPEC_CAMERA_RR_Q, "camera-ray roulette termination probability; 0 = off"),
+    real<&C::cameraRrQ>("camera_rr", 0.0f, halfOpen(0, 1), SPEC_CAMERA_RR_Q,
+                        "camera-ray roulette termination probability; 0 = off"),
     count<&C::lightSamples>("light_samples", 1, 1, 4096, SPEC_LIGHT_SAMPLES, "light samples per hit below --split-depth"),
-    count<&C::splitDepth>("split_depth", 1, 0, 100000, SPEC_SPLIT_DEPTH, "splitting applies at depths below this; 1: the first hit"),
+    count<&C::splitDepth>("split_depth", 1, 0, 100000, SPEC_SPLIT_DEPTH,
+                          "splitting applies at depths below this; 1: the first hit"),
     real<&C::bsdfSamples>("bsdf_samples", 1.0f, closed(1, 64), SPEC_BSDF_SAMPLES,
                           "BSDF continuations K per hit below --split-depth, each weighted 1/K"),
     choice<&C::bsdfSampling>("bsdf_sampling", BsdfSampling::Bsdf, kBsdfSamplingNames, SPEC_BSDF_SAMPLING,
                              "continuation direction sampling"),
     choice<&C::lightSampling>("light_sampling", LightSampling::Area, kLightSamplingNames, SPEC_LIGHT_SAMPLING,
                               "a point on the light's area or a direction in its solid angle"),
-    choice<&C::lightSelect>("light_select", LightSelect::Power, kLightSelectNames, -1, "which emissive triangle a light sample picks"),
+    choice<&C::lightSelect>("light_select", LightSelect::Power, kLightSelectNames, -1,
+                            "which emissive triangle a light sample picks"),
     onOff<&C::nee>("nee", true, SPEC_NEE, "next-event estimation"),
     choice<&C::mis>("mis", MisHeuristic::Power, kMisNames, SPEC_MIS, "MIS heuristic of light and BSDF sampling"),
 };

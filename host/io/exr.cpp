@@ -8,7 +8,6 @@
 #include <ImfOutputFile.h>
 #include <ImfStdIO.h>
 
-
 #include "error.h"
 #include "io/output_files.h"
 
@@ -20,7 +19,8 @@ std::string encodeExr(const ExrImage& image) {
     header.compression() = Imf::ZIP_COMPRESSION;
     Imf::FrameBuffer fb;
     for (const auto& [name, data] : image.channels) {
-      if (data.size() != static_cast<size_t>(image.width) * image.height) throw Error("EXR channel " + name + " has the wrong size");
+      if (data.size() != static_cast<size_t>(image.width) * image.height)
+        throw Error("EXR channel " + name + " has the wrong size");
       header.channels().insert(name, Imf::Channel(Imf::FLOAT));
       fb.insert(name, Imf::Slice(Imf::FLOAT, (char*)data.data(), sizeof(float), sizeof(float) * image.width));
     }

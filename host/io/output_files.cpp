@@ -151,8 +151,10 @@ void OutputSet::commit() {
     for (int attempt = 0; fd < 0 && attempt < 100; ++attempt) {
       std::string name = temporaryBeside(target, attempt);
       fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-      if (fd >= 0) tmp = std::make_unique<PendingTemporary>(name);
-      else if (errno != EEXIST) break;
+      if (fd >= 0)
+        tmp = std::make_unique<PendingTemporary>(name);
+      else if (errno != EEXIST)
+        break;
     }
     if (fd < 0) throw Error("cannot write '" + path + "': " + std::strerror(errno));
     staged.push_back({std::move(tmp), target, path});
@@ -214,7 +216,8 @@ void checkOutputPaths(const std::vector<std::pair<std::string, std::string>>& ou
     if (!fs::is_directory(parent, ec)) throw Error(flag + ": folder '" + parent.string() + "' does not exist");
     if (fs::is_directory(path, ec)) throw Error(flag + ": '" + path + "' is a folder");
     for (const std::string& in : inputs)
-      if (!in.empty() && sameFile(path, in)) throw Error(flag + ": '" + path + "' is an input of this command; it would be overwritten");
+      if (!in.empty() && sameFile(path, in))
+        throw Error(flag + ": '" + path + "' is an input of this command; it would be overwritten");
     for (size_t k = 0; k < i; ++k)
       if (!outputs[k].second.empty() && sameFile(path, outputs[k].second) && !isCharDevice(path))
         throw Error(flag + " and " + outputs[k].first + " name the same file '" + path + "'");

@@ -15,4 +15,4 @@ std::string encodeFilmPng(const Film& film, float exposureStops);
 void writeContactSheet(const std::string& path, const std::vector<ExrImage>& images, const std::vector<std::string>& labels,
                        float exposureStops);
 std::string encodeContactSheet(const std::vector<ExrImage>& images, const std::vector<std::string>& labels, float exposureStops);
-}
+}  // namespace vkmc

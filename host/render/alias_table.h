@@ -9,7 +9,7 @@ namespace vkmc {
 struct AliasEntry {
   float probability;  // keep this entry when the fractional part of u * n is below it
   uint32_t alias;
-  float pmf;          // normalized weight of this entry
+  float pmf;  // normalized weight of this entry
 };
 
 // weights must be finite, non-negative, with a positive sum.

@@ -126,13 +126,14 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
 
   triangles_ = makeTexelBuffer(ctx, triTexels.data(), triTexels.size() * 16, BINDING_TRIANGLES, "triangles");
   triangleInfo_ = makeTexelBuffer(ctx, infoTexels.data(), infoTexels.size() * 16, BINDING_TRIANGLE_INFO, "triangle info");
-  bvhNodes_ = makeTexelBuffer(ctx, bvh.wideNodes.data(), bvh.wideNodes.size() * sizeof(BvhWideNode), BINDING_BVH_NODES,
-                              "BVH nodes");
+  bvhNodes_ =
+      makeTexelBuffer(ctx, bvh.wideNodes.data(), bvh.wideNodes.size() * sizeof(BvhWideNode), BINDING_BVH_NODES, "BVH nodes");
   if (keepBinaryBvh)
-    binaryBvhNodes_ = makeTexelBuffer(ctx, bvh.nodes.data(), bvh.nodes.size() * sizeof(BvhGpuNode), BINDING_BVH_NODES,
-                                      "binary BVH nodes");
+    binaryBvhNodes_ =
+        makeTexelBuffer(ctx, bvh.nodes.data(), bvh.nodes.size() * sizeof(BvhGpuNode), BINDING_BVH_NODES, "binary BVH nodes");
   lights_ = makeTexelBuffer(ctx, lightTexels.data(), lightTexels.size() * 16, BINDING_LIGHTS, "lights");
-  materials_ = vk::Buffer(ctx, mats.size() * sizeof(gpu::Material), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+  materials_ =
+      vk::Buffer(ctx, mats.size() * sizeof(gpu::Material), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   materials_.upload(mats.data(), mats.size() * sizeof(gpu::Material));
   info_.bufferBytes = {{"triangles", triTexels.size() * 16},
                        {"triangle_info", infoTexels.size() * 16},

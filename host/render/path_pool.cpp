@@ -19,9 +19,9 @@ void checkDeviceLimits(const RenderSettings& settings, const VkPhysicalDeviceLim
                 std::to_string(std::min(limits.maxComputeWorkGroupSize[0], limits.maxComputeWorkGroupInvocations)));
   uint64_t filmBytes = uint64_t(settings.width) * settings.height * sizeof(gpu::FilmPixel);
   if (filmBytes > limits.maxStorageBufferRange)
-    throw Error("image " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + " is too large: its film needs " +
-                std::to_string(filmBytes >> 20) + " MiB, the device's storage-buffer limit is " +
-                std::to_string(limits.maxStorageBufferRange >> 20) + " MiB");
+    throw Error("image " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                " is too large: its film needs " + std::to_string(filmBytes >> 20) +
+                " MiB, the device's storage-buffer limit is " + std::to_string(limits.maxStorageBufferRange >> 20) + " MiB");
 }
 
 PathPoolSize sizePathPool(const RenderSettings& settings, const VkPhysicalDeviceLimits& limits, bool hasShadowStage) {
@@ -33,7 +33,8 @@ PathPoolSize sizePathPool(const RenderSettings& settings, const VkPhysicalDevice
   // The pool holds camera paths and split children; each pooled path queues up to M shadow rays per bounce.
   const uint32_t poolFactor = est.pathPoolFactor();
   capacity = std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::PathState) * poolFactor));
-  capacity = std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::ShadowRay) * est.lightSamples * poolFactor));
+  capacity =
+      std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::ShadowRay) * est.lightSamples * poolFactor));
   PathPoolSize size;
   size.cameraPaths = std::max(capacity, 1u);
   size.slots = size.cameraPaths * poolFactor;

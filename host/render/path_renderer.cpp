@@ -26,7 +26,6 @@ constexpr uint32_t kLaterChunkBounces = 16;
 constexpr uint32_t kSamplesPerBatch = 64;  // samples in a float batch sum before it is folded into double
 }  // namespace
 
-
 const char* toString(Integrator i) { return i == Integrator::Megakernel ? "megakernel" : "wavefront"; }
 
 Integrator integratorFromString(const std::string& name) {
@@ -83,8 +82,8 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
   std::array<float, kRouletteTableDepths> noRoulette;
   noRoulette.fill(std::numeric_limits<float>::infinity());
   setRouletteScales(noRoulette);
-  depthStats_ = storage(settings_.recordDepthStats ? uint64_t(pool_) * gpu::kRouletteTableDepths * 8 : 16,
-                        vk::MemoryKind::HostVisible);
+  depthStats_ =
+      storage(settings_.recordDepthStats ? uint64_t(pool_) * gpu::kRouletteTableDepths * 8 : 16, vk::MemoryKind::HostVisible);
   queueStats_ = storage(gpu::kQueueStatsBounces * 8, vk::MemoryKind::HostVisible);
 }
 
@@ -105,7 +104,6 @@ void PathRenderer::bindBuffers() {
 }
 
 PathRenderer::~PathRenderer() = default;
-
 
 void PathRenderer::setRouletteScales(const std::array<float, kRouletteTableDepths>& scales) {
   std::memcpy(rouletteTable_.mapped(), scales.data(), sizeof(float) * scales.size());

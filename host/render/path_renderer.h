@@ -59,7 +59,8 @@ class PathRenderer {
   std::unique_ptr<vk::KernelLayout> layout_;
   RenderKernels kernels_;
   std::unique_ptr<vk::GpuTimer> timer_;
-  vk::Buffer paths_, hits_, queues_, shadowQueue_, deepWalks_, control_, film_, pixelEstimate_, rouletteTable_, depthStats_, queueStats_;
+  vk::Buffer paths_, hits_, queues_, shadowQueue_, deepWalks_, control_, film_, pixelEstimate_, rouletteTable_, depthStats_,
+      queueStats_;
   std::vector<PilotPath> pilot_;
   void collectPilot(uint32_t pathCount);
   double pipelineSeconds_ = 0.0;

@@ -44,8 +44,8 @@ KernelPlan planKernels(const RenderSettings& s) {
   return plan;
 }
 
-RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, const RenderSettings& settings,
-                                 bool hasShadowStage, uint32_t pathSlots) {
+RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, const RenderSettings& settings, bool hasShadowStage,
+                                 uint32_t pathSlots) {
   const EstimatorConfig& est = settings.estimator;
   const KernelPlan plan = planKernels(settings);
   const std::vector<vk::SpecConstant>& specs = plan.specs;

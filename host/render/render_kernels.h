@@ -19,7 +19,7 @@ KernelPlan planKernels(const RenderSettings& settings);
 
 // Builds and warms up the planned kernels on `layout` (whose buffers must be bound, the control block zeroed).
 // pathSlots is the pool size the warm-up's push constants announce.
-RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, const RenderSettings& settings,
-                                 bool hasShadowStage, uint32_t pathSlots);
+RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, const RenderSettings& settings, bool hasShadowStage,
+                                 uint32_t pathSlots);
 
 }  // namespace vkmc

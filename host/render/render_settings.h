@@ -21,34 +21,34 @@ Integrator integratorFromString(const std::string& name);  // throws Error on an
 struct RenderSettings {
   uint32_t width = 256;
   uint32_t height = 256;
-  uint32_t spp = 64;           // with a time budget: the most samples to take
-  double timeBudget = 0.0;     // seconds; > 0: whole sample passes until the budget is spent
-  EstimatorConfig estimator;   // roulette, splitting, sampling, MIS, depth cap
-  SceneFeatures features;      // what the pipelines are specialized for (allFeatures(): general pipelines)
+  uint32_t spp = 64;          // with a time budget: the most samples to take
+  double timeBudget = 0.0;    // seconds; > 0: whole sample passes until the budget is spent
+  EstimatorConfig estimator;  // roulette, splitting, sampling, MIS, depth cap
+  SceneFeatures features;     // what the pipelines are specialized for (allFeatures(): general pipelines)
   uint32_t seed = 1;
   glm::vec3 background{0.0f};
   CameraRig camera{};
-  bool progress = false;       // progress line on stderr
+  bool progress = false;                // progress line on stderr
   uint32_t maxPathsPerPass = 1u << 18;  // wavefront size: paths in flight per pass
-  bool recordDepthStats = false;         // efficiency-roulette pilot: per-path, per-depth statistics
-  uint32_t workgroupSize = 64;           // invocations per workgroup of every kernel: 32, 64, 128 or 256
+  bool recordDepthStats = false;        // efficiency-roulette pilot: per-path, per-depth statistics
+  uint32_t workgroupSize = 64;          // invocations per workgroup of every kernel: 32, 64, 128 or 256
   Integrator integrator = Integrator::Wavefront;
 };
 
 struct RenderStats {
-  double seconds = 0.0;          // wall time of the sample passes
-  double gpuSeconds = 0.0;       // sum of kernel timestamps
+  double seconds = 0.0;     // wall time of the sample passes
+  double gpuSeconds = 0.0;  // sum of kernel timestamps
   uint64_t cameraRays = 0, extensionRays = 0, shadowRays = 0;
-  uint64_t primaryRays = 0;      // rays of bounce 0 (= camera rays)
-  double primarySeconds = 0.0;   // GPU time of bounce-0 intersection
+  uint64_t primaryRays = 0;        // rays of bounce 0 (= camera rays)
+  double primarySeconds = 0.0;     // GPU time of bounce-0 intersection
   double incoherentSeconds = 0.0;  // GPU time of later closest-hit intersections
   std::map<std::string, double> stageSeconds;
   uint32_t passes = 0;
   uint32_t maxBounces = 0;
   uint32_t samplesPerPixel = 0;  // reached (equals spp unless a time budget ended the render)
   uint64_t nonfiniteEmission = 0, nonfiniteLightSamples = 0, nonfiniteThroughput = 0;  // by producing stage
-  uint64_t traversalsCut = 0;  // rays whose BVH walk the device's loop limit ended (their samples excluded)
-  uint64_t deepWalks = 0;      // walks that outgrew the register stack, deferred to a trace stage's deep pass
+  uint64_t traversalsCut = 0;    // rays whose BVH walk the device's loop limit ended (their samples excluded)
+  uint64_t deepWalks = 0;        // walks that outgrew the register stack, deferred to a trace stage's deep pass
   uint64_t deepWalksTraced = 0;  // of those, walks the deep passes traced (all of them, unless a pass was skipped)
   // Queue occupancy: paths queued for intersection and shadow rays queued, per bounce (the last entry sums
   // deeper bounces), over the whole render.

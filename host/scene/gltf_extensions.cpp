@@ -54,7 +54,8 @@ std::vector<std::string> checkExtensions(const std::vector<std::string>& used, c
     const ExtensionRow* row = find(name);
     if (!row) throw Error("the file requires extension " + name + ", which vkmc does not know");
     if (!row->ignored.empty())
-      throw Error("the file requires extension " + name + ", which vkmc does not implement in full: " + std::string(row->ignored));
+      throw Error("the file requires extension " + name +
+                  ", which vkmc does not implement in full: " + std::string(row->ignored));
   }
   std::vector<std::string> names = used;
   for (const std::string& name : required)
@@ -62,8 +63,10 @@ std::vector<std::string> checkExtensions(const std::vector<std::string>& used, c
   std::vector<std::string> warnings;
   for (const std::string& name : names) {
     const ExtensionRow* row = find(name);
-    if (!row) warnings.push_back("extension " + name + " is unknown to vkmc and ignored");
-    else if (!row->ignored.empty()) warnings.push_back("extension " + name + ": " + std::string(row->ignored));
+    if (!row)
+      warnings.push_back("extension " + name + " is unknown to vkmc and ignored");
+    else if (!row->ignored.empty())
+      warnings.push_back("extension " + name + ": " + std::string(row->ignored));
   }
   return warnings;
 }

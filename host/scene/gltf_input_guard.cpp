@@ -34,7 +34,8 @@ std::vector<unsigned char> readRegularFile(const std::string& path, uint64_t max
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
       ::close(fd);
-      throw Error("cannot read " + what + " '" + path + "'" + (n < 0 ? std::string(": ") + std::strerror(errno) : ": file shrank"));
+      throw Error("cannot read " + what + " '" + path + "'" +
+                  (n < 0 ? std::string(": ") + std::strerror(errno) : ": file shrank"));
     }
     done += size_t(n);
   }
@@ -51,10 +52,12 @@ std::string_view glbJsonChunk(const std::vector<unsigned char>& glb) {
   if (glb.size() < 20 || word(0) != 0x46546C67u) throw Error("not a GLB file (no 'glTF' magic)");
   if (word(4) != 2) throw Error("GLB version " + std::to_string(word(4)) + " (only 2 is supported)");
   uint64_t length = word(8), jsonLength = word(12);
-  if (length > glb.size()) throw Error("GLB header length " + std::to_string(length) + " exceeds the file's " + std::to_string(glb.size()) + " bytes");
+  if (length > glb.size())
+    throw Error("GLB header length " + std::to_string(length) + " exceeds the file's " + std::to_string(glb.size()) + " bytes");
   if (word(16) != 0x4E4F534Au) throw Error("GLB's first chunk is not JSON");
   uint64_t jsonEnd = 20 + jsonLength;
-  if (jsonLength == 0 || jsonEnd > length) throw Error("GLB JSON chunk of " + std::to_string(jsonLength) + " bytes runs past the file");
+  if (jsonLength == 0 || jsonEnd > length)
+    throw Error("GLB JSON chunk of " + std::to_string(jsonLength) + " bytes runs past the file");
   if (jsonEnd % 4 != 0) throw Error("GLB JSON chunk is not padded to 4 bytes");
   if (jsonEnd < length) {  // a BIN chunk: its 8-byte header and its data must both lie inside the file
     if (jsonEnd + 8 > length) throw Error("GLB BIN chunk header runs past the file");
@@ -88,7 +91,8 @@ class BoundedScan : public nlohmann::json_sax<nlohmann::json> {
   bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) override {
     std::string what = e.what();  // "[json.exception.parse_error.101] parse error at ...: reason"
     size_t bracket = what.find("] ");
-    problem = "invalid JSON at byte " + std::to_string(position) + ": " + (bracket == std::string::npos ? what : what.substr(bracket + 2));
+    problem = "invalid JSON at byte " + std::to_string(position) + ": " +
+              (bracket == std::string::npos ? what : what.substr(bracket + 2));
     return false;
   }
 
@@ -126,7 +130,8 @@ GltfJsonFacts scanGltfJson(std::string_view json, const InputLimits& limits) {
     for (const auto& b : doc["buffers"])
       if (b.is_object() && b.contains("byteLength") && b["byteLength"].is_number_unsigned())
         facts.largestBuffer = std::max<uint64_t>(facts.largestBuffer, b["byteLength"].get<uint64_t>());
-  for (auto [key, list] : {std::pair{"extensionsUsed", &facts.extensionsUsed}, std::pair{"extensionsRequired", &facts.extensionsRequired}})
+  for (auto [key, list] :
+       {std::pair{"extensionsUsed", &facts.extensionsUsed}, std::pair{"extensionsRequired", &facts.extensionsRequired}})
     if (doc.contains(key) && doc[key].is_array())
       for (const auto& e : doc[key])
         if (e.is_string()) list->push_back(e.get<std::string>());

@@ -103,7 +103,8 @@ AccessorView viewAccessor(const tinygltf::Model& model, int index, const char* w
 // vertices makes, and which element is corner k of triangle t (strips alternate their winding so every
 // triangle keeps the first one's orientation).
 bool isTriangleMode(int mode) {
-  return mode == -1 || mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN;
+  return mode == -1 || mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+         mode == TINYGLTF_MODE_TRIANGLE_FAN;
 }
 size_t triangleCount(int mode, size_t elements) {
   if (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) return elements >= 3 ? elements - 2 : 0;
@@ -125,8 +126,16 @@ uint32_t readIndex(const AccessorView& v, size_t i) {
   const unsigned char* p = v.data + i * v.stride;
   switch (v.componentType) {
     case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t x; std::memcpy(&x, p, 2); return x; }
-    default: { uint32_t x; std::memcpy(&x, p, 4); return x; }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+      uint16_t x;
+      std::memcpy(&x, p, 2);
+      return x;
+    }
+    default: {
+      uint32_t x;
+      std::memcpy(&x, p, 4);
+      return x;
+    }
   }
 }
 
@@ -140,8 +149,8 @@ glm::mat4 localTransform(const tinygltf::Node& node) {
   if (node.translation.size() == 3)
     m = glm::translate(m, glm::vec3(node.translation[0], node.translation[1], node.translation[2]));
   if (node.rotation.size() == 4) {
-    glm::quat q(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
-                static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2]));
+    glm::quat q(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]), static_cast<float>(node.rotation[1]),
+                static_cast<float>(node.rotation[2]));
     m *= glm::mat4_cast(glm::normalize(q));
   }
   if (node.scale.size() == 3) m = glm::scale(m, glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
@@ -174,9 +183,11 @@ Material convertMaterial(const tinygltf::Material& m, int index, bool& usesTextu
     bool colour = false;
     if (v.Has("specularColorFactor") && v.Get("specularColorFactor").IsArray())
       for (int c = 0; c < 3 && c < int(v.Get("specularColorFactor").ArrayLen()); ++c)
-        colour |= v.Get("specularColorFactor").Get(c).IsNumber() && v.Get("specularColorFactor").Get(c).GetNumberAsDouble() != 1.0;
+        colour |=
+            v.Get("specularColorFactor").Get(c).IsNumber() && v.Get("specularColorFactor").Get(c).GetNumberAsDouble() != 1.0;
     if (colour || v.Has("specularTexture") || v.Has("specularColorTexture"))
-      warnings.push_back(name + ": KHR_materials_specular's specularColorFactor and textures are ignored (specularFactor is used)");
+      warnings.push_back(name +
+                         ": KHR_materials_specular's specularColorFactor and textures are ignored (specularFactor is used)");
   }
   if (!std::isfinite(strength) || strength < 0.0) throw Error(name + ": emissiveStrength is not a finite non-negative number");
   out.emission *= static_cast<float>(strength);
@@ -314,7 +325,8 @@ class Flattener {
       cam.kind = CameraKind::Orthographic;
       cam.xmag = static_cast<float>(c.orthographic.xmag);
       cam.ymag = static_cast<float>(c.orthographic.ymag);
-      if (!(cam.xmag > 0.0f && cam.xmag <= gpu::kMaxSceneCoordinate) || !(cam.ymag > 0.0f && cam.ymag <= gpu::kMaxSceneCoordinate))
+      if (!(cam.xmag > 0.0f && cam.xmag <= gpu::kMaxSceneCoordinate) ||
+          !(cam.ymag > 0.0f && cam.ymag <= gpu::kMaxSceneCoordinate))
         throw Error(name + ": orthographic magnification not a positive number within " + coordinateLimit());
       cam.aspectRatio = cam.xmag / cam.ymag;
     } else {
@@ -409,8 +421,8 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
   tinygltf::Model model;
   std::vector<std::string> extensionWarnings;
   try {
-    std::string_view json = binary ? glbJsonChunk(bytes)
-                                   : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    std::string_view json =
+        binary ? glbJsonChunk(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     GltfJsonFacts facts = scanGltfJson(json, limits.input);
     extensionWarnings = checkExtensions(facts.extensionsUsed, facts.extensionsRequired);
     uint64_t largestBuffer = facts.largestBuffer;
@@ -421,8 +433,9 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
     loader.SetImageLoader(skipImage, nullptr);
     loader.SetFsCallbacks({safeFileExists, noExpansion, safeReadWholeFile, noWrite, &safeFs});
     std::string err, warn;
-    bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), static_cast<unsigned>(bytes.size()), baseDir)
-                     : loader.LoadASCIIFromString(&model, &err, &warn, json.data(), static_cast<unsigned>(json.size()), baseDir);
+    bool ok = binary
+                  ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), static_cast<unsigned>(bytes.size()), baseDir)
+                  : loader.LoadASCIIFromString(&model, &err, &warn, json.data(), static_cast<unsigned>(json.size()), baseDir);
     if (!ok) throw Error(err.empty() ? "unknown error" : err);
   } catch (const Error& e) {
     std::string reason = e.what();
@@ -446,7 +459,8 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
 
   std::vector<int> roots;
   if (!model.scenes.empty()) {
-    int sceneIndex = model.defaultScene >= 0 && model.defaultScene < static_cast<int>(model.scenes.size()) ? model.defaultScene : 0;
+    int sceneIndex =
+        model.defaultScene >= 0 && model.defaultScene < static_cast<int>(model.scenes.size()) ? model.defaultScene : 0;
     roots = model.scenes[sceneIndex].nodes;
   } else {
     std::vector<bool> isChild(model.nodes.size(), false);

@@ -15,7 +15,7 @@ struct Material {
   glm::vec3 emission{0.0f};  // emissiveFactor x KHR_materials_emissive_strength, W m^-2 sr^-1
   float metallic = 1.0f;
   float roughness = 1.0f;
-  float specular = 1.0f;     // KHR_materials_specular specularFactor
+  float specular = 1.0f;  // KHR_materials_specular specularFactor
   bool doubleSided = false;
   bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
@@ -27,9 +27,9 @@ struct Camera {
   glm::vec3 position{0.0f};
   glm::vec3 forward{0.0f, 0.0f, -1.0f};
   glm::vec3 up{0.0f, 1.0f, 0.0f};
-  float yfov = 0.7853982f;            // radians (perspective)
-  std::optional<float> aspectRatio;   // width / height, when the file gives one
-  float xmag = 1.0f, ymag = 1.0f;     // half extents (orthographic)
+  float yfov = 0.7853982f;           // radians (perspective)
+  std::optional<float> aspectRatio;  // width / height, when the file gives one
+  float xmag = 1.0f, ymag = 1.0f;    // half extents (orthographic)
   std::string name;
 };
 
@@ -53,10 +53,10 @@ struct Scene {
   std::vector<glm::vec3> normals;     // 3 per triangle, world space (geometric normal where the file has none)
   std::vector<uint32_t> materialIds;  // 1 per triangle
   std::vector<Material> materials;
-  std::vector<Camera> cameras;        // camera instances in node order
+  std::vector<Camera> cameras;  // camera instances in node order
   Aabb bounds;
-  uint64_t degenerateTriangles = 0;   // zero-area triangles skipped
-  uint64_t skippedPrimitives = 0;     // non-triangle primitives skipped
+  uint64_t degenerateTriangles = 0;  // zero-area triangles skipped
+  uint64_t skippedPrimitives = 0;    // non-triangle primitives skipped
   std::vector<std::string> warnings;
   std::string path;
   bool usesTextures = false;       // some material references a texture (ignored for now)

@@ -14,12 +14,12 @@ struct SceneFeatures {
   uint32_t triangles = 0;
   uint32_t emissiveTriangles = 0;
   uint32_t materials = 0;
-  bool glossy = false;              // a material with a specular lobe (metallic > 0 or specularFactor > 0)
+  bool glossy = false;  // a material with a specular lobe (metallic > 0 or specularFactor > 0)
   bool metallic = false;
   bool nonDefaultSpecular = false;  // KHR_materials_specular factor other than 1
   bool doubleSided = false;
-  bool textures = false;            // referenced (not yet supported)
-  bool punctualLights = false;      // KHR_lights_punctual present (not yet supported)
+  bool textures = false;        // referenced (not yet supported)
+  bool punctualLights = false;  // KHR_lights_punctual present (not yet supported)
 
   bool emitters() const { return emissiveTriangles > 0; }
   const char* sizeClass() const;  // "small" (< 1k triangles), "medium" (< 100k), "large"

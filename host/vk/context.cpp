@@ -9,7 +9,8 @@
 namespace vkmc::vk {
 
 void check(VkResult result, const char* what) {
-  if (result != VK_SUCCESS) throw Error(std::string("Vulkan call failed: ") + what + " (VkResult " + std::to_string(result) + ")");
+  if (result != VK_SUCCESS)
+    throw Error(std::string("Vulkan call failed: ") + what + " (VkResult " + std::to_string(result) + ")");
 }
 
 Context::Context(const ContextOptions& options) {
@@ -35,13 +36,17 @@ Context::Context(const ContextOptions& options) {
     for (size_t i = 0; i < devices.size(); ++i) {
       VkPhysicalDeviceProperties p;
       vkGetPhysicalDeviceProperties(devices[i], &p);
-      if (p.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU) { index = static_cast<int>(i); break; }
+      if (p.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU) {
+        index = static_cast<int>(i);
+        break;
+      }
     }
   }
   physical_ = devices[index];
   vkGetPhysicalDeviceProperties(physical_, &properties_);
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
-  if (properties_.apiVersion < VK_API_VERSION_1_2) throw Error(std::string("device ") + properties_.deviceName + " lacks Vulkan 1.2");
+  if (properties_.apiVersion < VK_API_VERSION_1_2)
+    throw Error(std::string("device ") + properties_.deviceName + " lacks Vulkan 1.2");
   VkPhysicalDeviceMaintenance3Properties m3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
   VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &m3};
   vkGetPhysicalDeviceProperties2(physical_, &p2);

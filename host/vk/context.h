@@ -35,7 +35,8 @@ class Context {
   uint64_t largestDeviceLocalHeapBytes() const {
     uint64_t best = 0;
     for (uint32_t i = 0; i < memory_.memoryHeapCount; ++i)
-      if (memory_.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) best = std::max<uint64_t>(best, memory_.memoryHeaps[i].size);
+      if (memory_.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+        best = std::max<uint64_t>(best, memory_.memoryHeaps[i].size);
     return best;
   }
 

@@ -37,8 +37,8 @@ KernelLayout::KernelLayout(Context& ctx) : ctx_(ctx) {
   pci.pPushConstantRanges = &range;
   check(vkCreatePipelineLayout(ctx.device(), &pci, nullptr, &pipelineLayout_), "vkCreatePipelineLayout");
 
-  std::array<VkDescriptorPoolSize, 2> sizes{{{VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, 4},
-                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT}}};
+  std::array<VkDescriptorPoolSize, 2> sizes{
+      {{VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, 4}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT}}};
   VkDescriptorPoolCreateInfo dpci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   dpci.maxSets = 1;
   dpci.poolSizeCount = static_cast<uint32_t>(sizes.size());
@@ -94,8 +94,7 @@ Kernel::Kernel(Context& ctx, const KernelLayout& layout, std::string name, std::
     entries.push_back({s.id, static_cast<uint32_t>(values.size() * sizeof(uint32_t)), sizeof(uint32_t)});
     values.push_back(s.value);
   }
-  VkSpecializationInfo si{static_cast<uint32_t>(entries.size()), entries.data(), values.size() * sizeof(uint32_t),
-                          values.data()};
+  VkSpecializationInfo si{static_cast<uint32_t>(entries.size()), entries.data(), values.size() * sizeof(uint32_t), values.data()};
   VkComputePipelineCreateInfo cpci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   cpci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
   cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -186,8 +185,8 @@ void dispatch(VkCommandBuffer cmd, const KernelLayout& layout, const Kernel& ker
   computeBarrier(cmd);
 }
 
-void dispatchIndirect(VkCommandBuffer cmd, const KernelLayout& layout, const Kernel& kernel, const void* push,
-                      uint32_t pushSize, const Buffer& args, VkDeviceSize offset, GpuTimer* timer) {
+void dispatchIndirect(VkCommandBuffer cmd, const KernelLayout& layout, const Kernel& kernel, const void* push, uint32_t pushSize,
+                      const Buffer& args, VkDeviceSize offset, GpuTimer* timer) {
   bindKernel(cmd, layout, kernel, push, pushSize);
   if (timer) timer->begin(cmd, kernel.name());
   vkCmdDispatchIndirect(cmd, args.handle(), offset);

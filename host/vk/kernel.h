@@ -80,8 +80,8 @@ class GpuTimer {
 // Records one compute dispatch: bind, push constants, dispatch (direct or indirect), barrier after.
 void dispatch(VkCommandBuffer cmd, const KernelLayout& layout, const Kernel& kernel, const void* push, uint32_t pushSize,
               uint32_t groups, GpuTimer* timer = nullptr);
-void dispatchIndirect(VkCommandBuffer cmd, const KernelLayout& layout, const Kernel& kernel, const void* push,
-                      uint32_t pushSize, const Buffer& args, VkDeviceSize offset, GpuTimer* timer = nullptr);
+void dispatchIndirect(VkCommandBuffer cmd, const KernelLayout& layout, const Kernel& kernel, const void* push, uint32_t pushSize,
+                      const Buffer& args, VkDeviceSize offset, GpuTimer* timer = nullptr);
 void computeBarrier(VkCommandBuffer cmd);
 
 }  // namespace vkmc::vk

@@ -15,7 +15,7 @@ VKMC_FN float gammaBound(float n) { return (n * kMachineEpsilon) / (1.0f - n * k
 // stay watertight.
 struct RayShear {
   vec3 origin;
-  vec3 shear;       // Sx, Sy, Sz
+  vec3 shear;        // Sx, Sy, Sz
   bvec2 kx, ky, kz;  // which axis becomes x, y, z: (axis == 0, axis == 1)
 };
 
@@ -89,7 +89,6 @@ VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax
   return vec3(t, V * inv, W * inv);
 }
 
-
 // Bound on the rounding error of b0*v0 + b1*v1 + b2*v2: relative to the coordinates, so scaling or
 // translating a scene scales the offset with it.
 VKMC_FN vec3 barycentricError(vec3 b, vec3 v0, vec3 v1, vec3 v2) {
@@ -118,8 +117,10 @@ VKMC_FN vec3 offsetRayOrigin(vec3 p, vec3 pError, vec3 n, vec3 w) {
   if (dot(w, n) < 0.0f) offset = -offset;
   vec3 po = p + offset;
   for (int i = 0; i < 3; ++i) {
-    if (offset[i] > 0.0f) po[i] = nextFloatUp(po[i]);
-    else if (offset[i] < 0.0f) po[i] = nextFloatDown(po[i]);
+    if (offset[i] > 0.0f)
+      po[i] = nextFloatUp(po[i]);
+    else if (offset[i] < 0.0f)
+      po[i] = nextFloatDown(po[i]);
   }
   return po;
 }
@@ -146,8 +147,7 @@ VKMC_FN float scaledCrossArea(vec4 c) { return 0.5f * length(vec3(c.x, c.y, c.z)
 // the node step's fma never meets inf - inf.
 VKMC_FN vec3 safeInverse(vec3 d) {
   const float tiny = 1e-26f;
-  vec3 s = vec3(abs(d.x) < tiny ? (d.x < 0.0f ? -tiny : tiny) : d.x,
-                abs(d.y) < tiny ? (d.y < 0.0f ? -tiny : tiny) : d.y,
+  vec3 s = vec3(abs(d.x) < tiny ? (d.x < 0.0f ? -tiny : tiny) : d.x, abs(d.y) < tiny ? (d.y < 0.0f ? -tiny : tiny) : d.y,
                 abs(d.z) < tiny ? (d.z < 0.0f ? -tiny : tiny) : d.z);
   return 1.0f / s;
 }

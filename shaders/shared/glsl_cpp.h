@@ -8,7 +8,7 @@
 namespace vkmc::gpu {
 using namespace glm;
 using uint = uint32_t;
-}
+}  // namespace vkmc::gpu
 #define VKMC_BEGIN_NAMESPACE namespace vkmc::gpu {
 #define VKMC_END_NAMESPACE }
 #define VKMC_CONST inline constexpr

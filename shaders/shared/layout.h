@@ -4,24 +4,24 @@
 #include "glsl_cpp.h"
 
 // Descriptor bindings of the single set used by every kernel.
-#define BINDING_TRIANGLES 0       // imageBuffer: triangle vertices and light pmfs (scene_layout.h)
-#define BINDING_TRIANGLE_INFO 1   // uimageBuffer: per-triangle normals and material (scene_layout.h)
-#define BINDING_BVH_NODES 2       // uimageBuffer: BVH nodes (bvh_layout.h)
-#define BINDING_LIGHTS 3          // uimageBuffer: light alias table (scene_layout.h)
-#define BINDING_MATERIALS 4       // Material[]
-#define BINDING_PATHS 5           // PathState[]
-#define BINDING_HITS 6            // vec4[] (t, b1, b2, triangle bits)
-#define BINDING_RAY_QUEUES 7      // uint[2 * capacity]: path ids, ping-pong by bounce parity
-#define BINDING_SHADOW_QUEUE 8    // ShadowRay[]
-#define BINDING_CONTROL 9         // Control
-#define BINDING_FILM 10           // FilmPixel[]
-#define BINDING_TEST_RAYS 11      // TestRay[] (trace_rays kernel only)
-#define BINDING_TEST_HITS 12      // vec4[] (trace_rays kernel only)
-#define BINDING_PIXEL_ESTIMATE 13 // float[]: running luminance estimate per pixel (shadow-ray roulette)
-#define BINDING_ROULETTE_TABLE 14 // float[kRouletteTableDepths]: efficiency roulette scale per depth
-#define BINDING_DEPTH_STATS 15    // vec2[pool * kRouletteTableDepths]: pilot (beta, gathered) per path and depth
-#define BINDING_QUEUE_STATS 16    // uvec2[kQueueStatsBounces]: per bounce, paths queued (x) and shadow rays (y)
-#define BINDING_DEEP_WALKS 17     // uint[]: items whose walk outgrew the register stack (deferred_walk.glsl)
+#define BINDING_TRIANGLES 0        // imageBuffer: triangle vertices and light pmfs (scene_layout.h)
+#define BINDING_TRIANGLE_INFO 1    // uimageBuffer: per-triangle normals and material (scene_layout.h)
+#define BINDING_BVH_NODES 2        // uimageBuffer: BVH nodes (bvh_layout.h)
+#define BINDING_LIGHTS 3           // uimageBuffer: light alias table (scene_layout.h)
+#define BINDING_MATERIALS 4        // Material[]
+#define BINDING_PATHS 5            // PathState[]
+#define BINDING_HITS 6             // vec4[] (t, b1, b2, triangle bits)
+#define BINDING_RAY_QUEUES 7       // uint[2 * capacity]: path ids, ping-pong by bounce parity
+#define BINDING_SHADOW_QUEUE 8     // ShadowRay[]
+#define BINDING_CONTROL 9          // Control
+#define BINDING_FILM 10            // FilmPixel[]
+#define BINDING_TEST_RAYS 11       // TestRay[] (trace_rays kernel only)
+#define BINDING_TEST_HITS 12       // vec4[] (trace_rays kernel only)
+#define BINDING_PIXEL_ESTIMATE 13  // float[]: running luminance estimate per pixel (shadow-ray roulette)
+#define BINDING_ROULETTE_TABLE 14  // float[kRouletteTableDepths]: efficiency roulette scale per depth
+#define BINDING_DEPTH_STATS 15     // vec2[pool * kRouletteTableDepths]: pilot (beta, gathered) per path and depth
+#define BINDING_QUEUE_STATS 16     // uvec2[kQueueStatsBounces]: per bounce, paths queued (x) and shadow rays (y)
+#define BINDING_DEEP_WALKS 17      // uint[]: items whose walk outgrew the register stack (deferred_walk.glsl)
 #define BINDING_COUNT 18
 
 // Texel formats of the scene bindings as GLSL image-format qualifiers (common.glsl declares the bindings with
@@ -33,24 +33,24 @@
 
 // Specialization constant ids.
 #define SPEC_WORKGROUP_SIZE 0
-#define SPEC_MAX_DEPTH 1          // scattering events; 0 = no cap (Russian roulette only)
-#define SPEC_RR_DEPTH 2           // first depth at which roulette applies
-#define SPEC_HAS_LIGHTS 3         // 0: no emissive triangles, NEE code removed
-#define SPEC_ANY_HIT 4            // trace_rays: 1 = any-hit query
+#define SPEC_MAX_DEPTH 1   // scattering events; 0 = no cap (Russian roulette only)
+#define SPEC_RR_DEPTH 2    // first depth at which roulette applies
+#define SPEC_HAS_LIGHTS 3  // 0: no emissive triangles, NEE code removed
+#define SPEC_ANY_HIT 4     // trace_rays: 1 = any-hit query
 // Estimator settings (see host/estimators/estimator_config.h, the one place that sets them).
-#define SPEC_NEE 5                // 0/1: next-event estimation
-#define SPEC_MIS 6                // kMis*
-#define SPEC_BSDF_SAMPLING 7      // kBsdfSampling*
-#define SPEC_LIGHT_SAMPLING 8     // kLightSampling*
-#define SPEC_RR_MODE 9            // kRoulette*
-#define SPEC_RR_Q 10              // float: fixed termination probability q
-#define SPEC_RR_C 11              // float: fixed-mode constant c returned on termination
-#define SPEC_LIGHT_SAMPLES 12     // M light samples per hit at depths below SPEC_SPLIT_DEPTH
+#define SPEC_NEE 5             // 0/1: next-event estimation
+#define SPEC_MIS 6             // kMis*
+#define SPEC_BSDF_SAMPLING 7   // kBsdfSampling*
+#define SPEC_LIGHT_SAMPLING 8  // kLightSampling*
+#define SPEC_RR_MODE 9         // kRoulette*
+#define SPEC_RR_Q 10           // float: fixed termination probability q
+#define SPEC_RR_C 11           // float: fixed-mode constant c returned on termination
+#define SPEC_LIGHT_SAMPLES 12  // M light samples per hit at depths below SPEC_SPLIT_DEPTH
 #define SPEC_SPLIT_DEPTH 13
 #define SPEC_SHADOW_RR_THRESHOLD 14  // float: 0 = off
 #define SPEC_SHADOW_RR_Q 15          // float: termination probability of a tiny shadow ray
 #define SPEC_CAMERA_RR_Q 16          // float: 0 = off
-#define SPEC_HAS_GLOSSY 19            // 0: every material is Lambertian; GGX code compiled out
+#define SPEC_HAS_GLOSSY 19           // 0: every material is Lambertian; GGX code compiled out
 #define SPEC_RECORD_DEPTH_STATS 18   // 1: the efficiency-roulette pilot records per-depth statistics
 #define SPEC_BSDF_SAMPLES 17         // float: continuations per hit below SPEC_SPLIT_DEPTH (1 = no splitting)
 #define SPEC_WALK_STATS 20           // trace_rays: 1 = count the register-stack walk's steps into Control.walkStats
@@ -59,7 +59,7 @@ VKMC_BEGIN_NAMESPACE
 
 VKMC_CONST uint kMissPrimitive = 0xffffffffu;
 VKMC_CONST uint kWorkgroupSize = 64u;
-VKMC_CONST uint kMaterialDoubleSided = 1u;   // Material.emission.w bit
+VKMC_CONST uint kMaterialDoubleSided = 1u;  // Material.emission.w bit
 VKMC_CONST uint kCameraPerspective = 0u;
 VKMC_CONST uint kCameraOrthographic = 1u;
 VKMC_CONST uint kRouletteTableDepths = 16u;  // depths with their own efficiency-roulette scale
@@ -77,21 +77,21 @@ struct PathState {
   vec4 throughput;  // rgb: path throughput, w: product of the split factors that divided it (roulette undoes none)
   vec4 radiance;    // rgb: radiance gathered so far, w: unused
   uint pixel;
-  uint rngKey;      // random-number key (a split child gets its own)
-  uint depth;       // scattering events so far
-  uint rootPath;    // the slot of the path's sample, where its radiance accumulates
+  uint rngKey;    // random-number key (a split child gets its own)
+  uint depth;     // scattering events so far
+  uint rootPath;  // the slot of the path's sample, where its radiance accumulates
 };
 
 struct ShadowRay {
-  vec4 origin;       // xyz, w: tmax in units of |direction|
-  vec4 direction;    // xyz: unnormalized (to the light point), w: path id as float bits
-  vec4 contribution; // rgb added to the path if unoccluded, w: unused
+  vec4 origin;        // xyz, w: tmax in units of |direction|
+  vec4 direction;     // xyz: unnormalized (to the light point), w: path id as float bits
+  vec4 contribution;  // rgb added to the path if unoccluded, w: unused
 };
 
 struct Material {
-  vec4 baseColor; // rgb, a: alpha factor
-  vec4 emission;  // rgb: emitted radiance (factor x strength), w: flag bits as float bits
-  vec4 params;    // x: metallic, y: roughness, z: specular factor, w: unused
+  vec4 baseColor;  // rgb, a: alpha factor
+  vec4 emission;   // rgb: emitted radiance (factor x strength), w: flag bits as float bits
+  vec4 params;     // x: metallic, y: roughness, z: specular factor, w: unused
 };
 
 // Film of one batch: float partial sums, folded into double on the host every batch. A channel whose magnitude
@@ -99,31 +99,31 @@ struct Material {
 // overflow float past ~1.8e19, and every finite value up to FLT_MAX (2^128) must count. The host adds the high
 // sums back times 2^96 (squares 2^192) in double.
 struct FilmPixel {
-  vec4 sum;       // rgb: sum of estimate channels below the threshold, w: finite samples
-  vec4 sumSq;     // rgb: sum of their squares, w: non-finite samples (counted, excluded)
-  vec4 sumHigh;   // rgb: sum of channels at or above the threshold, times kFilmHighScale; w unused
-  vec4 sumSqHigh; // rgb: sum of the squares of those scaled channels; w unused
+  vec4 sum;        // rgb: sum of estimate channels below the threshold, w: finite samples
+  vec4 sumSq;      // rgb: sum of their squares, w: non-finite samples (counted, excluded)
+  vec4 sumHigh;    // rgb: sum of channels at or above the threshold, times kFilmHighScale; w unused
+  vec4 sumSqHigh;  // rgb: sum of the squares of those scaled channels; w unused
 };
-VKMC_CONST float kFilmHighThreshold = 72057594037927936.0f;           // 2^56
+VKMC_CONST float kFilmHighThreshold = 72057594037927936.0f;          // 2^56
 VKMC_CONST float kFilmHighScale = 1.2621774483536188886587657e-29f;  // 2^-96
 
 // Queue counters and indirect dispatch arguments (x,y,z used; w pads to 16 bytes).
 struct Control {
-  uint rayQueueCount[2];   // ray queue sizes, ping-pong by bounce parity
+  uint rayQueueCount[2];  // ray queue sizes, ping-pong by bounce parity
   uint shadowQueueCount;
-  uint splitChildren;      // path slots handed to split children this pass
-  uvec4 rayArgs;           // dispatch of intersect and shade (x, y, z)
-  uvec4 shadowArgs;        // dispatch of shadow
-  uvec4 accumulateArgs;    // dispatch of accumulate: non-zero only once no path is alive
+  uint splitChildren;    // path slots handed to split children this pass
+  uvec4 rayArgs;         // dispatch of intersect and shade (x, y, z)
+  uvec4 shadowArgs;      // dispatch of shadow
+  uvec4 accumulateArgs;  // dispatch of accumulate: non-zero only once no path is alive
   uint cameraRays, extensionRays, shadowRays, unusedTotal;
   // Non-finite values by the stage that produced them (the sample is then excluded by accumulate):
   uint nonfiniteEmission;      // emission and other gathered radiance
   uint nonfiniteLightSamples;  // light-sample contributions
   uint nonfiniteThroughput;    // continuation throughput
   uint walksCut;               // BVH walks cut short (llvmpipe's loop limit, a full deep queue)
-  uvec4 deepArgs;          // dispatch of the deferred deep walks: x groups, y = z = 1, w: walks deferred
-  uint deepWalksDeferred;  // in all (one that finds the deep queue full is cut short: walksCut)
-  uint deepWalksTraced;    // by the deep passes (equals deepWalksDeferred once every deep pass has run)
+  uvec4 deepArgs;              // dispatch of the deferred deep walks: x groups, y = z = 1, w: walks deferred
+  uint deepWalksDeferred;      // in all (one that finds the deep queue full is cut short: walksCut)
+  uint deepWalksTraced;        // by the deep passes (equals deepWalksDeferred once every deep pass has run)
   uint unusedDeep0, unusedDeep1;
   // SPEC_WALK_STATS, summed over rays: loop iterations, node steps, triangle tests, and the iterations of each
   // subgroup's slowest lane (summed over subgroups, times the subgroup size).
@@ -137,30 +137,30 @@ struct TestRay {
 
 // Push constants shared by every kernel (<= 128 bytes).
 struct PushConstants {
-  uint pathCount;   // paths in this pass
-  uint firstPixel;  // pixel of path 0
-  uint sampleIndex; // sample index of the pass's first sample (rng)
-  uint bounce;      // current bounce: selects the ping-pong queue
+  uint pathCount;    // paths in this pass
+  uint firstPixel;   // pixel of path 0
+  uint sampleIndex;  // sample index of the pass's first sample (rng)
+  uint bounce;       // current bounce: selects the ping-pong queue
   uint width;
   uint height;
   uint seed;
-  uint queueCapacity;  // path pool size: camera paths plus room for split children
-  vec4 cameraOrigin;  // xyz, w: camera kind as float (0 perspective, 1 orthographic)
-  vec4 cameraForward; // xyz unit
-  vec4 cameraRight;   // xyz: scaled by tan(xfov/2), or half width for orthographic
-  vec4 cameraUp;      // xyz: scaled by tan(yfov/2), or half height
-  vec4 background;    // rgb: uniform radiance of escaped rays
-  uint pixelCount;     // pixels in this pass; path id = sample * pixelCount + pixel offset
-  uint samplesPerPass; // samples of each pixel in this pass (pathCount = pixelCount * samplesPerPass)
+  uint queueCapacity;   // path pool size: camera paths plus room for split children
+  vec4 cameraOrigin;    // xyz, w: camera kind as float (0 perspective, 1 orthographic)
+  vec4 cameraForward;   // xyz unit
+  vec4 cameraRight;     // xyz: scaled by tan(xfov/2), or half width for orthographic
+  vec4 cameraUp;        // xyz: scaled by tan(yfov/2), or half height
+  vec4 background;      // rgb: uniform radiance of escaped rays
+  uint pixelCount;      // pixels in this pass; path id = sample * pixelCount + pixel offset
+  uint samplesPerPass;  // samples of each pixel in this pass (pathCount = pixelCount * samplesPerPass)
   uint unused0, unused1;
 };
 
 // Push constants of the analytic furnace probe (shaders/probes/roulette_furnace.comp).
 struct FurnaceProbePush {
-  float albedo;       // Lambertian albedo of the surface every ray hits
-  float emission;     // its emitted radiance Le: L = Le / (1 - albedo)
-  uint rouletteMode;  // kRouletteThroughput or kRouletteEfficiency (scales from BINDING_ROULETTE_TABLE)
-  uint rouletteDepth; // as SPEC_RR_DEPTH
+  float albedo;        // Lambertian albedo of the surface every ray hits
+  float emission;      // its emitted radiance Le: L = Le / (1 - albedo)
+  uint rouletteMode;   // kRouletteThroughput or kRouletteEfficiency (scales from BINDING_ROULETTE_TABLE)
+  uint rouletteDepth;  // as SPEC_RR_DEPTH
   uint seed;
   uint verticesPerInvocation;  // a lane starts paths until it has traced this many vertices
   uint invocations;
@@ -185,6 +185,6 @@ static_assert(sizeof(TestRay) == 32);
 static_assert(sizeof(PushConstants) == 128);
 static_assert(offsetof(PushConstants, cameraOrigin) == 32);
 static_assert(sizeof(FurnaceProbePush) == 32);
-}
+}  // namespace vkmc::gpu
 #endif
 #endif

@@ -5,9 +5,9 @@
 #include "glsl_cpp.h"
 VKMC_BEGIN_NAMESPACE
 
-VKMC_CONST uint kDimsCamera = 3u;     // pixel jitter (2), camera-ray roulette
+VKMC_CONST uint kDimsCamera = 3u;         // pixel jitter (2), camera-ray roulette
 VKMC_CONST uint kDimCameraRoulette = 2u;  // within the camera block
-VKMC_CONST uint kDimsPerBounce = 9u;  // bsdf lobe, bsdf (2), roulette, shadow roulette, light sample (3), split
+VKMC_CONST uint kDimsPerBounce = 9u;      // bsdf lobe, bsdf (2), roulette, shadow roulette, light sample (3), split
 VKMC_CONST uint kDimBsdfLobe = 0u;
 VKMC_CONST uint kDimBsdf = 1u;
 VKMC_CONST uint kDimRoulette = 3u;
@@ -38,7 +38,9 @@ VKMC_FN float randomUnit(uint key, uint dim) {
 }
 
 // Key of split child c (c > 0) spawned at `depth`: an independent stream for the rest of its path.
-VKMC_FN uint childKey(uint key, uint depth, uint c) { return c == 0u ? key : hashU32(key ^ hashU32(c * 0x9e3779b9u + depth * 0x85ebca6bu)); }
+VKMC_FN uint childKey(uint key, uint depth, uint c) {
+  return c == 0u ? key : hashU32(key ^ hashU32(c * 0x9e3779b9u + depth * 0x85ebca6bu));
+}
 
 VKMC_FN uint bounceDim(uint depth, uint offset) { return kDimsCamera + depth * kDimsPerBounce + offset; }
 

@@ -49,7 +49,9 @@ VKMC_FN bool rouletteApplies(uint depth, uint firstRouletteDepth) { return depth
 
 // The splitting factor at a vertex: `factor` (light samples M, or BSDF continuations K) below splitDepth, else 1.
 VKMC_FN uint splitFactorAt(uint depth, uint splitDepth, uint factor) { return depth < splitDepth ? factor : 1u; }
-VKMC_FN float splitFactorAt(uint depth, uint splitDepth, float factor) { return (factor > 1.0f && depth < splitDepth) ? factor : 1.0f; }
+VKMC_FN float splitFactorAt(uint depth, uint splitDepth, float factor) {
+  return (factor > 1.0f && depth < splitDepth) ? factor : 1.0f;
+}
 
 VKMC_END_NAMESPACE
 #endif

@@ -30,8 +30,10 @@ VKMC_FN vec2 invertUniformDiskConcentricSample(vec2 p) {
   if (abs(theta) < kPi / 4.0f || abs(theta) > 3.0f * kPi / 4.0f) {
     r = p.x < 0.0f ? -r : r;
     o.x = r;
-    if (p.x < 0.0f) o.y = (p.y < 0.0f ? kPi + theta : theta - kPi) * r / (kPi / 4.0f);
-    else o.y = theta * r / (kPi / 4.0f);
+    if (p.x < 0.0f)
+      o.y = (p.y < 0.0f ? kPi + theta : theta - kPi) * r / (kPi / 4.0f);
+    else
+      o.y = theta * r / (kPi / 4.0f);
   } else {
     r = p.y < 0.0f ? -r : r;
     o.y = r;

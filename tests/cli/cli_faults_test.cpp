@@ -57,7 +57,8 @@ TEST(CliFaults, TwoProcessesWritingOneOutputLeaveAWholeFile) {
   fs::path out = dir() / "shared.exr";
   std::vector<pid_t> pids;
   for (const char* seed : {"1", "2"})
-    pids.push_back(spawnVkmc({"render", cornell(), "--width", "64", "--height", "64", "--spp", "4", "--seed", seed, "-q", "-o", out.string()}));
+    pids.push_back(spawnVkmc(
+        {"render", cornell(), "--width", "64", "--height", "64", "--spp", "4", "--seed", seed, "-q", "-o", out.string()}));
   for (pid_t pid : pids) {
     ASSERT_GT(pid, 0);
     int status = 0;
@@ -90,8 +91,8 @@ TEST(CliFaults, SigkillMidRenderKeepsTheOldOutput) {
 
 TEST(CliFaults, NoVulkanDriverIsOneClearLine) {
   fs::path out = dir() / "nodevice.exr";
-  RunResult r = runShell("VK_ICD_FILENAMES=" + (dir() / "no-such-icd.json").string() + " " + VKMC_BINARY + " render " + cornell() +
-                         " --spp 1 -q -o " + out.string());
+  RunResult r = runShell("VK_ICD_FILENAMES=" + (dir() / "no-such-icd.json").string() + " " + VKMC_BINARY + " render " +
+                         cornell() + " --spp 1 -q -o " + out.string());
   const std::string& err = r.err;
   EXPECT_EQ(r.code, 1) << err;
   EXPECT_NE(err.find("Vulkan"), std::string::npos) << err;

@@ -62,7 +62,8 @@ const std::string& thinCamera() {
     }());
     std::string json = slurp(camera);
     json.replace(json.find("\"scene\":0,"), 10,
-                 "\"scene\":0,\"cameras\":[{\"type\":\"perspective\",\"perspective\":{\"yfov\":0.8,\"znear\":0.1,\"aspectRatio\":5.96e-8}}],");
+                 "\"scene\":0,\"cameras\":[{\"type\":\"perspective\",\"perspective\":{\"yfov\":0.8,\"znear\":0.1,\"aspectRatio\":"
+                 "5.96e-8}}],");
     std::ofstream(camera) << json;
     return camera;
   }();
@@ -95,14 +96,17 @@ TEST_P(CollidingPaths, AreRefused) {
 INSTANTIATE_TEST_SUITE_P(
     CliOutputs, CollidingPaths,
     ::testing::Values(
-        Collision{"output_is_the_input", [](const fs::path& scene, const fs::path&) { return "-o " + scene.string(); }, "is an input"},
+        Collision{"output_is_the_input", [](const fs::path& scene, const fs::path&) { return "-o " + scene.string(); },
+                  "is an input"},
         Collision{"exr_and_png", [](const fs::path&, const fs::path& x) { return "-o " + x.string() + " --png " + x.string(); },
                   "name the same file"},
         Collision{"exr_and_report",
                   [](const fs::path&, const fs::path& x) { return "-o " + x.string() + ".exr --report " + x.string() + ".exr"; },
                   "name the same file"},
         Collision{"exr_and_png_through_a_dot",
-                  [](const fs::path&, const fs::path&) { return "-o " + (dir() / "." / "x.exr").string() + " --png " + (dir() / "x.exr").string(); },
+                  [](const fs::path&, const fs::path&) {
+                    return "-o " + (dir() / "." / "x.exr").string() + " --png " + (dir() / "x.exr").string();
+                  },
                   "name the same file"}),
     [](const auto& info) { return std::string(info.param.name); });
 
@@ -165,8 +169,14 @@ TEST(CliOutputs, SigtermDuringTheCommitRemovesTheTemporaries) {
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   int readEnd = open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
   ASSERT_GE(readEnd, 0);
-  std::vector<std::string> args = {VKMC_BINARY, "render", cornell(), "--width", "256", "--height", "256", "--spp", "1", "-q",
-                                   "-o", fifo.string(), "--png", (d / "p.png").string(), "--report", (d / "r.json").string()};
+  std::vector<std::string> args = {VKMC_BINARY, "render",
+                                   cornell(),   "--width",
+                                   "256",       "--height",
+                                   "256",       "--spp",
+                                   "1",         "-q",
+                                   "-o",        fifo.string(),
+                                   "--png",     (d / "p.png").string(),
+                                   "--report",  (d / "r.json").string()};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -212,9 +222,10 @@ TEST_P(AbsurdNumbers, AreRefusedWithOneLine) {
 
 INSTANTIATE_TEST_SUITE_P(
     CliOutputs, AbsurdNumbers,
-    ::testing::Values(Absurd{"exposure_nan", [] { return render(cornell()) + " --exposure nan"; }, "--exposure"},
-                      Absurd{"look_from_1e20", [] { return render(cornell()) + " --look-from 1e20,0,0 --look-at 0,0,0"; }, "within +-1e11"},
-                      Absurd{"camera_aspect_ratio_6e_8", [] { return "render " + thinCamera() + " --spp 1 -q"; }, "aspect ratio"}),
+    ::testing::Values(
+        Absurd{"exposure_nan", [] { return render(cornell()) + " --exposure nan"; }, "--exposure"},
+        Absurd{"look_from_1e20", [] { return render(cornell()) + " --look-from 1e20,0,0 --look-at 0,0,0"; }, "within +-1e11"},
+        Absurd{"camera_aspect_ratio_6e_8", [] { return "render " + thinCamera() + " --spp 1 -q"; }, "aspect ratio"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 class SphereAtTheOrigin : public ::testing::TestWithParam<double> {};
@@ -222,8 +233,9 @@ class SphereAtTheOrigin : public ::testing::TestWithParam<double> {};
 TEST_P(SphereAtTheOrigin, Renders) {
   const double radius = GetParam();
   fs::path report = dir() / "scene.json";
-  RunResult r = runVkmc(render(emissiveSoup(uvSphere(radius, 32, 16), "sphere", R"({"emissiveFactor":[1,1,1],"doubleSided":true})")) + " -o " + (dir() / "s.exr").string() +
-                        " --report " + report.string());
+  RunResult r =
+      runVkmc(render(emissiveSoup(uvSphere(radius, 32, 16), "sphere", R"({"emissiveFactor":[1,1,1],"doubleSided":true})")) +
+              " -o " + (dir() / "s.exr").string() + " --report " + report.string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_GT(reportMean(report), 0.1);
 }
@@ -241,9 +253,10 @@ TEST(CliOutputs, HugeGroundsAndBrightLightsRender) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NEAR(reportMean(report), 1.0, 1e-3);
   // Radiance 2e19: finite, but its square overflows float; it was counted as non-finite and dropped.
-  std::string bright = R"({"emissiveFactor":[1,1,1],"doubleSided":true,"extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":2e19}}})";
-  r = runVkmc(render(emissiveSoup(uvSphere(1.0, 32, 16), "bright", bright)) + " -o " + (dir() / "b.exr").string() +
-              " --report " + report.string());
+  std::string bright =
+      R"({"emissiveFactor":[1,1,1],"doubleSided":true,"extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":2e19}}})";
+  r = runVkmc(render(emissiveSoup(uvSphere(1.0, 32, 16), "bright", bright)) + " -o " + (dir() / "b.exr").string() + " --report " +
+              report.string());
   ASSERT_EQ(r.code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(slurp(report));
   EXPECT_EQ(j["nonfinite_samples"].get<uint64_t>(), 0u);

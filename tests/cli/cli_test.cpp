@@ -22,7 +22,7 @@ using vkmc::test::workDir;
 TEST(Cli, RenderWritesExrPngAndAConsistentReport) {
   fs::path exr = workDir() / "ok.exr", png = workDir() / "ok.png", report = workDir() / "ok.json";
   RunResult r = runVkmc("render " + cornell() + " --width 40 --height 30 --spp 4 -o " + exr.string() + " --png " + png.string() +
-               " --report " + report.string());
+                        " --report " + report.string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("Mrays/s"), std::string::npos);
   ASSERT_TRUE(fs::exists(exr));
@@ -56,8 +56,8 @@ TEST(Cli, RenderWritesExrPngAndAConsistentReport) {
 
 TEST(Cli, DepthCapIsReportedAsBiased) {
   fs::path report = workDir() / "capped.json";
-  RunResult r = runVkmc("render " + cornell() + " --width 16 --height 16 --spp 1 --max-depth 3 -q -o " + (workDir() / "capped.exr").string() +
-               " --report " + report.string());
+  RunResult r = runVkmc("render " + cornell() + " --width 16 --height 16 --spp 1 --max-depth 3 -q -o " +
+                        (workDir() / "capped.exr").string() + " --report " + report.string());
   ASSERT_EQ(r.code, 0) << r.err;
   auto j = nlohmann::json::parse(slurp(report));
   EXPECT_FALSE(j["estimator"]["unbiased"]);
@@ -151,27 +151,27 @@ TEST_P(CliBadInput, FailsCleanlyAndWritesNothing) {
   for (const auto& f : fs::directory_iterator(d)) EXPECT_EQ(f.path().string().find(".vkmc-"), std::string::npos);
 }
 
-INSTANTIATE_TEST_SUITE_P(Cli, CliBadInput,
-                         ::testing::Values(BadInput{"broken_gltf", "broken.gltf", "", "cannot load", 1},
-                                           BadInput{"missing_gltf", "missing.gltf", "", "cannot open", 1},
-                                           BadInput{"missing_bin", "nobin.gltf", "", "cannot load", 1},
-                                           BadInput{"accessor_past_the_end", "acc.gltf", "", "runs past the end", 1},
-                                           BadInput{"index_out_of_range", "idx.gltf", "", "out of range", 1},
-                                           BadInput{"infinite_position", "nan.gltf", "", "NaN or infinite position", 1},
-                                           BadInput{"no_triangles", "empty.gltf", "", "no triangles", 1},
-                                           BadInput{"spp_0", "", "--spp 0", "--spp", 1},
-                                           BadInput{"width_negative", "", "--width -4", "--width", 1},
-                                           BadInput{"width_100000", "", "--width 100000", "--width", 1},
-                                           BadInput{"image_too_large", "", "--width 16384 --height 16384", "too large", 1},
-                                           BadInput{"max_depth_negative", "", "--max-depth -1", "--max-depth", 1},
-                                           BadInput{"look_from_without_look_at", "", "--look-from 1,2,3", "--look-at", 1},
-                                           BadInput{"look_from_two_numbers", "", "--look-from 1,2 --look-at 0,0,0", "--look-from", 1},
-                                           BadInput{"camera_out_of_range", "", "--camera 5", "out of range", 1},
-                                           BadInput{"fov_0", "", "--fov 0 --look-from 0,0,5 --look-at 0,0,0", "--fov", 1},
-                                           BadInput{"background_nan", "", "--background nan,0,0", "--background", 1},
-                                           BadInput{"spp_not_a_number", "", "--spp abc", "spp", 2},
-                                           BadInput{"unknown_flag", "", "--no-such-flag", "no-such-flag", 2}),
-                         [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    Cli, CliBadInput,
+    ::testing::Values(BadInput{"broken_gltf", "broken.gltf", "", "cannot load", 1},
+                      BadInput{"missing_gltf", "missing.gltf", "", "cannot open", 1},
+                      BadInput{"missing_bin", "nobin.gltf", "", "cannot load", 1},
+                      BadInput{"accessor_past_the_end", "acc.gltf", "", "runs past the end", 1},
+                      BadInput{"index_out_of_range", "idx.gltf", "", "out of range", 1},
+                      BadInput{"infinite_position", "nan.gltf", "", "NaN or infinite position", 1},
+                      BadInput{"no_triangles", "empty.gltf", "", "no triangles", 1}, BadInput{"spp_0", "", "--spp 0", "--spp", 1},
+                      BadInput{"width_negative", "", "--width -4", "--width", 1},
+                      BadInput{"width_100000", "", "--width 100000", "--width", 1},
+                      BadInput{"image_too_large", "", "--width 16384 --height 16384", "too large", 1},
+                      BadInput{"max_depth_negative", "", "--max-depth -1", "--max-depth", 1},
+                      BadInput{"look_from_without_look_at", "", "--look-from 1,2,3", "--look-at", 1},
+                      BadInput{"look_from_two_numbers", "", "--look-from 1,2 --look-at 0,0,0", "--look-from", 1},
+                      BadInput{"camera_out_of_range", "", "--camera 5", "out of range", 1},
+                      BadInput{"fov_0", "", "--fov 0 --look-from 0,0,5 --look-at 0,0,0", "--fov", 1},
+                      BadInput{"background_nan", "", "--background nan,0,0", "--background", 1},
+                      BadInput{"spp_not_a_number", "", "--spp abc", "spp", 2},
+                      BadInput{"unknown_flag", "", "--no-such-flag", "no-such-flag", 2}),
+    [](const auto& info) { return std::string(info.param.name); });
 
 TEST(Cli, MissingOutputFolderFailsBeforeRendering) {
   RunResult r = runVkmc("render " + cornell() + " -q -o /nonexistent-folder/x.exr");

@@ -26,7 +26,8 @@ TEST(BadPdf, PdfShapedUnlikeTheIntegrandRaisesVariance) {
   pc.pathCount = invocations;
   pc.sampleIndex = perInvocation;
   pc.seed = 2024;
-  ctx.runCommands([&](VkCommandBuffer cmd) { vk::dispatch(cmd, layout, kernel, &pc, sizeof(pc), invocations / gpu::kWorkgroupSize); });
+  ctx.runCommands(
+      [&](VkCommandBuffer cmd) { vk::dispatch(cmd, layout, kernel, &pc, sizeof(pc), invocations / gpu::kWorkgroupSize); });
   std::vector<glm::vec4> sums(invocations);
   std::memcpy(sums.data(), out.mapped(), invocations * 16);
   double n = double(invocations) * perInvocation, bad = 0, badSq = 0, uni = 0, uniSq = 0;

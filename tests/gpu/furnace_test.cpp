@@ -46,7 +46,8 @@ TEST(Furnace, EveryPixelIsTwoWithinFiveSigmaWithoutDepthCap) {
   EXPECT_EQ(outside, 0) << "worst |z| = " << worstZ;
   glm::dvec3 mean = f.imageMean();
   glm::dvec3 var = f.imageMeanVarianceOfMean();
-  for (int c = 0; c < 3; ++c) EXPECT_TRUE(withinSigmas(zTest(mean[c], 2.0, std::sqrt(var[c] / f.pixels())), 5.0)) << "channel " << c;
+  for (int c = 0; c < 3; ++c)
+    EXPECT_TRUE(withinSigmas(zTest(mean[c], 2.0, std::sqrt(var[c] / f.pixels())), 5.0)) << "channel " << c;
   EXPECT_GT(r.stats.maxBounces, 10u) << "without a cap some paths must run long";
 }
 

@@ -62,7 +62,8 @@ TEST_P(GpuSampling, SphericalTriangleSamplingMatchesTheHost) {
   pc.cameraForward = glm::vec4(t.a, 0);
   pc.cameraRight = glm::vec4(t.b, 0);
   pc.cameraUp = glm::vec4(t.c, 0);
-  ctx.runCommands([&](VkCommandBuffer cmd) { vk::dispatch(cmd, probe->layout, *probe->kernel, &pc, sizeof(pc), n / gpu::kWorkgroupSize); });
+  ctx.runCommands(
+      [&](VkCommandBuffer cmd) { vk::dispatch(cmd, probe->layout, *probe->kernel, &pc, sizeof(pc), n / gpu::kWorkgroupSize); });
   std::vector<glm::vec4> r(n);
   std::memcpy(r.data(), probe->out.mapped(), n * 16);
   glm::vec3 nrm = glm::normalize(glm::cross(t.b - t.a, t.c - t.a));
@@ -74,7 +75,8 @@ TEST_P(GpuSampling, SphericalTriangleSamplingMatchesTheHost) {
   for (uint32_t i = 0; i < n; ++i) {
     gpuCos += std::abs(glm::dot(glm::vec3(r[i]), nrm));
     uint32_t key = gpu::pathKey(77u, i, 0u);
-    glm::vec3 w = gpu::sampleSphericalTriangle(t.p, t.a, t.b, t.c, glm::vec2(gpu::randomUnit(key, 0), gpu::randomUnit(key, 1)), hostOmega);
+    glm::vec3 w =
+        gpu::sampleSphericalTriangle(t.p, t.a, t.b, t.c, glm::vec2(gpu::randomUnit(key, 0), gpu::randomUnit(key, 1)), hostOmega);
     double c = std::abs(glm::dot(w, nrm));
     hostSum += c;
     hostSq += c * c;
@@ -84,9 +86,9 @@ TEST_P(GpuSampling, SphericalTriangleSamplingMatchesTheHost) {
   EXPECT_TRUE(test::withinSigmas(test::zTest(gpuCos, hostCos.mean, hostCos.sigma, 1e-5), 5)) << t.name << ": mean cosine";
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    SmallAndWide, GpuSampling,
-    ::testing::Values(Triangle{glm::vec3(0), glm::vec3(-0.3f, -0.2f, 2.0f), glm::vec3(0.4f, -0.1f, 2.2f), glm::vec3(0.0f, 0.5f, 1.8f), "small"},
-                      Triangle{glm::vec3(0, 0, -0.02f), glm::vec3(-10, 0.05f, -10), glm::vec3(10, 0.05f, -10), glm::vec3(10, 0.05f, 10),
-                               "near_hemispherical"}),
-    [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(SmallAndWide, GpuSampling,
+                         ::testing::Values(Triangle{glm::vec3(0), glm::vec3(-0.3f, -0.2f, 2.0f), glm::vec3(0.4f, -0.1f, 2.2f),
+                                                    glm::vec3(0.0f, 0.5f, 1.8f), "small"},
+                                           Triangle{glm::vec3(0, 0, -0.02f), glm::vec3(-10, 0.05f, -10),
+                                                    glm::vec3(10, 0.05f, -10), glm::vec3(10, 0.05f, 10), "near_hemispherical"}),
+                         [](const auto& info) { return std::string(info.param.name); });

@@ -38,7 +38,9 @@ struct Transform {
   float scale;
   glm::vec3 shift;
 };
-void PrintTo(const Transform& t, std::ostream* os) { *os << "scale " << t.scale << " shift " << t.shift.x << "," << t.shift.y << "," << t.shift.z; }
+void PrintTo(const Transform& t, std::ostream* os) {
+  *os << "scale " << t.scale << " shift " << t.shift.x << "," << t.shift.y << "," << t.shift.z;
+}
 class ScaledCornellBox : public ::testing::TestWithParam<Transform> {};
 
 struct NamedScene {
@@ -84,13 +86,17 @@ TEST_P(ScaledCornellBox, RendersTheSameAsTheUnscaledBox) {
   glm::dvec3 a = ref.film.imageMean(), b = r.film.imageMean();
   glm::dvec3 va = ref.film.imageMeanVarianceOfMean(), vb = r.film.imageMeanVarianceOfMean();
   for (int c = 0; c < 3; ++c)
-    EXPECT_TRUE(withinSigmas(zTest(a[c], b[c], std::sqrt((va[c] + vb[c]) / r.film.pixels())), 5.0)) << "image mean, channel " << c;
-  test::stabilityRow("6", "Cornell box scaled " + std::to_string(v.scale) + ", shifted " + std::to_string(v.shift.x) +
-                             ": pixels outside 5 sigma of the unscaled render", "0", outside, 0.0, outside == 0);
+    EXPECT_TRUE(withinSigmas(zTest(a[c], b[c], std::sqrt((va[c] + vb[c]) / r.film.pixels())), 5.0))
+        << "image mean, channel " << c;
+  test::stabilityRow("6",
+                     "Cornell box scaled " + std::to_string(v.scale) + ", shifted " + std::to_string(v.shift.x) +
+                         ": pixels outside 5 sigma of the unscaled render",
+                     "0", outside, 0.0, outside == 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(RenderRobustness, ScaledCornellBox,
-                         ::testing::Values(Transform{"scaled_1e_3", 1e-3f, glm::vec3(0.0f)}, Transform{"scaled_1e4", 1e4f, glm::vec3(0.0f)},
+                         ::testing::Values(Transform{"scaled_1e_3", 1e-3f, glm::vec3(0.0f)},
+                                           Transform{"scaled_1e4", 1e4f, glm::vec3(0.0f)},
                                            Transform{"shifted_1e4", 1.0f, glm::vec3(1e4f)},
                                            Transform{"scaled_1e3_shifted_far", 1e3f, glm::vec3(-3e4f, 1e4f, 2e4f)}),
                          [](const auto& info) { return std::string(info.param.name); });
@@ -104,7 +110,7 @@ TEST(RenderRobustness, FiniteSamplesWhoseSquareOverflowsFloatStillCount) {
   Material hot;
   hot.emission = glm::vec3(1e30f);
   s.materials = {wall, hot};
-  test::addQuad(s, glm::vec3(-2, -2, 0), glm::vec3(4, 0, 0), glm::vec3(0, 4, 0), 0);     // wall facing +z
+  test::addQuad(s, glm::vec3(-2, -2, 0), glm::vec3(4, 0, 0), glm::vec3(0, 4, 0), 0);        // wall facing +z
   test::addQuad(s, glm::vec3(-0.5f, -0.5f, 1), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), 1);  // hot patch in front
   RenderOptions o = smallOptions("nonfinite");
   o.lookFrom = glm::vec3(0, 0, 5);
@@ -181,7 +187,8 @@ TEST(RenderRobustness, NonFiniteValuesAreCountedByTheStageThatProducedThem) {
   hot.emission = glm::vec3(3e38f);
   s.materials = {wall, hot};
   test::addQuad(s, glm::vec3(-2, -2, 0), glm::vec3(4, 0, 0), glm::vec3(0, 4, 0), 0);
-  test::addQuad(s, glm::vec3(-0.5f, 0.5f, 1), glm::vec3(0, 0, 1), glm::vec3(1, 0, 0), 1);  // faces +y, at right angles to the wall
+  test::addQuad(s, glm::vec3(-0.5f, 0.5f, 1), glm::vec3(0, 0, 1), glm::vec3(1, 0, 0),
+                1);  // faces +y, at right angles to the wall
   RenderOptions o = smallOptions("stage-nonfinite");
   o.lookFrom = glm::vec3(0, 0, 5);
   o.lookAt = glm::vec3(0, 0, 0);
@@ -189,7 +196,8 @@ TEST(RenderRobustness, NonFiniteValuesAreCountedByTheStageThatProducedThem) {
   EXPECT_GT(r.stats.nonfiniteLightSamples, 0u);
   EXPECT_GT(r.film.totalNonfinite(), 0u);
   bool finiteImage = true;
-  for (size_t p = 0; p < r.film.pixels(); ++p) finiteImage &= std::isfinite(r.film.mean(p, 0)) && std::isfinite(r.film.varianceOfMean(p, 0));
+  for (size_t p = 0; p < r.film.pixels(); ++p)
+    finiteImage &= std::isfinite(r.film.mean(p, 0)) && std::isfinite(r.film.varianceOfMean(p, 0));
   EXPECT_TRUE(finiteImage);
   test::stabilityRow("10", "emission 3e38: light samples overflowing in shade (count), samples excluded (count)",
                      "> 0 counted, image finite", double(r.stats.nonfiniteLightSamples), double(r.film.totalNonfinite()),
@@ -268,8 +276,10 @@ TEST_P(MegakernelAndWavefront, RenderTheSameImage) {
 
 INSTANTIATE_TEST_SUITE_P(
     RenderRobustness, MegakernelAndWavefront,
-    ::testing::Values(IntegratorCase{"cornell_box", "cornell_box.gltf", "{}"}, IntegratorCase{"veach_mis", "veach_mis.gltf", "{}"},
+    ::testing::Values(IntegratorCase{"cornell_box", "cornell_box.gltf", "{}"},
+                      IntegratorCase{"veach_mis", "veach_mis.gltf", "{}"},
                       IntegratorCase{"cornell_box_light_splitting_fixed_rr_shadow_rr", "cornell_box.gltf",
                                      R"({"light_samples": 4, "split_depth": 2, "rr": "fixed", "rr_q": 0.3, "shadow_rr": 0.1})"},
-                      IntegratorCase{"furnace_camera_rr_efficiency_rr", "furnace.gltf", R"({"camera_rr": 0.5, "rr": "efficiency"})"}),
+                      IntegratorCase{"furnace_camera_rr_efficiency_rr", "furnace.gltf",
+                                     R"({"camera_rr": 0.5, "rr": "efficiency"})"}),
     [](const auto& info) { return std::string(info.param.name); });

@@ -57,8 +57,7 @@ TEST_P(SharedScene, LoadsAndRendersFinite) {
   EXPECT_TRUE(std::isfinite(mean.x + mean.y + mean.z));
 }
 
-INSTANTIATE_TEST_SUITE_P(SharedScenes, SharedScene, ::testing::ValuesIn(sharedModels()), [](const auto& info) {
-  return test::paramName(fs::relative(info.param, VKMC_SHARED_SCENES).string());
-});
+INSTANTIATE_TEST_SUITE_P(SharedScenes, SharedScene, ::testing::ValuesIn(sharedModels()),
+                         [](const auto& info) { return test::paramName(fs::relative(info.param, VKMC_SHARED_SCENES).string()); });
 // Without ../shared/scenes there are no rows; AtLeastSevenModelsArePresent says so.
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(SharedScene);

@@ -26,14 +26,30 @@ std::vector<Variant> variants() {
     v.push_back({name, c});
   };
   add("baseline", [](EstimatorConfig&) {});
-  add("rr fixed q=0.5", [](EstimatorConfig& c) { c.rr = RouletteMode::Fixed; c.rrQ = 0.5f; c.rrDepth = 1; });
-  add("rr fixed q=0.7 c=0.3", [](EstimatorConfig& c) { c.rr = RouletteMode::Fixed; c.rrQ = 0.7f; c.rrC = 0.3f; c.rrDepth = 1; });
+  add("rr fixed q=0.5", [](EstimatorConfig& c) {
+    c.rr = RouletteMode::Fixed;
+    c.rrQ = 0.5f;
+    c.rrDepth = 1;
+  });
+  add("rr fixed q=0.7 c=0.3", [](EstimatorConfig& c) {
+    c.rr = RouletteMode::Fixed;
+    c.rrQ = 0.7f;
+    c.rrC = 0.3f;
+    c.rrDepth = 1;
+  });
   add("rr throughput from 1", [](EstimatorConfig& c) { c.rrDepth = 1; });
   add("rr efficiency", [](EstimatorConfig& c) { c.rr = RouletteMode::Efficiency; });
   add("light samples 4", [](EstimatorConfig& c) { c.lightSamples = 4; });
-  add("light samples 3, split depth 3", [](EstimatorConfig& c) { c.lightSamples = 3; c.splitDepth = 3; });
+  add("light samples 3, split depth 3", [](EstimatorConfig& c) {
+    c.lightSamples = 3;
+    c.splitDepth = 3;
+  });
   add("bsdf samples 4", [](EstimatorConfig& c) { c.bsdfSamples = 4.0f; });
-  add("bsdf samples 2.5 to depth 2, 2 light samples", [](EstimatorConfig& c) { c.bsdfSamples = 2.5f; c.splitDepth = 2; c.lightSamples = 2; });
+  add("bsdf samples 2.5 to depth 2, 2 light samples", [](EstimatorConfig& c) {
+    c.bsdfSamples = 2.5f;
+    c.splitDepth = 2;
+    c.lightSamples = 2;
+  });
   add("bsdf uniform", [](EstimatorConfig& c) { c.bsdfSampling = BsdfSampling::Uniform; });
   add("bsdf cosine", [](EstimatorConfig& c) { c.bsdfSampling = BsdfSampling::Cosine; });
   add("solid-angle lights", [](EstimatorConfig& c) { c.lightSampling = LightSampling::SolidAngle; });
@@ -42,7 +58,10 @@ std::vector<Variant> variants() {
   add("mis balance", [](EstimatorConfig& c) { c.mis = MisHeuristic::Balance; });
   add("nee off", [](EstimatorConfig& c) { c.nee = false; });
   add("camera rr 0.5", [](EstimatorConfig& c) { c.cameraRrQ = 0.5f; });
-  add("shadow rr 0.5", [](EstimatorConfig& c) { c.shadowRrThreshold = 0.5f; c.shadowRrQ = 0.5f; });
+  add("shadow rr 0.5", [](EstimatorConfig& c) {
+    c.shadowRrThreshold = 0.5f;
+    c.shadowRrQ = 0.5f;
+  });
   return v;
 }
 
@@ -51,7 +70,8 @@ void expectSame(const Film& f, const Film& ref, const std::string& what) {
   uint32_t w = f.width / 2, h = f.height / 2;
   for (uint32_t qy = 0; qy < 2; ++qy)
     for (uint32_t qx = 0; qx < 2; ++qx)
-      EXPECT_TRUE(regionsAgree(region(f, qx * w, qy * h, qx * w + w, qy * h + h), region(ref, qx * w, qy * h, qx * w + w, qy * h + h), 5.0))
+      EXPECT_TRUE(regionsAgree(region(f, qx * w, qy * h, qx * w + w, qy * h + h),
+                               region(ref, qx * w, qy * h, qx * w + w, qy * h + h), 5.0))
           << what << ": quadrant " << qx << "," << qy;
 }
 
@@ -102,7 +122,8 @@ TEST_P(GlossyTechnique, VeachSceneMatchesTheBaselineOnEachPlate) {
     uint32_t y0, y1;
     const char* name;
   };
-  const Band bands[] = {{7, 22, "lights"}, {55, 61, "plate 0.5"}, {45, 51, "plate 0.25"}, {37, 41, "plate 0.1"}, {28, 32, "plate 0.02"}};
+  const Band bands[] = {
+      {7, 22, "lights"}, {55, 61, "plate 0.5"}, {45, 51, "plate 0.25"}, {37, 41, "plate 0.1"}, {28, 32, "plate 0.02"}};
   static const RenderOutcome ref = renderWith("veach_mis.gltf", EstimatorConfig{}, 96, 64, 512, 999);
   const Variant& v = GetParam();
   std::string n = v.name;
@@ -116,7 +137,8 @@ TEST_P(GlossyTechnique, VeachSceneMatchesTheBaselineOnEachPlate) {
   ASSERT_EQ(r.film.totalNonfinite(), 0u) << v.name;
   for (const Band& b : bands) {
     if (lightSamplingCarriesSharpLobe && std::string(b.name) == "plate 0.02") continue;
-    EXPECT_TRUE(regionsAgree(region(r.film, 8, b.y0, 88, b.y1), region(ref.film, 8, b.y0, 88, b.y1), 5.0)) << v.name << ", " << b.name;
+    EXPECT_TRUE(regionsAgree(region(r.film, 8, b.y0, 88, b.y1), region(ref.film, 8, b.y0, 88, b.y1), 5.0))
+        << v.name << ", " << b.name;
   }
 }
 

@@ -98,7 +98,8 @@ TEST(LectureClaims, FiveByTwentySplittingUses105RaysAndMatchesTheSoftShadowError
     auto a = region(plain.film, r[0] * 8, r[1] * 8, r[2] * 8, r[3] * 8);
     auto b = region(split5.film, r[0] * 8, r[1] * 8, r[2] * 8, r[3] * 8);
     EXPECT_LT(b.variance.x, 2.0 * a.variance.x) << "region " << r[0] << "," << r[1];
-    EXPECT_GT(1.0 / (b.variance.x * split5.stats.rays()), 1.0 / (a.variance.x * plain.stats.rays())) << "region " << r[0] << "," << r[1];
+    EXPECT_GT(1.0 / (b.variance.x * split5.stats.rays()), 1.0 / (a.variance.x * plain.stats.rays()))
+        << "region " << r[0] << "," << r[1];
     EXPECT_TRUE(regionsAgree(a, b, 5.0)) << "region " << r[0] << "," << r[1];
   }
 }

@@ -35,12 +35,20 @@ vec3 fromTheta(float cosTheta) { return vec3(std::sqrt(1 - cosTheta * cosTheta),
 }  // namespace
 
 TEST(Chi2, UniformAndCosineHemisphere) {
-  auto uni = chi2Sphere([](uint32_t i) { vec3 u = u3(i, 1); return sampleUniformHemisphere(vec2(u.x, u.y)); },
-                        [](vec3 w) { return double(uniformHemispherePdf(w.z)); }, kSamples);
+  auto uni = chi2Sphere(
+      [](uint32_t i) {
+        vec3 u = u3(i, 1);
+        return sampleUniformHemisphere(vec2(u.x, u.y));
+      },
+      [](vec3 w) { return double(uniformHemispherePdf(w.z)); }, kSamples);
   expectFits(uni, "uniform hemisphere");
   EXPECT_NEAR(uni.pdfIntegral, 1.0, 2e-3);
-  auto cos = chi2Sphere([](uint32_t i) { vec3 u = u3(i, 2); return sampleCosineHemisphere(vec2(u.x, u.y)); },
-                        [](vec3 w) { return double(cosineHemispherePdf(w.z)); }, kSamples);
+  auto cos = chi2Sphere(
+      [](uint32_t i) {
+        vec3 u = u3(i, 2);
+        return sampleCosineHemisphere(vec2(u.x, u.y));
+      },
+      [](vec3 w) { return double(cosineHemispherePdf(w.z)); }, kSamples);
   expectFits(cos, "cosine hemisphere");
   EXPECT_NEAR(cos.pdfIntegral, 1.0, 2e-3);
 }
@@ -77,7 +85,8 @@ TEST_P(GltfBrdf, SamplingMatchesPdfAndEval) {
   const auto [roughness, metallic, cosO] = GetParam();
   GltfMaterial m = makeGltfMaterial(vec3(0.8f, 0.5f, 0.2f), metallic, roughness, 1.0f);
   vec3 wo = fromTheta(cosO);
-  std::string what = "roughness " + std::to_string(roughness) + " metallic " + std::to_string(metallic) + " cos " + std::to_string(cosO);
+  std::string what =
+      "roughness " + std::to_string(roughness) + " metallic " + std::to_string(metallic) + " cos " + std::to_string(cosO);
   auto r = chi2Sphere(
       [&](uint32_t i) {
         vec3 wi = sampleGltfBsdf(m, wo, u3(i, 4));
@@ -105,7 +114,8 @@ TEST_P(GltfBrdf, SamplingMatchesPdfAndEval) {
       quad += luminance(gltfBsdfEval(m, wo, wi)) * wi.z * std::sin(theta) * (kPi / 2 / nt) * (2 * kPi / np);
     }
   EXPECT_TRUE(test::withinSigmas(test::zTest(weight.mean, quad, weight.sigma, 2e-3 * quad), 5)) << what;
-  EXPECT_TRUE(test::atMostSigmas(test::zTest(weight.mean, 1.0, weight.sigma), 5)) << what << ": the BRDF reflects more than it receives";
+  EXPECT_TRUE(test::atMostSigmas(test::zTest(weight.mean, 1.0, weight.sigma), 5))
+      << what << ": the BRDF reflects more than it receives";
 }
 
 INSTANTIATE_TEST_SUITE_P(Chi2, GltfBrdf,
@@ -148,7 +158,8 @@ double barycentricOutside(vec3 q, vec3 a, vec3 b, vec3 c) {
 
 double solidAngleD(glm::dvec3 p, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
   glm::dvec3 ua = glm::normalize(a - p), ub = glm::normalize(b - p), uc = glm::normalize(c - p);
-  return 2.0 * std::atan2(std::abs(glm::dot(ua, glm::cross(ub, uc))), 1.0 + glm::dot(ua, ub) + glm::dot(ub, uc) + glm::dot(uc, ua));
+  return 2.0 *
+         std::atan2(std::abs(glm::dot(ua, glm::cross(ub, uc))), 1.0 + glm::dot(ua, ub) + glm::dot(ub, uc) + glm::dot(uc, ua));
 }
 
 struct Tri {
@@ -207,15 +218,17 @@ TEST_P(TriangleLight, SamplingByAreaAndSolidAngle) {
   // Misses are dropped from the observations, so scale the expectation to the hits.
   for (double& e : expectedSolid) e *= double(kSamples - misses) / kSamples;
   auto rs = test::chi2FromCounts(observedSolid, expectedSolid);
-  EXPECT_GT(rs.pValue, test::sidakLevel(kTests)) << "solid-angle sampling, " << t.name << ": chi2 " << rs.statistic << "\n" << rs.table;
+  EXPECT_GT(rs.pValue, test::sidakLevel(kTests)) << "solid-angle sampling, " << t.name << ": chi2 " << rs.statistic << "\n"
+                                                 << rs.table;
   EXPECT_NEAR(omega, omegaTotal, 1e-5 * omegaTotal) << "float solid angle against double";
 }
 
 // Seen from the origin: a far small triangle and a near one covering a wide solid angle.
-INSTANTIATE_TEST_SUITE_P(Chi2, TriangleLight,
-                         ::testing::Values(Tri{vec3(-0.3f, -0.2f, 2.0f), vec3(0.4f, -0.1f, 2.2f), vec3(0.0f, 0.5f, 1.8f), "small"},
-                                           Tri{vec3(-2.0f, -1.5f, 0.4f), vec3(2.5f, -1.0f, 0.5f), vec3(0.0f, 2.5f, 0.3f), "wide"}),
-                         [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    Chi2, TriangleLight,
+    ::testing::Values(Tri{vec3(-0.3f, -0.2f, 2.0f), vec3(0.4f, -0.1f, 2.2f), vec3(0.0f, 0.5f, 1.8f), "small"},
+                      Tri{vec3(-2.0f, -1.5f, 0.4f), vec3(2.5f, -1.0f, 0.5f), vec3(0.0f, 2.5f, 0.3f), "wide"}),
+    [](const auto& info) { return std::string(info.param.name); });
 
 TEST(Chi2, AliasTableReproducesItsWeights) {
   std::vector<double> weights;
@@ -230,7 +243,8 @@ TEST(Chi2, AliasTableReproducesItsWeights) {
   }
   // The light entries as the device holds them (the triangle is the entry's own index here).
   std::vector<uvec4> entries;
-  for (uint32_t i = 0; i < table.size(); ++i) entries.push_back(encodeLightEntry(table[i].probability, table[i].alias, i, table[i].pmf));
+  for (uint32_t i = 0; i < table.size(); ++i)
+    entries.push_back(encodeLightEntry(table[i].probability, table[i].alias, i, table[i].pmf));
   const uint32_t n = uint32_t(entries.size());
   for (uint32_t s = 0; s < kSamples; ++s) {
     // The kernel's selection (scene_layout.h): u * n picks a slot, the fraction decides between it and its alias.

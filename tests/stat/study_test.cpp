@@ -81,11 +81,18 @@ TEST(Study, SmallSppLadderEndToEnd) {
 
 TEST(Study, RejectsBadStudyFiles) {
   EXPECT_THROW(loadStudy(writeStudy("noscene", R"({"configurations": [{"name": "a"}], "spp": [1]})").string()), Error);
-  EXPECT_THROW(loadStudy(writeStudy("twoladders", R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1], "seconds": [1]})").string()),
-               Error);
-  EXPECT_THROW(loadStudy(writeStudy("badest", R"({"scene": "x.gltf", "configurations": [{"name": "a", "estimator": {"mis": "best"}}], "spp": [1]})").string()),
-               Error);
-  EXPECT_THROW(loadStudy(writeStudy("negative", R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "seconds": [-1]})").string()), Error);
+  EXPECT_THROW(
+      loadStudy(writeStudy("twoladders", R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1], "seconds": [1]})")
+                    .string()),
+      Error);
+  EXPECT_THROW(
+      loadStudy(writeStudy("badest",
+                           R"({"scene": "x.gltf", "configurations": [{"name": "a", "estimator": {"mis": "best"}}], "spp": [1]})")
+                    .string()),
+      Error);
+  EXPECT_THROW(
+      loadStudy(writeStudy("negative", R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "seconds": [-1]})").string()),
+      Error);
 }
 
 TEST(Study, TimeBudgetRendersReachMoreSamplesWithMoreTime) {

@@ -34,8 +34,10 @@ TEST_P(StiffBsdf, ExtremeRoughnessAndGrazingAnglesStayFiniteAndEnergyConserving)
       continue;
     }
     double w = (wi.z > 0.0f && pdf > 0.0f) ? f.x * wi.z / pdf : 0.0;
-    if (!std::isfinite(w)) ++nonfinite;
-    else sum += w, sumSq += w * w;
+    if (!std::isfinite(w))
+      ++nonfinite;
+    else
+      sum += w, sumSq += w * w;
   }
   vkmc::test::SampleMean albedo = vkmc::test::sampleMean(sum, sumSq, n);
   vkmc::test::ZTest energy = vkmc::test::zTest(albedo.mean, 1.0, albedo.sigma);
@@ -47,8 +49,9 @@ TEST_P(StiffBsdf, ExtremeRoughnessAndGrazingAnglesStayFiniteAndEnergyConserving)
 }
 
 INSTANTIATE_TEST_SUITE_P(Stiff, StiffBsdf,
-                         ::testing::Combine(::testing::Values(1e-3f, 0.01f, 0.3f, 1.0f), ::testing::Values(1.0f, 0.5f, 1e-2f, 1e-4f, 1e-6f)),
+                         ::testing::Combine(::testing::Values(1e-3f, 0.01f, 0.3f, 1.0f),
+                                            ::testing::Values(1.0f, 0.5f, 1e-2f, 1e-4f, 1e-6f)),
                          [](const auto& info) {
-                           return vkmc::test::paramName("roughness " + vkmc::test::shortNumber(std::get<0>(info.param)) + " cos " +
-                                                        vkmc::test::shortNumber(std::get<1>(info.param)));
+                           return vkmc::test::paramName("roughness " + vkmc::test::shortNumber(std::get<0>(info.param)) +
+                                                        " cos " + vkmc::test::shortNumber(std::get<1>(info.param)));
                          });

@@ -26,7 +26,7 @@ struct ProbeResult {
   double mean = 0, sigma = 0;  // estimate of L and the standard deviation of that estimate
   double meanVertices = 0;
   uint64_t paths = 0;
-  uint32_t cutLanes = 0;       // lanes whose loop llvmpipe's iteration limiter ended with a path in flight
+  uint32_t cutLanes = 0;  // lanes whose loop llvmpipe's iteration limiter ended with a path in flight
 };
 
 // Dispatches until the paths traced make the 5-sigma interval `relativeHalfWidth` of the mean with a 10% margin:
@@ -57,9 +57,8 @@ ProbeResult runFurnaceProbe(float albedo, uint32_t mode, const std::array<float,
   uint64_t paths = 1;
   for (uint32_t d = 0; r.paths < paths; ++d) {
     push.seed = 1000 + d;
-    ctx.runCommands([&](VkCommandBuffer cmd) {
-      vk::dispatch(cmd, layout, kernel, &push, sizeof(push), invocations / gpu::kWorkgroupSize);
-    });
+    ctx.runCommands(
+        [&](VkCommandBuffer cmd) { vk::dispatch(cmd, layout, kernel, &push, sizeof(push), invocations / gpu::kWorkgroupSize); });
     const glm::vec4* s = static_cast<const glm::vec4*>(sums.mapped());
     for (uint32_t i = 0; i < invocations; ++i) {
       uint32_t v, lanePaths;
@@ -134,12 +133,14 @@ TEST_P(HighAlbedoFurnace, RouletteIsUnbiasedToATenthOfAPercent) {
     std::snprintf(what, sizeof(what), "%s%s roulette, no cap, %.1fM paths (analytic furnace probe)", name.c_str(), modeName,
                   double(p.paths) * 1e-6);
     stabilityRow("1", what, std::to_string(expected), p.mean, p.sigma, t.within(5.0) && 5.0 * p.sigma < 1e-3 * expected);
-    std::printf("%s%s roulette: mean %.6f (expected %.6f), sigma %.3g (%.4f%%), %.1f vertices per path\n", name.c_str(),
-                modeName, p.mean, expected, p.sigma, 100.0 * p.sigma / expected, p.meanVertices);
+    std::printf("%s%s roulette: mean %.6f (expected %.6f), sigma %.3g (%.4f%%), %.1f vertices per path\n", name.c_str(), modeName,
+                p.mean, expected, p.sigma, 100.0 * p.sigma / expected, p.meanVertices);
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(Stiff, HighAlbedoFurnace,
                          ::testing::Values(FurnaceCase{"furnace_stiff.gltf", 0.99f},
                                            FurnaceCase{"stiff/furnace_albedo_0999.gltf", 0.999f}),
-                         [](const auto& info) { return info.param.albedo > 0.995f ? std::string("Albedo0999") : std::string("Albedo099"); });
+                         [](const auto& info) {
+                           return info.param.albedo > 0.995f ? std::string("Albedo0999") : std::string("Albedo099");
+                         });

@@ -37,7 +37,7 @@ TEST(StiffLight, HugeCloseLightSolidAngleBeatsAreaSampling) {
   light.baseColor = glm::vec3(0.0f);
   light.emission = glm::vec3(1.0f);
   s.materials = {floor, light};
-  addQuad(s, glm::vec3(-1, 0, -1), glm::vec3(0, 0, 2), glm::vec3(2, 0, 0), 0);        // floor facing +y
+  addQuad(s, glm::vec3(-1, 0, -1), glm::vec3(0, 0, 2), glm::vec3(2, 0, 0), 0);          // floor facing +y
   addQuad(s, glm::vec3(-10, 0.05f, -10), glm::vec3(20, 0, 0), glm::vec3(0, 0, 20), 1);  // light facing -y
   EstimatorConfig area, solid;
   area.mis = solid.mis = MisHeuristic::None;  // light sampling alone, to compare the two techniques
@@ -79,13 +79,13 @@ TEST(StiffLight, RadiancesFromOneMillionthToOneMillionInOneImage) {
   double worst[3] = {0, 0, 0};
   for (uint32_t k = 0; k < 3; ++k) {
     // Pixel columns inside quad k, away from its edges: the quads span x in [-1.5, 1.5] over the middle of the view.
-    double centre = 24.0 + (k - 1.0) * 48.0 / (2.0 * 6.0 * std::tan(glm::radians(15.0))) ;
+    double centre = 24.0 + (k - 1.0) * 48.0 / (2.0 * 6.0 * std::tan(glm::radians(15.0)));
     for (int dx = -1; dx <= 1; ++dx) {
       size_t p = size_t(24) * 48 + size_t(centre + dx);
       worst[k] = std::max(worst[k], std::abs(r.film.mean(p, 0) / expected[k] - 1.0));
     }
     EXPECT_LT(worst[k], 1e-6) << "emitter " << expected[k];
-    stabilityRow("4", "HDR image: emitter of radiance " + std::to_string(expected[k]) + ", relative error of its pixels", "0", worst[k],
-                 0.0, worst[k] < 1e-6);
+    stabilityRow("4", "HDR image: emitter of radiance " + std::to_string(expected[k]) + ", relative error of its pixels", "0",
+                 worst[k], 0.0, worst[k] < 1e-6);
   }
 }

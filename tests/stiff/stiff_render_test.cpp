@@ -54,8 +54,9 @@ TEST(StiffRender, TinyIntenseLightMatchesTheAnalyticRadiance) {
   EXPECT_EQ(b.film.totalNonfinite(), 0u);
   EXPECT_GE(whole(b.film).mean.x, 0.0);
   EXPECT_LT(whole(b.film).mean.x, expectedMean);
-  stabilityRow("2", "tiny intense light, NEE off (64 spp): finite, practically black", "finite, <= " + std::to_string(expectedMean),
-               whole(b.film).mean.x, std::sqrt(whole(b.film).variance.x), b.film.totalNonfinite() == 0);
+  stabilityRow("2", "tiny intense light, NEE off (64 spp): finite, practically black",
+               "finite, <= " + std::to_string(expectedMean), whole(b.film).mean.x, std::sqrt(whole(b.film).variance.x),
+               b.film.totalNonfinite() == 0);
 }
 
 TEST(StiffRender, RouletteAndSplittingAtTheEdges) {
@@ -84,7 +85,8 @@ TEST(StiffRender, RouletteAndSplittingAtTheEdges) {
   double ratio = growth / growthHalf;
   EXPECT_GT(ratio, 999.0 / 2.0);
   EXPECT_LT(ratio, 999.0 * 2.0);
-  stabilityRow("9", "variance growth q = 0.999 over q = 0.5 (theory 999)", "999", ratio, 0.0, ratio > 999.0 / 2 && ratio < 999.0 * 2);
+  stabilityRow("9", "variance growth q = 0.999 over q = 0.5 (theory 999)", "999", ratio, 0.0,
+               ratio > 999.0 / 2 && ratio < 999.0 * 2);
 
   EstimatorConfig never;
   never.rr = RouletteMode::Fixed;
@@ -108,10 +110,11 @@ TEST(StiffRender, RouletteAndSplittingAtTheEdges) {
   // 64 continuations per camera sample: the variance of what follows the first hit falls about 64-fold, so
   // the per-sample variance must drop well below the unsplit one.
   EXPECT_LT(sc.variance.x, 0.1 * sbase.variance.x);
-  stabilityRow("9", "splitting factor 64: variance over unsplit (theory about 1/64)", "< 0.1", sc.variance.x / sbase.variance.x, 0.0,
-               sc.variance.x < 0.1 * sbase.variance.x);
+  stabilityRow("9", "splitting factor 64: variance over unsplit (theory about 1/64)", "< 0.1", sc.variance.x / sbase.variance.x,
+               0.0, sc.variance.x < 0.1 * sbase.variance.x);
   EXPECT_EQ(c.film.totalNonfinite(), 0u);
-  stabilityRow("9", "splitting factor 64 at the first hit (furnace)", "2", sc.mean.x, std::sqrt(sc.variance.x), maxZ(sc, glm::dvec3(2.0)) < 5.0);
+  stabilityRow("9", "splitting factor 64 at the first hit (furnace)", "2", sc.mean.x, std::sqrt(sc.variance.x),
+               maxZ(sc, glm::dvec3(2.0)) < 5.0);
 }
 
 TEST(StiffRender, DegenerateGeometryIsSkippedCountedAndHarmless) {
@@ -119,9 +122,12 @@ TEST(StiffRender, DegenerateGeometryIsSkippedCountedAndHarmless) {
   // single triangle. Lit by the background; no sample may be non-finite.
   auto dir = makeTempDir("degenerate");
   GltfSpec s = quadSpec();
-  std::vector<float> extra = {0.2f, 0.2f, 0.5f, 0.8f, 0.2f, 0.5f, 0.5f, 0.2f + 6e-7f, 0.5f,  // sliver, aspect 1e6
-                              3, 3, 3, 4, 4, 4, 5, 5, 5,                                     // collinear: zero area
-                              0, 0, 0, 1, 0, 0, 1, 1, 0};                                    // coincident with the quad
+  std::vector<float> extra = {0.2f, 0.2f, 0.5f, 0.8f, 0.2f, 0.5f, 0.5f, 0.2f + 6e-7f,
+                              0.5f,  // sliver, aspect 1e6
+                              3,    3,    3,    4,    4,    4,    5,    5,
+                              5,  // collinear: zero area
+                              0,    0,    0,    1,    0,    0,    1,    1,
+                              0};  // coincident with the quad
   s.positions.insert(s.positions.end(), extra.begin(), extra.end());
   s.indices.insert(s.indices.end(), {4, 5, 6, 7, 8, 9, 10, 11, 12, 0, 0, 2});  // ..., repeated vertex
   std::string path = writeGltf(dir, "degenerate", s);
@@ -147,7 +153,8 @@ TEST(StiffRender, DegenerateGeometryIsSkippedCountedAndHarmless) {
   RenderOutcome single = runRender(sharedContext(), o);
   EXPECT_EQ(single.film.totalNonfinite(), 0u);
   EXPECT_GT(whole(single.film).mean.x, 0.0);
-  stabilityRow("7", "a single triangle", "0 non-finite", double(single.film.totalNonfinite()), 0.0, single.film.totalNonfinite() == 0);
+  stabilityRow("7", "a single triangle", "0 non-finite", double(single.film.totalNonfinite()), 0.0,
+               single.film.totalNonfinite() == 0);
 }
 
 namespace {

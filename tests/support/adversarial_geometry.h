@@ -25,10 +25,12 @@ inline void addTriangle(Soup& s, glm::vec3 a, glm::vec3 b, glm::vec3 c) { s.posi
 // A UV sphere as modelling tools make it: sin/cos in double, so the poles and the seam carry coordinates like
 // 6e-17 where a 0 was meant.
 inline Soup uvSphere(double radius, int segments, int rings, glm::dvec3 centre = glm::dvec3(0.0), bool inward = false) {
-  Soup s{"sphere r=" + shortNumber(radius) + " " + std::to_string(segments) + "x" + std::to_string(rings) + (inward ? " inward" : "")};
+  Soup s{"sphere r=" + shortNumber(radius) + " " + std::to_string(segments) + "x" + std::to_string(rings) +
+         (inward ? " inward" : "")};
   auto point = [&](int i, int j) {
     double theta = M_PI * j / rings, phi = 2.0 * M_PI * i / segments;
-    return glm::vec3(centre + radius * glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)));
+    return glm::vec3(centre +
+                     radius * glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)));
   };
   for (int j = 0; j < rings; ++j)
     for (int i = 0; i < segments; ++i) {
@@ -93,13 +95,14 @@ inline std::vector<Soup> adversarialSoups() {
   out.push_back(merged("stacked flat boxes", {box(glm::vec3(-1, -1, 0), glm::vec3(1, 1, 0), ""),
                                               box(glm::vec3(-1, -1, 1e-7f), glm::vec3(1, 1, 1e-7f), ""),
                                               box(glm::vec3(-1, -1, -1e-38f), glm::vec3(1, 1, -1e-38f), "")}));
-  out.push_back(merged("denormals beside a unit box", {box(glm::vec3(-1e-40f), glm::vec3(1e-39f), ""),
-                                                       box(glm::vec3(-1.0f), glm::vec3(1.0f), "")}));
+  out.push_back(merged("denormals beside a unit box",
+                       {box(glm::vec3(-1e-40f), glm::vec3(1e-39f), ""), box(glm::vec3(-1.0f), glm::vec3(1.0f), "")}));
   for (float scale : {1e-30f, 1e-20f, 1e-10f, 1e10f, 1e20f, 1e30f})
     out.push_back(randomSoup(400, 5, scale, glm::vec3(0.0f), "random soup x" + shortNumber(scale)));
   out.push_back(randomSoup(400, 6, 1.0f, glm::vec3(3e4f, -1e4f, 2e4f), "random soup far away"));
-  out.push_back(merged("ground of half-size 3e9 and a unit sphere",
-                       {box(glm::vec3(-3e9f, 0.0f, -3e9f), glm::vec3(3e9f, 0.0f, 3e9f), ""), uvSphere(1.0, 16, 8, glm::dvec3(0, 1, 0))}));
+  out.push_back(
+      merged("ground of half-size 3e9 and a unit sphere",
+             {box(glm::vec3(-3e9f, 0.0f, -3e9f), glm::vec3(3e9f, 0.0f, 3e9f), ""), uvSphere(1.0, 16, 8, glm::dvec3(0, 1, 0))}));
   return out;
 }
 
@@ -138,8 +141,8 @@ inline std::vector<Ray> raysAt(const Soup& s, int count, uint32_t seed) {
     size_t t = std::min(triangles - 1, size_t(u(rng) * triangles));
     float b1 = u(rng), b2 = u(rng);
     if (b1 + b2 > 1.0f) b1 = 1.0f - b1, b2 = 1.0f - b2;
-    glm::dvec3 target = glm::dvec3(s.positions[3 * t]) * double(1.0f - b1 - b2) + glm::dvec3(s.positions[3 * t + 1]) * double(b1) +
-                        glm::dvec3(s.positions[3 * t + 2]) * double(b2);
+    glm::dvec3 target = glm::dvec3(s.positions[3 * t]) * double(1.0f - b1 - b2) +
+                        glm::dvec3(s.positions[3 * t + 1]) * double(b1) + glm::dvec3(s.positions[3 * t + 2]) * double(b2);
     glm::dvec3 dir = glm::normalize(glm::dvec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
     if (r % 17 == 0) dir = glm::dvec3(0.0, 0.0, r % 2 ? 1.0 : -1.0);
     glm::dvec3 origin = target - 3.0 * radius * dir;

@@ -48,7 +48,7 @@ struct Chi2Result {
   double pValue = 1.0;
   double pdfIntegral = 0.0;  // integral of the pdf over the sphere
   double failedFraction = 0.0;
-  std::string table;         // observed vs expected, for failure messages
+  std::string table;  // observed vs expected, for failure messages
 };
 
 // Pearson's test of observed against expected counts, pooling cells that expect fewer than 5.
@@ -72,7 +72,8 @@ inline Chi2Result chi2FromCounts(const std::vector<double>& observed, const std:
     double d = observed[i] - expected[i];
     r.statistic += d * d / expected[i];
     ++cells;
-    if (std::abs(d) > 4.0 * std::sqrt(expected[i])) table << "cell " << i << ": observed " << observed[i] << " expected " << expected[i] << "\n";
+    if (std::abs(d) > 4.0 * std::sqrt(expected[i]))
+      table << "cell " << i << ": observed " << observed[i] << " expected " << expected[i] << "\n";
   }
   if (pooledExp > 0.0) {
     double d = pooledObs - pooledExp;

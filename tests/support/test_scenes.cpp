@@ -34,9 +34,14 @@ std::string writeGltf(const std::filesystem::path& dir, const std::string& name,
   size_t indexBytes = 0;
   if (!spec.indices.empty()) {
     for (uint32_t i : spec.indices) {
-      if (spec.indexComponentType == 5121) { uint8_t v = static_cast<uint8_t>(i); append(&v, 1); }
-      else if (spec.indexComponentType == 5123) { uint16_t v = static_cast<uint16_t>(i); append(&v, 2); }
-      else append(&i, 4);
+      if (spec.indexComponentType == 5121) {
+        uint8_t v = static_cast<uint8_t>(i);
+        append(&v, 1);
+      } else if (spec.indexComponentType == 5123) {
+        uint16_t v = static_cast<uint16_t>(i);
+        append(&v, 2);
+      } else
+        append(&i, 4);
     }
     indexBytes = bin.size() - posBytes;
   }
@@ -54,10 +59,11 @@ std::string writeGltf(const std::filesystem::path& dir, const std::string& name,
   j << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0,"mode":)" << spec.mode;
   if (!spec.indices.empty()) j << R"(,"indices":1)";
   j << "}]}],";
-  j << R"("accessors":[{"bufferView":0,"componentType":5126,"type":"VEC3","count":)" << vertexCount << R"(,"min":[)"
-    << lo[0] << "," << lo[1] << "," << lo[2] << R"(],"max":[)" << hi[0] << "," << hi[1] << "," << hi[2] << "]}";
+  j << R"("accessors":[{"bufferView":0,"componentType":5126,"type":"VEC3","count":)" << vertexCount << R"(,"min":[)" << lo[0]
+    << "," << lo[1] << "," << lo[2] << R"(],"max":[)" << hi[0] << "," << hi[1] << "," << hi[2] << "]}";
   if (!spec.indices.empty())
-    j << R"(,{"bufferView":1,"componentType":)" << spec.indexComponentType << R"(,"type":"SCALAR","count":)" << spec.indices.size() << "}";
+    j << R"(,{"bufferView":1,"componentType":)" << spec.indexComponentType << R"(,"type":"SCALAR","count":)"
+      << spec.indices.size() << "}";
   j << "],";
   j << R"("bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":)" << posBytes << "}";
   if (!spec.indices.empty()) j << R"(,{"buffer":0,"byteOffset":)" << posBytes << R"(,"byteLength":)" << indexBytes << "}";

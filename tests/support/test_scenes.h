@@ -10,12 +10,12 @@
 namespace vkmc::test {
 
 struct GltfSpec {
-  std::vector<float> positions;   // xyz per vertex
-  std::vector<uint32_t> indices;  // empty: non-indexed
-  int indexComponentType = 5125;  // 5121 u8, 5123 u16, 5125 u32
-  int positionCountOverride = -1; // claim more vertices than the buffer holds
-  bool writeBin = true;           // false: the referenced .bin is missing
-  std::string nodeExtra;          // extra JSON inside the node, e.g. "\"translation\":[1,2,3]"
+  std::vector<float> positions;    // xyz per vertex
+  std::vector<uint32_t> indices;   // empty: non-indexed
+  int indexComponentType = 5125;   // 5121 u8, 5123 u16, 5125 u32
+  int positionCountOverride = -1;  // claim more vertices than the buffer holds
+  bool writeBin = true;            // false: the referenced .bin is missing
+  std::string nodeExtra;           // extra JSON inside the node, e.g. "\"translation\":[1,2,3]"
   std::string materialJson = R"({"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.5,0.5,1]},"emissiveFactor":[1,1,1]})";
   int mode = 4;
 };

@@ -39,7 +39,9 @@ struct ZTest {
 };
 
 // One sample: an estimate with standard error `sigma` against an exact value.
-inline ZTest zTest(double estimate, double expected, double sigma, double slack = 0.0) { return {estimate, expected, sigma, slack}; }
+inline ZTest zTest(double estimate, double expected, double sigma, double slack = 0.0) {
+  return {estimate, expected, sigma, slack};
+}
 
 // Two independent estimates, each with the variance of its mean.
 inline ZTest zTest2(double a, double varianceA, double b, double varianceB, double slack = 0.0) {

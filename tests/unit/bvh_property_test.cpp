@@ -75,7 +75,8 @@ TEST_P(BvhProperty, BuildsContainsAndWalksLikeBruteForce) {
   // Where float ray tests work at all (not at 1e+-20 and beyond, where their products under- or overflow),
   // the rays aimed at triangles hit.
   bool floatTestsWork = true;
-  for (const char* out : {"e+20", "e+30", "e-20", "e-30", "zero-area"}) floatTestsWork &= soup.name.find(out) == std::string::npos;
+  for (const char* out : {"e+20", "e+30", "e-20", "e-30", "zero-area"})
+    floatTestsWork &= soup.name.find(out) == std::string::npos;
   if (floatTestsWork) {
     EXPECT_GT(hits, int(rays.size()) / 4) << soup.name;
   }
@@ -84,5 +85,6 @@ TEST_P(BvhProperty, BuildsContainsAndWalksLikeBruteForce) {
 INSTANTIATE_TEST_SUITE_P(Adversarial, BvhProperty,
                          ::testing::Combine(::testing::Range(size_t(0), soups().size()), ::testing::Values(1u, 8u)),
                          [](const auto& info) {
-                           return "soup" + std::to_string(std::get<0>(info.param)) + "_leaves" + std::to_string(std::get<1>(info.param));
+                           return "soup" + std::to_string(std::get<0>(info.param)) + "_leaves" +
+                                  std::to_string(std::get<1>(info.param));
                          });

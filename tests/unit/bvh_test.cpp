@@ -127,8 +127,9 @@ TEST_P(QuantizedWideBoxes, ContainTheirTrianglesAndStayTight) {
   EXPECT_EQ(loose, 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Bvh, QuantizedWideBoxes, ::testing::Values(vec3(0.0f), vec3(3e4f, -1e4f, 2e4f)),
-                         [](const auto& info) { return info.index == 0 ? std::string("atTheOrigin") : std::string("farFromTheOrigin"); });
+INSTANTIATE_TEST_SUITE_P(Bvh, QuantizedWideBoxes, ::testing::Values(vec3(0.0f), vec3(3e4f, -1e4f, 2e4f)), [](const auto& info) {
+  return info.index == 0 ? std::string("atTheOrigin") : std::string("farFromTheOrigin");
+});
 
 TEST(Bvh, BuildStatisticsAreConsistent) {
   Soup soup = randomSoup(20000, 3);
@@ -154,7 +155,8 @@ TEST(Geometry, WatertightOnSharedEdgesAndVertices) {
   int misses = 0, total = 0;
   for (int i = 1; i < n; ++i)
     for (int j = 1; j < n; ++j)
-      for (glm::vec3 target : {glm::vec3(i, j, 0), glm::vec3(i + 0.5f, j, 0), glm::vec3(i, j + 0.5f, 0), glm::vec3(i - 0.5f, j - 0.5f, 0)}) {
+      for (glm::vec3 target :
+           {glm::vec3(i, j, 0), glm::vec3(i + 0.5f, j, 0), glm::vec3(i, j + 0.5f, 0), glm::vec3(i - 0.5f, j - 0.5f, 0)}) {
         glm::vec3 o(0.37f * i, 0.91f * j, 7.3f);
         HostHit h = bruteForce(pos, o, target - o, 2.0f);
         ++total;
@@ -181,8 +183,8 @@ TEST(Geometry, OffsetOriginsNeverReHitTheirSurfaceAtAnyScale) {
         glm::vec3 p = b.x * v0 + b.y * v1 + b.z * v2;
         glm::vec3 err = gpu::barycentricError(b, v0, v1, v2);
         // A direction grazing the surface on either side.
-        glm::vec3 w = glm::normalize(glm::cross(n, glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f)) +
-                                     (k % 2 ? 1e-3f : -1e-3f) * n);
+        glm::vec3 w =
+            glm::normalize(glm::cross(n, glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f)) + (k % 2 ? 1e-3f : -1e-3f) * n);
         glm::vec3 o = gpu::offsetRayOrigin(p, err, n, w);
         gpu::RayShear shear = gpu::makeRayShear(o, w);
         if (gpu::intersectTriangle(shear, v0, v1, v2, 1e30f).x > 0.0f) ++selfHits;
@@ -237,7 +239,8 @@ TEST_P(PlaneAtScale, RaysLeavingItNeverReHitIt) {
   EXPECT_EQ(hits, 0) << "scale " << scale << " shift " << shift;
 }
 
-INSTANTIATE_TEST_SUITE_P(Geometry, PlaneAtScale, ::testing::Combine(::testing::Values(1e-3f, 1.0f, 1e4f), ::testing::Values(0.0f, 1e4f)),
+INSTANTIATE_TEST_SUITE_P(Geometry, PlaneAtScale,
+                         ::testing::Combine(::testing::Values(1e-3f, 1.0f, 1e4f), ::testing::Values(0.0f, 1e4f)),
                          [](const auto& info) {
                            return test::paramName("scale " + test::shortNumber(std::get<0>(info.param)) + " shift " +
                                                   test::shortNumber(std::get<1>(info.param)));
@@ -266,7 +269,8 @@ TEST(Bvh, BinnedBuildIsWithinFivePercentOfTheFullSweep) {
   sweep.fullSweep = true;
   for (const auto& [name, bounds] : cases) {
     double binned = buildBvh(bounds).stats.sahCost, full = buildBvh(bounds, sweep).stats.sahCost;
-    std::printf("%s: SAH cost binned %.3f, full sweep %.3f (%.2f%%)\n", name.c_str(), binned, full, 100.0 * (binned / full - 1.0));
+    std::printf("%s: SAH cost binned %.3f, full sweep %.3f (%.2f%%)\n", name.c_str(), binned, full,
+                100.0 * (binned / full - 1.0));
     EXPECT_LE(binned, 1.05 * full) << name;
   }
   // The sweep tree traces as brute force does.

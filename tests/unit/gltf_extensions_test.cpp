@@ -29,7 +29,6 @@ std::string quadUsing(const std::string& name, const std::string& used, const st
   return path;
 }
 
-
 bool hasWarning(const Scene& s, const std::string& text) {
   for (const std::string& w : s.warnings)
     if (w.find(text) != std::string::npos) return true;
@@ -44,7 +43,8 @@ TEST(GltfExtensions, RequiredExtensionsVkmcDoesNotImplementAreRefusedByName) {
   EXPECT_NE(unknown.find("requires extension VENDOR_magic, which vkmc does not know"), std::string::npos) << unknown;
   std::string quantized = test::loadError(quadUsing("quantized", "\"KHR_mesh_quantization\"", "\"KHR_mesh_quantization\""));
   EXPECT_NE(quantized.find("KHR_mesh_quantization"), std::string::npos) << quantized;
-  EXPECT_EQ(test::loadError(quadUsing("strength", "\"KHR_materials_emissive_strength\"", "\"KHR_materials_emissive_strength\"")), "");
+  EXPECT_EQ(test::loadError(quadUsing("strength", "\"KHR_materials_emissive_strength\"", "\"KHR_materials_emissive_strength\"")),
+            "");
 }
 
 TEST(GltfExtensions, UsedExtensionsThatAreIgnoredAreNamedInWarnings) {
@@ -84,5 +84,6 @@ TEST(GltfExtensions, OnlyASpecularColourOrTextureIsWarnedAbout) {
   EXPECT_EQ(plain.materials[0].specular, 0.0f);
   GltfSpec colour = test::quadSpec();
   colour.materialJson = R"({"extensions":{"KHR_materials_specular":{"specularColorFactor":[1,0,0]}}})";
-  EXPECT_TRUE(hasWarning(loadGltf(test::writeGltf(dir(), "specular_colour", colour)), "material 0: KHR_materials_specular's specularColorFactor"));
+  EXPECT_TRUE(hasWarning(loadGltf(test::writeGltf(dir(), "specular_colour", colour)),
+                         "material 0: KHR_materials_specular's specularColorFactor"));
 }

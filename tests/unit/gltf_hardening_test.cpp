@@ -21,7 +21,6 @@ std::filesystem::path dir() {
   return d;
 }
 
-
 std::string readText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -63,10 +62,13 @@ std::string quadGlb(uint32_t binLengthExtra) {
 
 TEST(GltfHardening, HugeAccessorCountsAndOffsetsAreRefusedNotWrapped) {
   // count 2^62 + 1 times a 12-byte stride wraps size_t to a small number; offsets near 2^64 wrap the sum.
-  EXPECT_NE(test::loadError(quadWith("count", "\"count\":4", "\"count\":4611686018427387905")).find("runs past the end"), std::string::npos);
+  EXPECT_NE(test::loadError(quadWith("count", "\"count\":4", "\"count\":4611686018427387905")).find("runs past the end"),
+            std::string::npos);
   EXPECT_NE(test::loadError(quadWith("accoffset", "\"bufferView\":0,", "\"bufferView\":0,\"byteOffset\":18446744073709551600,"))
-                .find("runs past the end"), std::string::npos);
-  EXPECT_NE(test::loadError(quadWith("viewoffset", "\"byteOffset\":0", "\"byteOffset\":18446744073709551600")).find("runs past the end"),
+                .find("runs past the end"),
+            std::string::npos);
+  EXPECT_NE(test::loadError(quadWith("viewoffset", "\"byteOffset\":0", "\"byteOffset\":18446744073709551600"))
+                .find("runs past the end"),
             std::string::npos);
 }
 
@@ -108,13 +110,15 @@ TEST(GltfHardening, UrisMustNameRegularFilesOfPlausibleSize) {
   // A FIFO as buffer: refused without blocking (an open waits for a writer).
   std::string fifo = (dir() / "fifo.bin").string();
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
-  EXPECT_NE(test::loadError(quadWith("fifobuffer", "\"uri\":\"fifobuffer.bin\"", "\"uri\":\"fifo.bin\"")).find("not a regular file"),
-            std::string::npos);
+  EXPECT_NE(
+      test::loadError(quadWith("fifobuffer", "\"uri\":\"fifobuffer.bin\"", "\"uri\":\"fifo.bin\"")).find("not a regular file"),
+      std::string::npos);
   // A FIFO as an (ignored) texture image: loads, without blocking.
   EXPECT_EQ(test::loadError(quadWith("fifoimage", "\"scene\":0,", "\"scene\":0,\"images\":[{\"uri\":\"fifo.bin\"}],")), "");
   // A folder as buffer.
   std::filesystem::create_directories(dir() / "folder.bin");
-  EXPECT_NE(test::loadError(quadWith("folderbuffer", "\"uri\":\"folderbuffer.bin\"", "\"uri\":\"folder.bin\"")).find("not a regular file"),
+  EXPECT_NE(test::loadError(quadWith("folderbuffer", "\"uri\":\"folderbuffer.bin\"", "\"uri\":\"folder.bin\""))
+                .find("not a regular file"),
             std::string::npos);
   // A 72-byte buffer naming a 4 GiB (sparse) file: refused by its size, before it is read.
   std::string big = (dir() / "big.bin").string();
@@ -148,9 +152,11 @@ TEST(GltfHardening, CameraWithoutAViewBasisIsRefused) {
   std::string path = quadWith("parallel", "\"nodes\":[{\"mesh\":0}]", "\"nodes\":[{\"mesh\":0},{" + matrix + "}]");
   std::string json = readText(path);
   json.replace(json.find("\"nodes\":[0]"), 11, "\"nodes\":[0,1]");
-  json.replace(json.find("\"scene\":0,"), 10, "\"scene\":0,\"cameras\":[{\"type\":\"perspective\",\"perspective\":{\"yfov\":0.8,\"znear\":0.1}}],");
+  json.replace(json.find("\"scene\":0,"), 10,
+               "\"scene\":0,\"cameras\":[{\"type\":\"perspective\",\"perspective\":{\"yfov\":0.8,\"znear\":0.1}}],");
   std::ofstream(path) << json;
-  EXPECT_NE(test::loadError(path).find("camera 0: its node transform's Y and Z axes are parallel"), std::string::npos) << test::loadError(path);
+  EXPECT_NE(test::loadError(path).find("camera 0: its node transform's Y and Z axes are parallel"), std::string::npos)
+      << test::loadError(path);
 }
 
 TEST(GltfHardening, HugeTrianglesAreNotDegenerateAndOutOfRangeCoordinatesAreRefused) {

@@ -42,8 +42,10 @@ struct EmbreeScene {
     scene = rtcNewScene(device);
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     size_t n = s.triangleCount();
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * n));
-    auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), n));
+    auto* v = static_cast<float*>(
+        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * n));
+    auto* idx = static_cast<uint32_t*>(
+        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), n));
     for (size_t i = 0; i < 3 * n; ++i) {
       v[3 * i] = s.positions[i].x, v[3 * i + 1] = s.positions[i].y, v[3 * i + 2] = s.positions[i].z;
       idx[i] = static_cast<uint32_t>(i);
@@ -156,8 +158,12 @@ int main(int argc, char** argv) {
       // Deep walks: rays whose walk outgrew the register stack and ran again in the trace kernel's deep pass.
       std::printf("%-34s %9zu %9zu %12.2f %12.2f %7.2fx %9.4f%% %10u\n", std::filesystem::path(path).filename().c_str(),
                   scene.triangleCount(), rays.size(), median(vk), median(em), ratio, 100.0 * agreement, tracer.deepWalks());
-      out.push_back({{"scene", path}, {"rays", rays.size()}, {"vkmc_mrays_per_second", median(vk)},
-                     {"embree_mrays_per_second", median(em)}, {"ratio", ratio}, {"agreement", agreement},
+      out.push_back({{"scene", path},
+                     {"rays", rays.size()},
+                     {"vkmc_mrays_per_second", median(vk)},
+                     {"embree_mrays_per_second", median(em)},
+                     {"ratio", ratio},
+                     {"agreement", agreement},
                      {"deep_walks", tracer.deepWalks()}});
       if (walkStats) {
         RayTracer counting(ctx, gpuScene, false, true);
@@ -165,12 +171,15 @@ int main(int argc, char** argv) {
         RayTracer::WalkStats w = counting.walkStats();
         std::printf("  walk per ray: %.2f iterations (%.2f node steps, %.2f triangle tests); slowest lane of 8: %.2f\n",
                     w.iterations, w.nodeSteps, w.triangleTests, w.slowestLaneIterations);
-        out.back()["walk_per_ray"] = {{"iterations", w.iterations}, {"node_steps", w.nodeSteps},
-                                      {"triangle_tests", w.triangleTests}, {"slowest_lane_iterations", w.slowestLaneIterations}};
+        out.back()["walk_per_ray"] = {{"iterations", w.iterations},
+                                      {"node_steps", w.nodeSteps},
+                                      {"triangle_tests", w.triangleTests},
+                                      {"slowest_lane_iterations", w.slowestLaneIterations}};
       }
     }
     if (!jsonPath.empty())
-      writeFileAtomically(jsonPath, nlohmann::json{{"device", ctx.deviceName()}, {"embree_threads", threads}, {"results", out}}.dump(2) + "\n");
+      writeFileAtomically(
+          jsonPath, nlohmann::json{{"device", ctx.deviceName()}, {"embree_threads", threads}, {"results", out}}.dump(2) + "\n");
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "vkmc-embree-baseline: %s\n", e.what());
