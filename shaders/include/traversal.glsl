@@ -1,22 +1,8 @@
-// BVH traversal. The default walk (4-wide nodes) is shaped by what llvmpipe, our CPU device, does with a shader:
-// it runs 8 lanes as one SIMD program and never skips code, not even an `if` or a loop no lane enters; a loop
-// runs until its last lane is done. Measured on Mesa 22.3 (docs/performance.md), that made these choices:
-// - One flat loop in which every lane does one box step (a 4-wide node) and one triangle test per iteration:
-//   a node unit and a triangle unit. When the node unit reaches a leaf it hands it to the triangle unit as soon
-//   as that is free and goes on with the next stack entry; the closest hit so far bounds both (Aila & Laine's
-//   speculative traversal, for lanes that cannot skip). Nested while-while loops cost an empty pass each.
-// - The stack in registers (12 entries, shifted by selects): an indexed private array becomes scratch memory
-//   that llvmpipe reads and writes with a loop over the lanes, which made the stack the walk's largest cost.
-//   A walk that outgrows 12 entries starts over in traceRayDeep (the stack in memory); never dropped. Kernels that
-//   can defer it do so to a second dispatch (deferred_walk.glsl), since every lane would pay an idle pass of
-//   traceRayDeep in the first: 4-24% of the walk's time.
-// - Near and far planes picked by the ray's direction sign when the planes are fetched: no min/max per axis.
-// - Nodes of one cache line with 8-bit planes (BvhWideNode): a fetch, not arithmetic, is what a step costs.
-// Leaves are stack entries tagged with the high bit and their size; nearer children come first. With VKMC_BVH2
-// the binary layout is walked instead (kept for side-by-side benchmarks). llvmpipe also has a hang guard that ends
-// shader loops after 65535 iterations (LP_MAX_TGSI_LOOP_ITERATIONS) without any error; a walk of 400k leaves
-// measured complete, but a walk that did not end on its own must never pass for a hit or a miss: `complete`
-// says whether it did.
+// BVH traversal, shaped by what llvmpipe (our CPU device) does with a shader: 8 lanes run as one SIMD program
+// that never skips code, so the walk is one flat loop in which every lane takes one node step and one triangle
+// test per iteration, with its stack in registers and a deep fallback. Why each choice, with the measurements:
+// docs/performance.md, "The traversal kernel's design". `complete` says whether a walk ended on its own (llvmpipe's
+// loop limiter can end a shader loop silently); an incomplete walk never passes for a hit or a miss.
 #include "bvh_layout.h"
 #define TRAVERSAL_STACK_SIZE 96
 const uint kNoEntry = kBvhNoEntry;
@@ -102,8 +88,7 @@ uint hitChildren(uint node, vec3 invDir, vec3 origin, bvec3 nearIsHigh, float tM
 
 // The register stack: 12 entries in three uvec4 (top = s0.x, empty slots = kNoEntry). `shift` entries of
 // (a, b, c) are pushed (1..3, a on top), or -shift entries popped (1..2), or nothing (0). Pushing past the bottom
-// sets overflow; the walk then restarts with traceRayDeep. 16 entries cost 5% more loop instructions and spills
-// for 7 fewer deep walks in 200k helmet rays; 8 sent 0.4% of them to the deep pass.
+// sets overflow; the walk then restarts with traceRayDeep. (Why 12: docs/performance.md.)
 struct RegisterStack {
   uvec4 s0, s1, s2;
 };

@@ -8,11 +8,9 @@
 // random-number dimensions, float throughput over thousands of vertices.
 //
 // One flat loop, one vertex per iteration: a lane starts a new path when one ends until it has spent its vertex
-// budget, then finishes the path in flight (dropping it would favour short paths). A first version with a loop
-// over 32 paths around a loop over vertices lost 24% of its paths on llvmpipe at albedo 0.999 (L read 761, not
-// 1000): llvmpipe ends loops after 65535 iterations (LP_MAX_TGSI_LOOP_ITERATIONS, a hang guard) without an
-// error, and 32 paths of ~2700 SIMD iterations each pass that. A lane whose loop is cut still has a path in
-// flight, and says so.
+// budget, then finishes the path in flight (dropping it would favour short paths). Nested loops ran into
+// llvmpipe's silent loop limit (docs/performance.md, "A lavapipe pitfall"); a lane whose loop is cut still has a
+// path in flight, and says so.
 // Output per invocation: (sum of L, sum of L^2, vertices, paths | cut flag in the top bit).
 #include "layout.h"
 #include "rng.h"
