@@ -119,8 +119,11 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   for (const Material& m : scene.materials) {
     gpu::Material g{};
     g.baseColor = glm::vec4(m.baseColor, m.alpha);
-    g.emission = glm::vec4(m.emission, std::bit_cast<float>(m.doubleSided ? gpu::kMaterialDoubleSided : 0u));
-    g.params = glm::vec4(m.metallic, m.roughness, m.specular, 0.0f);
+    g.emission = m.emission;
+    g.flags = m.doubleSided ? gpu::kMaterialDoubleSided : 0u;
+    g.metallic = m.metallic;
+    g.roughness = m.roughness;
+    g.specular = m.specular;
     mats.push_back(g);
   }
 

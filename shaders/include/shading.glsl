@@ -37,11 +37,10 @@ SurfacePoint surfaceAt(uint tri, vec2 b12, vec3 wo) {
 }
 
 bool emitsToward(Material m, bool frontFace) {
-  return (frontFace || (floatBitsToUint(m.emission.w) & kMaterialDoubleSided) != 0u) &&
-         maxComponent(m.emission.rgb) > 0.0;
+  return (frontFace || (m.flags & kMaterialDoubleSided) != 0u) && maxComponent(m.emission) > 0.0;
 }
 
-GltfMaterial gltfMaterial(Material m) { return makeGltfMaterial(m.baseColor.rgb, m.params.x, m.params.y, m.params.z); }
+GltfMaterial gltfMaterial(Material m) { return makeGltfMaterial(m.baseColor.rgb, m.metallic, m.roughness, m.specular); }
 
 // The BSDF-sampling technique and its pdf (local frame). In an all-Lambertian scene (kHasGlossy = 0) the
 // glTF BRDF is baseColor / pi and its sampling is cosine sampling: the GGX code is compiled out.
@@ -114,7 +113,7 @@ bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo
   vec3 f = bsdfEval(gm, woLocal, wiLocal);
   // MIS over one BSDF sample and `samples` light samples: the light technique's pdf counts samples times.
   float weight = kMis == kMisNone ? 1.0 : misWeight(kMis, float(samples) * pdf, techniquePdf(gm, woLocal, wiLocal));
-  vec3 contribution = path.throughput.rgb * f * lm.emission.rgb * (wiLocal.z * weight / (pdf * float(samples)));
+  vec3 contribution = path.throughput.rgb * f * lm.emission * (wiLocal.z * weight / (pdf * float(samples)));
   if (!allFinite(contribution)) atomicAdd(control.nonfiniteLightSamples, 1u);  // still queued: it poisons the sample
   else if (!(maxComponent(contribution) > 0.0)) return false;
   if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * pixelEstimate[path.pixel]) {
@@ -146,7 +145,7 @@ vec3 emissionAt(PathState path, SurfacePoint s, Material m, uint tri, vec4 hit, 
       weight = misWeight(kMis, path.direction.w, float(lightSamplesAt(path.depth - 1u)) * pl);
     }
   }
-  return path.throughput.rgb * m.emission.rgb * weight;
+  return path.throughput.rgb * m.emission * weight;
 }
 
 // Below the depth cap a vertex samples lights; it also continues unless, with light sampling alone (NEE

@@ -26,7 +26,8 @@ void echoStructs() {
   ShadowRay r = shadowRays[0];
   put4(r.origin); put4(r.direction); put4(r.contribution);
   Material m = materials[0];
-  put4(m.baseColor); put4(m.emission); put4(m.params);
+  put4(m.baseColor); put3(m.emission); put(m.flags);
+  putf(m.metallic); putf(m.roughness); putf(m.specular); putf(m.unusedParam);
   FilmPixel f = film[0];
   put4(f.sum); put4(f.sumSq); put4(f.sumHigh); put4(f.sumSqHigh);
   put(control.rayQueueCount[0]); put(control.rayQueueCount[1]); put(control.shadowQueueCount); put(control.splitChildren);

@@ -59,7 +59,7 @@ VKMC_BEGIN_NAMESPACE
 
 VKMC_CONST uint kMissPrimitive = 0xffffffffu;
 VKMC_CONST uint kWorkgroupSize = 64u;
-VKMC_CONST uint kMaterialDoubleSided = 1u;  // Material.emission.w bit
+VKMC_CONST uint kMaterialDoubleSided = 1u;  // Material.flags bit
 VKMC_CONST uint kCameraPerspective = 0u;
 VKMC_CONST uint kCameraOrthographic = 1u;
 VKMC_CONST uint kRouletteTableDepths = 16u;  // depths with their own efficiency-roulette scale
@@ -90,8 +90,12 @@ struct ShadowRay {
 
 struct Material {
   vec4 baseColor;  // rgb, a: alpha factor
-  vec4 emission;   // rgb: emitted radiance (factor x strength), w: flag bits as float bits
-  vec4 params;     // x: metallic, y: roughness, z: specular factor, w: unused
+  vec3 emission;   // emitted radiance (factor x strength)
+  uint flags;      // kMaterial* bits
+  float metallic;
+  float roughness;
+  float specular;  // KHR_materials_specular's specularFactor
+  float unusedParam;
 };
 
 // Film of one batch: float partial sums, folded into double on the host every batch. A channel whose magnitude
@@ -174,7 +178,7 @@ namespace vkmc::gpu {
 static_assert(sizeof(PathState) == 80);
 static_assert(offsetof(PathState, pixel) == 64 && offsetof(PathState, rootPath) == 76);
 static_assert(sizeof(ShadowRay) == 48);
-static_assert(sizeof(Material) == 48);
+static_assert(sizeof(Material) == 48 && offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32);
 static_assert(sizeof(FilmPixel) == 64);
 static_assert(sizeof(Control) == 144);
 static_assert(offsetof(Control, deepArgs) == 96);
