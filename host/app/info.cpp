@@ -21,6 +21,9 @@ const char* specName(uint32_t id) {
     case SPEC_WORKGROUP_SIZE: return "workgroup_size";
     case SPEC_HAS_LIGHTS: return "has_lights";
     case SPEC_HAS_GLOSSY: return "has_glossy";
+    case SPEC_HAS_TEXTURES: return "has_textures";
+    case SPEC_HAS_NORMAL_MAPS: return "has_normal_maps";
+    case SPEC_HAS_ALPHA: return "has_alpha";
     case SPEC_RR_MODE: return "rr_mode";  // the key rr, named as info has always shown it
     case SPEC_RECORD_DEPTH_STATS: return "record_depth_stats";
   }
@@ -45,10 +48,10 @@ int runInfo(const RenderOptions& options) {
               static_cast<unsigned long long>(scene.degenerateTriangles), f.materials, scene.cameras.size());
   std::printf(
       "features     emitters %s (%u emissive triangles), glossy %s, metallic %s, non-default specular %s,\n"
-      "             double-sided %s, textures %s, punctual lights %s\n",
+      "             double-sided %s, textures %s (%zu), normal maps %s, alpha %s, punctual lights %s\n",
       f.emitters() ? "yes" : "no", f.emissiveTriangles, f.glossy ? "yes" : "no", f.metallic ? "yes" : "no",
-      f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.textures ? "yes" : "no",
-      f.punctualLights ? "yes" : "no");
+      f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.textures ? "yes" : "no", scene.textures.size(),
+      f.normalMaps ? "yes" : "no", f.alpha ? "yes" : "no", f.punctualLights ? "yes" : "no");
   std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   const BvhStats& b = bvh.stats;

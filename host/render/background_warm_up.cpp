@@ -21,9 +21,10 @@ void warmOnSecondDevice(const std::vector<KernelSource>& kernels) {
   constexpr VkDeviceSize kBytes = (1 << 16) + 48;
   vk::Buffer storage(ctx, kBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
   std::memset(storage.mapped(), 0, kBytes);
-  for (uint32_t b = BINDING_MATERIALS; b < BINDING_COUNT; ++b) layout.bindStorage(b, storage);
+  for (uint32_t b = 0; b < BINDING_COUNT; ++b)
+    if (!vk::isTexelBinding(b)) layout.bindStorage(b, storage);
   std::vector<vk::Buffer> views;
-  for (uint32_t binding : {BINDING_TRIANGLES, BINDING_TRIANGLE_INFO, BINDING_BVH_NODES, BINDING_LIGHTS}) {
+  for (uint32_t binding : gpu::kTexelBindings) {
     views.emplace_back(ctx, kBytes, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::HostVisible);
     std::memset(views.back().mapped(), 0, kBytes);
     views.back().createView(sceneTexelFormat(binding));

@@ -13,6 +13,9 @@
 #include "../shaders/shared/scene_layout.h"
 #include "error.h"
 #include "render/alias_table.h"
+#include "render/gpu_textures.h"
+#include "scene/scene_features.h"
+#include "scene/texture_sampler.h"
 
 namespace vkmc {
 namespace {
@@ -21,13 +24,15 @@ namespace {
 VkFormat formatOfQualifier(std::string_view qualifier) {
   if (qualifier == "rgba32f") return VK_FORMAT_R32G32B32A32_SFLOAT;
   if (qualifier == "rgba32ui") return VK_FORMAT_R32G32B32A32_UINT;
+  if (qualifier == "r32ui") return VK_FORMAT_R32_UINT;
   throw Error("internal error: no VkFormat for the texel format " + std::string(qualifier));
 }
 #define VKMC_TOKEN_TEXT(x) #x
 #define VKMC_MACRO_TEXT(x) VKMC_TOKEN_TEXT(x)
 
-vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, uint32_t binding, const char* name) {
-  uint64_t texels = bytes / 16;
+vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, uint32_t binding, const char* name,
+                           size_t texelBytes = 16) {
+  uint64_t texels = bytes / texelBytes;
   if (texels > ctx.properties().limits.maxTexelBufferElements)
     throw Error(std::string("scene too big for the device: ") + name + " needs " + std::to_string(texels) +
                 " texels, the device allows " + std::to_string(ctx.properties().limits.maxTexelBufferElements));
@@ -45,6 +50,9 @@ VkFormat sceneTexelFormat(uint32_t binding) {
     case BINDING_TRIANGLE_INFO: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_TRIANGLE_INFO));
     case BINDING_BVH_NODES: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_BVH_NODES));
     case BINDING_LIGHTS: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_LIGHTS));
+    case BINDING_TEXTURE_TEXELS: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_TEXTURE_TEXELS));
+    case BINDING_TEXTURES: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_TEXTURES));
+    case BINDING_TRIANGLE_ATTRIBUTES: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_TRIANGLE_ATTRIBUTES));
   }
   throw Error("internal error: binding " + std::to_string(binding) + " is not a scene texel binding");
 }
@@ -80,8 +88,10 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
     const Material& m = scene.materials[scene.materialIds[src]];
     if (m.isEmissive() && triangleArea[i] > 0.0f) {
       double sides = m.doubleSided ? 2.0 : 1.0;
-      // In double: a finite emission near FLT_MAX times area and pi would overflow float.
-      power.push_back(double(gpu::luminance(m.emission)) * double(triangleArea[i]) * double(gpu::kPi) * sides);
+      // In double: a finite emission near FLT_MAX times area and pi would overflow float. A textured emitter
+      // is weighted by its mean emission over its area.
+      glm::vec3 emission = averageEmission(scene, src);
+      power.push_back(double(gpu::luminance(emission)) * double(triangleArea[i]) * double(gpu::kPi) * sides);
       lightTriangles.push_back(i);
     }
   }
@@ -111,8 +121,9 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
     glm::vec4* texels = &triTexels[gpu::kTriangleTexels * i];
     for (int k = 0; k < 3; ++k) texels[k] = glm::vec4(scene.positions[3 * src + k], 0.0f);
     texels[gpu::kTriangleLightPmfTexel].w = lightPmf[i];
+    const Material& m = scene.materials[scene.materialIds[src]];
     infoTexels[i] = gpu::encodeTriangleInfo(scene.normals[3 * src], scene.normals[3 * src + 1], scene.normals[3 * src + 2],
-                                            scene.materialIds[src]);
+                                            scene.materialIds[src], m.alphaMode != AlphaMode::Opaque);
   }
 
   std::vector<gpu::Material> mats;
@@ -120,10 +131,16 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
     gpu::Material g{};
     g.baseColor = glm::vec4(m.baseColor, m.alpha);
     g.emission = m.emission;
-    g.flags = m.doubleSided ? gpu::kMaterialDoubleSided : 0u;
+    g.flags = (m.doubleSided ? gpu::kMaterialDoubleSided : 0u) | (m.alphaMode == AlphaMode::Mask ? gpu::kMaterialAlphaMask : 0u) |
+              (m.alphaMode == AlphaMode::Blend ? gpu::kMaterialAlphaBlend : 0u);
     g.metallic = m.metallic;
     g.roughness = m.roughness;
     g.specular = m.specular;
+    g.alphaCutoff = m.alphaCutoff;
+    g.baseColorTexture = textureSlot(m.baseColorTexture);
+    g.metallicRoughnessTexture = textureSlot(m.metallicRoughnessTexture);
+    g.normalTexture = textureSlot(m.normalTexture);
+    g.emissiveTexture = textureSlot(m.emissiveTexture);
     mats.push_back(g);
   }
 
@@ -135,6 +152,18 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
     binaryBvhNodes_ =
         makeTexelBuffer(ctx, bvh.nodes.data(), bvh.nodes.size() * sizeof(BvhGpuNode), BINDING_BVH_NODES, "binary BVH nodes");
   lights_ = makeTexelBuffer(ctx, lightTexels.data(), lightTexels.size() * 16, BINDING_LIGHTS, "lights");
+  // Textures and attributes only where a material reads them (SceneFeatures::textures); one texel otherwise.
+  bool textured = scanFeatures(scene).textures;
+  PackedTextures packed = textured ? packTextures(scene) : PackedTextures{};
+  if (packed.texels.empty()) packed.texels.push_back(0u);
+  if (packed.infos.empty()) packed.infos.emplace_back(0u);
+  std::vector<glm::uvec4> attributes = textured ? packTriangleAttributes(scene, bvh.triangleOrder) : std::vector<glm::uvec4>{};
+  if (attributes.empty()) attributes.emplace_back(0u);
+  textureTexels_ =
+      makeTexelBuffer(ctx, packed.texels.data(), packed.texels.size() * 4, BINDING_TEXTURE_TEXELS, "texture texels", 4);
+  textures_ = makeTexelBuffer(ctx, packed.infos.data(), packed.infos.size() * 16, BINDING_TEXTURES, "textures");
+  triangleAttributes_ = makeTexelBuffer(ctx, attributes.data(), attributes.size() * 16, BINDING_TRIANGLE_ATTRIBUTES,
+                                        "triangle attributes");
   materials_ =
       vk::Buffer(ctx, mats.size() * sizeof(gpu::Material), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   materials_.upload(mats.data(), mats.size() * sizeof(gpu::Material));
@@ -142,7 +171,9 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
                        {"triangle_info", infoTexels.size() * 16},
                        {"bvh_nodes", bvh.wideNodes.size() * sizeof(BvhWideNode)},
                        {"lights", lightTexels.size() * 16},
-                       {"materials", mats.size() * sizeof(gpu::Material)}};
+                       {"materials", mats.size() * sizeof(gpu::Material)},
+                       {"texture_texels", packed.texels.size() * 4},
+                       {"triangle_attributes", attributes.size() * 16}};
 }
 
 void GpuScene::bindTo(vk::KernelLayout& layout, bool binaryBvh) const {
@@ -152,6 +183,9 @@ void GpuScene::bindTo(vk::KernelLayout& layout, bool binaryBvh) const {
   layout.bindTexel(BINDING_BVH_NODES, binaryBvh ? binaryBvhNodes_ : bvhNodes_);
   layout.bindTexel(BINDING_LIGHTS, lights_);
   layout.bindStorage(BINDING_MATERIALS, materials_);
+  layout.bindTexel(BINDING_TEXTURE_TEXELS, textureTexels_);
+  layout.bindTexel(BINDING_TEXTURES, textures_);
+  layout.bindTexel(BINDING_TRIANGLE_ATTRIBUTES, triangleAttributes_);
 }
 
 }  // namespace vkmc

@@ -49,6 +49,7 @@ class GpuScene {
  private:
   GpuSceneInfo info_;
   vk::Buffer triangles_, triangleInfo_, bvhNodes_, binaryBvhNodes_, lights_, materials_;
+  vk::Buffer textureTexels_, textures_, triangleAttributes_;
 };
 
 }  // namespace vkmc

@@ -39,6 +39,9 @@ KernelPlan planKernels(const RenderSettings& s) {
   plan.specs = {{SPEC_WORKGROUP_SIZE, s.workgroupSize},
                 {SPEC_HAS_LIGHTS, s.features.emitters() ? 1u : 0u},
                 {SPEC_HAS_GLOSSY, s.features.glossy ? 1u : 0u},
+                {SPEC_HAS_TEXTURES, s.features.textures ? 1u : 0u},
+                {SPEC_HAS_NORMAL_MAPS, s.features.normalMaps ? 1u : 0u},
+                {SPEC_HAS_ALPHA, s.features.alpha ? 1u : 0u},
                 {SPEC_RECORD_DEPTH_STATS, s.recordDepthStats ? 1u : 0u}};
   for (const vk::SpecConstant& c : est.specConstants()) plan.specs.push_back(c);
   return plan;

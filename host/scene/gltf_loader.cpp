@@ -18,14 +18,10 @@
 #include "../shaders/shared/geometry.h"
 #include "error.h"
 #include "scene/gltf_extensions.h"
+#include "scene/gltf_textures.h"
 
 namespace vkmc {
 namespace {
-
-// Textures are not used yet; skipping the decode keeps loading fast (DamagedHelmet has 5 large JPEGs).
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
-  return true;
-}
 
 constexpr size_t kMaxNodeVisits = size_t(1) << 22;
 
@@ -139,6 +135,51 @@ uint32_t readIndex(const AccessorView& v, size_t i) {
   }
 }
 
+// Element i of a float or normalized-integer attribute as up to 4 floats (glTF 3.11's normalization).
+glm::vec4 readFloats(const AccessorView& v, size_t i, glm::vec4 fallback) {
+  const unsigned char* p = v.data + i * v.stride;
+  size_t n = componentCount(v.type);
+  glm::vec4 r = fallback;
+  for (size_t c = 0; c < n && c < 4; ++c) {
+    switch (v.componentType) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: std::memcpy(&r[c], p + 4 * c, 4); break;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: r[c] = p[c] / 255.0f; break;
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        uint16_t x;
+        std::memcpy(&x, p + 2 * c, 2);
+        r[c] = x / 65535.0f;
+        break;
+      }
+      default: r[c] = 0.0f;
+    }
+  }
+  return r;
+}
+
+glm::vec3 anyPerpendicular(const glm::vec3& n) {
+  glm::vec3 a = std::abs(n.x) > 0.9f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+  return glm::normalize(glm::cross(n, a));
+}
+
+// A triangle's tangent (direction of increasing u) and bitangent sign from its uv derivatives, in world space.
+glm::vec4 uvTangent(const glm::vec3 p[3], const glm::vec2 uv[3], const glm::vec3& n) {
+  glm::vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
+  glm::vec2 d1 = uv[1] - uv[0], d2 = uv[2] - uv[0];
+  float det = d1.x * d2.y - d2.x * d1.y;
+  if (!(std::abs(det) > 0.0f)) return glm::vec4(anyPerpendicular(n), 1.0f);
+  glm::vec3 t = (e1 * d2.y - e2 * d1.y) / det, b = (e2 * d1.x - e1 * d2.x) / det;
+  float sign = glm::dot(glm::cross(n, t), b) < 0.0f ? -1.0f : 1.0f;
+  return glm::vec4(t, sign);
+}
+
+// A per-corner attribute: allocated (with defaults for earlier corners) when the first primitive has it.
+template <typename T>
+void pushCorner(std::vector<T>& values, size_t corner, const std::optional<T>& value, const T& fallback) {
+  if (values.empty() && !value) return;
+  if (values.size() < corner) values.resize(corner, fallback);
+  values.push_back(value.value_or(fallback));
+}
+
 glm::mat4 localTransform(const tinygltf::Node& node) {
   if (node.matrix.size() == 16) {
     glm::mat4 m;
@@ -164,7 +205,8 @@ double extensionNumber(const tinygltf::ExtensionMap& ext, const char* extension,
   return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
 }
 
-Material convertMaterial(const tinygltf::Material& m, int index, bool& usesTextures, std::vector<std::string>& warnings) {
+Material convertMaterial(const tinygltf::Material& m, int index, const std::vector<Texture>& textures,
+                         std::vector<std::string>& warnings) {
   Material out;
   const auto& pbr = m.pbrMetallicRoughness;
   std::string name = "material " + std::to_string(index);
@@ -197,8 +239,16 @@ Material convertMaterial(const tinygltf::Material& m, int index, bool& usesTextu
     throw Error(name + ": a factor is NaN or infinite");
   if (glm::any(glm::lessThan(out.emission, glm::vec3(0.0f))) || glm::any(glm::lessThan(out.baseColor, glm::vec3(0.0f))))
     throw Error(name + ": negative color or emission factor");
-  usesTextures = usesTextures || pbr.baseColorTexture.index >= 0 || pbr.metallicRoughnessTexture.index >= 0 ||
-                 m.normalTexture.index >= 0 || m.emissiveTexture.index >= 0 || m.occlusionTexture.index >= 0;
+  out.baseColorTexture = convertTextureRef(pbr.baseColorTexture, textures, name + " baseColorTexture", warnings);
+  out.metallicRoughnessTexture =
+      convertTextureRef(pbr.metallicRoughnessTexture, textures, name + " metallicRoughnessTexture", warnings);
+  out.normalTexture = convertTextureRef(m.normalTexture, textures, name + " normalTexture", warnings);
+  out.emissiveTexture = convertTextureRef(m.emissiveTexture, textures, name + " emissiveTexture", warnings);
+  // occlusionTexture is for rasterizers' ambient-occlusion approximations; a path tracer computes occlusion.
+  if (m.alphaMode == "MASK") out.alphaMode = AlphaMode::Mask;
+  if (m.alphaMode == "BLEND") out.alphaMode = AlphaMode::Blend;
+  out.alphaCutoff = static_cast<float>(m.alphaCutoff);
+  if (!std::isfinite(out.alphaCutoff)) throw Error(name + ": alphaCutoff is not finite");
   return out;
 }
 
@@ -258,6 +308,16 @@ class Flattener {
         throw Error("primitive refers to missing material " + std::to_string(materialIndex));
       uint32_t materialId = materialIndex < 0 ? static_cast<uint32_t>(scene_.materials.size() - 1)  // default material
                                               : static_cast<uint32_t>(materialIndex);
+      auto attribute = [&](const char* name, int minComponents) -> std::optional<AccessorView> {
+        auto it = prim.attributes.find(name);
+        if (it == prim.attributes.end()) return std::nullopt;
+        AccessorView v = viewAccessor(model_, it->second, name);
+        if (v.count != positions.count || componentCount(v.type) < size_t(minComponents)) return std::nullopt;
+        return v;
+      };
+      std::optional<AccessorView> uv0 = attribute("TEXCOORD_0", 2), uv1 = attribute("TEXCOORD_1", 2);
+      std::optional<AccessorView> colors = attribute("COLOR_0", 3), tangents = attribute("TANGENT", 4);
+      bool normalMapped = scene_.materials[materialId].normalTexture.present();
       size_t triangles = triangleCount(prim.mode, indices ? indices->count : positions.count);
       if (scene_.triangleCount() + triangles > maxTriangles_)
         throw Error("scene too big: more than " + std::to_string(maxTriangles_) +
@@ -293,10 +353,31 @@ class Flattener {
           continue;
         }
         glm::vec3 geometric = glm::normalize(glm::vec3(c));
+        glm::vec2 uv[3];
+        for (int k = 0; k < 3; ++k) uv[k] = uv0 ? glm::vec2(readFloats(*uv0, idx[k], glm::vec4(0.0f))) : glm::vec2(0.0f);
+        glm::vec4 faceTangent = normalMapped ? uvTangent(p, uv, geometric) : glm::vec4(0.0f);
         for (int k = 0; k < 3; ++k) {
           glm::vec3 nk = normals ? normalMatrix * readVec3(*normals, idx[k]) : geometric;
           float nl = glm::length(nk);
           n[k] = (nl > 0.0f && std::isfinite(nl)) ? nk / nl : geometric;
+          size_t corner = scene_.positions.size();
+          pushCorner(scene_.uv0, corner, uv0 ? std::optional<glm::vec2>(uv[k]) : std::nullopt, glm::vec2(0.0f));
+          pushCorner(scene_.uv1, corner,
+                     uv1 ? std::optional<glm::vec2>(glm::vec2(readFloats(*uv1, idx[k], glm::vec4(0.0f)))) : std::nullopt,
+                     glm::vec2(0.0f));
+          pushCorner(scene_.colors, corner,
+                     colors ? std::optional<glm::vec4>(readFloats(*colors, idx[k], glm::vec4(1.0f))) : std::nullopt,
+                     glm::vec4(1.0f));
+          std::optional<glm::vec4> tangent;
+          if (normalMapped) {
+            glm::vec4 t = tangents ? readFloats(*tangents, idx[k], glm::vec4(0.0f)) : faceTangent;
+            if (tangents) t = glm::vec4(glm::mat3(world) * glm::vec3(t), flip ? -t.w : t.w);
+            glm::vec3 ortho = glm::vec3(t) - n[k] * glm::dot(n[k], glm::vec3(t));
+            float ol = glm::length(ortho);
+            tangent = ol > 1e-20f && std::isfinite(ol) ? glm::vec4(ortho / ol, t.w < 0.0f ? -1.0f : 1.0f)
+                                                       : glm::vec4(anyPerpendicular(n[k]), 1.0f);
+          }
+          pushCorner(scene_.tangents, corner, tangent, glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
           scene_.positions.push_back(p[k]);
           scene_.normals.push_back(n[k]);
           scene_.bounds.grow(p[k]);
@@ -420,17 +501,18 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
                          const std::string& path, const LoadLimits& limits) {
   tinygltf::Model model;
   std::vector<std::string> extensionWarnings;
+  ImageDecoder imageDecoder;
   try {
     std::string_view json =
         binary ? glbJsonChunk(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     GltfJsonFacts facts = scanGltfJson(json, limits.input);
     extensionWarnings = checkExtensions(facts.extensionsUsed, facts.extensionsRequired);
     uint64_t largestBuffer = facts.largestBuffer;
-    // Buffers must match their declared byteLength exactly (tinygltf checks after reading); images are not
-    // decoded yet, so anything beyond the largest buffer or 256 MiB is refused before it is read.
+    // Buffers must match their declared byteLength exactly (tinygltf checks after reading); an image file
+    // beyond the largest buffer or 256 MiB is refused before it is read, its decoded size by the image decoder.
     SafeFs safeFs{std::min(limits.input.maxExternalFileBytes, std::max<uint64_t>(largestBuffer, uint64_t(1) << 28))};
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(skipImage, nullptr);
+    loader.SetImageLoader(decodeGltfImage, &imageDecoder);
     loader.SetFsCallbacks({safeFileExists, noExpansion, safeReadWholeFile, noWrite, &safeFs});
     std::string err, warn;
     bool ok = binary
@@ -447,13 +529,12 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
 
   Scene scene;
   scene.path = path;
-  bool usesTextures = false;
+  for (const std::string& failure : imageDecoder.failures) scene.warnings.push_back(failure);
+  scene.textures = convertTextures(model, scene.warnings);
   for (size_t i = 0; i < model.materials.size(); ++i)
-    scene.materials.push_back(convertMaterial(model.materials[i], static_cast<int>(i), usesTextures, scene.warnings));
+    scene.materials.push_back(convertMaterial(model.materials[i], static_cast<int>(i), scene.textures, scene.warnings));
   Material fallback;  // glTF default material: white, fully metallic and rough (Lambert here)
   scene.materials.push_back(fallback);
-  if (usesTextures) scene.warnings.push_back("textures are not supported yet and were ignored");
-  scene.usesTextures = usesTextures;
   for (const std::string& e : model.extensionsUsed) scene.hasPunctualLights |= e == "KHR_lights_punctual";
   scene.warnings.insert(scene.warnings.end(), extensionWarnings.begin(), extensionWarnings.end());
 

@@ -9,6 +9,29 @@
 
 namespace vkmc {
 
+// A material's reference to a texture (glTF textureInfo), with KHR_texture_transform as a 2x3 matrix on uv.
+struct TextureRef {
+  int texture = -1;  // index into Scene::textures; -1: none
+  int texCoord = 0;  // TEXCOORD_0 or _1
+  glm::vec3 uvRow0{1.0f, 0.0f, 0.0f};  // u' = dot(uvRow0, (u, v, 1))
+  glm::vec3 uvRow1{0.0f, 1.0f, 0.0f};  // v' = dot(uvRow1, (u, v, 1))
+  float scale = 1.0f;                  // normalTexture.scale (1 for the other slots)
+  bool present() const { return texture >= 0; }
+};
+
+enum class AlphaMode { Opaque, Mask, Blend };
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+
+// A decoded image with its sampler's addressing (glTF texture = image + sampler): 8-bit RGBA as stored (sRGB
+// or linear is the slot's business: baseColor and emissive are sRGB, the others linear).
+struct Texture {
+  uint32_t width = 0, height = 0;
+  std::vector<uint32_t> texels;  // RGBA8, row-major from the image's top row (uv (0,0) is the top-left corner)
+  TextureWrap wrapS = TextureWrap::Repeat, wrapT = TextureWrap::Repeat;
+  bool nearest = false;  // magFilter NEAREST; otherwise bilinear
+  std::string name;
+};
+
 struct Material {
   glm::vec3 baseColor{1.0f};
   float alpha = 1.0f;
@@ -17,6 +40,13 @@ struct Material {
   float roughness = 1.0f;
   float specular = 1.0f;  // KHR_materials_specular specularFactor
   bool doubleSided = false;
+  AlphaMode alphaMode = AlphaMode::Opaque;
+  float alphaCutoff = 0.5f;
+  TextureRef baseColorTexture, metallicRoughnessTexture, normalTexture, emissiveTexture;
+  bool textured() const {
+    return baseColorTexture.present() || metallicRoughnessTexture.present() || normalTexture.present() ||
+           emissiveTexture.present();
+  }
   bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
 
@@ -52,14 +82,18 @@ struct Scene {
   std::vector<glm::vec3> positions;   // 3 per triangle, world space, counter-clockwise front faces
   std::vector<glm::vec3> normals;     // 3 per triangle, world space (geometric normal where the file has none)
   std::vector<uint32_t> materialIds;  // 1 per triangle
+  // Per-corner attributes parallel to positions, each empty when no primitive of the scene has it:
+  std::vector<glm::vec2> uv0, uv1;  // TEXCOORD_0 / _1 ((0,0) where a primitive lacks them)
+  std::vector<glm::vec4> tangents;  // world-space unit tangent, w = bitangent sign (normal-mapped materials only)
+  std::vector<glm::vec4> colors;    // COLOR_0, linear RGBA ((1,1,1,1) where a primitive lacks it)
   std::vector<Material> materials;
+  std::vector<Texture> textures;
   std::vector<Camera> cameras;  // camera instances in node order
   Aabb bounds;
   uint64_t degenerateTriangles = 0;  // zero-area triangles skipped
   uint64_t skippedPrimitives = 0;    // non-triangle primitives skipped
   std::vector<std::string> warnings;
   std::string path;
-  bool usesTextures = false;       // some material references a texture (ignored for now)
   bool hasPunctualLights = false;  // KHR_lights_punctual present (ignored for now)
 
   size_t triangleCount() const { return materialIds.size(); }

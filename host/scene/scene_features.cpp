@@ -7,7 +7,6 @@ const char* SceneFeatures::sizeClass() const { return triangles < 1000 ? "small"
 
 std::vector<std::string> SceneFeatures::unsupported() const {
   std::vector<std::string> out;
-  if (textures) out.push_back("textures (ignored)");
   if (punctualLights) out.push_back("KHR_lights_punctual (ignored)");
   return out;
 }
@@ -25,9 +24,12 @@ SceneFeatures scanFeatures(const Scene& scene) {
     f.metallic |= m.metallic > 0.0f;
     f.nonDefaultSpecular |= m.specular != 1.0f;
     f.doubleSided |= m.doubleSided;
+    f.textures |= m.textured();
+    f.normalMaps |= m.normalTexture.present();
+    f.alpha |= m.alphaMode != AlphaMode::Opaque;
   }
+  f.textures |= !scene.colors.empty();
   for (uint32_t m : scene.materialIds) f.emissiveTriangles += scene.materials[m].isEmissive() ? 1 : 0;
-  f.textures = scene.usesTextures;
   f.punctualLights = scene.hasPunctualLights;
   return f;
 }
@@ -37,6 +39,9 @@ SceneFeatures allFeatures(const SceneFeatures& scene) {
   f.glossy = true;
   f.metallic = true;
   f.emissiveTriangles = std::max(f.emissiveTriangles, 1u);
+  f.textures = true;
+  f.normalMaps = true;
+  f.alpha = true;
   return f;
 }
 

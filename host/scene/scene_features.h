@@ -18,7 +18,9 @@ struct SceneFeatures {
   bool metallic = false;
   bool nonDefaultSpecular = false;  // KHR_materials_specular factor other than 1
   bool doubleSided = false;
-  bool textures = false;        // referenced (not yet supported)
+  bool textures = false;    // a material samples a texture (or vertex colours tint it)
+  bool normalMaps = false;  // a material has a normal texture
+  bool alpha = false;       // a material is alpha MASK or BLEND: any-hit tests in the walks
   bool punctualLights = false;  // KHR_lights_punctual present (not yet supported)
 
   bool emitters() const { return emissiveTriangles > 0; }

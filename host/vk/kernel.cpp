@@ -8,11 +8,11 @@
 
 namespace vkmc::vk {
 
-namespace {
 bool isTexelBinding(uint32_t b) {
-  return b == BINDING_TRIANGLES || b == BINDING_TRIANGLE_INFO || b == BINDING_BVH_NODES || b == BINDING_LIGHTS;
+  for (uint32_t t : gpu::kTexelBindings)
+    if (t == b) return true;
+  return false;
 }
-}  // namespace
 
 KernelLayout::KernelLayout(Context& ctx) : ctx_(ctx) {
   std::vector<VkDescriptorSetLayoutBinding> bindings;
@@ -38,7 +38,8 @@ KernelLayout::KernelLayout(Context& ctx) : ctx_(ctx) {
   check(vkCreatePipelineLayout(ctx.device(), &pci, nullptr, &pipelineLayout_), "vkCreatePipelineLayout");
 
   std::array<VkDescriptorPoolSize, 2> sizes{
-      {{VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, 4}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT}}};
+      {{VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, uint32_t(std::size(gpu::kTexelBindings))},
+       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT}}};
   VkDescriptorPoolCreateInfo dpci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   dpci.maxSets = 1;
   dpci.poolSizeCount = static_cast<uint32_t>(sizes.size());

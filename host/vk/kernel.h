@@ -19,6 +19,9 @@ struct SpecConstant {
   uint32_t value;
 };
 
+// Whether a binding is a storage texel buffer (gpu::kTexelBindings) rather than a storage buffer.
+bool isTexelBinding(uint32_t binding);
+
 // Descriptor set layout (all bindings of layout.h), push-constant range, one descriptor set.
 class KernelLayout {
  public:

@@ -3,6 +3,7 @@
 // Declarations every kernel shares: version, spec constants, push constants, scene and queue bindings.
 #include "layout.h"
 #include "scene_layout.h"
+#include "texture_layout.h"
 #include "rng.h"
 #include "sampling.h"
 #include "geometry.h"
@@ -28,6 +29,9 @@ layout(constant_id = SPEC_CAMERA_RR_Q) const float kCameraRouletteQ = 0.0;
 layout(constant_id = SPEC_BSDF_SAMPLES) const float kBsdfSamples = 1.0;
 layout(constant_id = SPEC_RECORD_DEPTH_STATS) const uint kRecordDepthStats = 0u;
 layout(constant_id = SPEC_WALK_STATS) const uint kWalkStats = 0u;
+layout(constant_id = SPEC_HAS_TEXTURES) const uint kHasTextures = 1u;
+layout(constant_id = SPEC_HAS_NORMAL_MAPS) const uint kHasNormalMaps = 1u;
+layout(constant_id = SPEC_HAS_ALPHA) const uint kHasAlpha = 1u;
 
 layout(push_constant, std430) uniform Push { PushConstants pc; };
 
@@ -39,6 +43,9 @@ layout(binding = BINDING_TRIANGLES, TEXEL_FORMAT_TRIANGLES) uniform readonly ima
 layout(binding = BINDING_TRIANGLE_INFO, TEXEL_FORMAT_TRIANGLE_INFO) uniform readonly uimageBuffer triangleInfo;
 layout(binding = BINDING_BVH_NODES, TEXEL_FORMAT_BVH_NODES) uniform readonly uimageBuffer bvhNodes;
 layout(binding = BINDING_LIGHTS, TEXEL_FORMAT_LIGHTS) uniform readonly uimageBuffer lights;
+layout(binding = BINDING_TEXTURE_TEXELS, TEXEL_FORMAT_TEXTURE_TEXELS) uniform readonly uimageBuffer textureTexels;
+layout(binding = BINDING_TEXTURES, TEXEL_FORMAT_TEXTURES) uniform readonly uimageBuffer textureInfos;
+layout(binding = BINDING_TRIANGLE_ATTRIBUTES, TEXEL_FORMAT_TRIANGLE_ATTRIBUTES) uniform readonly uimageBuffer triangleAttributes;
 layout(binding = BINDING_MATERIALS, std430) readonly buffer Materials { Material materials[]; };
 layout(binding = BINDING_PATHS, std430) buffer Paths { PathState paths[]; };
 layout(binding = BINDING_HITS, std430) buffer Hits { vec4 hits[]; };

@@ -6,6 +6,7 @@
 #include "light_sampling.h"
 #include "mis.h"
 #include "roulette.h"
+#include "textures.glsl"
 
 struct SurfacePoint {
   vec3 p;
@@ -14,6 +15,9 @@ struct SurfacePoint {
   mat3 frame;  // shading frame; column 2 is the shading normal, on the side of ng
   bool frontFace;
   uint material;
+  vec3 b;  // barycentrics
+  SurfaceAttributes attributes;  // uvs, colour, tangent (scenes with textures or vertex colours)
+  vec3 emission;  // emitted radiance here (factor x emissive texture), set by shadeSurface
 };
 
 SurfacePoint surfaceAt(uint tri, vec2 b12, vec3 wo) {
@@ -28,19 +32,69 @@ SurfacePoint surfaceAt(uint tri, vec2 b12, vec3 wo) {
   if (!s.frontFace) s.ng = -s.ng;
   uvec4 info = imageLoad(triangleInfo, int(tri));
   s.material = triangleInfoMaterial(info);
+  s.b = b;
   vec3 n = triangleInfoNormal(info, b);
   float len = length(n);
   vec3 ns = len > 0.0 ? n / len : s.ng;
   if (dot(ns, s.ng) < 0.0) ns = -ns;
   s.frame = basisFromNormal(ns);
+  s.emission = vec3(0.0);
+  if (kHasTextures != 0u) s.attributes = attributesAt(tri, b);
   return s;
+}
+
+// The normal-mapped shading normal (tangent-space normal texture, glTF 3.9.3), on the side the unmapped one faces;
+// the unmapped one where the mapped normal would fall below the geometric surface.
+vec3 normalMapped(Material m, SurfacePoint s) {
+  vec3 n = s.frame[2];
+  vec3 t = s.attributes.tangent.xyz - n * dot(n, s.attributes.tangent.xyz);
+  float tl = length(t);
+  if (!(tl > 0.0)) return n;
+  t /= tl;
+  vec3 bt = cross(n, t) * s.attributes.tangent.w;
+  vec3 c = sampleTexture(m.normalTexture.texture, slotUv(m.normalTexture, s.attributes), false).rgb * 2.0 - 1.0;
+  c.xy *= m.normalTexture.uvRow0.w;
+  vec3 mapped = normalize(t * c.x + bt * c.y + n * c.z);
+  return dot(mapped, s.ng) > 0.0 ? mapped : n;
+}
+
+// The material's parameters at s (factors times textures and vertex colours), its emission into s.emission
+// and its normal map into s.frame.
+GltfMaterial shadeSurface(Material m, inout SurfacePoint s) {
+  vec4 base = m.baseColor;
+  float metallic = m.metallic, roughness = m.roughness;
+  s.emission = m.emission;
+  if (kHasTextures != 0u) {
+    base = baseColorAt(m, s.attributes);
+    if (hasTexture(m.metallicRoughnessTexture)) {
+      vec4 mr = sampleTexture(m.metallicRoughnessTexture.texture, slotUv(m.metallicRoughnessTexture, s.attributes), false);
+      roughness *= mr.g;
+      metallic *= mr.b;
+    }
+    if (hasTexture(m.emissiveTexture) && maxComponent(m.emission) > 0.0)
+      s.emission *= sampleTexture(m.emissiveTexture.texture, slotUv(m.emissiveTexture, s.attributes), true).rgb;
+    if (kHasNormalMaps != 0u && hasTexture(m.normalTexture)) {
+      // The tangent frame belongs to the front face: a back-face hit maps with the unflipped normal, then flips.
+      bool flipped = !s.frontFace;
+      if (flipped) s.frame[2] = -s.frame[2];
+      vec3 mapped = normalMapped(m, s);
+      s.frame = basisFromNormal(flipped ? -mapped : mapped);
+    }
+  }
+  return makeGltfMaterial(base.rgb, metallic, roughness, m.specular);
 }
 
 bool emitsToward(Material m, bool frontFace) {
   return (frontFace || (m.flags & kMaterialDoubleSided) != 0u) && maxComponent(m.emission) > 0.0;
 }
 
-GltfMaterial gltfMaterial(Material m) { return makeGltfMaterial(m.baseColor.rgb, m.metallic, m.roughness, m.specular); }
+// Emitted radiance of emitter triangle `tri` (material m) at point p: textured emitters look their texture up.
+vec3 emissionAtPoint(Material m, uint tri, vec3 p, vec3 v0, vec3 v1, vec3 v2) {
+  if (!hasTexture(m.emissiveTexture)) return m.emission;
+  vec2 b12 = barycentricsOf(p, v0, v1, v2);
+  SurfaceAttributes a = attributesAt(tri, vec3(1.0 - b12.x - b12.y, b12));
+  return m.emission * sampleTexture(m.emissiveTexture.texture, slotUv(m.emissiveTexture, a), true).rgb;
+}
 
 // The BSDF-sampling technique and its pdf (local frame). In an all-Lambertian scene (kHasGlossy = 0) the
 // glTF BRDF is baseColor / pi and its sampling is cosine sampling: the GGX code is compiled out.
@@ -113,7 +167,8 @@ bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo
   vec3 f = bsdfEval(gm, woLocal, wiLocal);
   // MIS over one BSDF sample and `samples` light samples: the light technique's pdf counts samples times.
   float weight = kMis == kMisNone ? 1.0 : misWeight(kMis, float(samples) * pdf, techniquePdf(gm, woLocal, wiLocal));
-  vec3 contribution = path.throughput.rgb * f * lm.emission * (wiLocal.z * weight / (pdf * float(samples)));
+  vec3 le = emissionAtPoint(lm, lightTri, pl, v0, v1, v2);
+  vec3 contribution = path.throughput.rgb * f * le * (wiLocal.z * weight / (pdf * float(samples)));
   if (!allFinite(contribution)) atomicAdd(control.nonfiniteLightSamples, 1u);  // still queued: it poisons the sample
   else if (!(maxComponent(contribution) > 0.0)) return false;
   if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * pixelEstimate[path.pixel]) {
@@ -125,7 +180,7 @@ bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo
   vec3 target = offsetRayOrigin(pl, ls.pointError, nl, -wi);
   ray.origin = vec4(origin, 1.0 - 1e-4);
   ray.direction = vec4(target - origin, uintBitsToFloat(path.rootPath));
-  ray.contribution = vec4(contribution, 0.0);
+  ray.contribution = vec4(contribution, uintBitsToFloat(alphaKey(key, lightDim(depth, j, 0u) | 0x80000000u)));
   return true;
 }
 
@@ -145,7 +200,7 @@ vec3 emissionAt(PathState path, SurfacePoint s, Material m, uint tri, vec4 hit, 
       weight = misWeight(kMis, path.direction.w, float(lightSamplesAt(path.depth - 1u)) * pl);
     }
   }
-  return path.throughput.rgb * m.emission * weight;
+  return path.throughput.rgb * s.emission * weight;
 }
 
 // Below the depth cap a vertex samples lights; it also continues unless, with light sampling alone (NEE

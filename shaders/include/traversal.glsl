@@ -4,8 +4,15 @@
 // docs/performance.md, "The traversal kernel's design". `complete` says whether a walk ended on its own (llvmpipe's
 // loop limiter can end a shader loop silently); an incomplete walk never passes for a hit or a miss.
 #include "bvh_layout.h"
+#include "textures.glsl"
 #define TRAVERSAL_STACK_SIZE 96
 const uint kNoEntry = kBvhNoEntry;
+
+// The key of the ray being walked, for stochastic alpha (surfacePresent): set by the caller before a walk.
+uint walkRayKey = 0u;
+
+// A candidate hit h = (t, b1, b2) on triangle tri counts unless the triangle is alpha-tested and absent there.
+bool hitCounts(vec3 h, uint tri) { return h.x > 0.0 && (kHasAlpha == 0u || surfacePresent(tri, h.yz, walkRayKey)); }
 
 uint leafFirst(uint entry) { return bvhLeafFirst(entry); }
 uint leafEnd(uint entry) { return bvhLeafFirst(entry) + bvhLeafCount(entry); }
@@ -18,7 +25,7 @@ bool intersectLeaf(uint entry, RayShear shear, inout vec4 best) {
     vec3 v0, v1, v2;
     triangleVertices(tri, v0, v1, v2);
     vec3 h = intersectTriangle(shear, v0, v1, v2, best.x);
-    if (h.x > 0.0) {
+    if (hitCounts(h, tri)) {
       best = vec4(h, uintBitsToFloat(tri));
       found = true;
     }
@@ -124,9 +131,9 @@ void triangleStep(inout Walk w, RayShear shear, bool anyHit, inout float bestT, 
   if (w.triNext < w.triEnd) {
     vec3 v0, v1, v2;
     triangleVertices(w.triNext, v0, v1, v2);
-    float t = intersectTriangle(shear, v0, v1, v2, bestT).x;
-    if (t > 0.0) {
-      bestT = t;
+    vec3 h = intersectTriangle(shear, v0, v1, v2, bestT);
+    if (hitCounts(h, w.triNext)) {
+      bestT = h.x;
       bestTri = w.triNext;
       if (anyHit) {
         w.node = kNoEntry;

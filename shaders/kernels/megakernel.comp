@@ -37,6 +37,7 @@ void main() {
     vec3 dir = anyHit ? ray.direction.xyz : path.direction.xyz;
     float tMax = anyHit ? ray.origin.w : 3.0e38;
     bool complete;
+    walkRayKey = anyHit ? floatBitsToUint(ray.contribution.w) : alphaKey(path.rngKey, bounceDim(path.depth, 0u));
     vec4 hit = traceRay(origin, dir, tMax, anyHit, complete);
     if (anyHit) {
       if (!complete) {  // as in shadow: counted, and the sample poisoned
@@ -61,8 +62,8 @@ void main() {
       s = surfaceAt(tri, hit.yz, wo);
       Material m = materials[s.material];
       uint depth = path.depth;
+      gm = shadeSurface(m, s);
       gathered = emissionAt(path, s, m, tri, hit, wo);
-      gm = gltfMaterial(m);
       woLocal = wo * s.frame;
       samples = belowDepthCap(depth) && kHasLights != 0u && kNee != 0u ? lightSamplesAt(depth) : 0u;
       j = 0u;

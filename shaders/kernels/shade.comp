@@ -48,8 +48,8 @@ void main() {
   SurfacePoint s = surfaceAt(tri, hit.yz, wo);
   Material m = materials[s.material];
   uint depth = path.depth;
+  GltfMaterial gm = shadeSurface(m, s);
   vec3 gathered = emissionAt(path, s, m, tri, hit, wo);
-  GltfMaterial gm = gltfMaterial(m);
   vec3 woLocal = wo * s.frame;
   if (belowDepthCap(depth) && kHasLights != 0u && kNee != 0u) {
     uint samples = lightSamplesAt(depth);

@@ -16,6 +16,7 @@ void main() {
   ShadowRay s = shadowRays[slot];
   vec4 h;
   bool complete;
+  walkRayKey = floatBitsToUint(s.contribution.w);
   if (!traceItem(slot, s.origin.xyz, s.direction.xyz, s.origin.w, true, h, complete)) return;
   if (!complete) {  // as in intersect: counted, and the sample poisoned
     atomicAdd(control.walksCut, 1u);

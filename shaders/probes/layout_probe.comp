@@ -18,6 +18,7 @@ void putf(float v) { put(floatBitsToUint(v)); }
 void put3(vec3 v) { putf(v.x); putf(v.y); putf(v.z); }
 void put4(vec4 v) { putf(v.x); putf(v.y); putf(v.z); putf(v.w); }
 void put4u(uvec4 v) { put(v.x); put(v.y); put(v.z); put(v.w); }
+void putSlot(TextureSlot t) { put4(t.uvRow0); put4(t.uvRow1); put(t.texture); put(t.texCoord); put(t.unusedSlot0); put(t.unusedSlot1); }
 
 void echoStructs() {
   PathState p = paths[0];
@@ -27,7 +28,8 @@ void echoStructs() {
   put4(r.origin); put4(r.direction); put4(r.contribution);
   Material m = materials[0];
   put4(m.baseColor); put3(m.emission); put(m.flags);
-  putf(m.metallic); putf(m.roughness); putf(m.specular); putf(m.unusedParam);
+  putf(m.metallic); putf(m.roughness); putf(m.specular); putf(m.alphaCutoff);
+  putSlot(m.baseColorTexture); putSlot(m.metallicRoughnessTexture); putSlot(m.normalTexture); putSlot(m.emissiveTexture);
   FilmPixel f = film[0];
   put4(f.sum); put4(f.sumSq); put4(f.sumHigh); put4(f.sumSqHigh);
   put(control.rayQueueCount[0]); put(control.rayQueueCount[1]); put(control.shadowQueueCount); put(control.splitChildren);

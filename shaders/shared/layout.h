@@ -22,7 +22,10 @@
 #define BINDING_DEPTH_STATS 15     // vec2[pool * kRouletteTableDepths]: pilot (beta, gathered) per path and depth
 #define BINDING_QUEUE_STATS 16     // uvec2[kQueueStatsBounces]: per bounce, paths queued (x) and shadow rays (y)
 #define BINDING_DEEP_WALKS 17      // uint[]: items whose walk outgrew the register stack (deferred_walk.glsl)
-#define BINDING_COUNT 18
+#define BINDING_TEXTURE_TEXELS 18       // uimageBuffer: every texture's RGBA8 texels, one r32ui each (texture_layout.h)
+#define BINDING_TEXTURES 19             // uimageBuffer: one TextureInfo texel per texture (texture_layout.h)
+#define BINDING_TRIANGLE_ATTRIBUTES 20  // uimageBuffer: per-triangle uvs, tangents, colours (texture_layout.h)
+#define BINDING_COUNT 21
 
 // Texel formats of the scene bindings as GLSL image-format qualifiers (common.glsl declares the bindings with
 // them); the host derives each VkFormat from the same token (sceneTexelFormat in host/render/gpu_scene.cpp).
@@ -30,6 +33,9 @@
 #define TEXEL_FORMAT_TRIANGLE_INFO rgba32ui
 #define TEXEL_FORMAT_BVH_NODES rgba32ui
 #define TEXEL_FORMAT_LIGHTS rgba32ui
+#define TEXEL_FORMAT_TEXTURE_TEXELS r32ui
+#define TEXEL_FORMAT_TEXTURES rgba32ui
+#define TEXEL_FORMAT_TRIANGLE_ATTRIBUTES rgba32ui
 
 // Specialization constant ids.
 #define SPEC_WORKGROUP_SIZE 0
@@ -53,13 +59,19 @@
 #define SPEC_HAS_GLOSSY 19           // 0: every material is Lambertian; GGX code compiled out
 #define SPEC_RECORD_DEPTH_STATS 18   // 1: the efficiency-roulette pilot records per-depth statistics
 #define SPEC_BSDF_SAMPLES 17         // float: continuations per hit below SPEC_SPLIT_DEPTH (1 = no splitting)
+#define SPEC_HAS_TEXTURES 21         // 0: no material samples a texture or vertex colour; texture code compiled out
+#define SPEC_HAS_NORMAL_MAPS 22      // 0: no normal textures
+#define SPEC_HAS_ALPHA 23            // 0: every material opaque; the walks' alpha tests compiled out
 #define SPEC_WALK_STATS 20           // trace_rays: 1 = count the register-stack walk's steps into Control.walkStats
 
 VKMC_BEGIN_NAMESPACE
 
 VKMC_CONST uint kMissPrimitive = 0xffffffffu;
 VKMC_CONST uint kWorkgroupSize = 64u;
-VKMC_CONST uint kMaterialDoubleSided = 1u;  // Material.flags bit
+VKMC_CONST uint kMaterialDoubleSided = 1u;  // Material.flags bits
+VKMC_CONST uint kMaterialAlphaMask = 2u;    // alpha below alphaCutoff: the surface is not there
+VKMC_CONST uint kMaterialAlphaBlend = 4u;   // stochastic transparency: a ray passes with probability 1 - alpha
+VKMC_CONST uint kNoTexture = 0xffffffffu;
 VKMC_CONST uint kCameraPerspective = 0u;
 VKMC_CONST uint kCameraOrthographic = 1u;
 VKMC_CONST uint kRouletteTableDepths = 16u;  // depths with their own efficiency-roulette scale
@@ -85,7 +97,16 @@ struct PathState {
 struct ShadowRay {
   vec4 origin;        // xyz, w: tmax in units of |direction|
   vec4 direction;     // xyz: unnormalized (to the light point), w: path id as float bits
-  vec4 contribution;  // rgb added to the path if unoccluded, w: unused
+  vec4 contribution;  // rgb added to the path if unoccluded, w: its stochastic-alpha key (rng.h alphaKey) as float bits
+};
+
+// A material's texture: uv' = (dot(uvRow0.xyz, (u, v, 1)), dot(uvRow1.xyz, (u, v, 1))) (KHR_texture_transform).
+struct TextureSlot {
+  vec4 uvRow0;   // xyz: first row of the uv transform, w: normal-map scale (normalTexture.scale)
+  vec4 uvRow1;   // xyz: second row, w: unused
+  uint texture;  // index of its TextureInfo texel, or kNoTexture
+  uint texCoord;  // 0: TEXCOORD_0, 1: TEXCOORD_1
+  uint unusedSlot0, unusedSlot1;
 };
 
 struct Material {
@@ -94,8 +115,9 @@ struct Material {
   uint flags;      // kMaterial* bits
   float metallic;
   float roughness;
-  float specular;  // KHR_materials_specular's specularFactor
-  float unusedParam;
+  float specular;     // KHR_materials_specular's specularFactor
+  float alphaCutoff;  // kMaterialAlphaMask
+  TextureSlot baseColorTexture, metallicRoughnessTexture, normalTexture, emissiveTexture;
 };
 
 // Film of one batch: float partial sums, folded into double on the host every batch. A channel whose magnitude
@@ -175,10 +197,16 @@ VKMC_END_NAMESPACE
 
 #ifdef __cplusplus
 namespace vkmc::gpu {
+// The bindings read as storage texel buffers (the others are storage buffers).
+inline constexpr uint32_t kTexelBindings[] = {BINDING_TRIANGLES,      BINDING_TRIANGLE_INFO, BINDING_BVH_NODES,
+                                              BINDING_LIGHTS,         BINDING_TEXTURE_TEXELS, BINDING_TEXTURES,
+                                              BINDING_TRIANGLE_ATTRIBUTES};
 static_assert(sizeof(PathState) == 80);
 static_assert(offsetof(PathState, pixel) == 64 && offsetof(PathState, rootPath) == 76);
 static_assert(sizeof(ShadowRay) == 48);
-static_assert(sizeof(Material) == 48 && offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32);
+static_assert(sizeof(TextureSlot) == 48);
+static_assert(sizeof(Material) == 240 && offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32);
+static_assert(offsetof(Material, baseColorTexture) == 48 && offsetof(Material, emissiveTexture) == 192);
 static_assert(sizeof(FilmPixel) == 64);
 static_assert(sizeof(Control) == 144);
 static_assert(offsetof(Control, deepArgs) == 96);

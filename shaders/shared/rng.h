@@ -42,6 +42,9 @@ VKMC_FN uint childKey(uint key, uint depth, uint c) {
   return c == 0u ? key : hashU32(key ^ hashU32(c * 0x9e3779b9u + depth * 0x85ebca6bu));
 }
 
+// Key of one ray's stochastic-alpha decisions (textures.glsl, surfacePresent): `stream` names the ray.
+VKMC_FN uint alphaKey(uint key, uint stream) { return hashU32(key ^ hashU32(stream * 0x85ebca6bu + 0xc2b2ae35u)); }
+
 VKMC_FN uint bounceDim(uint depth, uint offset) { return kDimsCamera + depth * kDimsPerBounce + offset; }
 
 // Dimension `offset` (0: light select, 1-2: point, 3: shadow roulette) of light sample j at a bounce: sample 0

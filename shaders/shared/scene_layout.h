@@ -3,7 +3,7 @@
 //   triangles (BINDING_TRIANGLES, RGBA32F): kTriangleTexels per triangle, the vertices in xyz; texel
 //       kTriangleLightPmfTexel's w holds the triangle's light-selection pmf (0 unless it emits), the others' w 0
 //   triangle info (BINDING_TRIANGLE_INFO, RGBA32UI): one texel per triangle, the three vertex normals
-//       (octahedral, 2 x 16-bit snorm each) and the material id
+//       (octahedral, 2 x 16-bit snorm each) and the material id, whose top bit says the material is alpha-tested
 //   lights (BINDING_LIGHTS, RGBA32UI): one alias-table entry per emissive triangle (Walker/Vose):
 //       (keep probability as float bits, alias slot, triangle, selection pmf as float bits)
 #ifndef VKMC_SCENE_LAYOUT_H
@@ -34,10 +34,14 @@ VKMC_FN vec3 decodeOctahedral(uint bits) {
   return normalize(v);
 }
 
-VKMC_FN uvec4 encodeTriangleInfo(vec3 n0, vec3 n1, vec3 n2, uint material) {
-  return uvec4(encodeOctahedral(n0), encodeOctahedral(n1), encodeOctahedral(n2), material);
+VKMC_CONST uint kTriangleAlphaTested = 0x80000000u;  // MASK or BLEND: the walks test the triangle's alpha
+
+VKMC_FN uvec4 encodeTriangleInfo(vec3 n0, vec3 n1, vec3 n2, uint material, bool alphaTested) {
+  return uvec4(encodeOctahedral(n0), encodeOctahedral(n1), encodeOctahedral(n2),
+               material | (alphaTested ? kTriangleAlphaTested : 0u));
 }
-VKMC_FN uint triangleInfoMaterial(uvec4 info) { return info.w; }
+VKMC_FN uint triangleInfoMaterial(uvec4 info) { return info.w & ~kTriangleAlphaTested; }
+VKMC_FN bool triangleInfoAlphaTested(uvec4 info) { return (info.w & kTriangleAlphaTested) != 0u; }
 // The shading normal at barycentrics b, unnormalized (the interpolation of the decoded vertex normals).
 VKMC_FN vec3 triangleInfoNormal(uvec4 info, vec3 b) {
   return b.x * decodeOctahedral(info.x) + b.y * decodeOctahedral(info.y) + b.z * decodeOctahedral(info.z);

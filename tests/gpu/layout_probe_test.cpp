@@ -49,7 +49,11 @@ Words echoedByName(const gpu::PathState& p, const gpu::ShadowRay& r, const gpu::
   e.put(p.pixel), e.put(p.rngKey), e.put(p.depth), e.put(p.rootPath);
   e.put4(r.origin), e.put4(r.direction), e.put4(r.contribution);
   e.put4(m.baseColor), e.put3(m.emission), e.put(m.flags);
-  e.putf(m.metallic), e.putf(m.roughness), e.putf(m.specular), e.putf(m.unusedParam);
+  e.putf(m.metallic), e.putf(m.roughness), e.putf(m.specular), e.putf(m.alphaCutoff);
+  for (const gpu::TextureSlot* t : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture, &m.emissiveTexture}) {
+    e.put4(t->uvRow0), e.put4(t->uvRow1);
+    e.put(t->texture), e.put(t->texCoord), e.put(t->unusedSlot0), e.put(t->unusedSlot1);
+  }
   e.put4(f.sum), e.put4(f.sumSq), e.put4(f.sumHigh), e.put4(f.sumSqHigh);
   e.put(c.rayQueueCount[0]), e.put(c.rayQueueCount[1]), e.put(c.shadowQueueCount), e.put(c.splitChildren);
   e.put4u(c.rayArgs), e.put4u(c.shadowArgs), e.put4u(c.accumulateArgs);

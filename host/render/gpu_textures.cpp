@@ -1,0 +1,55 @@
+// Texture and attribute packing.
+#include "render/gpu_textures.h"
+
+#include "../shaders/shared/texture_layout.h"
+#include "error.h"
+
+namespace vkmc {
+namespace {
+
+uint32_t wrapCode(TextureWrap w) {
+  return w == TextureWrap::ClampToEdge      ? gpu::kWrapClampToEdge
+         : w == TextureWrap::MirroredRepeat ? gpu::kWrapMirroredRepeat
+                                            : gpu::kWrapRepeat;
+}
+
+}  // namespace
+
+PackedTextures packTextures(const Scene& scene) {
+  PackedTextures out;
+  for (const Texture& t : scene.textures) {
+    if (out.texels.size() + t.texels.size() > 0xffffffffu) throw Error("textures too big: more than 2^32 texels");
+    out.infos.push_back(gpu::encodeTextureInfo(static_cast<uint32_t>(out.texels.size()), t.width, t.height, wrapCode(t.wrapS),
+                                               wrapCode(t.wrapT), t.nearest));
+    out.texels.insert(out.texels.end(), t.texels.begin(), t.texels.end());
+  }
+  return out;
+}
+
+std::vector<glm::uvec4> packTriangleAttributes(const Scene& scene, const std::vector<uint32_t>& order) {
+  std::vector<glm::uvec4> out(gpu::kAttributeTexels * order.size());
+  auto uv = [&](const std::vector<glm::vec2>& v, size_t corner) { return v.empty() ? glm::vec2(0.0f) : v[corner]; };
+  auto tangent = [&](size_t corner) { return scene.tangents.empty() ? glm::vec4(1, 0, 0, 1) : scene.tangents[corner]; };
+  auto color = [&](size_t corner) { return scene.colors.empty() ? glm::vec4(1.0f) : scene.colors[corner]; };
+  for (size_t i = 0; i < order.size(); ++i) {
+    size_t c = 3 * size_t(order[i]);
+    glm::vec2 uvs[6] = {uv(scene.uv0, c), uv(scene.uv0, c + 1), uv(scene.uv0, c + 2),
+                        uv(scene.uv1, c), uv(scene.uv1, c + 1), uv(scene.uv1, c + 2)};
+    glm::uvec4* t = &out[gpu::kAttributeTexels * i];
+    for (int k = 0; k < 3; ++k) t[k] = gpu::encodeUvTexel(uvs[2 * k], uvs[2 * k + 1]);
+    t[3] = gpu::encodeTangents(tangent(c), tangent(c + 1), tangent(c + 2));
+    t[4] = gpu::encodeColors(color(c), color(c + 1), color(c + 2));
+  }
+  return out;
+}
+
+gpu::TextureSlot textureSlot(const TextureRef& ref) {
+  gpu::TextureSlot s{};
+  s.uvRow0 = glm::vec4(ref.uvRow0, ref.scale);
+  s.uvRow1 = glm::vec4(ref.uvRow1, 0.0f);
+  s.texture = ref.present() ? static_cast<uint32_t>(ref.texture) : gpu::kNoTexture;
+  s.texCoord = static_cast<uint32_t>(ref.texCoord);
+  return s;
+}
+
+}  // namespace vkmc
