@@ -31,7 +31,11 @@ Camera autoCamera(const Aabb& bounds, float aspect) {
   float halfFov = 0.5f * yfov;
   if (aspect < 1.0f) halfFov = std::atan(std::tan(halfFov) * aspect);
   float distance = radius / std::sin(halfFov);
-  Camera c = lookAtCamera(bounds.center() + glm::vec3(0.0f, 0.0f, distance), bounds.center(), glm::degrees(yfov));
+  // A three-quarter view from above, as model viewers open: 30 degrees round from the front (+Z) towards +X,
+  // 25 degrees up, so flat models (a quad facing +Z, a ground plane) are never seen edge-on.
+  const float azimuth = glm::radians(30.0f), elevation = glm::radians(25.0f);
+  glm::vec3 toCamera(std::sin(azimuth) * std::cos(elevation), std::sin(elevation), std::cos(azimuth) * std::cos(elevation));
+  Camera c = lookAtCamera(bounds.center() + toCamera * distance, bounds.center(), glm::degrees(yfov));
   c.name = "auto";
   return c;
 }

@@ -15,8 +15,9 @@ struct CameraRig {
   bool orthographic = false;
 };
 
-// Looks along -Z from in front of the bounding box (glTF's "front" is +Z), 45 degree vertical field of view,
-// far enough that the bounding sphere fits the narrower image axis.
+// Looks at the bounding box's centre from a three-quarter view above its front (glTF's "front" is +Z): 30 degrees
+// round towards +X, 25 degrees up, 45 degree vertical field of view, far enough that the bounding sphere fits
+// the narrower image axis.
 Camera autoCamera(const Aabb& bounds, float aspect);
 Camera lookAtCamera(glm::vec3 from, glm::vec3 at, float yfovDegrees);
 CameraRig makeCameraRig(const Camera& camera, uint32_t width, uint32_t height);

@@ -8,6 +8,8 @@
 #include <random>
 #include <sstream>
 
+#include <stb/stb_image_write.h>
+
 #include "error.h"
 
 namespace vkmc::test {
@@ -73,6 +75,56 @@ std::string writeGltf(const std::filesystem::path& dir, const std::string& name,
   std::ofstream(gltf) << j.str();
   if (spec.writeBin) std::ofstream(dir / (name + ".bin"), std::ios::binary) << bin;
   return gltf.string();
+}
+
+std::string writeQuadsGltf(const std::filesystem::path& dir, const std::string& name, const std::vector<QuadSpec>& quads,
+                           const std::string& materialsJson, const std::string& rootExtra) {
+  std::string bin;
+  std::ostringstream nodes, meshes, accessors, views;
+  for (size_t q = 0; q < quads.size(); ++q) {
+    const QuadSpec& s = quads[q];
+    float p[12], lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};
+    for (int c = 0; c < 3; ++c) {
+      p[c] = s.o[c], p[3 + c] = s.o[c] + s.u[c], p[6 + c] = s.o[c] + s.u[c] + s.v[c], p[9 + c] = s.o[c] + s.v[c];
+      for (int k = 0; k < 4; ++k) lo[c] = std::min(lo[c], p[3 * k + c]), hi[c] = std::max(hi[c], p[3 * k + c]);
+    }
+    const float uv[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    const uint32_t idx[6] = {0, 1, 2, 0, 2, 3};
+    size_t base = bin.size();
+    bin.append(reinterpret_cast<const char*>(p), sizeof(p));
+    bin.append(reinterpret_cast<const char*>(uv), sizeof(uv));
+    bin.append(reinterpret_cast<const char*>(idx), sizeof(idx));
+    size_t a = 3 * q;
+    const char* sep = q ? "," : "";
+    nodes << sep << R"({"mesh":)" << q << "}";
+    meshes << sep << R"({"primitives":[{"attributes":{"POSITION":)" << a << R"(,"TEXCOORD_0":)" << a + 1
+           << R"(},"indices":)" << a + 2 << R"(,"material":)" << s.material << "}]}";
+    accessors << sep << R"({"bufferView":)" << a << R"(,"componentType":5126,"type":"VEC3","count":4,"min":[)" << lo[0] << ","
+              << lo[1] << "," << lo[2] << R"(],"max":[)" << hi[0] << "," << hi[1] << "," << hi[2] << "]}";
+    accessors << R"(,{"bufferView":)" << a + 1 << R"(,"componentType":5126,"type":"VEC2","count":4})";
+    accessors << R"(,{"bufferView":)" << a + 2 << R"(,"componentType":5125,"type":"SCALAR","count":6})";
+    views << sep << R"({"buffer":0,"byteOffset":)" << base << R"(,"byteLength":48})";
+    views << R"(,{"buffer":0,"byteOffset":)" << base + 48 << R"(,"byteLength":32})";
+    views << R"(,{"buffer":0,"byteOffset":)" << base + 80 << R"(,"byteLength":24})";
+  }
+  std::ostringstream j;
+  j << R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[)";
+  for (size_t q = 0; q < quads.size(); ++q) j << (q ? "," : "") << q;
+  j << "]}],";
+  j << R"("nodes":[)" << nodes.str() << R"(],"meshes":[)" << meshes.str() << R"(],"materials":[)" << materialsJson << "],";
+  j << R"("accessors":[)" << accessors.str() << R"(],"bufferViews":[)" << views.str() << "],";
+  if (!rootExtra.empty()) j << rootExtra << ",";
+  j << R"("buffers":[{"byteLength":)" << bin.size() << R"(,"uri":")" << name << R"(.bin"}]})";
+  auto gltf = dir / (name + ".gltf");
+  std::ofstream(gltf) << j.str();
+  std::ofstream(dir / (name + ".bin"), std::ios::binary) << bin;
+  return gltf.string();
+}
+
+std::string writePng(const std::filesystem::path& dir, const std::string& name, int w, int h, const std::vector<uint8_t>& rgba) {
+  std::string file = name + ".png";
+  if (!stbi_write_png((dir / file).c_str(), w, h, 4, rgba.data(), w * 4)) throw Error("cannot write test PNG " + file);
+  return file;
 }
 
 std::string loadError(const std::string& path, const LoadLimits& limits) {

@@ -27,6 +27,19 @@ std::filesystem::path makeTempDir(const std::string& tag);
 // A unit quad in the z = 0 plane facing +z, as two triangles.
 GltfSpec quadSpec();
 
+// Quads, each its own mesh with TEXCOORD_0 (0,0) (1,0) (1,1) (0,1) at o, o + u, o + u + v, o + v (front face
+// along u x v), and a material index into materialsJson (a JSON array's elements, without brackets).
+struct QuadSpec {
+  float o[3], u[3], v[3];
+  int material = 0;
+};
+// rootExtra: more root members, e.g. R"("images":[...],"textures":[...])" (without a leading comma).
+std::string writeQuadsGltf(const std::filesystem::path& dir, const std::string& name, const std::vector<QuadSpec>& quads,
+                           const std::string& materialsJson, const std::string& rootExtra = "");
+
+// Writes an RGBA8 PNG (w x h, rows from the top) and returns its file name within dir.
+std::string writePng(const std::filesystem::path& dir, const std::string& name, int w, int h, const std::vector<uint8_t>& rgba);
+
 // The one-line error loading `path` gives ("" when it loads); a message of more than one line fails the test.
 std::string loadError(const std::string& path, const LoadLimits& limits = {});
 
