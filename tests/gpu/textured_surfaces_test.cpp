@@ -1,0 +1,132 @@
+// Textured surfaces in whole renders with known answers: alpha MASK (a cutoff, from a texture) and BLEND
+// (stochastic transparency, unbiased for the blend) in closest-hit and shadow walks, and normal mapping on a
+// plane under a uniform environment.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "app/render_job.h"
+#include "support/render_helpers.h"
+#include "support/test_scenes.h"
+#include "support/z_test.h"
+
+using namespace vkmc;
+
+namespace {
+
+const char* kSpecularExtension = R"("extensionsUsed":["KHR_materials_specular"])";
+// Black surfaces reflect nothing only without their dielectric specular lobe (KHR_materials_specular factor 0).
+const char* kNoSpecular = R"("extensions":{"KHR_materials_specular":{"specularFactor":0}})";
+const std::string kEmitter =
+    std::string(R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1],"metallicFactor":0},"emissiveFactor":[1,1,1],)") +
+    kNoSpecular + "}";
+const char* kWhite = R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":0},
+  "extensions":{"KHR_materials_specular":{"specularFactor":0}}})";
+
+RenderOutcome render(const std::string& path, glm::vec3 from, glm::vec3 at, float fov, uint32_t spp, int maxDepth = 0,
+                     std::optional<glm::vec3> background = std::nullopt) {
+  RenderOptions o;
+  o.scenePath = path;
+  o.width = 32;
+  o.height = 32;
+  o.spp = spp;
+  o.seed = 9;
+  o.lookFrom = from;
+  o.lookAt = at;
+  o.fovDegrees = fov;
+  o.background = background;
+  o.estimator.maxDepth = maxDepth;
+  o.progress = false;
+  return runRender(test::sharedContext(), o);
+}
+
+// A 4 x 4 emitter of radiance 1 at z = 0 facing the camera at z = 3, and a sheet at z = 1 between them.
+std::string sheetScene(const std::filesystem::path& dir, const std::string& name, const std::string& sheet,
+                       const std::string& rootExtra = "") {
+  std::vector<test::QuadSpec> quads = {{{-2, -2, 0}, {4, 0, 0}, {0, 4, 0}, 0}, {{-1, -1, 1}, {2, 0, 0}, {0, 2, 0}, 1}};
+  return test::writeQuadsGltf(dir, name, quads, kEmitter + "," + sheet,
+                              std::string(kSpecularExtension) + (rootExtra.empty() ? "" : "," + rootExtra));
+}
+
+}  // namespace
+
+TEST(AlphaBlend, AHalfTransparentBlackSheetPassesHalfTheLight) {
+  auto dir = test::makeTempDir("alpha");
+  std::string sheet = R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,0.5],"metallicFactor":0},"alphaMode":"BLEND",
+    "doubleSided":true,)" + std::string(kNoSpecular) + "}";
+  RenderOutcome r = render(sheetScene(dir, "blend", sheet), {0, 0, 3}, {0, 0, 0}, 30.0f, 16);
+  EXPECT_TRUE(r.features.alpha);
+  // The sheet reflects nothing towards the camera: every sample sees the emitter (1) or the sheet (0).
+  EXPECT_TRUE(test::regionMatches(test::whole(r.film), glm::dvec3(0.5), 5.0));
+}
+
+TEST(AlphaMask, ACutoffKeepsOrRemovesTheSurface) {
+  auto dir = test::makeTempDir("alpha");
+  for (float alpha : {0.4f, 0.6f}) {
+    std::string sheet = R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,)" + std::to_string(alpha) +
+                        R"(],"metallicFactor":0},"alphaMode":"MASK","alphaCutoff":0.5,)" + kNoSpecular + "}";
+    RenderOutcome r = render(sheetScene(dir, "mask" + std::to_string(alpha), sheet), {0, 0, 3}, {0, 0, 0}, 30.0f, 4);
+    test::RegionStats all = test::whole(r.film);
+    EXPECT_EQ(all.mean.g, alpha < 0.5f ? 1.0 : 0.0) << "alpha " << alpha;
+  }
+}
+
+TEST(AlphaMask, TheTexturesAlphaDecidesPerTexel) {
+  // A 2 x 1 texture, nearest: alpha 0 on the left half of the sheet (u < 0.5), 255 on the right.
+  auto dir = test::makeTempDir("alpha");
+  std::string png = test::writePng(dir, "half", 2, 1, {255, 255, 255, 0, 255, 255, 255, 255});
+  std::string sheet = R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1],"metallicFactor":0,
+    "baseColorTexture":{"index":0}},"alphaMode":"MASK",)" + std::string(kNoSpecular) + "}";
+  std::string extra = R"("images":[{"uri":")" + png + R"("}],"samplers":[{"magFilter":9728,"minFilter":9728}],
+    "textures":[{"source":0,"sampler":0}])";
+  RenderOutcome r = render(sheetScene(dir, "masktex", sheet, extra), {0, 0, 3}, {0, 0, 0}, 30.0f, 4);
+  EXPECT_TRUE(r.features.textures);
+  // Columns well left of the middle see the emitter, columns well right see the black sheet.
+  EXPECT_EQ(test::region(r.film, 2, 4, 12, 28).mean.g, 1.0);
+  EXPECT_EQ(test::region(r.film, 20, 4, 30, 28).mean.g, 0.0);
+}
+
+TEST(AlphaBlend, ShadowRaysPassAHalfTransparentSheetHalfTheTime) {
+  // A white floor at y = 0 lit by a downward emitter at y = 1; a black BLEND sheet (alpha 0.5) at y = 0.5 between
+  // them, above the camera (y = 0.4), halves the floor's direct light in light-sampled and BSDF-sampled walks.
+  auto dir = test::makeTempDir("alpha");
+  std::vector<test::QuadSpec> quads = {{{-5, 0, 5}, {10, 0, 0}, {0, 0, -10}, 1},  // floor, facing +y
+                                       {{-1, 1, -1}, {2, 0, 0}, {0, 0, 2}, 0}};   // emitter, facing -y
+  std::string materials = kEmitter + "," + kWhite;
+  std::string open = test::writeQuadsGltf(dir, "open", quads, materials, kSpecularExtension);
+  quads.push_back({{-3, 0.5f, -3}, {6, 0, 0}, {0, 0, 6}, 2});
+  std::string sheet = R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,0.5],"metallicFactor":0},"alphaMode":"BLEND",
+    "doubleSided":true,)" + std::string(kNoSpecular) + "}";
+  std::string shaded = test::writeQuadsGltf(dir, "shaded", quads, materials + "," + sheet, kSpecularExtension);
+  RenderOutcome a = render(open, {0, 0.4f, 0}, {0, 0, 0.001f}, 40.0f, 64, 1);
+  RenderOutcome b = render(shaded, {0, 0.4f, 0}, {0, 0, 0.001f}, 40.0f, 64, 1);
+  test::RegionStats full = test::whole(a.film), half = test::whole(b.film);
+  ASSERT_GT(full.mean.g, 0.05);
+  full.mean *= 0.5;
+  full.variance *= 0.25;
+  EXPECT_TRUE(test::regionsAgree(half, full, 5.0));
+}
+
+TEST(NormalMap, ATiltedNormalSeesTheFractionOfTheEnvironmentAboveThePlane) {
+  // A white Lambertian plane under a uniform environment of radiance 1, direct light only: with its shading
+  // normal tilted by theta from the geometric one, cosine-weighted directions below the plane are lost, and
+  // L = (1 + cos theta) / 2 (the part of the tilted cosine lobe above the plane); without the map L = 1.
+  auto dir = test::makeTempDir("normalmap");
+  const double theta = 60.0 * 3.14159265358979 / 180.0;
+  auto byte = [](double x) { return uint8_t(std::lround((x + 1.0) * 0.5 * 255.0)); };
+  uint8_t r = byte(std::sin(theta)), g = byte(0.0), b = byte(std::cos(theta));
+  std::string png = test::writePng(dir, "tilt", 1, 1, {r, g, b, 255});
+  glm::dvec3 n(r / 255.0 * 2 - 1, g / 255.0 * 2 - 1, b / 255.0 * 2 - 1);
+  double expected = 0.5 * (1.0 + n.z / glm::length(n));  // the 8-bit texel's own tilt
+  std::string plane = R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":0},
+    "normalTexture":{"index":0},"extensions":{"KHR_materials_specular":{"specularFactor":0}}})";
+  std::string extra = std::string(kSpecularExtension) + R"(,"images":[{"uri":")" + png + R"("}],"textures":[{"source":0}])";
+  std::vector<test::QuadSpec> quads = {{{-5, -5, 0}, {10, 0, 0}, {0, 10, 0}, 0}};
+  std::string mapped = test::writeQuadsGltf(dir, "mapped", quads, plane, extra);
+  std::string flat = test::writeQuadsGltf(dir, "flat", quads, kWhite, kSpecularExtension);
+  RenderOutcome m = render(mapped, {0, 0, 1}, {0, 0, 0}, 30.0f, 64, 1, glm::vec3(1.0f));
+  RenderOutcome f = render(flat, {0, 0, 1}, {0, 0, 0}, 30.0f, 64, 1, glm::vec3(1.0f));
+  EXPECT_TRUE(m.features.normalMaps);
+  EXPECT_NEAR(test::whole(f.film).mean.g, 1.0, 1e-4);  // every sample is 1 up to rounding
+  EXPECT_TRUE(test::regionMatches(test::whole(m.film), glm::dvec3(expected), 5.0)) << "expected " << expected;
+}
