@@ -110,6 +110,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   settings.spp = options.spp;
   settings.estimator = options.estimator;
   settings.features = options.specialize ? scanFeatures(scene) : allFeatures(scanFeatures(scene));
+  if (options.withoutTextures) settings.features.textures = settings.features.normalMaps = settings.features.alpha = false;
   out.features = settings.features;
   settings.seed = options.seed;
   out.background = options.background.value_or(glm::vec3(0.0f));

@@ -1,0 +1,89 @@
+// Texture loading: images decoded into Scene::textures with their samplers, material slots with
+// KHR_texture_transform and texCoord, undecodable or oversized images ignored with a warning naming them, and
+// textured emitters weighted by their mean emission.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "scene/gltf_loader.h"
+#include "scene/texture_sampler.h"
+#include "support/test_scenes.h"
+
+using namespace vkmc;
+
+namespace {
+bool anyWarningHas(const Scene& s, const std::string& text) {
+  for (const std::string& w : s.warnings)
+    if (w.find(text) != std::string::npos) return true;
+  return false;
+}
+}  // namespace
+
+TEST(GltfTextures, ImagesSamplersAndTransformsReachTheScene) {
+  auto dir = test::makeTempDir("textures");
+  std::string png = test::writePng(dir, "img", 2, 2, {10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110, 120, 130, 140, 150, 160});
+  std::string material = R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0,"texCoord":1},
+    "metallicRoughnessTexture":{"index":1,"extensions":{"KHR_texture_transform":{"offset":[0.5,-1],"rotation":1.5707963,
+    "scale":[2,3],"texCoord":1}}}},"normalTexture":{"index":1,"scale":0.25},"emissiveTexture":{"index":0},
+    "emissiveFactor":[1,1,1],"alphaMode":"MASK","alphaCutoff":0.3})";
+  std::string extra = R"("extensionsUsed":["KHR_texture_transform"],"images":[{"uri":")" + png +
+                      R"("}],"samplers":[{"wrapS":33071,"wrapT":33648,"magFilter":9728}],
+    "textures":[{"source":0,"sampler":0},{"source":0}])";
+  Scene s = loadGltf(test::writeQuadsGltf(dir, "tex", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
+  ASSERT_EQ(s.textures.size(), 2u);
+  const Texture& t = s.textures[0];
+  EXPECT_EQ(t.width, 2u);
+  EXPECT_EQ(t.height, 2u);
+  EXPECT_EQ(t.texels[0], 10u | 20u << 8 | 30u << 16 | 40u << 24);
+  EXPECT_EQ(t.texels[3], 130u | 140u << 8 | 150u << 16 | 160u << 24);
+  EXPECT_EQ(t.wrapS, TextureWrap::ClampToEdge);
+  EXPECT_EQ(t.wrapT, TextureWrap::MirroredRepeat);
+  EXPECT_TRUE(t.nearest);
+  EXPECT_EQ(s.textures[1].wrapS, TextureWrap::Repeat);
+  EXPECT_FALSE(s.textures[1].nearest);
+  const Material& m = s.materials[0];
+  EXPECT_EQ(m.baseColorTexture.texture, 0);
+  EXPECT_EQ(m.baseColorTexture.texCoord, 1);
+  EXPECT_EQ(m.alphaMode, AlphaMode::Mask);
+  EXPECT_FLOAT_EQ(m.alphaCutoff, 0.3f);
+  EXPECT_FLOAT_EQ(m.normalTexture.scale, 0.25f);
+  // KHR_texture_transform: uv' = T R S uv with R = [cos sin; -sin cos]; rotation pi/2, scale (2, 3), offset (0.5, -1).
+  const TextureRef& mr = m.metallicRoughnessTexture;
+  EXPECT_EQ(mr.texCoord, 1);
+  glm::vec2 uv = slotUv(mr, glm::vec2(9.0f), glm::vec2(0.1f, 0.2f));
+  EXPECT_NEAR(uv.x, 0.5 + 3 * 0.2, 1e-5);   // cos * 2 * u + sin * 3 * v + 0.5
+  EXPECT_NEAR(uv.y, -1.0 - 2 * 0.1, 1e-5);  // -sin * 2 * u + cos * 3 * v - 1
+  ASSERT_EQ(s.uv0.size(), s.positions.size());
+  EXPECT_TRUE(s.uv1.empty());
+  ASSERT_EQ(s.tangents.size(), s.positions.size());  // normal-mapped: tangents along +u (+x here)
+  EXPECT_NEAR(s.tangents[0].x, 1.0, 1e-5);
+}
+
+TEST(GltfTextures, UndecodableAndOversizedImagesAreIgnoredWithAWarningNamingThem) {
+  auto dir = test::makeTempDir("textures");
+  std::ofstream(dir / "junk.png") << "not a png";
+  std::string wide = test::writePng(dir, "wide", 20000, 1, std::vector<uint8_t>(20000 * 4, 7));
+  std::string material = R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}},"emissiveTexture":{"index":1}})";
+  std::string extra = R"("images":[{"uri":"junk.png","name":"junk"},{"uri":")" + wide +
+                      R"("}],"textures":[{"source":0},{"source":1}])";
+  Scene s = loadGltf(test::writeQuadsGltf(dir, "bad", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
+  EXPECT_TRUE(anyWarningHas(s, "image 0 (junk)"));
+  EXPECT_TRUE(anyWarningHas(s, "20000x1 exceeds 16384"));
+  EXPECT_FALSE(s.materials[0].baseColorTexture.present());
+  EXPECT_FALSE(s.materials[0].emissiveTexture.present());
+}
+
+TEST(GltfTextures, ATexturedEmitterIsWeightedByItsMeanEmission) {
+  // Left half of the texture black, right half white (sRGB 255 = 1): the quad's mean emission is half its factor.
+  auto dir = test::makeTempDir("textures");
+  std::string png = test::writePng(dir, "half", 2, 1, {0, 0, 0, 255, 255, 255, 255, 255});
+  std::string material = R"({"emissiveFactor":[4,4,4],"emissiveTexture":{"index":0}})";
+  std::string extra = R"("images":[{"uri":")" + png + R"("}],"samplers":[{"magFilter":9728}],
+    "textures":[{"source":0,"sampler":0}])";
+  Scene s = loadGltf(test::writeQuadsGltf(dir, "glow", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
+  double mean = 0.0;
+  for (size_t t = 0; t < s.triangleCount(); ++t) mean += averageEmission(s, t).x / double(s.triangleCount());
+  EXPECT_NEAR(mean, 2.0, 0.26);  // the 64-point pattern per triangle: within its quadrature error of 4 x 1/2
+  EXPECT_GT(mean, 0.0);
+}
