@@ -69,6 +69,7 @@ uint64_t maxSceneTriangles(const vk::Context& ctx) {
 LoadLimits deviceLoadLimits(const vk::Context& ctx) {
   LoadLimits limits;
   limits.maxTriangles = maxSceneTriangles(ctx);
+  limits.maxTextureTexels = std::min<uint64_t>(limits.maxTextureTexels, ctx.properties().limits.maxTexelBufferElements);
   return limits;
 }
 

@@ -502,6 +502,7 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
   tinygltf::Model model;
   std::vector<std::string> extensionWarnings;
   ImageDecoder imageDecoder;
+  imageDecoder.limits.maxTotalTexels = limits.maxTextureTexels;
   try {
     std::string_view json =
         binary ? glbJsonChunk(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());

@@ -14,6 +14,8 @@ struct LoadLimits {
   // Instancing can multiply a small file into an enormous scene: stop long before memory runs out. The
   // renderer lowers this to what the device's buffers hold (maxSceneTriangles).
   uint64_t maxTriangles = uint64_t(1) << 25;
+  // Decoded texels of all images together (4 bytes each on the device); images past it are ignored with a warning.
+  uint64_t maxTextureTexels = uint64_t(1) << 28;
   InputLimits input;
 };
 
