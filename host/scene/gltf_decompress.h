@@ -17,7 +17,9 @@ struct DecompressLimits {
 
 // Decodes every meshopt-compressed buffer view into a new buffer the view then points to, and every Draco
 // primitive into new buffers, views and accessors that replace its attributes and indices. Throws vkmc::Error
-// naming the extension, e.g. "KHR_draco_mesh_compression: primitive 0 of mesh 2: ...".
+// naming the extension, e.g. "KHR_draco_mesh_compression: primitive 0 of mesh 2: ...". Limits: meshopt output is
+// sized from the file's count x byteStride and refused before allocation past maxDecodedBytes; libdraco allocates
+// what its bitstream declares while decoding, so Draco's limits apply to what it returns.
 void decompressModel(tinygltf::Model& model, const DecompressLimits& limits);
 
 // What tinygltf 2.7 would refuse in compressed files, rewritten before it parses them: EXT_meshopt_compression's

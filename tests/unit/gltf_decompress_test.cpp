@@ -192,6 +192,40 @@ TEST(GltfDecompress, MalformedDataIsRefusedNamingTheExtension) {
   EXPECT_NE(other.find("EXT_meshopt_compression"), std::string::npos) << other;
 }
 
+// gltfpack's instancing: EXPONENTIAL-filtered float translations and QUATERNION-filtered normalized short rotations
+// (KHR_mesh_quantization), decoded and drawn per instance.
+TEST(GltfDecompress, FilteredInstanceTransforms) {
+  GltfBuilder b;
+  IndexedMesh quad{{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, {0, 1, 2, 0, 2, 3}};
+  int p = b.accessor(quad.positions, 5126, "VEC3", 4), i = b.accessor(quad.indices, 5125, "SCALAR", 6);
+  std::vector<float> translations = {0, 0, 0, 0, 5, 0, 0, 0};  // xyz + pad: the exponential filter works per 4 bytes
+  std::vector<float> rotations = {0, 0, 0, 1, 0, 0, 0.70710678f, 0.70710678f};  // identity, 90 degrees about z
+  std::vector<uint32_t> exp(4 * 2);
+  meshopt_encodeFilterExp(exp.data(), 2, 16, 15, translations.data());
+  std::vector<int16_t> quat(4 * 2);
+  meshopt_encodeFilterQuat(quat.data(), 2, 8, 12, rotations.data());
+  auto compressed = [&](const void* data, size_t stride, const char* filter, size_t fallbackOffset) {
+    std::vector<unsigned char> out(meshopt_encodeVertexBufferBound(2, stride));
+    out.resize(meshopt_encodeVertexBuffer(out.data(), out.size(), data, 2, stride));
+    size_t offset = b.append(out.data(), out.size());
+    return b.rawView(R"({"buffer":1,"byteOffset":)" + std::to_string(fallbackOffset) + R"(,"byteLength":)" +
+                     std::to_string(2 * stride) + R"(,"byteStride":)" + std::to_string(stride) +
+                     R"(,"extensions":{"EXT_meshopt_compression":{"buffer":0,"byteOffset":)" + std::to_string(offset) +
+                     R"(,"byteLength":)" + std::to_string(out.size()) + R"(,"byteStride":)" + std::to_string(stride) +
+                     R"(,"count":2,"mode":"ATTRIBUTES","filter":")" + filter + R"("}}})");
+  };
+  int t = b.accessor(compressed(exp.data(), 16, "EXPONENTIAL", 0), 5126, "VEC3", 2);
+  int r = b.accessor(compressed(quat.data(), 8, "QUATERNION", 32), 5122, "VEC4", 2, R"("normalized":true)");
+  std::string body = R"("extensionsUsed":["EXT_meshopt_compression","KHR_mesh_quantization","EXT_mesh_gpu_instancing"],
+    "nodes":[{"mesh":0,"extensions":{"EXT_mesh_gpu_instancing":{"attributes":{"TRANSLATION":)" +
+                     std::to_string(t) + R"(,"ROTATION":)" + std::to_string(r) + "}}}}]," + mesh(p, i);
+  std::string fallback = R"({"byteLength":48,"extensions":{"EXT_meshopt_compression":{"fallback":true}}})";
+  Scene s = loadGltf(b.write(dir(), "instances_filtered", body, "0", fallback));
+  ASSERT_EQ(s.triangleCount(), 4u);
+  EXPECT_NEAR(glm::length(s.positions[1] - glm::vec3(1, 0, 0)), 0.0f, 1e-4f) << "instance 0: identity";
+  EXPECT_NEAR(glm::length(s.positions[7] - glm::vec3(5, 1, 0)), 0.0f, 1e-3f) << "instance 1: +x turned to +y, then +5 x";
+}
+
 // The shared models (when present): their geometry compressed both ways decodes to what the plain file gives, and
 // normal-mapped ones get unit tangents perpendicular to their normals.
 TEST(GltfDecompress, SharedModelsRoundTrip) {
