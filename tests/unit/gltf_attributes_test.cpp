@@ -141,6 +141,25 @@ TEST(GltfAttributes, MorphTargetsApplyAtTheirDefaultWeights) {
   EXPECT_FLOAT_EQ(s.positions[6].z, 2.0f) << "node.weights override mesh.weights";
 }
 
+TEST(GltfAttributes, SparseMorphTargetsWithoutABufferView) {
+  // The usual exporter output: a target that moves one vertex, as a sparse accessor over implicit zeros.
+  GltfBuilder b;
+  Quad q = addQuad(b);
+  std::vector<uint8_t> which = {2};
+  std::vector<float> delta = {0, 0, 4};
+  int indices = b.view(which), values = b.view(delta);
+  int target = b.accessor(-1, 5126, "VEC3", 4,
+                          R"("sparse":{"count":1,"indices":{"bufferView":)" + std::to_string(indices) +
+                              R"(,"componentType":5121},"values":{"bufferView":)" + std::to_string(values) + "}}");
+  std::string prim = R"({"attributes":{"POSITION":)" + std::to_string(q.position) + R"(},"indices":)" +
+                     std::to_string(q.indices) + R"(,"targets":[{"POSITION":)" + std::to_string(target) + "}]}";
+  Scene s = loadGltf(
+      b.write(dir(), "morph_sparse", R"("nodes":[{"mesh":0}],"meshes":[{"primitives":[)" + prim + R"(],"weights":[0.5]}])"));
+  ASSERT_EQ(s.triangleCount(), 2u);
+  EXPECT_FLOAT_EQ(s.positions[2].z, 2.0f) << "vertex 2 moved by 0.5 x 4";
+  EXPECT_FLOAT_EQ(s.positions[1].z, 0.0f);
+}
+
 TEST(GltfAttributes, EveryGpuInstanceIsDrawnAtItsPlace) {
   GltfBuilder b;
   Quad q = addQuad(b);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <meshoptimizer.h>
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -190,6 +191,25 @@ TEST(GltfDecompress, MalformedDataIsRefusedNamingTheExtension) {
   std::string other = test::loadError(writeMeshopt("meshopt_index", broken));
   EXPECT_NE(other.find("index 1000 out of range"), std::string::npos) << other;
   EXPECT_NE(other.find("EXT_meshopt_compression"), std::string::npos) << other;
+}
+
+// 2e9 elements of 12 bytes from a 16-byte stream (tinygltf keeps extension integers as int, so larger counts wrap).
+TEST(GltfDecompress, DecodedSizesFromTheFileAreBoundedBeforeAllocation) {
+  GltfBuilder b;
+  unsigned char junk[16] = {};
+  size_t offset = b.append(junk, sizeof(junk));
+  int view = b.rawView(R"({"buffer":1,"byteLength":12,"byteStride":12,"extensions":{"EXT_meshopt_compression":{"buffer":0,
+    "byteOffset":)" + std::to_string(offset) +
+                       R"(,"byteLength":16,"byteStride":12,"count":2000000000,"mode":"ATTRIBUTES"}}})");
+  int p = b.accessor(view, 5126, "VEC3", 1);
+  std::string body = R"("extensionsUsed":["EXT_meshopt_compression"],)" + kNode +
+                     R"("meshes":[{"primitives":[{"attributes":{"POSITION":)" + std::to_string(p) + "}}]}]";
+  std::string fallback = R"({"byteLength":12,"extensions":{"EXT_meshopt_compression":{"fallback":true}}})";
+  auto start = std::chrono::steady_clock::now();
+  std::string msg = test::loadError(b.write(dir(), "meshopt_bomb", body, "0", fallback));
+  EXPECT_NE(msg.find("EXT_meshopt_compression: buffer view 0: decoded data would pass the loader's limit"), std::string::npos)
+      << msg;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 
 // gltfpack's instancing: EXPONENTIAL-filtered float translations and QUATERNION-filtered normalized short rotations
