@@ -48,24 +48,32 @@ DracoDecoded decodeDracoMesh(const unsigned char* data, size_t size, const std::
   return out;
 }
 
-std::vector<char> encodeDracoMesh(const std::vector<float>& positions, const std::vector<uint32_t>& indices, int bits,
-                                  bool sequential, uint32_t& positionId) {
+DracoEncoded encodeDracoMesh(const std::vector<float>& positions, const std::vector<float>& uvs,
+                             const std::vector<uint32_t>& indices, int bits, bool sequential) {
   draco::Mesh mesh;
   uint32_t n = static_cast<uint32_t>(positions.size() / 3);
   mesh.set_num_points(n);
-  draco::GeometryAttribute ga;
-  ga.Init(draco::GeometryAttribute::POSITION, nullptr, 3, draco::DT_FLOAT32, false, 12, 0);
-  int att = mesh.AddAttribute(ga, true, n);
-  for (uint32_t v = 0; v < n; ++v) mesh.attribute(att)->SetAttributeValue(draco::AttributeValueIndex(v), &positions[3 * v]);
+  auto add = [&](draco::GeometryAttribute::Type type, int components, const std::vector<float>& values) {
+    draco::GeometryAttribute ga;
+    ga.Init(type, nullptr, int8_t(components), draco::DT_FLOAT32, false, 4 * components, 0);
+    int att = mesh.AddAttribute(ga, true, n);
+    for (uint32_t v = 0; v < n; ++v)
+      mesh.attribute(att)->SetAttributeValue(draco::AttributeValueIndex(v), &values[size_t(components) * v]);
+    return mesh.attribute(att)->unique_id();
+  };
+  DracoEncoded out;
+  out.positionId = add(draco::GeometryAttribute::POSITION, 3, positions);
+  if (uvs.size() == 2 * size_t(n)) out.uvId = add(draco::GeometryAttribute::TEX_COORD, 2, uvs);
   for (size_t t = 0; t + 2 < indices.size(); t += 3)
     mesh.AddFace({draco::PointIndex(indices[t]), draco::PointIndex(indices[t + 1]), draco::PointIndex(indices[t + 2])});
-  positionId = mesh.attribute(att)->unique_id();
   draco::Encoder encoder;
   encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, bits);
+  encoder.SetAttributeQuantization(draco::GeometryAttribute::TEX_COORD, bits);
   encoder.SetEncodingMethod(sequential ? draco::MESH_SEQUENTIAL_ENCODING : draco::MESH_EDGEBREAKER_ENCODING);
   draco::EncoderBuffer buffer;
-  if (!encoder.EncodeMeshToBuffer(mesh, &buffer).ok()) return {};
-  return std::vector<char>(buffer.data(), buffer.data() + buffer.size());
+  if (!encoder.EncodeMeshToBuffer(mesh, &buffer).ok()) return out;
+  out.bytes.assign(buffer.data(), buffer.data() + buffer.size());
+  return out;
 }
 
 }  // namespace vkmc

@@ -25,10 +25,15 @@ __attribute__((visibility("default"))) DracoDecoded decodeDracoMesh(const unsign
                                                                     const std::vector<DracoAttributeRequest>& requests,
                                                                     uint64_t maxTriangles, uint64_t maxBytes);
 
-// For tests: xyz positions and triangle indices, positions quantized to `bits`; sequential encoding keeps the face
-// order, edgebreaker does not. Returns the bytes and sets positionId to the POSITION attribute's unique id.
-__attribute__((visibility("default"))) std::vector<char> encodeDracoMesh(const std::vector<float>& positions,
-                                                                         const std::vector<uint32_t>& indices, int bits,
-                                                                         bool sequential, uint32_t& positionId);
+// For tests: xyz positions, optional uv texture coordinates (empty: none) and triangle indices, quantized to `bits`;
+// sequential encoding keeps the face order, edgebreaker does not. Returns the bytes and the attributes' unique ids.
+struct DracoEncoded {
+  std::vector<char> bytes;
+  uint32_t positionId = 0, uvId = 0;
+};
+__attribute__((visibility("default"))) DracoEncoded encodeDracoMesh(const std::vector<float>& positions,
+                                                                    const std::vector<float>& uvs,
+                                                                    const std::vector<uint32_t>& indices, int bits,
+                                                                    bool sequential);
 
 }  // namespace vkmc

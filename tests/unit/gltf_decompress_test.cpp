@@ -27,6 +27,7 @@ std::filesystem::path dir() {
 struct IndexedMesh {
   std::vector<float> positions;  // xyz per vertex
   std::vector<uint32_t> indices;
+  std::vector<float> uvs;  // uv per vertex, or empty
   size_t vertices() const { return positions.size() / 3; }
 };
 
@@ -34,7 +35,10 @@ struct IndexedMesh {
 IndexedMesh grid(int n) {
   IndexedMesh m;
   for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x) m.positions.insert(m.positions.end(), {float(x), float(y), 0.3f * std::sin(float(x + 2 * y))});
+    for (int x = 0; x < n; ++x) {
+      m.positions.insert(m.positions.end(), {float(x), float(y), 0.3f * std::sin(float(x + 2 * y))});
+      m.uvs.insert(m.uvs.end(), {float(x) / float(n - 1), float(y) / float(n - 1)});
+    }
   for (int y = 0; y + 1 < n; ++y)
     for (int x = 0; x + 1 < n; ++x) {
       uint32_t a = y * n + x, b = a + 1, c = a + n, d = c + 1;
@@ -44,30 +48,36 @@ IndexedMesh grid(int n) {
 }
 
 const std::string kNode = R"("nodes":[{"mesh":0}],)";
-std::string mesh(int position, int indices) {
-  return R"("meshes":[{"primitives":[{"attributes":{"POSITION":)" + std::to_string(position) + R"(},"indices":)" +
-         std::to_string(indices) + "}]}]";
+std::string mesh(int position, int indices, int uv = -1) {
+  return R"("meshes":[{"primitives":[{"attributes":{"POSITION":)" + std::to_string(position) +
+         (uv >= 0 ? R"(,"TEXCOORD_0":)" + std::to_string(uv) : "") + R"(},"indices":)" + std::to_string(indices) + "}]}]";
 }
 
 std::string writePlain(const std::string& name, const IndexedMesh& m) {
   GltfBuilder b;
   int p = b.accessor(m.positions, 5126, "VEC3", m.vertices()), i = b.accessor(m.indices, 5125, "SCALAR", m.indices.size());
-  return b.write(dir(), name, kNode + mesh(p, i));
+  int uv = m.uvs.empty() ? -1 : b.accessor(m.uvs, 5126, "VEC2", m.vertices());
+  return b.write(dir(), name, kNode + mesh(p, i, uv));
 }
 
 // Draco-encoded, positions quantized to `bits`; sequential encoding keeps the face order, edgebreaker does not.
 std::string writeDraco(const std::string& name, const IndexedMesh& m, int bits, bool sequential, bool corrupt = false) {
-  uint32_t positionId = 0;
-  std::vector<char> bytes = encodeDracoMesh(m.positions, m.indices, bits, sequential, positionId);
+  DracoEncoded encoded = encodeDracoMesh(m.positions, m.uvs, m.indices, bits, sequential);
+  std::vector<char>& bytes = encoded.bytes;
   EXPECT_FALSE(bytes.empty());
   if (corrupt) bytes.resize(bytes.size() / 2);  // truncated
   GltfBuilder b;
   int view = b.view(bytes.data(), bytes.size());
   int p = b.accessor(-1, 5126, "VEC3", m.vertices()), i = b.accessor(-1, 5125, "SCALAR", m.indices.size());
+  std::string attributes = R"("POSITION":)" + std::to_string(p), mapping = R"("POSITION":)" + std::to_string(encoded.positionId);
+  if (!m.uvs.empty()) {
+    attributes += R"(,"TEXCOORD_0":)" + std::to_string(b.accessor(-1, 5126, "VEC2", m.vertices()));
+    mapping += R"(,"TEXCOORD_0":)" + std::to_string(encoded.uvId);
+  }
   std::string body = R"("extensionsUsed":["KHR_draco_mesh_compression"],"extensionsRequired":["KHR_draco_mesh_compression"],)" +
-                     kNode + R"("meshes":[{"primitives":[{"attributes":{"POSITION":)" + std::to_string(p) + R"(},"indices":)" +
-                     std::to_string(i) + R"(,"extensions":{"KHR_draco_mesh_compression":{"bufferView":)" + std::to_string(view) +
-                     R"(,"attributes":{"POSITION":)" + std::to_string(positionId) + "}}}}]}]";
+                     kNode + R"("meshes":[{"primitives":[{"attributes":{)" + attributes + R"(},"indices":)" + std::to_string(i) +
+                     R"(,"extensions":{"KHR_draco_mesh_compression":{"bufferView":)" + std::to_string(view) +
+                     R"(,"attributes":{)" + mapping + "}}}}]}]";
   return b.write(dir(), name, body);
 }
 
@@ -162,6 +172,9 @@ void roundTrip(const std::string& name, const IndexedMesh& m) {
   // Draco: positions within the 14-bit quantization step; the order of faces and corners kept (sequential).
   Scene draco = loadGltf(writeDraco(name + "_draco", m, 14, true));
   expectSameTriangles(draco, original, largestExtent(m) / float((1 << 14) - 1));
+  ASSERT_EQ(draco.uv0.size(), original.uv0.size());
+  for (size_t c = 0; c < draco.uv0.size(); ++c)
+    ASSERT_NEAR(glm::length(draco.uv0[c] - original.uv0[c]), 0.0f, 2.0f / float((1 << 14) - 1)) << "corner " << c;
   // Edgebreaker reorders faces: the same count and bounds.
   Scene edgebreaker = loadGltf(writeDraco(name + "_edgebreaker", m, 14, false));
   EXPECT_EQ(edgebreaker.triangleCount() + edgebreaker.degenerateTriangles, original.triangleCount());
