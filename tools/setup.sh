@@ -5,7 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config libvulkan-dev mesa-vulkan-drivers glslang-tools libglm-dev libtinygltf-dev
-          libopenexr-dev openexr libgtest-dev libcli11-dev nlohmann-json3-dev libpng-dev libstb-dev libxml2-utils python3)
+          libopenexr-dev openexr libgtest-dev libcli11-dev nlohmann-json3-dev libpng-dev libstb-dev libdraco-dev
+          libmeshoptimizer-dev libxml2-utils python3)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

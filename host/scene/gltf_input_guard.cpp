@@ -68,6 +68,20 @@ std::string_view glbJsonChunk(const std::vector<unsigned char>& glb) {
   return std::string_view(reinterpret_cast<const char*>(glb.data()) + 20, size_t(jsonLength));
 }
 
+std::vector<unsigned char> replaceGlbJson(const std::vector<unsigned char>& glb, std::string json) {
+  std::string_view old = glbJsonChunk(glb);
+  size_t rest = 20 + old.size();  // the BIN chunk, if any, starts here (glbJsonChunk checked the padding)
+  while (json.size() % 4 != 0) json.push_back(' ');
+  uint64_t total = 20 + uint64_t(json.size()) + (glb.size() - rest);
+  if (total > 0xFFFFFFFFu) throw Error("GLB too large after its JSON was rewritten");
+  std::vector<unsigned char> out(20);
+  auto put = [&](size_t offset, uint32_t w) { std::memcpy(out.data() + offset, &w, 4); };
+  put(0, 0x46546C67u), put(4, 2), put(8, uint32_t(total)), put(12, uint32_t(json.size())), put(16, 0x4E4F534Au);
+  out.insert(out.end(), json.begin(), json.end());
+  out.insert(out.end(), glb.begin() + rest, glb.end());
+  return out;
+}
+
 namespace {
 
 // Counts values and tracks depth without building anything; stops at the first limit crossed.

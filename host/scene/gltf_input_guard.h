@@ -23,6 +23,10 @@ std::vector<unsigned char> readRegularFile(const std::string& path, uint64_t max
 // The JSON chunk of a GLB container whose header, chunk lengths and alignment are consistent with its size.
 std::string_view glbJsonChunk(const std::vector<unsigned char>& glb);
 
+// The same GLB container with its JSON chunk replaced by `json` (padded with spaces) and its BIN chunk kept.
+// `glb` has passed glbJsonChunk.
+std::vector<unsigned char> replaceGlbJson(const std::vector<unsigned char>& glb, std::string json);
+
 // What the loader needs to know before tinygltf parses the file.
 struct GltfJsonFacts {
   uint64_t largestBuffer = 0;  // the largest declared buffers[].byteLength

@@ -3,6 +3,7 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -11,14 +12,20 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <limits>
+#include <map>
+#include <optional>
 #include <string_view>
 
 #include <sys/stat.h>
 
 #include "../shaders/shared/geometry.h"
 #include "error.h"
+#include "scene/gltf_accessors.h"
+#include "scene/gltf_decompress.h"
 #include "scene/gltf_extensions.h"
+#include "scene/gltf_primitive.h"
 #include "scene/gltf_textures.h"
+#include "scene/tangent_space.h"
 
 namespace vkmc {
 namespace {
@@ -33,151 +40,6 @@ std::string coordinateLimit() {
   char buf[16];
   std::snprintf(buf, sizeof(buf), "%g", double(gpu::kMaxSceneCoordinate));
   return buf;
-}
-
-struct AccessorView {
-  const unsigned char* data = nullptr;
-  size_t count = 0;
-  size_t stride = 0;
-  int componentType = 0;
-  int type = 0;
-};
-
-size_t componentSize(int componentType) {
-  switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-    case TINYGLTF_COMPONENT_TYPE_INT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-    default: return 0;
-  }
-}
-
-size_t componentCount(int type) {
-  switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return 1;
-    case TINYGLTF_TYPE_VEC2: return 2;
-    case TINYGLTF_TYPE_VEC3: return 3;
-    case TINYGLTF_TYPE_VEC4: return 4;
-    default: return 0;
-  }
-}
-
-AccessorView viewAccessor(const tinygltf::Model& model, int index, const char* what) {
-  std::string name = std::string(what) + " accessor " + std::to_string(index);
-  if (index < 0 || index >= static_cast<int>(model.accessors.size())) throw Error(name + " does not exist");
-  const tinygltf::Accessor& a = model.accessors[index];
-  if (a.sparse.isSparse) throw Error(name + " is sparse (not supported)");
-  size_t elemSize = componentSize(a.componentType) * componentCount(a.type);
-  if (elemSize == 0) throw Error(name + " has an invalid type");
-  if (a.bufferView < 0 || a.bufferView >= static_cast<int>(model.bufferViews.size()))
-    throw Error(name + " has no valid buffer view");
-  const tinygltf::BufferView& v = model.bufferViews[a.bufferView];
-  if (v.buffer < 0 || v.buffer >= static_cast<int>(model.buffers.size())) throw Error(name + " refers to a missing buffer");
-  const tinygltf::Buffer& b = model.buffers[v.buffer];
-  size_t stride = v.byteStride ? v.byteStride : elemSize;
-  if (stride < elemSize) throw Error(name + " has a byte stride smaller than its element");
-  // Every bound by subtraction from a known size: sums of file-supplied offsets and counts can wrap.
-  if (v.byteOffset > b.data.size() || v.byteLength > b.data.size() - v.byteOffset)
-    throw Error(name + ": buffer view runs past the end of its buffer");
-  if (a.count > 0 && (a.byteOffset > v.byteLength || elemSize > v.byteLength - a.byteOffset ||
-                      (a.count - 1) > (v.byteLength - a.byteOffset - elemSize) / stride))
-    throw Error(name + ": accessor runs past the end of its buffer view");
-  AccessorView out;
-  out.data = b.data.data() + v.byteOffset + a.byteOffset;
-  out.count = a.count;
-  out.stride = stride;
-  out.componentType = a.componentType;
-  out.type = a.type;
-  return out;
-}
-
-// Triangle lists, strips and fans (glTF 2.0 section 3.7.2.1): how many triangles a primitive of `elements`
-// vertices makes, and which element is corner k of triangle t (strips alternate their winding so every
-// triangle keeps the first one's orientation).
-bool isTriangleMode(int mode) {
-  return mode == -1 || mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
-         mode == TINYGLTF_MODE_TRIANGLE_FAN;
-}
-size_t triangleCount(int mode, size_t elements) {
-  if (mode == TINYGLTF_MODE_TRIANGLE_STRIP || mode == TINYGLTF_MODE_TRIANGLE_FAN) return elements >= 3 ? elements - 2 : 0;
-  return elements / 3;
-}
-size_t cornerElement(int mode, size_t t, int k) {
-  if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) return k == 0 ? t : k == 1 ? t + 1 + t % 2 : t + 2 - t % 2;
-  if (mode == TINYGLTF_MODE_TRIANGLE_FAN) return k == 0 ? t + 1 : k == 1 ? t + 2 : 0;
-  return 3 * t + k;
-}
-
-glm::vec3 readVec3(const AccessorView& v, size_t i) {
-  glm::vec3 r;
-  std::memcpy(&r, v.data + i * v.stride, sizeof(r));
-  return r;
-}
-
-uint32_t readIndex(const AccessorView& v, size_t i) {
-  const unsigned char* p = v.data + i * v.stride;
-  switch (v.componentType) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-      uint16_t x;
-      std::memcpy(&x, p, 2);
-      return x;
-    }
-    default: {
-      uint32_t x;
-      std::memcpy(&x, p, 4);
-      return x;
-    }
-  }
-}
-
-// Element i of a float or normalized-integer attribute as up to 4 floats (glTF 3.11's normalization).
-glm::vec4 readFloats(const AccessorView& v, size_t i, glm::vec4 fallback) {
-  const unsigned char* p = v.data + i * v.stride;
-  size_t n = componentCount(v.type);
-  glm::vec4 r = fallback;
-  for (size_t c = 0; c < n && c < 4; ++c) {
-    switch (v.componentType) {
-      case TINYGLTF_COMPONENT_TYPE_FLOAT: std::memcpy(&r[c], p + 4 * c, 4); break;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: r[c] = p[c] / 255.0f; break;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        uint16_t x;
-        std::memcpy(&x, p + 2 * c, 2);
-        r[c] = x / 65535.0f;
-        break;
-      }
-      default: r[c] = 0.0f;
-    }
-  }
-  return r;
-}
-
-glm::vec3 anyPerpendicular(const glm::vec3& n) {
-  glm::vec3 a = std::abs(n.x) > 0.9f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
-  return glm::normalize(glm::cross(n, a));
-}
-
-// A triangle's tangent (direction of increasing u) and bitangent sign from its uv derivatives, in world space.
-glm::vec4 uvTangent(const glm::vec3 p[3], const glm::vec2 uv[3], const glm::vec3& n) {
-  glm::vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
-  glm::vec2 d1 = uv[1] - uv[0], d2 = uv[2] - uv[0];
-  float det = d1.x * d2.y - d2.x * d1.y;
-  if (!(std::abs(det) > 0.0f)) return glm::vec4(anyPerpendicular(n), 1.0f);
-  glm::vec3 t = (e1 * d2.y - e2 * d1.y) / det, b = (e2 * d1.x - e1 * d2.x) / det;
-  float sign = glm::dot(glm::cross(n, t), b) < 0.0f ? -1.0f : 1.0f;
-  return glm::vec4(t, sign);
-}
-
-// A per-corner attribute: allocated (with defaults for earlier corners) when the first primitive has it.
-template <typename T>
-void pushCorner(std::vector<T>& values, size_t corner, const std::optional<T>& value, const T& fallback) {
-  if (values.empty() && !value) return;
-  if (values.size() < corner) values.resize(corner, fallback);
-  values.push_back(value.value_or(fallback));
 }
 
 glm::mat4 localTransform(const tinygltf::Node& node) {
@@ -252,10 +114,63 @@ Material convertMaterial(const tinygltf::Material& m, int index, const std::vect
   return out;
 }
 
+// Appends one corner's attribute to a scene array that stays empty until some primitive has the attribute; the
+// corners before it then get the default.
+template <class T>
+void appendCorner(std::vector<T>& dst, const std::vector<T>& src, uint32_t vertex, const T& fallback, size_t cornersBefore) {
+  if (src.empty() && dst.empty()) return;
+  if (dst.empty() && cornersBefore > 0) dst.assign(cornersBefore, fallback);
+  dst.push_back(src.empty() ? fallback : src[vertex]);
+}
+
+// EXT_mesh_gpu_instancing: one local transform per instance (translation, rotation, scale, as a node's), applied
+// before the node's world transform; a node without the extension has the one identity instance.
+std::vector<glm::mat4> instanceTransforms(const tinygltf::Model& model, const tinygltf::Node& node, uint64_t maxElements) {
+  auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
+  if (ext == node.extensions.end() || !ext->second.Has("attributes")) return {glm::mat4(1.0f)};
+  const tinygltf::Value& attributes = ext->second.Get("attributes");
+  std::optional<size_t> count;
+  FloatAccessor trs[3];
+  const char* names[3] = {"TRANSLATION", "ROTATION", "SCALE"};
+  const int types[3] = {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4, TINYGLTF_TYPE_VEC3};
+  for (int i = 0; i < 3; ++i) {
+    if (!attributes.Has(names[i]) || !attributes.Get(names[i]).IsInt()) continue;
+    trs[i] = readFloatAccessor(model, attributes.Get(names[i]).GetNumberAsInt(), names[i], maxElements);
+    if (trs[i].type != types[i])
+      throw Error(std::string("EXT_mesh_gpu_instancing: ") + names[i] + " accessor has the wrong type");
+    if (count && *count != trs[i].count()) throw Error("EXT_mesh_gpu_instancing: instance attributes of different counts");
+    count = trs[i].count();
+  }
+  if (!count) return {glm::mat4(1.0f)};
+  std::vector<glm::mat4> out(*count);
+  for (size_t k = 0; k < *count; ++k) {
+    glm::mat4 m(1.0f);
+    if (!trs[0].values.empty()) m = glm::translate(m, glm::vec3(trs[0].values[k]));
+    if (!trs[1].values.empty()) {
+      glm::vec4 r = trs[1].values[k];
+      glm::quat q(r.w, r.x, r.y, r.z);
+      if (!(glm::dot(r, r) > 0.0f))
+        throw Error("EXT_mesh_gpu_instancing: instance " + std::to_string(k) + " has a zero rotation");
+      m *= glm::mat4_cast(glm::normalize(q));
+    }
+    if (!trs[2].values.empty()) m = glm::scale(m, glm::vec3(trs[2].values[k]));
+    out[k] = m;
+  }
+  return out;
+}
+
+bool hasNormalTexture(const tinygltf::Model& model, int material) {
+  return material >= 0 && material < static_cast<int>(model.materials.size()) &&
+         model.materials[material].normalTexture.index >= 0;
+}
+
 class Flattener {
  public:
   Flattener(const tinygltf::Model& model, Scene& scene, uint64_t maxTriangles)
-      : model_(model), scene_(scene), maxTriangles_(maxTriangles) {}
+      : model_(model), scene_(scene), maxTriangles_(maxTriangles), maxElements_(3 * maxTriangles + 3) {
+    for (const tinygltf::Mesh& mesh : model.meshes)
+      for (const tinygltf::Primitive& prim : mesh.primitives) withTangents_ |= hasNormalTexture(model, prim.material);
+  }
 
   void visit(int nodeIndex, const glm::mat4& parent, int depth) {
     if (nodeIndex < 0 || nodeIndex >= static_cast<int>(model_.nodes.size()))
@@ -265,7 +180,7 @@ class Flattener {
       throw Error("scene too big: more than " + std::to_string(kMaxNodeVisits) + " node instances after instancing");
     const tinygltf::Node& node = model_.nodes[nodeIndex];
     glm::mat4 world = parent * localTransform(node);
-    if (node.mesh >= 0) addMesh(node.mesh, world);
+    if (node.mesh >= 0) addMesh(nodeIndex, world);
     if (node.camera >= 0) addCamera(node.camera, world);
     for (int child : node.children) visit(child, world, depth + 1);
   }
@@ -273,118 +188,116 @@ class Flattener {
   uint64_t nonTrianglePrimitives = 0;
 
  private:
-  void addMesh(int meshIndex, const glm::mat4& world) {
-    if (meshIndex >= static_cast<int>(model_.meshes.size())) throw Error("mesh " + std::to_string(meshIndex) + " does not exist");
-    glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(world)));
-    bool flip = glm::determinant(glm::mat3(world)) < 0.0f;  // mirroring swaps the winding
-    for (const tinygltf::Primitive& prim : model_.meshes[meshIndex].primitives) {
+  // The mesh's primitives in local space, read once per mesh (and per node that overrides its morph weights).
+  const std::vector<PrimitiveData>& meshData(int nodeIndex) {
+    const tinygltf::Node& node = model_.nodes[nodeIndex];
+    const tinygltf::Mesh& mesh = model_.meshes[node.mesh];
+    auto key = std::make_pair(node.mesh, node.weights.empty() ? -1 : nodeIndex);
+    auto cached = meshes_.find(key);
+    if (cached != meshes_.end()) return cached->second;
+    std::vector<PrimitiveData> data;
+    for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+      const tinygltf::Primitive& prim = mesh.primitives[p];
       if (!isTriangleMode(prim.mode)) {
-        ++nonTrianglePrimitives;
+        data.emplace_back();
         continue;
       }
-      auto pos = prim.attributes.find("POSITION");
-      if (pos == prim.attributes.end()) throw Error("mesh " + std::to_string(meshIndex) + ": primitive without POSITION");
-      AccessorView positions = viewAccessor(model_, pos->second, "POSITION");
-      if (positions.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || positions.type != TINYGLTF_TYPE_VEC3)
-        throw Error("POSITION accessor " + std::to_string(pos->second) + " is not float VEC3");
-      std::optional<AccessorView> normals;
-      if (auto n = prim.attributes.find("NORMAL"); n != prim.attributes.end()) {
-        normals = viewAccessor(model_, n->second, "NORMAL");
-        if (normals->componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || normals->type != TINYGLTF_TYPE_VEC3 ||
-            normals->count != positions.count)
-          normals.reset();
-      }
-      std::optional<AccessorView> indices;
-      if (prim.indices >= 0) {
-        indices = viewAccessor(model_, prim.indices, "index");
-        int ct = indices->componentType;
-        if (indices->type != TINYGLTF_TYPE_SCALAR ||
-            (ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-             ct != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT))
-          throw Error("index accessor " + std::to_string(prim.indices) + " is not an unsigned integer scalar");
-      }
-      int materialIndex = prim.material;
-      if (materialIndex >= static_cast<int>(model_.materials.size()))
-        throw Error("primitive refers to missing material " + std::to_string(materialIndex));
-      uint32_t materialId = materialIndex < 0 ? static_cast<uint32_t>(scene_.materials.size() - 1)  // default material
-                                              : static_cast<uint32_t>(materialIndex);
-      auto attribute = [&](const char* name, int minComponents) -> std::optional<AccessorView> {
-        auto it = prim.attributes.find(name);
-        if (it == prim.attributes.end()) return std::nullopt;
-        AccessorView v = viewAccessor(model_, it->second, name);
-        if (v.count != positions.count || componentCount(v.type) < size_t(minComponents)) return std::nullopt;
-        return v;
-      };
-      std::optional<AccessorView> uv0 = attribute("TEXCOORD_0", 2), uv1 = attribute("TEXCOORD_1", 2);
-      std::optional<AccessorView> colors = attribute("COLOR_0", 3), tangents = attribute("TANGENT", 4);
-      bool normalMapped = scene_.materials[materialId].normalTexture.present();
-      size_t triangles = triangleCount(prim.mode, indices ? indices->count : positions.count);
-      if (scene_.triangleCount() + triangles > maxTriangles_)
-        throw Error("scene too big: more than " + std::to_string(maxTriangles_) +
-                    " triangles after instancing (what the device's buffers and this machine's memory hold)");
-      for (size_t t = 0; t < triangles; ++t) {
-        uint32_t idx[3];
-        for (int k = 0; k < 3; ++k) {
-          size_t element = cornerElement(prim.mode, t, k);
-          size_t vertex = indices ? readIndex(*indices, element) : element;
-          if (vertex >= positions.count)
-            throw Error("index " + std::to_string(vertex) + " out of range (" + std::to_string(positions.count) + " vertices)");
-          idx[k] = static_cast<uint32_t>(vertex);
-        }
-        if (flip) std::swap(idx[1], idx[2]);
-        glm::vec3 p[3], n[3];
-        for (int k = 0; k < 3; ++k) {
-          glm::vec3 local = readVec3(positions, idx[k]);
-          if (!finite(local)) throw Error("vertex " + std::to_string(idx[k]) + " has a NaN or infinite position");
-          p[k] = glm::vec3(world * glm::vec4(local, 1.0f));
-          if (!finite(p[k])) throw Error("vertex " + std::to_string(idx[k]) + " is not finite after its node transform");
-          if (!inRange(p[k]))
-            throw Error("vertex " + std::to_string(idx[k]) + " lies beyond +-" + coordinateLimit() +
-                        " after its node transform (float ray tests overflow there; scale the scene down)");
-        }
-        // Degenerate exactly when the GPU's own normal and area would be (the same shared function): its
-        // scaled cross product must have a normal length and its area must be a normal float. Huge triangles
-        // (a ground plane of 3e9) are not degenerate; a plain float cross would overflow for them.
-        glm::vec4 c = gpu::scaledTriangleCross(p[0], p[1], p[2]);
-        float area = 0.5f * glm::length(glm::vec3(c)) * c.w * c.w;
-        if (!(glm::dot(glm::vec3(c), glm::vec3(c)) >= std::numeric_limits<float>::min()) ||
-            !(area >= std::numeric_limits<float>::min()) || !std::isfinite(area)) {
-          ++scene_.degenerateTriangles;
-          continue;
-        }
-        glm::vec3 geometric = glm::normalize(glm::vec3(c));
-        glm::vec2 uv[3];
-        for (int k = 0; k < 3; ++k) uv[k] = uv0 ? glm::vec2(readFloats(*uv0, idx[k], glm::vec4(0.0f))) : glm::vec2(0.0f);
-        glm::vec4 faceTangent = normalMapped ? uvTangent(p, uv, geometric) : glm::vec4(0.0f);
-        for (int k = 0; k < 3; ++k) {
-          glm::vec3 nk = normals ? normalMatrix * readVec3(*normals, idx[k]) : geometric;
-          float nl = glm::length(nk);
-          n[k] = (nl > 0.0f && std::isfinite(nl)) ? nk / nl : geometric;
-          size_t corner = scene_.positions.size();
-          pushCorner(scene_.uv0, corner, uv0 ? std::optional<glm::vec2>(uv[k]) : std::nullopt, glm::vec2(0.0f));
-          pushCorner(scene_.uv1, corner,
-                     uv1 ? std::optional<glm::vec2>(glm::vec2(readFloats(*uv1, idx[k], glm::vec4(0.0f)))) : std::nullopt,
-                     glm::vec2(0.0f));
-          pushCorner(scene_.colors, corner,
-                     colors ? std::optional<glm::vec4>(readFloats(*colors, idx[k], glm::vec4(1.0f))) : std::nullopt,
-                     glm::vec4(1.0f));
-          std::optional<glm::vec4> tangent;
-          if (normalMapped) {
-            glm::vec4 t = tangents ? readFloats(*tangents, idx[k], glm::vec4(0.0f)) : faceTangent;
-            if (tangents) t = glm::vec4(glm::mat3(world) * glm::vec3(t), flip ? -t.w : t.w);
-            glm::vec3 ortho = glm::vec3(t) - n[k] * glm::dot(n[k], glm::vec3(t));
-            float ol = glm::length(ortho);
-            tangent = ol > 1e-20f && std::isfinite(ol) ? glm::vec4(ortho / ol, t.w < 0.0f ? -1.0f : 1.0f)
-                                                       : glm::vec4(anyPerpendicular(n[k]), 1.0f);
-          }
-          pushCorner(scene_.tangents, corner, tangent, glm::vec4(1.0f, 0.0f, 0.0f, 1.0f));
-          scene_.positions.push_back(p[k]);
-          scene_.normals.push_back(n[k]);
-          scene_.bounds.grow(p[k]);
-        }
-        scene_.materialIds.push_back(materialId);
+      PrimitiveRequest request;
+      request.weights = node.weights.empty() ? mesh.weights : node.weights;
+      request.generateTangents = hasNormalTexture(model_, prim.material);
+      if (request.generateTangents) request.tangentUvSet = model_.materials[prim.material].normalTexture.texCoord;
+      request.maxElements = maxElements_;
+      try {
+        data.push_back(readPrimitive(model_, prim, request));
+      } catch (const Error& e) {
+        throw Error("mesh " + std::to_string(node.mesh) + ", primitive " + std::to_string(p) + ": " + e.what());
       }
     }
+    return meshes_.emplace(key, std::move(data)).first->second;
+  }
+
+  void addMesh(int nodeIndex, const glm::mat4& nodeWorld) {
+    int meshIndex = model_.nodes[nodeIndex].mesh;
+    if (meshIndex >= static_cast<int>(model_.meshes.size())) throw Error("mesh " + std::to_string(meshIndex) + " does not exist");
+    const std::vector<PrimitiveData>& data = meshData(nodeIndex);
+    const tinygltf::Mesh& mesh = model_.meshes[meshIndex];
+    for (const glm::mat4& instance : instanceTransforms(model_, model_.nodes[nodeIndex], maxElements_)) {
+      glm::mat4 world = nodeWorld * instance;
+      for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+        const tinygltf::Primitive& prim = mesh.primitives[p];
+        if (!isTriangleMode(prim.mode)) {
+          ++nonTrianglePrimitives;
+          continue;
+        }
+        int materialIndex = prim.material;
+        if (materialIndex >= static_cast<int>(model_.materials.size()))
+          throw Error("primitive refers to missing material " + std::to_string(materialIndex));
+        uint32_t materialId = materialIndex < 0 ? static_cast<uint32_t>(scene_.materials.size() - 1)  // default material
+                                                : static_cast<uint32_t>(materialIndex);
+        addPrimitive(data[p], world, materialId);
+      }
+    }
+  }
+
+  void addPrimitive(const PrimitiveData& data, const glm::mat4& world, uint32_t materialId) {
+    glm::mat3 linear(world);
+    glm::mat3 normalMatrix = glm::transpose(glm::inverse(linear));
+    bool flip = glm::determinant(linear) < 0.0f;  // mirroring swaps the winding and the bitangent's handedness
+    size_t triangles = data.triangles.size() / 3;
+    if (scene_.triangleCount() + triangles > maxTriangles_)
+      throw Error("scene too big: more than " + std::to_string(maxTriangles_) +
+                  " triangles after instancing (what the device's buffers and this machine's memory hold)");
+    for (size_t t = 0; t < triangles; ++t) {
+      uint32_t idx[3] = {data.triangles[3 * t], data.triangles[3 * t + 1], data.triangles[3 * t + 2]};
+      if (flip) std::swap(idx[1], idx[2]);
+      glm::vec3 p[3], n[3];
+      for (int k = 0; k < 3; ++k) {
+        glm::vec3 local = data.positions[idx[k]];
+        if (!finite(local)) throw Error("vertex " + std::to_string(idx[k]) + " has a NaN or infinite position");
+        p[k] = glm::vec3(world * glm::vec4(local, 1.0f));
+        if (!finite(p[k])) throw Error("vertex " + std::to_string(idx[k]) + " is not finite after its node transform");
+        if (!inRange(p[k]))
+          throw Error("vertex " + std::to_string(idx[k]) + " lies beyond +-" + coordinateLimit() +
+                      " after its node transform (float ray tests overflow there; scale the scene down)");
+      }
+      // Degenerate exactly when the GPU's own normal and area would be (the same shared function): its
+      // scaled cross product must have a normal length and its area must be a normal float. Huge triangles
+      // (a ground plane of 3e9) are not degenerate; a plain float cross would overflow for them.
+      glm::vec4 c = gpu::scaledTriangleCross(p[0], p[1], p[2]);
+      float area = 0.5f * glm::length(glm::vec3(c)) * c.w * c.w;
+      if (!(glm::dot(glm::vec3(c), glm::vec3(c)) >= std::numeric_limits<float>::min()) ||
+          !(area >= std::numeric_limits<float>::min()) || !std::isfinite(area)) {
+        ++scene_.degenerateTriangles;
+        continue;
+      }
+      glm::vec3 geometric = glm::normalize(glm::vec3(c));
+      for (int k = 0; k < 3; ++k) {
+        glm::vec3 nk = data.normals.empty() ? geometric : normalMatrix * data.normals[idx[k]];
+        float nl = glm::length(nk);
+        n[k] = (nl > 0.0f && std::isfinite(nl)) ? nk / nl : geometric;
+        size_t corners = scene_.positions.size();
+        appendCorner(scene_.uv0, data.uv0, idx[k], glm::vec2(0.0f), corners);
+        appendCorner(scene_.uv1, data.uv1, idx[k], glm::vec2(0.0f), corners);
+        appendCorner(scene_.colors, data.colors, idx[k], glm::vec4(1.0f), corners);
+        if (withTangents_) scene_.tangents.push_back(worldTangent(data, idx[k], linear, n[k], flip));
+        scene_.positions.push_back(p[k]);
+        scene_.normals.push_back(n[k]);
+        scene_.bounds.grow(p[k]);
+      }
+      scene_.materialIds.push_back(materialId);
+    }
+  }
+
+  // The tangent by the node's linear part, Gram-Schmidt against the corner's world normal.
+  static glm::vec4 worldTangent(const PrimitiveData& data, uint32_t vertex, const glm::mat3& linear, const glm::vec3& n,
+                                bool flip) {
+    glm::vec4 local = data.tangents.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : data.tangents[vertex];
+    glm::vec3 t = linear * glm::vec3(local);
+    t -= n * glm::dot(n, t);
+    float tl = glm::length(t);
+    t = (tl > 1e-20f && std::isfinite(tl)) ? t / tl : anyPerpendicular(n);
+    float w = (local.w < 0.0f ? -1.0f : 1.0f) * (flip ? -1.0f : 1.0f);
+    return glm::vec4(t, w);
   }
 
   void addCamera(int cameraIndex, const glm::mat4& world) {
@@ -423,7 +336,9 @@ class Flattener {
 
   const tinygltf::Model& model_;
   Scene& scene_;
-  uint64_t maxTriangles_;
+  uint64_t maxTriangles_, maxElements_;
+  bool withTangents_ = false;  // some primitive's material has a normal texture
+  std::map<std::pair<int, int>, std::vector<PrimitiveData>> meshes_;
   size_t visits_ = 0;
 };
 
@@ -442,22 +357,42 @@ class InstanceCounter {
     memo = kVisiting;
     const tinygltf::Node& node = model_.nodes[nodeIndex];
     uint64_t total = 0;
-    if (node.mesh >= 0 && node.mesh < static_cast<int>(model_.meshes.size()))
+    if (node.mesh >= 0 && node.mesh < static_cast<int>(model_.meshes.size())) {
+      uint64_t meshTriangles = 0;
       for (const tinygltf::Primitive& prim : model_.meshes[node.mesh].primitives) {
         if (!isTriangleMode(prim.mode)) continue;
         auto pos = prim.attributes.find("POSITION");
         int accessor = prim.indices >= 0 ? prim.indices : pos == prim.attributes.end() ? -1 : pos->second;
         if (accessor >= 0 && accessor < static_cast<int>(model_.accessors.size()))
-          total = saturatingAdd(total, triangleCount(prim.mode, model_.accessors[accessor].count));
+          meshTriangles = saturatingAdd(meshTriangles, triangleCount(prim.mode, model_.accessors[accessor].count));
       }
+      total = saturatingMultiply(meshTriangles, instanceCount(node));
+    }
     for (int child : node.children) total = saturatingAdd(total, trianglesUnder(child, depth + 1));
     memo_[nodeIndex] = total;
     return total;
   }
 
   static uint64_t saturatingAdd(uint64_t a, uint64_t b) { return std::min(a + std::min(b, kSaturated), kSaturated); }
+  static uint64_t saturatingMultiply(uint64_t a, uint64_t b) {
+    return a == 0 || b == 0 ? 0 : b > kSaturated / a ? kSaturated : std::min(a * b, kSaturated);
+  }
 
  private:
+  // EXT_mesh_gpu_instancing's instance count (its accessors' largest count), 1 without the extension.
+  uint64_t instanceCount(const tinygltf::Node& node) const {
+    auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
+    if (ext == node.extensions.end() || !ext->second.Has("attributes")) return 1;
+    const tinygltf::Value& attributes = ext->second.Get("attributes");
+    uint64_t count = 0;
+    for (const char* name : {"TRANSLATION", "ROTATION", "SCALE"})
+      if (attributes.Has(name) && attributes.Get(name).IsInt()) {
+        int a = attributes.Get(name).GetNumberAsInt();
+        if (a >= 0 && a < static_cast<int>(model_.accessors.size())) count = std::max<uint64_t>(count, model_.accessors[a].count);
+      }
+    return count == 0 ? 1 : count;
+  }
+
   static constexpr uint64_t kSaturated = uint64_t(1) << 62;
   static constexpr uint64_t kUnknown = ~uint64_t(0), kVisiting = kUnknown - 1;
   const tinygltf::Model& model_;
@@ -486,6 +421,24 @@ bool safeReadWholeFile(std::vector<unsigned char>* out, std::string* err, const 
 }
 bool noWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) { return false; }
 
+// Errors in files that use a geometry-compression extension name it, so users know where to look.
+std::string usedCompressionNote(const std::vector<std::string>& used, const std::vector<std::string>& required) {
+  std::string names;
+  for (const char* name : {"KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_mesh_quantization"})
+    if (std::find(used.begin(), used.end(), name) != used.end() ||
+        std::find(required.begin(), required.end(), name) != required.end())
+      names += (names.empty() ? "" : ", ") + std::string(name);
+  return names;
+}
+std::string noteUnlessNamed(const std::string& message, const std::string& names) {
+  for (const char* name : {"KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_mesh_quantization"})
+    if (message.find(name) != std::string::npos) return "";
+  return names.empty() ? "" : " (the file uses " + names + ")";
+}
+
+Scene flattenModel(const tinygltf::Model& model, const std::string& path, const LoadLimits& limits,
+                   const std::vector<std::string>& extensionWarnings);
+
 }  // namespace
 
 Scene loadGltf(const std::string& path, const LoadLimits& limits) {
@@ -501,6 +454,7 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
                          const std::string& path, const LoadLimits& limits) {
   tinygltf::Model model;
   std::vector<std::string> extensionWarnings;
+  std::string compressionNote;
   ImageDecoder imageDecoder;
   imageDecoder.limits.maxTotalTexels = limits.maxTextureTexels;
   try {
@@ -508,6 +462,19 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
         binary ? glbJsonChunk(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     GltfJsonFacts facts = scanGltfJson(json, limits.input);
     extensionWarnings = checkExtensions(facts.extensionsUsed, facts.extensionsRequired);
+    compressionNote = usedCompressionNote(facts.extensionsUsed, facts.extensionsRequired);
+    // tinygltf refuses parts of valid Draco and meshopt files (gltf_decompress.h says which).
+    std::string rewritten = compressionNote.empty() ? "" : prepareCompressedJson(json);
+    std::vector<unsigned char> rewrittenGlb;
+    if (!rewritten.empty()) {
+      if (binary) {
+        rewrittenGlb = replaceGlbJson(bytes, rewritten);
+        json = glbJsonChunk(rewrittenGlb);
+      } else {
+        json = rewritten;
+      }
+    }
+    const std::vector<unsigned char>& glb = rewrittenGlb.empty() ? bytes : rewrittenGlb;
     uint64_t largestBuffer = facts.largestBuffer;
     // Buffers must match their declared byteLength exactly (tinygltf checks after reading); an image file
     // beyond the largest buffer or 256 MiB is refused before it is read, its decoded size by the image decoder.
@@ -516,21 +483,33 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
     loader.SetImageLoader(decodeGltfImage, &imageDecoder);
     loader.SetFsCallbacks({safeFileExists, noExpansion, safeReadWholeFile, noWrite, &safeFs});
     std::string err, warn;
-    bool ok = binary
-                  ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), static_cast<unsigned>(bytes.size()), baseDir)
-                  : loader.LoadASCIIFromString(&model, &err, &warn, json.data(), static_cast<unsigned>(json.size()), baseDir);
+    bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, glb.data(), static_cast<unsigned>(glb.size()), baseDir)
+                     : loader.LoadASCIIFromString(&model, &err, &warn, json.data(), static_cast<unsigned>(json.size()), baseDir);
     if (!ok) throw Error(err.empty() ? "unknown error" : err);
+    decompressModel(model, DecompressLimits{limits.input.maxExternalFileBytes, limits.maxTriangles});
   } catch (const Error& e) {
-    std::string reason = e.what();
+    std::string reason = e.what() + noteUnlessNamed(e.what(), compressionNote);
     while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' ')) reason.pop_back();
     for (char& c : reason)
       if (c == '\n') c = ';';
     throw Error("cannot load '" + path + "': " + reason);
   }
 
+  // Images the decoder could not read are warned about with the extensions (their textures are ignored).
+  extensionWarnings.insert(extensionWarnings.end(), imageDecoder.failures.begin(), imageDecoder.failures.end());
+  try {
+    return flattenModel(model, path, limits, extensionWarnings);
+  } catch (const Error& e) {
+    throw Error(e.what() + noteUnlessNamed(e.what(), compressionNote));
+  }
+}
+
+namespace {
+
+Scene flattenModel(const tinygltf::Model& model, const std::string& path, const LoadLimits& limits,
+                   const std::vector<std::string>& extensionWarnings) {
   Scene scene;
   scene.path = path;
-  for (const std::string& failure : imageDecoder.failures) scene.warnings.push_back(failure);
   scene.textures = convertTextures(model, scene.warnings);
   for (size_t i = 0; i < model.materials.size(); ++i)
     scene.materials.push_back(convertMaterial(model.materials[i], static_cast<int>(i), scene.textures, scene.warnings));
@@ -558,6 +537,7 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
   if (instanced > limits.maxTriangles)
     throw Error("scene too big: more than " + std::to_string(limits.maxTriangles) + " triangles after instancing (" +
                 std::to_string(instanced) + " instanced; the limit is what the device's buffers and this machine's memory hold)");
+  if (!model.skins.empty()) scene.warnings.push_back("skins: rendered in bind pose");
   Flattener flattener(model, scene, limits.maxTriangles);
   for (int root : roots) flattener.visit(root, glm::mat4(1.0f), 0);
   scene.skippedPrimitives = flattener.nonTrianglePrimitives;
@@ -568,5 +548,7 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
   if (scene.triangleCount() == 0) throw Error("scene '" + path + "' has no triangles");
   return scene;
 }
+
+}  // namespace
 
 }  // namespace vkmc

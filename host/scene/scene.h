@@ -79,13 +79,18 @@ struct Aabb {
 };
 
 struct Scene {
-  std::vector<glm::vec3> positions;   // 3 per triangle, world space, counter-clockwise front faces
-  std::vector<glm::vec3> normals;     // 3 per triangle, world space (geometric normal where the file has none)
+  std::vector<glm::vec3> positions;  // 3 per triangle, world space, counter-clockwise front faces
+  std::vector<glm::vec3> normals;    // 3 per triangle, world space (geometric normal where the file has none)
+  // Per-corner vertex attributes, parallel to `positions`; each is empty when no primitive in the scene has it,
+  // so scenes without textures pay nothing. Primitives lacking one get its default.
+  std::vector<glm::vec2> uv0, uv1;  // TEXCOORD_0 / TEXCOORD_1 as stored (default 0,0)
+  // World-space unit tangent (re-orthogonalized against the corner's normal) and bitangent sign w = +-1
+  // (bitangent = cross(normal, tangent) * w, already flipped for mirroring nodes). Present when some primitive's
+  // material has a normalTexture: from TANGENT, else generated (scene/tangent_space.h); primitives whose material
+  // has none get TANGENT or an arbitrary perpendicular with w = 1.
+  std::vector<glm::vec4> tangents;
+  std::vector<glm::vec4> colors;      // COLOR_0, linear RGBA (VEC3: alpha 1; default 1,1,1,1)
   std::vector<uint32_t> materialIds;  // 1 per triangle
-  // Per-corner attributes parallel to positions, each empty when no primitive of the scene has it:
-  std::vector<glm::vec2> uv0, uv1;  // TEXCOORD_0 / _1 ((0,0) where a primitive lacks them)
-  std::vector<glm::vec4> tangents;  // world-space unit tangent, w = bitangent sign (normal-mapped materials only)
-  std::vector<glm::vec4> colors;    // COLOR_0, linear RGBA ((1,1,1,1) where a primitive lacks it)
   std::vector<Material> materials;
   std::vector<Texture> textures;
   std::vector<Camera> cameras;  // camera instances in node order
@@ -97,6 +102,9 @@ struct Scene {
   bool hasPunctualLights = false;  // KHR_lights_punctual present (ignored for now)
 
   size_t triangleCount() const { return materialIds.size(); }
+  bool hasUv0() const { return !uv0.empty(); }
+  bool hasTangents() const { return !tangents.empty(); }
+  bool hasColors() const { return !colors.empty(); }
   // One box per triangle: what the BVH builder takes.
   std::vector<Aabb> triangleBounds() const {
     std::vector<Aabb> boxes(triangleCount());

@@ -1,0 +1,36 @@
+// One glTF mesh primitive in its local space as indexed vertices: attributes read and defaulted, morph targets
+// applied at their weights, strips and fans turned into triangle lists, tangents generated where needed.
+#pragma once
+#include <tiny_gltf.h>
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+namespace vkmc {
+
+struct PrimitiveData {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;   // empty when the primitive has no NORMAL
+  std::vector<glm::vec2> uv0, uv1;  // empty when absent
+  std::vector<glm::vec4> tangents;  // TANGENT, generated ones, or empty (see PrimitiveRequest::generateTangents)
+  std::vector<glm::vec4> colors;    // COLOR_0 as RGBA, empty when absent
+  std::vector<uint32_t> triangles;  // 3 vertex indices per triangle, each checked < positions.size()
+};
+
+struct PrimitiveRequest {
+  std::vector<double> weights;    // morph target weights (the node's, else the mesh's); missing ones are 0
+  bool generateTangents = false;  // when TANGENT is absent: MikkTSpace-style from the UV set below
+  int tangentUvSet = 0;           // the normal texture's texCoord
+  uint64_t maxElements = 0;       // per accessor (view-less accessors have no data to bound their count)
+};
+
+// Whether glTF draws `mode` as triangles (lists, strips, fans).
+bool isTriangleMode(int mode);
+// How many triangles a primitive of `elements` vertices (or indices) makes.
+size_t triangleCount(int mode, size_t elements);
+
+// Throws vkmc::Error naming the accessor or index at fault.
+PrimitiveData readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim, const PrimitiveRequest& request);
+
+}  // namespace vkmc

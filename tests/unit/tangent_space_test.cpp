@@ -1,0 +1,50 @@
+// Tangent generation: directions from the UV layout, handedness from the bitangent, orthogonality to the normal,
+// and degenerate UVs.
+#include "scene/tangent_space.h"
+
+#include <gtest/gtest.h>
+
+using namespace vkmc;
+
+namespace {
+// A unit quad in z = 0 facing +z; u along x, v along y (or mirrored in u).
+const std::vector<glm::vec3> kQuad = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+const std::vector<uint32_t> kTriangles = {0, 1, 2, 0, 2, 3};
+const std::vector<glm::vec3> kUp(4, glm::vec3(0, 0, 1));
+}  // namespace
+
+TEST(TangentSpace, TangentFollowsUAndSignFollowsV) {
+  std::vector<glm::vec2> uv = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (const glm::vec4& t : generateTangents(kQuad, kUp, uv, kTriangles)) {
+    EXPECT_NEAR(t.x, 1.0f, 1e-6f);
+    EXPECT_EQ(t.w, 1.0f);
+  }
+  std::vector<glm::vec2> mirrored = {{1, 0}, {0, 0}, {0, 1}, {1, 1}};  // u runs along -x: a mirrored layout
+  for (const glm::vec4& t : generateTangents(kQuad, kUp, mirrored, kTriangles)) {
+    EXPECT_NEAR(t.x, -1.0f, 1e-6f);
+    EXPECT_EQ(t.w, -1.0f) << "bitangent cross(n, t) = -y but v runs along +y";
+  }
+}
+
+TEST(TangentSpace, TangentsAreOrthogonalToTiltedNormalsAndUnit) {
+  std::vector<glm::vec2> uv = {{0, 0}, {2, 0}, {2, 3}, {0, 3}};
+  std::vector<glm::vec3> tilted(4, glm::normalize(glm::vec3(0.3f, 0.2f, 1.0f)));
+  std::vector<glm::vec4> t = generateTangents(kQuad, tilted, uv, kTriangles);
+  for (size_t i = 0; i < t.size(); ++i) {
+    EXPECT_NEAR(glm::length(glm::vec3(t[i])), 1.0f, 1e-5f);
+    EXPECT_NEAR(glm::dot(glm::vec3(t[i]), tilted[i]), 0.0f, 1e-5f);
+    EXPECT_GT(t[i].x, 0.9f);
+  }
+}
+
+TEST(TangentSpace, DegenerateOrMissingUvsGiveSomePerpendicular) {
+  std::vector<glm::vec2> collapsed(4, glm::vec2(0.5f));
+  for (const auto& uv : {collapsed, std::vector<glm::vec2>{}})
+    for (const glm::vec4& t : generateTangents(kQuad, {}, uv, kTriangles)) {  // no normals: face normals are used
+      EXPECT_NEAR(glm::length(glm::vec3(t)), 1.0f, 1e-5f);
+      EXPECT_NEAR(t.z, 0.0f, 1e-6f);
+      EXPECT_EQ(t.w, 1.0f);
+    }
+  for (glm::vec3 n : {glm::vec3(0, 0, 1), glm::vec3(0, 0, -1), glm::normalize(glm::vec3(1, -2, 0.1f))})
+    EXPECT_NEAR(glm::dot(anyPerpendicular(n), n), 0.0f, 1e-6f);
+}
