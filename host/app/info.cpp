@@ -40,15 +40,16 @@ int runInfo(const RenderOptions& options) {
   vk::Context ctx;
   Scene scene = loadGltf(options.scenePath, deviceLoadLimits(ctx));
   SceneFeatures f = scanFeatures(scene);
+  f.environment = !f.emitters() && f.punctualLights == 0;  // the default light a render adds (--environment adds one)
   std::printf("scene        %s\n", options.scenePath.c_str());
   std::printf("triangles    %u (%s), %llu zero-area skipped, %u materials, %zu cameras\n", f.triangles, f.sizeClass(),
               static_cast<unsigned long long>(scene.degenerateTriangles), f.materials, scene.cameras.size());
   std::printf(
       "features     emitters %s (%u emissive triangles), glossy %s, metallic %s, non-default specular %s,\n"
-      "             double-sided %s, textures %s, punctual lights %s\n",
+      "             double-sided %s, textures %s, punctual lights %u, environment %s\n",
       f.emitters() ? "yes" : "no", f.emissiveTriangles, f.glossy ? "yes" : "no", f.metallic ? "yes" : "no",
       f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.textures ? "yes" : "no",
-      f.punctualLights ? "yes" : "no");
+      f.punctualLights, f.environment ? "constant (the default light: no other)" : "none (unless --environment)");
   std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   const BvhStats& b = bvh.stats;

@@ -4,11 +4,15 @@
 #include <unistd.h>
 
 #include <bit>
+#include <cmath>
+#include <cstring>
 #include <glm/gtc/packing.hpp>
 #include <string_view>
 
+#include "../shaders/shared/environment_map.h"
 #include "../shaders/shared/geometry.h"
 #include "../shaders/shared/layout.h"
+#include "../shaders/shared/punctual_light.h"
 #include "../shaders/shared/sampling.h"
 #include "../shaders/shared/scene_layout.h"
 #include "error.h"
@@ -37,7 +41,87 @@ vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, uin
   return b;
 }
 
+vk::Buffer makeStorageBuffer(vk::Context& ctx, const void* data, size_t bytes) {
+  vk::Buffer b(ctx, std::max<size_t>(bytes, 16), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+  if (bytes > 0) b.upload(data, bytes);
+  return b;
+}
+
+double luminance(const glm::vec3& c) { return 0.2126 * double(c.x) + 0.7152 * double(c.y) + 0.0722 * double(c.z); }
+
+gpu::PunctualLight toGpu(const PunctualLight& l, const glm::vec3& sceneCentre, float sceneRadius) {
+  gpu::PunctualLight g{};
+  bool directional = l.kind == PunctualKind::Directional;
+  g.position = directional ? glm::vec4(sceneCentre, sceneRadius) : glm::vec4(l.position, 0.0f);
+  g.direction = glm::vec4(l.direction, 0.0f);
+  g.intensity = glm::vec4(l.intensity, 0.0f);
+  g.kind = directional ? gpu::kPunctualDirectional : l.kind == PunctualKind::Spot ? gpu::kPunctualSpot : gpu::kPunctualPoint;
+  g.cosOuter = std::cos(l.outerConeAngle);
+  g.cosInner = std::cos(l.innerConeAngle);
+  return g;
+}
+
 }  // namespace
+
+double triangleEmittedPower(const Material& m, float area) {
+  // In double: a finite emission near FLT_MAX times area and pi would overflow float.
+  return luminance(m.emission) * double(area) * double(gpu::kPi) * (m.doubleSided ? 2.0 : 1.0);
+}
+
+double punctualLightPower(const PunctualLight& l, double sceneRadius) {
+  double I = luminance(l.intensity);
+  switch (l.kind) {
+    case PunctualKind::Point: return 4.0 * double(gpu::kPi) * I;
+    case PunctualKind::Spot: return I * gpu::spotSolidAngleFactor(std::cos(l.outerConeAngle), std::cos(l.innerConeAngle));
+    case PunctualKind::Directional: return I * double(gpu::kPi) * sceneRadius * sceneRadius;
+  }
+  return 0.0;
+}
+
+double environmentPower(const EnvironmentMap& e, double sceneRadius) {
+  // pi r^2 times the integral of luminance over the sphere, each row of pixels over its exact solid angle.
+  double integral = 0.0;
+  for (uint32_t row = 0; row < e.height; ++row) {
+    double rowSolidAngle = 2.0 * M_PI * (std::cos(M_PI * row / e.height) - std::cos(M_PI * (row + 1) / e.height)) / e.width;
+    for (uint32_t col = 0; col < e.width; ++col) integral += luminance(e.radiance[size_t(row) * e.width + col]) * rowSolidAngle;
+  }
+  return M_PI * sceneRadius * sceneRadius * integral;
+}
+
+std::vector<float> environmentDistribution(const EnvironmentMap& e) {
+  const uint32_t w = e.width, h = e.height;
+  std::vector<float> table(gpu::envDistributionSize(w, h), 0.0f);
+  std::vector<double> rowIntegral(h, 0.0);
+  const uint32_t fo = gpu::envFunctionOffset(w, h), co = gpu::envConditionalCdfOffset(h);
+  for (uint32_t row = 0; row < h; ++row) {
+    double sinTheta = gpu::envRowSinTheta(row, h);
+    std::vector<double> f(w);
+    for (uint32_t col = 0; col < w; ++col) {
+      f[col] = luminance(e.radiance[size_t(row) * w + col]) * sinTheta;
+      table[fo + row * w + col] = float(f[col]);
+      rowIntegral[row] += f[col] / w;
+    }
+    double sum = 0.0;
+    float* cdf = &table[co + row * (w + 1)];
+    for (uint32_t col = 0; col < w; ++col) {
+      cdf[col] = rowIntegral[row] > 0.0 ? float(sum / (rowIntegral[row] * w)) : float(col) / float(w);
+      sum += f[col];
+    }
+    cdf[w] = 1.0f;
+    table[gpu::envRowIntegralOffset(h) + row] = float(rowIntegral[row]);
+  }
+  double integral = 0.0;
+  for (double r : rowIntegral) integral += r / h;
+  double sum = 0.0;
+  float* marginal = &table[gpu::envMarginalCdfOffset()];
+  for (uint32_t row = 0; row < h; ++row) {
+    marginal[row] = integral > 0.0 ? float(sum / (integral * h)) : float(row) / float(h);
+    sum += rowIntegral[row];
+  }
+  marginal[h] = 1.0f;
+  table[0] = float(integral);
+  return table;
+}
 
 VkFormat sceneTexelFormat(uint32_t binding) {
   switch (binding) {
@@ -69,8 +153,14 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   info_.triangles = static_cast<uint32_t>(n);
   info_.materials = static_cast<uint32_t>(scene.materials.size());
 
+  // The light table: emissive triangles, punctual lights and the environment, in proportion to their power.
+  const glm::vec3 centre = scene.bounds.valid() ? scene.bounds.center() : glm::vec3(0.0f);
+  const float radius = scene.bounds.valid() ? 0.5f * glm::length(scene.bounds.extent()) : 0.0f;
+  struct LightRef {
+    uint32_t kind, index;
+  };
   std::vector<double> power;
-  std::vector<uint32_t> lightTriangles;
+  std::vector<LightRef> lightRefs;
   std::vector<float> triangleArea(n);
   for (uint32_t i = 0; i < n; ++i) {
     uint32_t src = bvh.triangleOrder[i];
@@ -79,30 +169,59 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
     triangleArea[i] = 0.5f * glm::length(glm::vec3(c)) * c.w * c.w;
     const Material& m = scene.materials[scene.materialIds[src]];
     if (m.isEmissive() && triangleArea[i] > 0.0f) {
-      double sides = m.doubleSided ? 2.0 : 1.0;
-      // In double: a finite emission near FLT_MAX times area and pi would overflow float.
-      power.push_back(double(gpu::luminance(m.emission)) * double(triangleArea[i]) * double(gpu::kPi) * sides);
-      lightTriangles.push_back(i);
+      power.push_back(triangleEmittedPower(m, triangleArea[i]));
+      lightRefs.push_back({gpu::kLightKindTriangle, i});
     }
   }
-  info_.emissiveTriangles = static_cast<uint32_t>(lightTriangles.size());
+  info_.emissiveTriangles = static_cast<uint32_t>(lightRefs.size());
+  std::vector<gpu::PunctualLight> punctual;
+  for (const PunctualLight& l : scene.punctualLights) {
+    double w = punctualLightPower(l, radius);
+    if (!(w > 0.0)) continue;  // black: never sampled, never seen
+    power.push_back(w);
+    lightRefs.push_back({gpu::kLightKindPunctual, uint32_t(punctual.size())});
+    punctual.push_back(toGpu(l, centre, radius));
+  }
+  info_.punctualLights = static_cast<uint32_t>(punctual.size());
+  gpu::EnvironmentHeader envHeader{};
+  envHeader.sceneSphere = glm::vec4(centre, radius);
+  std::vector<glm::vec4> envTexels(3);  // the header's 48 bytes, then the radiance
+  std::vector<float> envTable(1, 0.0f);
+  if (scene.environment) {
+    const EnvironmentMap& e = *scene.environment;
+    envHeader.width = e.width, envHeader.height = e.height;
+    envHeader.cosRotation = std::cos(glm::radians(e.rotationDegrees));
+    envHeader.sinRotation = std::sin(glm::radians(e.rotationDegrees));
+    for (const glm::vec3& L : e.radiance) envTexels.emplace_back(L, 0.0f);
+    envTable = environmentDistribution(e);
+    double w = environmentPower(e, radius);
+    if (w > 0.0 && envTable[0] > 0.0f) {
+      power.push_back(w);
+      lightRefs.push_back({gpu::kLightKindEnvironment, 0});
+    }
+  }
   std::vector<glm::uvec4> lightTexels;
   std::vector<float> lightPmf(n, 0.0f);
-  if (!lightTriangles.empty()) {
+  if (!lightRefs.empty()) {
     // A light whose luminance is 0 but whose color is not (pure blue at tiny levels) still gets a chance.
     double total = 0.0;
     for (double w : power) total += w;
     for (double& w : power) w = std::max(w, total * 1e-12);
-    for (double w : power) info_.emittedPower += w;
+    for (size_t k = 0; k < power.size(); ++k)
+      if (lightRefs[k].kind == gpu::kLightKindTriangle) info_.emittedPower += power[k];
     if (uniformLightSelection) std::fill(power.begin(), power.end(), 1.0);
     std::vector<AliasEntry> table = buildAliasTable(power);
     for (size_t k = 0; k < table.size(); ++k) {
-      lightTexels.push_back(gpu::encodeLightEntry(table[k].probability, table[k].alias, lightTriangles[k], table[k].pmf));
-      lightPmf[lightTriangles[k]] = table[k].pmf;
+      const LightRef& r = lightRefs[k];
+      lightTexels.push_back(gpu::encodeLightEntry(table[k].probability, table[k].alias, r.kind, r.index, table[k].pmf));
+      if (r.kind == gpu::kLightKindTriangle) lightPmf[r.index] = table[k].pmf;
+      if (r.kind == gpu::kLightKindEnvironment) envHeader.selectionPmf = table[k].pmf;
     }
   } else {
     lightTexels.emplace_back(0u, 0u, 0u, 0u);  // bound but never read (SPEC_HAS_LIGHTS = 0)
   }
+  std::memcpy(envTexels.data(), &envHeader, sizeof(envHeader));
+  static_assert(sizeof(gpu::EnvironmentHeader) == 3 * sizeof(glm::vec4));
 
   std::vector<glm::vec4> triTexels(gpu::kTriangleTexels * n);
   std::vector<glm::uvec4> infoTexels(n);
@@ -138,11 +257,16 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   materials_ =
       vk::Buffer(ctx, mats.size() * sizeof(gpu::Material), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   materials_.upload(mats.data(), mats.size() * sizeof(gpu::Material));
+  punctualLights_ = makeStorageBuffer(ctx, punctual.data(), punctual.size() * sizeof(gpu::PunctualLight));
+  environment_ = makeStorageBuffer(ctx, envTexels.data(), envTexels.size() * sizeof(glm::vec4));
+  environmentDistribution_ = makeStorageBuffer(ctx, envTable.data(), envTable.size() * sizeof(float));
   info_.bufferBytes = {{"triangles", triTexels.size() * 16},
                        {"triangle_info", infoTexels.size() * 16},
                        {"bvh_nodes", bvh.wideNodes.size() * sizeof(BvhWideNode)},
                        {"lights", lightTexels.size() * 16},
-                       {"materials", mats.size() * sizeof(gpu::Material)}};
+                       {"materials", mats.size() * sizeof(gpu::Material)},
+                       {"punctual_lights", punctual.size() * sizeof(gpu::PunctualLight)},
+                       {"environment", envTexels.size() * sizeof(glm::vec4) + envTable.size() * sizeof(float)}};
 }
 
 void GpuScene::bindTo(vk::KernelLayout& layout, bool binaryBvh) const {
@@ -152,6 +276,9 @@ void GpuScene::bindTo(vk::KernelLayout& layout, bool binaryBvh) const {
   layout.bindTexel(BINDING_BVH_NODES, binaryBvh ? binaryBvhNodes_ : bvhNodes_);
   layout.bindTexel(BINDING_LIGHTS, lights_);
   layout.bindStorage(BINDING_MATERIALS, materials_);
+  layout.bindStorage(BINDING_PUNCTUAL_LIGHTS, punctualLights_);
+  layout.bindStorage(BINDING_ENVIRONMENT, environment_);
+  layout.bindStorage(BINDING_ENVIRONMENT_DISTRIBUTION, environmentDistribution_);
 }
 
 }  // namespace vkmc

@@ -18,6 +18,7 @@
 #include "../shaders/shared/geometry.h"
 #include "error.h"
 #include "scene/gltf_extensions.h"
+#include "scene/gltf_lights.h"
 
 namespace vkmc {
 namespace {
@@ -217,6 +218,7 @@ class Flattener {
     glm::mat4 world = parent * localTransform(node);
     if (node.mesh >= 0) addMesh(node.mesh, world);
     if (node.camera >= 0) addCamera(node.camera, world);
+    addNodePunctualLight(model_, nodeIndex, world, scene_);
     for (int child : node.children) visit(child, world, depth + 1);
   }
 
@@ -454,7 +456,6 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
   scene.materials.push_back(fallback);
   if (usesTextures) scene.warnings.push_back("textures are not supported yet and were ignored");
   scene.usesTextures = usesTextures;
-  for (const std::string& e : model.extensionsUsed) scene.hasPunctualLights |= e == "KHR_lights_punctual";
   scene.warnings.insert(scene.warnings.end(), extensionWarnings.begin(), extensionWarnings.end());
 
   std::vector<int> roots;

@@ -8,7 +8,6 @@ const char* SceneFeatures::sizeClass() const { return triangles < 1000 ? "small"
 std::vector<std::string> SceneFeatures::unsupported() const {
   std::vector<std::string> out;
   if (textures) out.push_back("textures (ignored)");
-  if (punctualLights) out.push_back("KHR_lights_punctual (ignored)");
   return out;
 }
 
@@ -28,7 +27,8 @@ SceneFeatures scanFeatures(const Scene& scene) {
   }
   for (uint32_t m : scene.materialIds) f.emissiveTriangles += scene.materials[m].isEmissive() ? 1 : 0;
   f.textures = scene.usesTextures;
-  f.punctualLights = scene.hasPunctualLights;
+  f.punctualLights = static_cast<uint32_t>(scene.punctualLights.size());
+  f.environment = scene.environment.has_value();
   return f;
 }
 
@@ -37,6 +37,8 @@ SceneFeatures allFeatures(const SceneFeatures& scene) {
   f.glossy = true;
   f.metallic = true;
   f.emissiveTriangles = std::max(f.emissiveTriangles, 1u);
+  f.punctualLights = std::max(f.punctualLights, 1u);
+  f.environment = true;
   return f;
 }
 

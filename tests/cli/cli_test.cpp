@@ -191,7 +191,7 @@ TEST(Cli, ASceneWithoutEmittersIsLitByAWhiteEnvironmentAndSaysSo) {
   EXPECT_NE(lit.err.find("no emitters: it is lit by a uniform white environment"), std::string::npos) << lit.err;
   nlohmann::json j = nlohmann::json::parse(slurp(report));
   EXPECT_GT(j["mean"][0].get<double>(), 0.1);
-  EXPECT_EQ(j["background"][0].get<double>(), 1.0);
+  EXPECT_EQ(j["environment"].get<std::string>(), "constant");
   RunResult black = runVkmc(common + " --background 0,0,0");  // asked for: black, without a word
   ASSERT_EQ(black.code, 0) << black.err;
   EXPECT_EQ(black.err, "");
