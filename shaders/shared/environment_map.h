@@ -87,7 +87,7 @@ VKMC_FN vec3 environmentDirection(EnvironmentHeader h, vec2 uv) {
 VKMC_FN vec2 environmentUv(EnvironmentHeader h, vec3 w) {
   vec3 m = vec3(h.cosRotation * w.x - h.sinRotation * w.z, w.y, h.sinRotation * w.x + h.cosRotation * w.z);
   float u = atan(m.x, -m.z) * (0.5f * kInvPi) + 0.5f;
-  float v = acos(clamp(m.y, -1.0f, 1.0f)) * kInvPi;
+  float v = atan(length(vec2(m.x, m.z)), m.y) * kInvPi;  // acos(y) loses precision near the poles
   return vec2(clamp(u, 0.0f, 0.99999994f), clamp(v, 0.0f, 0.99999994f));
 }
 VKMC_FN uint environmentPixel(EnvironmentHeader h, vec2 uv) {
@@ -118,7 +118,7 @@ VKMC_FN vec3 sampleEnvironment(VKMC_ENV_TABLE EnvironmentHeader h, vec2 u, INOUT
 VKMC_FN float environmentPdf(VKMC_ENV_TABLE EnvironmentHeader h, vec3 w) {
   if (h.width == 1u && h.height == 1u) return kUniformSpherePdf;
   vec2 uv = environmentUv(h, w);
-  float sinTheta = sqrt(max(0.0f, 1.0f - w.y * w.y));
+  float sinTheta = length(vec2(w.x, w.z));  // sqrt(1 - y^2) would lose precision near the poles
   return sinTheta > 0.0f ? envDistributionPdf(VKMC_ENV_TABLE_ARG h.width, h.height, uv) / (2.0f * kPi * kPi * sinTheta) : 0.0f;
 }
 

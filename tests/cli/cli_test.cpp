@@ -169,6 +169,12 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"camera_out_of_range", "", "--camera 5", "out of range", 1},
                       BadInput{"fov_0", "", "--fov 0 --look-from 0,0,5 --look-at 0,0,0", "--fov", 1},
                       BadInput{"background_nan", "", "--background nan,0,0", "--background", 1},
+                      BadInput{"environment_missing", "", "--environment /nonexistent/sky.hdr", "cannot open", 1},
+                      BadInput{"environment_not_hdr", "", "--environment /etc/hostname", "neither .hdr nor .exr", 1},
+                      BadInput{"environment_rotation_absurd", "", "--environment sky.hdr --environment-rotation 1e9",
+                               "--environment-rotation", 1},
+                      BadInput{"environment_strength_negative", "", "--environment sky.hdr --environment-strength -1",
+                               "--environment-strength", 1},
                       BadInput{"spp_not_a_number", "", "--spp abc", "spp", 2},
                       BadInput{"unknown_flag", "", "--no-such-flag", "no-such-flag", 2}),
     [](const auto& info) { return std::string(info.param.name); });

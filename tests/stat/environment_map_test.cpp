@@ -16,16 +16,16 @@ constexpr uint32_t kSamples = 1000000;
 constexpr int kTests = 3;  // Sidak correction over the chi-square tests in this file
 constexpr double kPiD = 3.14159265358979323846;
 
-// 24 x 12 pixels: a gradient, a hot spot 50x brighter, a black corner; rotated 30 degrees.
-EnvironmentMap testMap() {
+// 24 x 12 pixels: a gradient, a hot spot 50x brighter, a black corner (unless gentle); rotated 30 degrees.
+EnvironmentMap testMap(bool gentle = false) {
   EnvironmentMap m;
   m.width = 24, m.height = 12;
   m.rotationDegrees = 30.0f;
   for (uint32_t y = 0; y < m.height; ++y)
     for (uint32_t x = 0; x < m.width; ++x) {
       glm::vec3 L(0.2f + 0.05f * x, 0.3f + 0.1f * y, 0.5f);
-      if (x == 17 && y == 4) L *= 50.0f;
-      if (x < 3 && y < 2) L = glm::vec3(0.0f);
+      if (!gentle && x == 17 && y == 4) L *= 50.0f;
+      if (!gentle && x < 3 && y < 2) L = glm::vec3(0.0f);
       m.radiance.push_back(L);
     }
   return m;
@@ -75,15 +75,20 @@ TEST(EnvironmentMap, SamplesFollowTheirPdfPixelByPixel) {
 }
 
 TEST(EnvironmentMap, SolidAnglePdfFitsAndIntegratesToOne) {
-  const EnvironmentMap m = testMap();
+  // Over a theta x phi grid the pixels' edges cut cells, whose expected counts come from quadrature: a gentle map
+  // keeps its error at the edges below the noise (the per-pixel test above is the exact one).
+  const EnvironmentMap m = testMap(true);
   const EnvironmentHeader h = headerOf(m);
   const std::vector<float> table = environmentDistribution(m);
+  // The grid's pole (z) on the map's (y): the solid-angle pdf has a 1 / sin(theta) factor there, which the grid's
+  // quadrature integrates exactly only when its own sin(theta) cancels it.
   auto r = test::chi2Sphere(
       [&](uint32_t i) {
         float pdf = 0.0f;
-        return sampleEnvironment(table.data(), h, u2(i, 32), pdf);
+        vec3 w = sampleEnvironment(table.data(), h, u2(i, 32), pdf);
+        return vec3(w.z, w.x, w.y);
       },
-      [&](vec3 w) { return double(environmentPdf(table.data(), h, w)); }, kSamples, 21, 41, 16);
+      [&](vec3 g) { return double(environmentPdf(table.data(), h, vec3(g.y, g.z, g.x))); }, kSamples, 21, 41, 64);
   EXPECT_NEAR(r.pdfIntegral, 1.0, 5e-3);
   EXPECT_GT(r.pValue, test::sidakLevel(kTests)) << "chi2 " << r.statistic << " dof " << r.dof << "\n" << r.table;
 }
