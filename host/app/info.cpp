@@ -48,8 +48,8 @@ int runInfo(const RenderOptions& options) {
       "features     emitters %s (%u emissive triangles), glossy %s, metallic %s, non-default specular %s,\n"
       "             double-sided %s, textures %s, punctual lights %u, environment %s\n",
       f.emitters() ? "yes" : "no", f.emissiveTriangles, f.glossy ? "yes" : "no", f.metallic ? "yes" : "no",
-      f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.textures ? "yes" : "no",
-      f.punctualLights, f.environment ? "constant (the default light: no other)" : "none (unless --environment)");
+      f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.textures ? "yes" : "no", f.punctualLights,
+      f.environment ? "constant (the default light: no other)" : "none (unless --environment)");
   std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   const BvhStats& b = bvh.stats;

@@ -17,7 +17,7 @@ struct ExtensionRow {
 constexpr ExtensionRow kExtensions[] = {
     {"KHR_materials_emissive_strength", ""},
     {"KHR_materials_specular", ""},  // specularFactor; the loader warns per material that sets a colour or texture
-    {"KHR_lights_punctual", ""},  // range is ignored (physically based), with a warning
+    {"KHR_lights_punctual", ""},     // range is ignored (physically based), with a warning
     {"KHR_texture_transform", "texture transforms are ignored (textures are not used yet)"},
     {"KHR_texture_basisu", "its textures are ignored (textures are not used yet)"},
     {"EXT_texture_webp", "its textures are ignored (textures are not used yet)"},

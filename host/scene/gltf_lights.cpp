@@ -18,10 +18,14 @@ PunctualLight convertLight(const tinygltf::Light& l, int index) {
   std::string name = "light " + std::to_string(index) + (l.name.empty() ? "" : " ('" + l.name + "')");
   PunctualLight out;
   out.name = l.name;
-  if (l.type == "point") out.kind = PunctualKind::Point;
-  else if (l.type == "spot") out.kind = PunctualKind::Spot;
-  else if (l.type == "directional") out.kind = PunctualKind::Directional;
-  else throw Error(name + ": unknown type '" + l.type + "' (point, spot or directional)");
+  if (l.type == "point")
+    out.kind = PunctualKind::Point;
+  else if (l.type == "spot")
+    out.kind = PunctualKind::Spot;
+  else if (l.type == "directional")
+    out.kind = PunctualKind::Directional;
+  else
+    throw Error(name + ": unknown type '" + l.type + "' (point, spot or directional)");
   glm::dvec3 color(1.0);
   if (!l.color.empty()) {
     if (l.color.size() != 3) throw Error(name + ": color must have 3 components");
@@ -31,8 +35,7 @@ PunctualLight convertLight(const tinygltf::Light& l, int index) {
     if (!std::isfinite(color[c]) || color[c] < 0.0) throw Error(name + ": color must be finite and non-negative");
   if (!std::isfinite(l.intensity) || l.intensity < 0.0) throw Error(name + ": intensity must be finite and non-negative");
   glm::dvec3 intensity = color * l.intensity;
-  if (!glm::all(glm::lessThanEqual(intensity, glm::dvec3(3.0e38))))
-    throw Error(name + ": color x intensity overflows float");
+  if (!glm::all(glm::lessThanEqual(intensity, glm::dvec3(3.0e38)))) throw Error(name + ": color x intensity overflows float");
   out.intensity = glm::vec3(intensity);
   if (out.kind == PunctualKind::Spot) {
     double inner = l.spot.innerConeAngle, outer = l.spot.outerConeAngle;

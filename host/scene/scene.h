@@ -84,7 +84,7 @@ struct Scene {
   uint64_t skippedPrimitives = 0;    // non-triangle primitives skipped
   std::vector<std::string> warnings;
   std::string path;
-  bool usesTextures = false;  // some material references a texture (ignored for now)
+  bool usesTextures = false;                  // some material references a texture (ignored for now)
   std::vector<PunctualLight> punctualLights;  // KHR_lights_punctual instances in node order
   std::optional<EnvironmentMap> environment;  // not in glTF: the render sets it (--environment, or the default)
 

@@ -37,8 +37,10 @@ VKMC_FN uint envFindBin(VKMC_ENV_TABLE uint offset, uint count, float u) {
   uint lo = 0u, hi = count;
   while (hi - lo > 1u) {
     uint mid = (lo + hi) / 2u;
-    if (envDistribution[offset + mid] <= u) lo = mid;
-    else hi = mid;
+    if (envDistribution[offset + mid] <= u)
+      lo = mid;
+    else
+      hi = mid;
   }
   return lo;
 }

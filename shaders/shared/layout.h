@@ -120,7 +120,7 @@ struct PunctualLight {
 // The head of BINDING_ENVIRONMENT, followed by width x height texels of radiance (rgb, row-major from the top
 // row, strength applied); environment_map.h maps directions to them and samples them.
 struct EnvironmentHeader {
-  uint width, height;  // 0 x 0: no environment light (escaped rays see pc.background alone)
+  uint width, height;              // 0 x 0: no environment light (escaped rays see pc.background alone)
   float cosRotation, sinRotation;  // of the map's rotation about +Y
   vec4 sceneSphere;                // xyz: the scene's bounding-sphere centre, w: radius (shadow rays end past it)
   float selectionPmf;              // the environment's light-selection probability (0: not sampled)

@@ -29,8 +29,8 @@ Scene planeScene(float halfSize) {
   m.metallic = 0.0f;
   m.specular = 0.0f;  // pure Lambert
   s.materials.push_back(m);
-  addQuad(s, glm::vec3(-halfSize, -halfSize, 0.0f), glm::vec3(2.0f * halfSize, 0.0f, 0.0f), glm::vec3(0.0f, 2.0f * halfSize, 0.0f),
-          0);
+  addQuad(s, glm::vec3(-halfSize, -halfSize, 0.0f), glm::vec3(2.0f * halfSize, 0.0f, 0.0f),
+          glm::vec3(0.0f, 2.0f * halfSize, 0.0f), 0);
   return s;
 }
 

@@ -128,11 +128,11 @@ TEST(EnvironmentMap, DirectionConventionYUpCentreAlongMinusZ) {
   h.width = 8, h.height = 4;
   h.cosRotation = 1.0f;
   auto near = [](vec3 a, vec3 b) { return glm::length(a - b) < 1e-5f; };
-  EXPECT_TRUE(near(environmentDirection(h, vec2(0.5f, 0.5f)), vec3(0, 0, -1)));   // the image's centre
-  EXPECT_TRUE(near(environmentDirection(h, vec2(0.75f, 0.5f)), vec3(1, 0, 0)));   // right of it: +X
-  EXPECT_TRUE(near(environmentDirection(h, vec2(0.3f, 0.0f)), vec3(0, 1, 0)));    // the top row: +Y
-  EXPECT_TRUE(near(environmentDirection(h, vec2(0.0f, 0.5f)), vec3(0, 0, 1)));    // the edges: +Z
-  h.cosRotation = 0.0f, h.sinRotation = 1.0f;  // 90 degrees counter-clockwise seen from above
+  EXPECT_TRUE(near(environmentDirection(h, vec2(0.5f, 0.5f)), vec3(0, 0, -1)));  // the image's centre
+  EXPECT_TRUE(near(environmentDirection(h, vec2(0.75f, 0.5f)), vec3(1, 0, 0)));  // right of it: +X
+  EXPECT_TRUE(near(environmentDirection(h, vec2(0.3f, 0.0f)), vec3(0, 1, 0)));   // the top row: +Y
+  EXPECT_TRUE(near(environmentDirection(h, vec2(0.0f, 0.5f)), vec3(0, 0, 1)));   // the edges: +Z
+  h.cosRotation = 0.0f, h.sinRotation = 1.0f;                                    // 90 degrees counter-clockwise seen from above
   EXPECT_TRUE(near(environmentDirection(h, vec2(0.5f, 0.5f)), vec3(-1, 0, 0)));
   for (uint32_t i = 0; i < 1000; ++i) {
     vec2 uv = u2(i, 35) * vec2(1.0f, 0.98f) + vec2(0.0f, 0.01f);

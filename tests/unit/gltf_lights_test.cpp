@@ -25,9 +25,9 @@ std::string writeLitQuad(const std::string& name, const std::string& lights, int
   std::string json = text.str();
   const std::string head = R"({"asset":{"version":"2.0"},)";
   EXPECT_EQ(json.rfind(head, 0), 0u);
-  json.replace(0, head.size(),
-               head + R"("extensionsUsed":["KHR_lights_punctual"],"extensions":{"KHR_lights_punctual":{"lights":[)" + lights +
-                   "]}},");
+  json.replace(
+      0, head.size(),
+      head + R"("extensionsUsed":["KHR_lights_punctual"],"extensions":{"KHR_lights_punctual":{"lights":[)" + lights + "]}},");
   std::ofstream(path) << json;
   return path;
 }
