@@ -56,8 +56,8 @@ void addEnvironmentLight(const RenderOptions& options, Scene& scene, RenderOutco
   } else if (!options.background && !scanFeatures(scene).emitters() && scene.punctualLights.empty()) {
     scene.environment = EnvironmentMap::constant(glm::vec3(1.0f));
     out.warnings.push_back(
-        "the scene has no emitters: it is lit by a uniform white environment of radiance 1 "
-        "(--environment or --background sets another; --background 0,0,0 renders it black)");
+        "the scene has no emitters and no punctual lights: it is lit by a uniform white environment of radiance 1, "
+        "importance sampled (--environment or --background sets another; --background 0,0,0 renders it black)");
   }
   out.environment = scene.environment ? scene.environment->source : "";
 }
