@@ -61,6 +61,90 @@ gpu::PunctualLight toGpu(const PunctualLight& l, const glm::vec3& sceneCentre, f
   return g;
 }
 
+// What the device reads of the scene's lights: the alias entries (BINDING_LIGHTS), each triangle's selection pmf
+// (the triangle texels' w), the punctual lights and the environment (its header and radiance, its table).
+struct LightData {
+  std::vector<glm::uvec4> entries;
+  std::vector<float> trianglePmf;  // per triangle in BVH order, 0 unless it emits
+  std::vector<gpu::PunctualLight> punctual;
+  std::vector<glm::vec4> environment{3};  // gpu::EnvironmentHeader's 48 bytes, then the radiance texels
+  std::vector<float> environmentTable{0.0f};
+  uint32_t emissiveTriangles = 0;
+  double emittedPower = 0.0;  // of the emissive triangles
+};
+
+// One light of the table before the alias table is built: what it is and its power.
+struct LightRow {
+  uint32_t kind, index;
+  double power;
+};
+
+// Every light of the scene with its power (gpu_scene.h), emissive triangles first; fills the punctual and
+// environment data of `out` on the way.
+std::vector<LightRow> collectLights(const Scene& scene, const Bvh& bvh, gpu::EnvironmentHeader& env, LightData& out) {
+  const glm::vec3 centre = scene.bounds.valid() ? scene.bounds.center() : glm::vec3(0.0f);
+  const float radius = scene.bounds.valid() ? 0.5f * glm::length(scene.bounds.extent()) : 0.0f;
+  std::vector<LightRow> rows;
+  for (uint32_t i = 0; i < scene.triangleCount(); ++i) {
+    uint32_t src = bvh.triangleOrder[i];
+    const glm::vec3* p = &scene.positions[3 * src];
+    glm::vec4 c = gpu::scaledTriangleCross(p[0], p[1], p[2]);  // the area the GPU's light pdfs use
+    float area = 0.5f * glm::length(glm::vec3(c)) * c.w * c.w;
+    const Material& m = scene.materials[scene.materialIds[src]];
+    if (m.isEmissive() && area > 0.0f) rows.push_back({gpu::kLightKindTriangle, i, triangleEmittedPower(m, area)});
+  }
+  out.emissiveTriangles = static_cast<uint32_t>(rows.size());
+  for (const PunctualLight& l : scene.punctualLights) {
+    double w = punctualLightPower(l, radius);
+    if (!(w > 0.0)) continue;  // black: never sampled, never seen
+    rows.push_back({gpu::kLightKindPunctual, uint32_t(out.punctual.size()), w});
+    out.punctual.push_back(toGpu(l, centre, radius));
+  }
+  env.sceneSphere = glm::vec4(centre, radius);
+  if (scene.environment) {
+    const EnvironmentMap& e = *scene.environment;
+    env.width = e.width, env.height = e.height;
+    env.cosRotation = std::cos(glm::radians(e.rotationDegrees));
+    env.sinRotation = std::sin(glm::radians(e.rotationDegrees));
+    for (const glm::vec3& L : e.radiance) out.environment.emplace_back(L, 0.0f);
+    out.environmentTable = environmentDistribution(e);
+    double w = environmentPower(e, radius);
+    if (w > 0.0 && out.environmentTable[0] > 0.0f) rows.push_back({gpu::kLightKindEnvironment, 0, w});
+  }
+  return rows;
+}
+
+// The light table: emissive triangles, punctual lights and the environment chosen together, in proportion to
+// their power (or uniformly).
+LightData buildLights(const Scene& scene, const Bvh& bvh, bool uniformLightSelection) {
+  LightData out;
+  gpu::EnvironmentHeader env{};
+  std::vector<LightRow> rows = collectLights(scene, bvh, env, out);
+  out.trianglePmf.assign(scene.triangleCount(), 0.0f);
+  if (!rows.empty()) {
+    // A light whose luminance is 0 but whose color is not (pure blue at tiny levels) still gets a chance.
+    double total = 0.0;
+    for (const LightRow& r : rows) total += r.power;
+    std::vector<double> weights;
+    for (const LightRow& r : rows) {
+      weights.push_back(uniformLightSelection ? 1.0 : std::max(r.power, total * 1e-12));
+      if (r.kind == gpu::kLightKindTriangle) out.emittedPower += std::max(r.power, total * 1e-12);
+    }
+    std::vector<AliasEntry> table = buildAliasTable(weights);
+    for (size_t k = 0; k < table.size(); ++k) {
+      const LightRow& r = rows[k];
+      out.entries.push_back(gpu::encodeLightEntry(table[k].probability, table[k].alias, r.kind, r.index, table[k].pmf));
+      if (r.kind == gpu::kLightKindTriangle) out.trianglePmf[r.index] = table[k].pmf;
+      if (r.kind == gpu::kLightKindEnvironment) env.selectionPmf = table[k].pmf;
+    }
+  } else {
+    out.entries.emplace_back(0u, 0u, 0u, 0u);  // bound but never read (SPEC_HAS_LIGHTS = 0)
+  }
+  static_assert(sizeof(gpu::EnvironmentHeader) == 3 * sizeof(glm::vec4));
+  std::memcpy(out.environment.data(), &env, sizeof(env));
+  return out;
+}
+
 }  // namespace
 
 double triangleEmittedPower(const Material& m, float area) {
@@ -153,75 +237,11 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   info_.triangles = static_cast<uint32_t>(n);
   info_.materials = static_cast<uint32_t>(scene.materials.size());
 
-  // The light table: emissive triangles, punctual lights and the environment, in proportion to their power.
-  const glm::vec3 centre = scene.bounds.valid() ? scene.bounds.center() : glm::vec3(0.0f);
-  const float radius = scene.bounds.valid() ? 0.5f * glm::length(scene.bounds.extent()) : 0.0f;
-  struct LightRef {
-    uint32_t kind, index;
-  };
-  std::vector<double> power;
-  std::vector<LightRef> lightRefs;
-  std::vector<float> triangleArea(n);
-  for (uint32_t i = 0; i < n; ++i) {
-    uint32_t src = bvh.triangleOrder[i];
-    const glm::vec3* p = &scene.positions[3 * src];
-    glm::vec4 c = gpu::scaledTriangleCross(p[0], p[1], p[2]);  // the area the GPU's light pdfs use
-    triangleArea[i] = 0.5f * glm::length(glm::vec3(c)) * c.w * c.w;
-    const Material& m = scene.materials[scene.materialIds[src]];
-    if (m.isEmissive() && triangleArea[i] > 0.0f) {
-      power.push_back(triangleEmittedPower(m, triangleArea[i]));
-      lightRefs.push_back({gpu::kLightKindTriangle, i});
-    }
-  }
-  info_.emissiveTriangles = static_cast<uint32_t>(lightRefs.size());
-  std::vector<gpu::PunctualLight> punctual;
-  for (const PunctualLight& l : scene.punctualLights) {
-    double w = punctualLightPower(l, radius);
-    if (!(w > 0.0)) continue;  // black: never sampled, never seen
-    power.push_back(w);
-    lightRefs.push_back({gpu::kLightKindPunctual, uint32_t(punctual.size())});
-    punctual.push_back(toGpu(l, centre, radius));
-  }
-  info_.punctualLights = static_cast<uint32_t>(punctual.size());
-  gpu::EnvironmentHeader envHeader{};
-  envHeader.sceneSphere = glm::vec4(centre, radius);
-  std::vector<glm::vec4> envTexels(3);  // the header's 48 bytes, then the radiance
-  std::vector<float> envTable(1, 0.0f);
-  if (scene.environment) {
-    const EnvironmentMap& e = *scene.environment;
-    envHeader.width = e.width, envHeader.height = e.height;
-    envHeader.cosRotation = std::cos(glm::radians(e.rotationDegrees));
-    envHeader.sinRotation = std::sin(glm::radians(e.rotationDegrees));
-    for (const glm::vec3& L : e.radiance) envTexels.emplace_back(L, 0.0f);
-    envTable = environmentDistribution(e);
-    double w = environmentPower(e, radius);
-    if (w > 0.0 && envTable[0] > 0.0f) {
-      power.push_back(w);
-      lightRefs.push_back({gpu::kLightKindEnvironment, 0});
-    }
-  }
-  std::vector<glm::uvec4> lightTexels;
-  std::vector<float> lightPmf(n, 0.0f);
-  if (!lightRefs.empty()) {
-    // A light whose luminance is 0 but whose color is not (pure blue at tiny levels) still gets a chance.
-    double total = 0.0;
-    for (double w : power) total += w;
-    for (double& w : power) w = std::max(w, total * 1e-12);
-    for (size_t k = 0; k < power.size(); ++k)
-      if (lightRefs[k].kind == gpu::kLightKindTriangle) info_.emittedPower += power[k];
-    if (uniformLightSelection) std::fill(power.begin(), power.end(), 1.0);
-    std::vector<AliasEntry> table = buildAliasTable(power);
-    for (size_t k = 0; k < table.size(); ++k) {
-      const LightRef& r = lightRefs[k];
-      lightTexels.push_back(gpu::encodeLightEntry(table[k].probability, table[k].alias, r.kind, r.index, table[k].pmf));
-      if (r.kind == gpu::kLightKindTriangle) lightPmf[r.index] = table[k].pmf;
-      if (r.kind == gpu::kLightKindEnvironment) envHeader.selectionPmf = table[k].pmf;
-    }
-  } else {
-    lightTexels.emplace_back(0u, 0u, 0u, 0u);  // bound but never read (SPEC_HAS_LIGHTS = 0)
-  }
-  std::memcpy(envTexels.data(), &envHeader, sizeof(envHeader));
-  static_assert(sizeof(gpu::EnvironmentHeader) == 3 * sizeof(glm::vec4));
+  LightData lights = buildLights(scene, bvh, uniformLightSelection);
+  info_.emissiveTriangles = lights.emissiveTriangles;
+  info_.punctualLights = static_cast<uint32_t>(lights.punctual.size());
+  info_.emittedPower = lights.emittedPower;
+  const std::vector<float>& lightPmf = lights.trianglePmf;
 
   std::vector<glm::vec4> triTexels(gpu::kTriangleTexels * n);
   std::vector<glm::uvec4> infoTexels(n);
@@ -253,20 +273,22 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   if (keepBinaryBvh)
     binaryBvhNodes_ =
         makeTexelBuffer(ctx, bvh.nodes.data(), bvh.nodes.size() * sizeof(BvhGpuNode), BINDING_BVH_NODES, "binary BVH nodes");
-  lights_ = makeTexelBuffer(ctx, lightTexels.data(), lightTexels.size() * 16, BINDING_LIGHTS, "lights");
+  lights_ = makeTexelBuffer(ctx, lights.entries.data(), lights.entries.size() * 16, BINDING_LIGHTS, "lights");
   materials_ =
       vk::Buffer(ctx, mats.size() * sizeof(gpu::Material), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   materials_.upload(mats.data(), mats.size() * sizeof(gpu::Material));
-  punctualLights_ = makeStorageBuffer(ctx, punctual.data(), punctual.size() * sizeof(gpu::PunctualLight));
-  environment_ = makeStorageBuffer(ctx, envTexels.data(), envTexels.size() * sizeof(glm::vec4));
-  environmentDistribution_ = makeStorageBuffer(ctx, envTable.data(), envTable.size() * sizeof(float));
-  info_.bufferBytes = {{"triangles", triTexels.size() * 16},
-                       {"triangle_info", infoTexels.size() * 16},
-                       {"bvh_nodes", bvh.wideNodes.size() * sizeof(BvhWideNode)},
-                       {"lights", lightTexels.size() * 16},
-                       {"materials", mats.size() * sizeof(gpu::Material)},
-                       {"punctual_lights", punctual.size() * sizeof(gpu::PunctualLight)},
-                       {"environment", envTexels.size() * sizeof(glm::vec4) + envTable.size() * sizeof(float)}};
+  punctualLights_ = makeStorageBuffer(ctx, lights.punctual.data(), lights.punctual.size() * sizeof(gpu::PunctualLight));
+  environment_ = makeStorageBuffer(ctx, lights.environment.data(), lights.environment.size() * sizeof(glm::vec4));
+  environmentDistribution_ =
+      makeStorageBuffer(ctx, lights.environmentTable.data(), lights.environmentTable.size() * sizeof(float));
+  info_.bufferBytes = {
+      {"triangles", triTexels.size() * 16},
+      {"triangle_info", infoTexels.size() * 16},
+      {"bvh_nodes", bvh.wideNodes.size() * sizeof(BvhWideNode)},
+      {"lights", lights.entries.size() * 16},
+      {"materials", mats.size() * sizeof(gpu::Material)},
+      {"punctual_lights", lights.punctual.size() * sizeof(gpu::PunctualLight)},
+      {"environment", lights.environment.size() * sizeof(glm::vec4) + lights.environmentTable.size() * sizeof(float)}};
 }
 
 void GpuScene::bindTo(vk::KernelLayout& layout, bool binaryBvh) const {
