@@ -68,7 +68,7 @@ int runInfo(const RenderOptions& options) {
   std::printf("kernels      %s pipelines on %s:\n", options.specialize ? "specialized" : "general", ctx.deviceName().c_str());
   for (const std::string& k : plan.kernels) std::printf("               %s\n", k.c_str());
   std::printf("              not dispatched: %s\n",
-              plan.kernels.size() < 7 ? "prepare_shadow, shadow (no emitters or NEE off)" : "none");
+              plan.kernels.size() < 7 ? "prepare_shadow, shadow (no lights or NEE off)" : "none");
   std::printf("spec consts  ");
   int n = 0;
   for (const vk::SpecConstant& s : plan.specs) {
