@@ -138,9 +138,15 @@ Command addRenderCommand(CLI::App& app) {
   render->add_option("--look-from", a->lookFrom, "camera position x,y,z (overrides the file's camera)");
   render->add_option("--look-at", a->lookAt, "camera target x,y,z");
   render->add_option("--fov", ro.fovDegrees, "vertical field of view in degrees with --look-from")->capture_default_str();
-  render->add_option(
-      "--background", a->background,
-      "uniform radiance r,g,b of escaped rays (default 0,0,0; 1,1,1 with a warning when the scene has no emitters)");
+  render->add_option("--background", a->background,
+                     "uniform radiance r,g,b of escaped rays, reached by BSDF sampling only (default 0,0,0)");
+  render->add_option("--environment", ro.environmentPath,
+                     "environment light: equirectangular .hdr or .exr, +Y up, the image's centre along -Z (default: none; "
+                     "a constant environment of radiance 1, with a warning, for a scene with no other light)");
+  render->add_option("--environment-rotation", ro.environmentRotation, "rotation of the environment about +Y in degrees")
+      ->capture_default_str();
+  render->add_option("--environment-strength", ro.environmentStrength, "scale of the environment's radiance")
+      ->capture_default_str();
   render->add_option("--report", a->report, "JSON report file");
   render->add_option("--png", a->png, "sRGB PNG preview");
   render->add_option("--exposure", a->exposure, "PNG exposure in stops")->capture_default_str();

@@ -43,15 +43,18 @@ int runInfo(const RenderOptions& options) {
   vk::Context ctx;
   Scene scene = loadGltf(options.scenePath, deviceLoadLimits(ctx));
   SceneFeatures f = scanFeatures(scene);
+  f.environment = !f.emitters() && f.punctualLights == 0;  // the default light a render adds (--environment adds one)
   std::printf("scene        %s\n", options.scenePath.c_str());
   std::printf("triangles    %u (%s), %llu zero-area skipped, %u materials, %zu cameras\n", f.triangles, f.sizeClass(),
               static_cast<unsigned long long>(scene.degenerateTriangles), f.materials, scene.cameras.size());
   std::printf(
       "features     emitters %s (%u emissive triangles), glossy %s, metallic %s, non-default specular %s,\n"
-      "             double-sided %s, textures %s (%zu), normal maps %s, alpha %s, punctual lights %s\n",
+      "             double-sided %s, textures %s (%zu), normal maps %s, alpha %s, punctual lights %u,\n"
+      "             environment %s\n",
       f.emitters() ? "yes" : "no", f.emissiveTriangles, f.glossy ? "yes" : "no", f.metallic ? "yes" : "no",
       f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.textures ? "yes" : "no", scene.textures.size(),
-      f.normalMaps ? "yes" : "no", f.alpha ? "yes" : "no", f.punctualLights ? "yes" : "no");
+      f.normalMaps ? "yes" : "no", f.alpha ? "yes" : "no", f.punctualLights,
+      f.environment ? "constant (the default light: no other)" : "none (unless --environment)");
   std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   const BvhStats& b = bvh.stats;
@@ -70,7 +73,7 @@ int runInfo(const RenderOptions& options) {
   std::printf("kernels      %s pipelines on %s:\n", options.specialize ? "specialized" : "general", ctx.deviceName().c_str());
   for (const std::string& k : plan.kernels) std::printf("               %s\n", k.c_str());
   std::printf("              not dispatched: %s\n",
-              plan.kernels.size() < 7 ? "prepare_shadow, shadow (no emitters or NEE off)" : "none");
+              plan.kernels.size() < 7 ? "prepare_shadow, shadow (no lights or NEE off)" : "none");
   std::printf("spec consts  ");
   int n = 0;
   for (const vk::SpecConstant& s : plan.specs) {

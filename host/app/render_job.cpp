@@ -11,6 +11,7 @@
 #include "app/roulette_pilot.h"
 #include "bvh/bvh.h"
 #include "error.h"
+#include "io/environment_image.h"
 #include "render/gpu_scene.h"
 #include "scene/camera_rig.h"
 #include "scene/gltf_loader.h"
@@ -37,10 +38,30 @@ void validateOptions(const RenderOptions& o) {
   for (int c = 0; c < 3 && o.background; ++c)
     if (!((*o.background)[c] >= 0.0f) || !std::isfinite((*o.background)[c]))
       throw Error("--background must be finite and non-negative");
+  if (!(std::abs(o.environmentRotation) <= 360.0f))
+    throw Error("--environment-rotation must be a number of degrees between -360 and 360");
+  if (!(o.environmentStrength >= 0.0f && o.environmentStrength <= 1e9f))
+    throw Error("--environment-strength must be between 0 and 1e9");
+  if (o.environmentPath.empty() && (o.environmentRotation != 0.0f || o.environmentStrength != 1.0f))
+    throw Error("--environment-rotation and --environment-strength need --environment");
   if (!(o.timeBudget >= 0.0) || o.timeBudget > 1e6) throw Error("--time-budget must be between 0 and 1e6 seconds");
 }
 
 namespace {
+// The environment light: --environment's map; else, for a scene with nothing to light it (no emitters, no
+// punctual lights, no --background), a constant environment of radiance 1, importance sampled, with a warning.
+void addEnvironmentLight(const RenderOptions& options, Scene& scene, RenderOutcome& out) {
+  if (!options.environmentPath.empty()) {
+    scene.environment = readEnvironmentMap(options.environmentPath, options.environmentRotation, options.environmentStrength);
+  } else if (!options.background && !scanFeatures(scene).emitters() && scene.punctualLights.empty()) {
+    scene.environment = EnvironmentMap::constant(glm::vec3(1.0f));
+    out.warnings.push_back(
+        "the scene has no emitters and no punctual lights: it is lit by a uniform white environment of radiance 1, "
+        "importance sampled (--environment or --background sets another; --background 0,0,0 renders it black)");
+  }
+  out.environment = scene.environment ? scene.environment->source : "";
+}
+
 // The render itself, on options already validated by whichever runRender was called.
 RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene scene) {
   std::optional<ExrImage> reference;
@@ -93,6 +114,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.width = width;
   out.height = height;
 
+  addEnvironmentLight(options, scene, out);
   auto t = Clock::now();
   std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
@@ -114,12 +136,6 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.features = settings.features;
   settings.seed = options.seed;
   out.background = options.background.value_or(glm::vec3(0.0f));
-  if (!options.background && out.sceneInfo.emissiveTriangles == 0) {
-    out.background = glm::vec3(1.0f);
-    out.warnings.push_back(
-        "the scene has no emitters: it is lit by a uniform white environment of radiance 1 "
-        "(--background sets another; --background 0,0,0 renders it black)");
-  }
   settings.background = out.background;
   settings.camera = makeCameraRig(camera, width, height);
   settings.progress = options.progress;
@@ -236,8 +252,14 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["bvh"] = {{"inner_nodes", r.bvh.innerNodes},    {"leaves", r.bvh.leaves},    {"max_depth", r.bvh.maxDepth},
               {"max_leaf_size", r.bvh.maxLeafSize}, {"sah_cost", r.bvh.sahCost}, {"build_seconds", r.bvh.buildSeconds}};
   j["max_bounces"] = s.maxBounces;
-  j["specialized_for"] = {{"emitters", r.features.emitters()}, {"glossy", r.features.glossy}, {"specialized", o.specialize}};
+  j["specialized_for"] = {{"emitters", r.features.emitters()},
+                          {"punctual_lights", r.features.punctualLights > 0},
+                          {"environment", r.features.environment},
+                          {"glossy", r.features.glossy},
+                          {"specialized", o.specialize}};
   j["background"] = {r.background.x, r.background.y, r.background.z};
+  j["environment"] = r.environment;
+  j["scene_info"]["punctual_lights"] = r.sceneInfo.punctualLights;
   j["warnings"] = r.warnings;
   return j;
 }

@@ -27,6 +27,13 @@ struct RenderOptions {
   // Radiance seen by escaped rays. Unset: black, except that a scene without emitters is lit by a uniform white
   // environment (radiance 1) with a warning saying so, rather than rendering black without a word.
   std::optional<glm::vec3> background;
+  // An environment light (.hdr or .exr, equirectangular, +Y up, the image's centre along -Z), importance sampled
+  // and combined with BSDF sampling by MIS; rotated about +Y by environmentRotation degrees, scaled by
+  // environmentStrength. Unset in a scene with no emitters and no punctual lights (and no --background): a
+  // constant environment of radiance 1, with a warning.
+  std::string environmentPath;
+  float environmentRotation = 0.0f;
+  float environmentStrength = 1.0f;
   bool progress = true;
   double timeBudget = 0.0;      // seconds; 0 = render spp samples
   std::string referencePath;    // EXR to compare with: mse, relmse, efficiency in the report
@@ -56,7 +63,8 @@ struct RenderOutcome {
   double pilotSeconds = 0.0;          // efficiency roulette's pilot, included in stats.seconds
   SceneFeatures features;             // what the pipelines were specialized for
   std::optional<RouletteTable> roulette;
-  glm::vec3 background{0.0f};  // what escaped rays saw
+  glm::vec3 background{0.0f};  // what escaped rays saw besides the environment light
+  std::string environment;     // the environment light: its file, "constant", or empty (none)
 };
 
 // Throws vkmc::Error on bad options or input, before anything is written. Both runRender call it first, so

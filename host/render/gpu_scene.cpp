@@ -4,11 +4,15 @@
 #include <unistd.h>
 
 #include <bit>
+#include <cmath>
+#include <cstring>
 #include <glm/gtc/packing.hpp>
 #include <string_view>
 
+#include "../shaders/shared/environment_map.h"
 #include "../shaders/shared/geometry.h"
 #include "../shaders/shared/layout.h"
+#include "../shaders/shared/punctual_light.h"
 #include "../shaders/shared/sampling.h"
 #include "../shaders/shared/scene_layout.h"
 #include "error.h"
@@ -42,7 +46,173 @@ vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, uin
   return b;
 }
 
+vk::Buffer makeStorageBuffer(vk::Context& ctx, const void* data, size_t bytes) {
+  vk::Buffer b(ctx, std::max<size_t>(bytes, 16), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+  if (bytes > 0) b.upload(data, bytes);
+  return b;
+}
+
+double luminance(const glm::vec3& c) { return 0.2126 * double(c.x) + 0.7152 * double(c.y) + 0.0722 * double(c.z); }
+
+gpu::PunctualLight toGpu(const PunctualLight& l, const glm::vec3& sceneCentre, float sceneRadius) {
+  gpu::PunctualLight g{};
+  bool directional = l.kind == PunctualKind::Directional;
+  g.position = directional ? glm::vec4(sceneCentre, sceneRadius) : glm::vec4(l.position, 0.0f);
+  g.direction = glm::vec4(l.direction, 0.0f);
+  g.intensity = glm::vec4(l.intensity, 0.0f);
+  g.kind = directional ? gpu::kPunctualDirectional : l.kind == PunctualKind::Spot ? gpu::kPunctualSpot : gpu::kPunctualPoint;
+  g.cosOuter = std::cos(l.outerConeAngle);
+  g.cosInner = std::cos(l.innerConeAngle);
+  return g;
+}
+
+// What the device reads of the scene's lights: the alias entries (BINDING_LIGHTS), each triangle's selection pmf
+// (the triangle texels' w), the punctual lights and the environment (its header and radiance, its table).
+struct LightData {
+  std::vector<glm::uvec4> entries;
+  std::vector<float> trianglePmf;  // per triangle in BVH order, 0 unless it emits
+  std::vector<gpu::PunctualLight> punctual;
+  std::vector<glm::vec4> environment{3};  // gpu::EnvironmentHeader's 48 bytes, then the radiance texels
+  std::vector<float> environmentTable{0.0f};
+  uint32_t emissiveTriangles = 0;
+  double emittedPower = 0.0;  // of the emissive triangles
+};
+
+// One light of the table before the alias table is built: what it is and its power.
+struct LightRow {
+  uint32_t kind, index;
+  double power;
+};
+
+// Every light of the scene with its power (gpu_scene.h), emissive triangles first; fills the punctual and
+// environment data of `out` on the way.
+std::vector<LightRow> collectLights(const Scene& scene, const Bvh& bvh, gpu::EnvironmentHeader& env, LightData& out) {
+  const glm::vec3 centre = scene.bounds.valid() ? scene.bounds.center() : glm::vec3(0.0f);
+  const float radius = scene.bounds.valid() ? 0.5f * glm::length(scene.bounds.extent()) : 0.0f;
+  std::vector<LightRow> rows;
+  for (uint32_t i = 0; i < scene.triangleCount(); ++i) {
+    uint32_t src = bvh.triangleOrder[i];
+    const glm::vec3* p = &scene.positions[3 * src];
+    glm::vec4 c = gpu::scaledTriangleCross(p[0], p[1], p[2]);  // the area the GPU's light pdfs use
+    float area = 0.5f * glm::length(glm::vec3(c)) * c.w * c.w;
+    const Material& m = scene.materials[scene.materialIds[src]];
+    // A textured emitter is weighted by its mean emission over its area.
+    if (m.isEmissive() && area > 0.0f)
+      rows.push_back({gpu::kLightKindTriangle, i, triangleEmittedPower(averageEmission(scene, src), m.doubleSided, area)});
+  }
+  out.emissiveTriangles = static_cast<uint32_t>(rows.size());
+  for (const PunctualLight& l : scene.punctualLights) {
+    double w = punctualLightPower(l, radius);
+    if (!(w > 0.0)) continue;  // black: never sampled, never seen
+    rows.push_back({gpu::kLightKindPunctual, uint32_t(out.punctual.size()), w});
+    out.punctual.push_back(toGpu(l, centre, radius));
+  }
+  env.sceneSphere = glm::vec4(centre, radius);
+  if (scene.environment) {
+    const EnvironmentMap& e = *scene.environment;
+    env.width = e.width, env.height = e.height;
+    env.cosRotation = std::cos(glm::radians(e.rotationDegrees));
+    env.sinRotation = std::sin(glm::radians(e.rotationDegrees));
+    for (const glm::vec3& L : e.radiance) out.environment.emplace_back(L, 0.0f);
+    out.environmentTable = environmentDistribution(e);
+    double w = environmentPower(e, radius);
+    if (w > 0.0 && out.environmentTable[0] > 0.0f) rows.push_back({gpu::kLightKindEnvironment, 0, w});
+  }
+  return rows;
+}
+
+// The light table: emissive triangles, punctual lights and the environment chosen together, in proportion to
+// their power (or uniformly).
+LightData buildLights(const Scene& scene, const Bvh& bvh, bool uniformLightSelection) {
+  LightData out;
+  gpu::EnvironmentHeader env{};
+  std::vector<LightRow> rows = collectLights(scene, bvh, env, out);
+  out.trianglePmf.assign(scene.triangleCount(), 0.0f);
+  if (!rows.empty()) {
+    // A light whose luminance is 0 but whose color is not (pure blue at tiny levels) still gets a chance.
+    double total = 0.0;
+    for (const LightRow& r : rows) total += r.power;
+    std::vector<double> weights;
+    for (const LightRow& r : rows) {
+      weights.push_back(uniformLightSelection ? 1.0 : std::max(r.power, total * 1e-12));
+      if (r.kind == gpu::kLightKindTriangle) out.emittedPower += std::max(r.power, total * 1e-12);
+    }
+    std::vector<AliasEntry> table = buildAliasTable(weights);
+    for (size_t k = 0; k < table.size(); ++k) {
+      const LightRow& r = rows[k];
+      out.entries.push_back(gpu::encodeLightEntry(table[k].probability, table[k].alias, r.kind, r.index, table[k].pmf));
+      if (r.kind == gpu::kLightKindTriangle) out.trianglePmf[r.index] = table[k].pmf;
+      if (r.kind == gpu::kLightKindEnvironment) env.selectionPmf = table[k].pmf;
+    }
+  } else {
+    out.entries.emplace_back(0u, 0u, 0u, 0u);  // bound but never read (SPEC_HAS_LIGHTS = 0)
+  }
+  static_assert(sizeof(gpu::EnvironmentHeader) == 3 * sizeof(glm::vec4));
+  std::memcpy(out.environment.data(), &env, sizeof(env));
+  return out;
+}
+
 }  // namespace
+
+double triangleEmittedPower(glm::vec3 emission, bool doubleSided, float area) {
+  // In double: a finite emission near FLT_MAX times area and pi would overflow float.
+  return luminance(emission) * double(area) * double(gpu::kPi) * (doubleSided ? 2.0 : 1.0);
+}
+
+double punctualLightPower(const PunctualLight& l, double sceneRadius) {
+  double I = luminance(l.intensity);
+  switch (l.kind) {
+    case PunctualKind::Point: return 4.0 * double(gpu::kPi) * I;
+    case PunctualKind::Spot: return I * gpu::spotSolidAngleFactor(std::cos(l.outerConeAngle), std::cos(l.innerConeAngle));
+    case PunctualKind::Directional: return I * double(gpu::kPi) * sceneRadius * sceneRadius;
+  }
+  return 0.0;
+}
+
+double environmentPower(const EnvironmentMap& e, double sceneRadius) {
+  // pi r^2 times the integral of luminance over the sphere, each row of pixels over its exact solid angle.
+  double integral = 0.0;
+  for (uint32_t row = 0; row < e.height; ++row) {
+    double rowSolidAngle = 2.0 * M_PI * (std::cos(M_PI * row / e.height) - std::cos(M_PI * (row + 1) / e.height)) / e.width;
+    for (uint32_t col = 0; col < e.width; ++col) integral += luminance(e.radiance[size_t(row) * e.width + col]) * rowSolidAngle;
+  }
+  return M_PI * sceneRadius * sceneRadius * integral;
+}
+
+std::vector<float> environmentDistribution(const EnvironmentMap& e) {
+  const uint32_t w = e.width, h = e.height;
+  std::vector<float> table(gpu::envDistributionSize(w, h), 0.0f);
+  std::vector<double> rowIntegral(h, 0.0);
+  const uint32_t fo = gpu::envFunctionOffset(w, h), co = gpu::envConditionalCdfOffset(h);
+  for (uint32_t row = 0; row < h; ++row) {
+    double sinTheta = gpu::envRowSinTheta(row, h);
+    std::vector<double> f(w);
+    for (uint32_t col = 0; col < w; ++col) {
+      f[col] = luminance(e.radiance[size_t(row) * w + col]) * sinTheta;
+      table[fo + row * w + col] = float(f[col]);
+      rowIntegral[row] += f[col] / w;
+    }
+    double sum = 0.0;
+    float* cdf = &table[co + row * (w + 1)];
+    for (uint32_t col = 0; col < w; ++col) {
+      cdf[col] = rowIntegral[row] > 0.0 ? float(sum / (rowIntegral[row] * w)) : float(col) / float(w);
+      sum += f[col];
+    }
+    cdf[w] = 1.0f;
+    table[gpu::envRowIntegralOffset(h) + row] = float(rowIntegral[row]);
+  }
+  double integral = 0.0;
+  for (double r : rowIntegral) integral += r / h;
+  double sum = 0.0;
+  float* marginal = &table[gpu::envMarginalCdfOffset()];
+  for (uint32_t row = 0; row < h; ++row) {
+    marginal[row] = integral > 0.0 ? float(sum / (integral * h)) : float(row) / float(h);
+    sum += rowIntegral[row];
+  }
+  marginal[h] = 1.0f;
+  table[0] = float(integral);
+  return table;
+}
 
 VkFormat sceneTexelFormat(uint32_t binding) {
   switch (binding) {
@@ -78,42 +248,11 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   info_.triangles = static_cast<uint32_t>(n);
   info_.materials = static_cast<uint32_t>(scene.materials.size());
 
-  std::vector<double> power;
-  std::vector<uint32_t> lightTriangles;
-  std::vector<float> triangleArea(n);
-  for (uint32_t i = 0; i < n; ++i) {
-    uint32_t src = bvh.triangleOrder[i];
-    const glm::vec3* p = &scene.positions[3 * src];
-    glm::vec4 c = gpu::scaledTriangleCross(p[0], p[1], p[2]);  // the area the GPU's light pdfs use
-    triangleArea[i] = 0.5f * glm::length(glm::vec3(c)) * c.w * c.w;
-    const Material& m = scene.materials[scene.materialIds[src]];
-    if (m.isEmissive() && triangleArea[i] > 0.0f) {
-      double sides = m.doubleSided ? 2.0 : 1.0;
-      // In double: a finite emission near FLT_MAX times area and pi would overflow float. A textured emitter
-      // is weighted by its mean emission over its area.
-      glm::vec3 emission = averageEmission(scene, src);
-      power.push_back(double(gpu::luminance(emission)) * double(triangleArea[i]) * double(gpu::kPi) * sides);
-      lightTriangles.push_back(i);
-    }
-  }
-  info_.emissiveTriangles = static_cast<uint32_t>(lightTriangles.size());
-  std::vector<glm::uvec4> lightTexels;
-  std::vector<float> lightPmf(n, 0.0f);
-  if (!lightTriangles.empty()) {
-    // A light whose luminance is 0 but whose color is not (pure blue at tiny levels) still gets a chance.
-    double total = 0.0;
-    for (double w : power) total += w;
-    for (double& w : power) w = std::max(w, total * 1e-12);
-    for (double w : power) info_.emittedPower += w;
-    if (uniformLightSelection) std::fill(power.begin(), power.end(), 1.0);
-    std::vector<AliasEntry> table = buildAliasTable(power);
-    for (size_t k = 0; k < table.size(); ++k) {
-      lightTexels.push_back(gpu::encodeLightEntry(table[k].probability, table[k].alias, lightTriangles[k], table[k].pmf));
-      lightPmf[lightTriangles[k]] = table[k].pmf;
-    }
-  } else {
-    lightTexels.emplace_back(0u, 0u, 0u, 0u);  // bound but never read (SPEC_HAS_LIGHTS = 0)
-  }
+  LightData lights = buildLights(scene, bvh, uniformLightSelection);
+  info_.emissiveTriangles = lights.emissiveTriangles;
+  info_.punctualLights = static_cast<uint32_t>(lights.punctual.size());
+  info_.emittedPower = lights.emittedPower;
+  const std::vector<float>& lightPmf = lights.trianglePmf;
 
   std::vector<glm::vec4> triTexels(gpu::kTriangleTexels * n);
   std::vector<glm::uvec4> infoTexels(n);
@@ -152,7 +291,7 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   if (keepBinaryBvh)
     binaryBvhNodes_ =
         makeTexelBuffer(ctx, bvh.nodes.data(), bvh.nodes.size() * sizeof(BvhGpuNode), BINDING_BVH_NODES, "binary BVH nodes");
-  lights_ = makeTexelBuffer(ctx, lightTexels.data(), lightTexels.size() * 16, BINDING_LIGHTS, "lights");
+  lights_ = makeTexelBuffer(ctx, lights.entries.data(), lights.entries.size() * 16, BINDING_LIGHTS, "lights");
   // Textures and attributes only where a material reads them (SceneFeatures::textures); one texel otherwise.
   bool textured = scanFeatures(scene).textures;
   PackedTextures packed = textured ? packTextures(scene) : PackedTextures{};
@@ -168,13 +307,20 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   materials_ =
       vk::Buffer(ctx, mats.size() * sizeof(gpu::Material), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   materials_.upload(mats.data(), mats.size() * sizeof(gpu::Material));
-  info_.bufferBytes = {{"triangles", triTexels.size() * 16},
-                       {"triangle_info", infoTexels.size() * 16},
-                       {"bvh_nodes", bvh.wideNodes.size() * sizeof(BvhWideNode)},
-                       {"lights", lightTexels.size() * 16},
-                       {"materials", mats.size() * sizeof(gpu::Material)},
-                       {"texture_texels", packed.texels.size() * 4},
-                       {"triangle_attributes", attributes.size() * 16}};
+  punctualLights_ = makeStorageBuffer(ctx, lights.punctual.data(), lights.punctual.size() * sizeof(gpu::PunctualLight));
+  environment_ = makeStorageBuffer(ctx, lights.environment.data(), lights.environment.size() * sizeof(glm::vec4));
+  environmentDistribution_ =
+      makeStorageBuffer(ctx, lights.environmentTable.data(), lights.environmentTable.size() * sizeof(float));
+  info_.bufferBytes = {
+      {"triangles", triTexels.size() * 16},
+      {"triangle_info", infoTexels.size() * 16},
+      {"bvh_nodes", bvh.wideNodes.size() * sizeof(BvhWideNode)},
+      {"lights", lights.entries.size() * 16},
+      {"materials", mats.size() * sizeof(gpu::Material)},
+      {"punctual_lights", lights.punctual.size() * sizeof(gpu::PunctualLight)},
+      {"environment", lights.environment.size() * sizeof(glm::vec4) + lights.environmentTable.size() * sizeof(float)},
+      {"texture_texels", packed.texels.size() * 4},
+      {"triangle_attributes", attributes.size() * 16}};
 }
 
 void GpuScene::bindTo(vk::KernelLayout& layout, bool binaryBvh) const {
@@ -187,6 +333,9 @@ void GpuScene::bindTo(vk::KernelLayout& layout, bool binaryBvh) const {
   layout.bindTexel(BINDING_TEXTURE_TEXELS, textureTexels_);
   layout.bindTexel(BINDING_TEXTURES, textures_);
   layout.bindTexel(BINDING_TRIANGLE_ATTRIBUTES, triangleAttributes_);
+  layout.bindStorage(BINDING_PUNCTUAL_LIGHTS, punctualLights_);
+  layout.bindStorage(BINDING_ENVIRONMENT, environment_);
+  layout.bindStorage(BINDING_ENVIRONMENT_DISTRIBUTION, environmentDistribution_);
 }
 
 }  // namespace vkmc

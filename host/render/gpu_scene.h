@@ -17,7 +17,8 @@ struct GpuSceneInfo {
   uint32_t triangles = 0;
   uint32_t emissiveTriangles = 0;
   uint32_t materials = 0;
-  double emittedPower = 0.0;  // sum over lights of luminance(Le) * area * pi * sides
+  uint32_t punctualLights = 0;  // in the light table (black ones are left out)
+  double emittedPower = 0.0;    // sum over emissive triangles of luminance(Le) * area * pi * sides
   std::vector<std::pair<std::string, uint64_t>> bufferBytes;
 };
 
@@ -32,6 +33,17 @@ uint64_t maxSceneTriangles(const vk::Context& ctx);
 // The loader's limits for scenes bound for this device (maxSceneTriangles).
 LoadLimits deviceLoadLimits(const vk::Context& ctx);
 
+// The powers (luminance, in W) that power-proportional light selection weighs, pbrt-v4's conventions for the
+// lights without a surface, with r the radius of the scene's bounding sphere:
+//   an emissive triangle: luminance(mean Le) area pi (times 2 when double-sided; textured: averageEmission);
+//   a point light 4 pi I; a spot I 2 pi (1 - cosInner + (cosInner - cosOuter) / 3) (exact for the spec's falloff);
+//   a directional light E pi r^2; the environment pi r^2 times the integral of its luminance over the sphere.
+double triangleEmittedPower(glm::vec3 emission, bool doubleSided, float area);  // emission: its mean over the area
+double punctualLightPower(const PunctualLight& light, double sceneRadius);
+double environmentPower(const EnvironmentMap& environment, double sceneRadius);
+// The environment's sampling table (BINDING_ENVIRONMENT_DISTRIBUTION; shaders/shared/environment_map.h).
+std::vector<float> environmentDistribution(const EnvironmentMap& environment);
+
 class GpuScene {
  public:
   // uniformLightSelection: every emissive triangle equally likely; otherwise in proportion to emitted power.
@@ -43,12 +55,14 @@ class GpuScene {
   const vk::Buffer& bvhNodes() const { return bvhNodes_; }
   const vk::Buffer& lights() const { return lights_; }
   const vk::Buffer& materials() const { return materials_; }
-  // Binds the scene's buffers (triangles, triangle info, BVH nodes, lights, materials) to their bindings.
+  // Binds the scene's buffers (triangles, triangle info, BVH nodes, lights, materials, punctual lights,
+  // environment) to their bindings.
   void bindTo(vk::KernelLayout& layout, bool binaryBvh = false) const;
 
  private:
   GpuSceneInfo info_;
-  vk::Buffer triangles_, triangleInfo_, bvhNodes_, binaryBvhNodes_, lights_, materials_;
+  vk::Buffer triangles_, triangleInfo_, bvhNodes_, binaryBvhNodes_, lights_, materials_, punctualLights_, environment_,
+      environmentDistribution_;
   vk::Buffer textureTexels_, textures_, triangleAttributes_;
 };
 

@@ -47,7 +47,7 @@ PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const Render
   if (est.needsFloatAtomics() && !ctx.hasFloatAtomics())
     throw Error("light_samples > 1 needs buffer float atomics (VK_EXT_shader_atomic_float), which this device lacks");
   // A scene without emitters has no shadow stage: its queue is not allocated (a placeholder is bound).
-  hasShadowStage_ = settings.features.emitters() && est.nee && !megakernel;
+  hasShadowStage_ = settings.features.lights() && est.nee && !megakernel;
   const PathPoolSize size = sizePathPool(settings, limits, hasShadowStage_);
   capacity_ = size.cameraPaths;
   pool_ = size.slots;

@@ -25,7 +25,7 @@ namespace vkmc {
 KernelPlan planKernels(const RenderSettings& s) {
   KernelPlan plan;
   const EstimatorConfig& est = s.estimator;
-  bool shadows = s.features.emitters() && est.nee;
+  bool shadows = s.features.lights() && est.nee;
   if (s.integrator == Integrator::Megakernel) {
     plan.kernels = {"megakernel", "accumulate"};
   } else {
@@ -37,7 +37,9 @@ KernelPlan planKernels(const RenderSettings& s) {
   }
   if (s.integrator == Integrator::Wavefront) plan.kernels.push_back("accumulate");
   plan.specs = {{SPEC_WORKGROUP_SIZE, s.workgroupSize},
-                {SPEC_HAS_LIGHTS, s.features.emitters() ? 1u : 0u},
+                {SPEC_HAS_LIGHTS, s.features.lights() ? 1u : 0u},
+                {SPEC_HAS_PUNCTUAL, s.features.punctualLights > 0 ? 1u : 0u},
+                {SPEC_HAS_ENVIRONMENT, s.features.environment ? 1u : 0u},
                 {SPEC_HAS_GLOSSY, s.features.glossy ? 1u : 0u},
                 {SPEC_HAS_TEXTURES, s.features.textures ? 1u : 0u},
                 {SPEC_HAS_NORMAL_MAPS, s.features.normalMaps ? 1u : 0u},

@@ -17,7 +17,7 @@ struct ExtensionRow {
 constexpr ExtensionRow kExtensions[] = {
     {"KHR_materials_emissive_strength", ""},
     {"KHR_materials_specular", ""},  // specularFactor; the loader warns per material that sets a colour or texture
-    {"KHR_lights_punctual", "its lights are ignored"},
+    {"KHR_lights_punctual", ""},     // range is ignored (physically based), with a warning
     {"KHR_texture_transform", ""},
     {"KHR_texture_basisu", "KTX2 images are not decoded (a texture's PNG or JPEG fallback source is used)"},
     {"EXT_texture_webp", "WebP images are not decoded (a texture's PNG or JPEG fallback source is used)"},

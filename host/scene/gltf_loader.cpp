@@ -23,6 +23,7 @@
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_decompress.h"
 #include "scene/gltf_extensions.h"
+#include "scene/gltf_lights.h"
 #include "scene/gltf_primitive.h"
 #include "scene/gltf_textures.h"
 #include "scene/tangent_space.h"
@@ -182,6 +183,7 @@ class Flattener {
     glm::mat4 world = parent * localTransform(node);
     if (node.mesh >= 0) addMesh(nodeIndex, world);
     if (node.camera >= 0) addCamera(node.camera, world);
+    addNodePunctualLight(model_, nodeIndex, world, scene_);
     for (int child : node.children) visit(child, world, depth + 1);
   }
 
@@ -515,7 +517,6 @@ Scene flattenModel(const tinygltf::Model& model, const std::string& path, const 
     scene.materials.push_back(convertMaterial(model.materials[i], static_cast<int>(i), scene.textures, scene.warnings));
   Material fallback;  // glTF default material: white, fully metallic and rough (Lambert here)
   scene.materials.push_back(fallback);
-  for (const std::string& e : model.extensionsUsed) scene.hasPunctualLights |= e == "KHR_lights_punctual";
   scene.warnings.insert(scene.warnings.end(), extensionWarnings.begin(), extensionWarnings.end());
 
   std::vector<int> roots;

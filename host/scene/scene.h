@@ -63,6 +63,31 @@ struct Camera {
   std::string name;
 };
 
+// A KHR_lights_punctual light instance in world space. vkmc reads the spec's photometric values as radiometric
+// ones, 1:1 (README, Lights): a point or spot light's intensity (cd) is its radiant intensity I in W/sr, a
+// directional light's (lx) its irradiance E in W/m^2 at normal incidence.
+enum class PunctualKind { Point, Spot, Directional };
+
+struct PunctualLight {
+  PunctualKind kind = PunctualKind::Point;
+  glm::vec3 position{0.0f};
+  glm::vec3 direction{0.0f, 0.0f, -1.0f};  // unit, the direction it shines along (the node's -Z)
+  glm::vec3 intensity{1.0f};               // color x intensity: I (point, spot) or E (directional)
+  float innerConeAngle = 0.0f;             // spot, radians: 0 <= inner < outer <= pi/2
+  float outerConeAngle = 0.7853982f;
+  std::string name;
+};
+
+// An environment light: an equirectangular map of radiance (W m^-2 sr^-1), +Y up, the image's centre along -Z
+// (shaders/shared/environment_map.h has the convention). A 1 x 1 map is a constant environment.
+struct EnvironmentMap {
+  uint32_t width = 0, height = 0;
+  std::vector<glm::vec3> radiance;  // row-major from the top row, strength applied
+  float rotationDegrees = 0.0f;     // about +Y, counter-clockwise seen from above
+  std::string source;               // the file, or "constant"
+  static EnvironmentMap constant(const glm::vec3& radiance) { return {1, 1, {radiance}, 0.0f, "constant"}; }
+};
+
 struct Aabb {
   glm::vec3 min{std::numeric_limits<float>::infinity()};
   glm::vec3 max{-std::numeric_limits<float>::infinity()};
@@ -99,7 +124,8 @@ struct Scene {
   uint64_t skippedPrimitives = 0;    // non-triangle primitives skipped
   std::vector<std::string> warnings;
   std::string path;
-  bool hasPunctualLights = false;  // KHR_lights_punctual present (ignored for now)
+  std::vector<PunctualLight> punctualLights;  // KHR_lights_punctual instances in node order
+  std::optional<EnvironmentMap> environment;  // not in glTF: the render sets it (--environment, or the default)
 
   size_t triangleCount() const { return materialIds.size(); }
   bool hasUv0() const { return !uv0.empty(); }

@@ -7,7 +7,6 @@ const char* SceneFeatures::sizeClass() const { return triangles < 1000 ? "small"
 
 std::vector<std::string> SceneFeatures::unsupported() const {
   std::vector<std::string> out;
-  if (punctualLights) out.push_back("KHR_lights_punctual (ignored)");
   return out;
 }
 
@@ -30,7 +29,8 @@ SceneFeatures scanFeatures(const Scene& scene) {
   }
   f.textures |= !scene.colors.empty();
   for (uint32_t m : scene.materialIds) f.emissiveTriangles += scene.materials[m].isEmissive() ? 1 : 0;
-  f.punctualLights = scene.hasPunctualLights;
+  f.punctualLights = static_cast<uint32_t>(scene.punctualLights.size());
+  f.environment = scene.environment.has_value();
   return f;
 }
 
@@ -42,6 +42,8 @@ SceneFeatures allFeatures(const SceneFeatures& scene) {
   f.textures = true;
   f.normalMaps = true;
   f.alpha = true;
+  f.punctualLights = std::max(f.punctualLights, 1u);
+  f.environment = true;
   return f;
 }
 

@@ -21,9 +21,14 @@ struct SceneFeatures {
   bool textures = false;    // a material samples a texture (or vertex colours tint it)
   bool normalMaps = false;  // a material has a normal texture
   bool alpha = false;       // a material is alpha MASK or BLEND: any-hit tests in the walks
-  bool punctualLights = false;  // KHR_lights_punctual present (not yet supported)
+  uint32_t punctualLights = 0;  // KHR_lights_punctual instances
+  // An environment light (Scene::environment): --environment, or the constant one that lights a scene with no
+  // emitters and no punctual lights.
+  bool environment = false;
 
   bool emitters() const { return emissiveTriangles > 0; }
+  // Anything next-event estimation can sample: emissive triangles, punctual lights, the environment.
+  bool lights() const { return emitters() || punctualLights > 0 || environment; }
   const char* sizeClass() const;  // "small" (< 1k triangles), "medium" (< 100k), "large"
   std::vector<std::string> unsupported() const;
 };

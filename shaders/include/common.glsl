@@ -12,6 +12,8 @@ layout(local_size_x_id = SPEC_WORKGROUP_SIZE) in;
 layout(constant_id = SPEC_MAX_DEPTH) const uint kMaxDepth = 0u;
 layout(constant_id = SPEC_RR_DEPTH) const uint kRouletteDepth = 3u;
 layout(constant_id = SPEC_HAS_LIGHTS) const uint kHasLights = 1u;
+layout(constant_id = SPEC_HAS_PUNCTUAL) const uint kHasPunctual = 1u;
+layout(constant_id = SPEC_HAS_ENVIRONMENT) const uint kHasEnvironment = 1u;
 layout(constant_id = SPEC_HAS_GLOSSY) const uint kHasGlossy = 1u;
 layout(constant_id = SPEC_ANY_HIT) const uint kAnyHit = 0u;
 layout(constant_id = SPEC_NEE) const uint kNee = 1u;
@@ -57,6 +59,12 @@ layout(binding = BINDING_PIXEL_ESTIMATE, std430) readonly buffer PixelEstimate {
 layout(binding = BINDING_ROULETTE_TABLE, std430) readonly buffer RouletteTable { float rouletteScale[]; };
 layout(binding = BINDING_DEPTH_STATS, std430) buffer DepthStats { vec2 depthStats[]; };
 layout(binding = BINDING_QUEUE_STATS, std430) buffer QueueStats { uvec2 queueStats[]; };
+layout(binding = BINDING_PUNCTUAL_LIGHTS, std430) readonly buffer PunctualLights { PunctualLight punctualLights[]; };
+layout(binding = BINDING_ENVIRONMENT, std430) readonly buffer Environment {
+  EnvironmentHeader envHeader;
+  vec4 envRadiance[];  // rgb radiance per pixel, row-major from the top row (environment_map.h)
+};
+layout(binding = BINDING_ENVIRONMENT_DISTRIBUTION, std430) readonly buffer EnvironmentDistribution { float envDistribution[]; };
 
 // Indirect dispatches may round up, and big ones use a 2D grid.
 uint invocationIndex() {

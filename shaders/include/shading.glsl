@@ -3,7 +3,9 @@
 // weight, light samples as shadow rays, BSDF continuations with roulette. What differs is only where their
 // results go: queues between dispatches, or the next iteration of one invocation's loop.
 #include "bsdf_gltf.h"
+#include "environment_map.h"
 #include "light_sampling.h"
+#include "punctual_light.h"
 #include "mis.h"
 #include "roulette.h"
 #include "textures.glsl"
@@ -124,7 +126,7 @@ float lightPdf(uint tri, float pmf, vec3 p, float dist2, float cosLight) {
   return triangleLightPdfAt(kLightSampling, p, v0, v1, v2, pmf, area, dist2, cosLight);
 }
 
-// Alias-table pick of one emissive triangle: its light entry (scene_layout.h).
+// Alias-table pick of one light: its light entry (scene_layout.h).
 uvec4 selectLight(float u) {
   uint n = uint(imageSize(lights));
   float scaled = u * float(n);
@@ -134,41 +136,89 @@ uvec4 selectLight(float u) {
   return pick == slot ? e : imageLoad(lights, int(pick));
 }
 
+// The radiance of the environment seen along world direction w (0 without one).
+vec3 environmentRadiance(vec3 w) {
+  if (kHasEnvironment == 0u || envHeader.width == 0u) return vec3(0.0);
+  return envRadiance[environmentPixel(envHeader, environmentUv(envHeader, w))].rgb;
+}
+
+// One light sample from s: the direction, the end of the shadow segment (its origin is offset from s), what
+// arrives (radiance for area and environment lights, irradiance at normal incidence for delta lights), and the
+// solid-angle pdf times the selection pmf (delta lights: the pmf alone, and no MIS: BSDF sampling cannot hit them).
+struct LightSample {
+  vec3 wi;
+  vec3 target;
+  vec3 arriving;
+  float pdf;
+  bool delta;
+};
+
+bool sampleEmissiveTriangle(uint tri, float pmf, SurfacePoint s, vec2 u, out LightSample ls) {
+  vec3 v0, v1, v2;
+  triangleVertices(tri, v0, v1, v2);
+  vec4 cr = scaledTriangleCross(v0, v1, v2);
+  float area = scaledCrossArea(cr);
+  if (!(area > 0.0)) return false;
+  vec3 nl = normalize(cr.xyz);
+  TriangleLightSample ts = sampleTriangleLight(kLightSampling, s.p, v0, v1, v2, nl, u);
+  vec3 toLight = ts.point - s.p;
+  float dist2 = dot(toLight, toLight);
+  if (!(dist2 > 0.0)) return false;
+  ls.wi = toLight * inversesqrt(dist2);
+  float cosLight = dot(nl, -ls.wi);
+  Material lm = materials[triangleInfoMaterial(imageLoad(triangleInfo, int(tri)))];
+  if (!emitsToward(lm, cosLight > 0.0)) return false;
+  cosLight = abs(cosLight);
+  if (cosLight <= 0.0) return false;
+  ls.pdf = triangleLightPdf(ts.spherical, ts.solidAngle, pmf, area, dist2, cosLight);
+  ls.target = offsetRayOrigin(ts.point, ts.pointError, nl, -ls.wi);
+  ls.arriving = emissionAtPoint(lm, tri, ts.point, v0, v1, v2);
+  ls.delta = false;
+  return true;
+}
+
+bool samplePunctual(uint index, float pmf, SurfacePoint s, out LightSample ls) {
+  PunctualLightSample ps = samplePunctualLight(punctualLights[index], s.p);
+  ls.wi = ps.wi;
+  ls.target = s.p + ps.wi * ps.distance;
+  ls.arriving = ps.irradiance;
+  ls.pdf = pmf;
+  ls.delta = true;
+  return ps.distance > 0.0;
+}
+
+bool sampleEnvironmentLight(float pmf, SurfacePoint s, vec2 u, out LightSample ls) {
+  float pdf = 0.0;
+  ls.wi = sampleEnvironment(envHeader, u, pdf);
+  ls.pdf = pmf * pdf;
+  ls.target = s.p + ls.wi * (length(s.p - envHeader.sceneSphere.xyz) + 2.0 * envHeader.sceneSphere.w + 1.0);
+  ls.arriving = environmentRadiance(ls.wi);
+  ls.delta = false;
+  return pdf > 0.0;
+}
+
 // Light sample j of `samples` at s: the shadow ray to trace, carrying the contribution it adds if unoccluded;
 // false when the sample adds nothing (or was rouletted away).
 bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo, uint j, uint samples, out ShadowRay ray) {
   uint depth = path.depth;
   uint key = path.rngKey;
   uvec4 light = selectLight(randomUnit(key, lightDim(depth, j, 0u)));
-  uint lightTri = lightEntryTriangle(light);
+  uint kind = lightEntryKind(light);
   float pmf = lightEntryPmf(light);
-  vec3 v0, v1, v2;
-  triangleVertices(lightTri, v0, v1, v2);
-  vec4 cr = scaledTriangleCross(v0, v1, v2);
-  float area = scaledCrossArea(cr);
-  if (!(area > 0.0)) return false;
-  vec3 nl = normalize(cr.xyz);
   vec2 u = vec2(randomUnit(key, lightDim(depth, j, 1u)), randomUnit(key, lightDim(depth, j, 2u)));
-  TriangleLightSample ls = sampleTriangleLight(kLightSampling, s.p, v0, v1, v2, nl, u);
-  vec3 pl = ls.point;
-  vec3 toLight = pl - s.p;
-  float dist2 = dot(toLight, toLight);
-  if (!(dist2 > 0.0)) return false;
-  vec3 wi = toLight * inversesqrt(dist2);
-  float cosLight = dot(nl, -wi);
-  Material lm = materials[triangleInfoMaterial(imageLoad(triangleInfo, int(lightTri)))];
-  if (!emitsToward(lm, cosLight > 0.0)) return false;
-  cosLight = abs(cosLight);
-  if (cosLight <= 0.0 || dot(s.ng, wi) <= 0.0) return false;
-  float pdf = triangleLightPdf(ls.spherical, ls.solidAngle, pmf, area, dist2, cosLight);
-  vec3 wiLocal = wi * s.frame;
+  LightSample ls;
+  bool sampled = false;
+  if (kind == kLightKindTriangle) sampled = sampleEmissiveTriangle(lightEntryIndex(light), pmf, s, u, ls);
+  else if (kHasPunctual != 0u && kind == kLightKindPunctual) sampled = samplePunctual(lightEntryIndex(light), pmf, s, ls);
+  else if (kHasEnvironment != 0u && kind == kLightKindEnvironment) sampled = sampleEnvironmentLight(pmf, s, u, ls);
+  if (!sampled || dot(s.ng, ls.wi) <= 0.0) return false;
+  vec3 wiLocal = ls.wi * s.frame;
   vec3 woLocal = wo * s.frame;
-  if (wiLocal.z <= 0.0 || !(pdf > 0.0)) return false;
+  if (wiLocal.z <= 0.0 || !(ls.pdf > 0.0)) return false;
   vec3 f = bsdfEval(gm, woLocal, wiLocal);
   // MIS over one BSDF sample and `samples` light samples: the light technique's pdf counts samples times.
-  float weight = kMis == kMisNone ? 1.0 : misWeight(kMis, float(samples) * pdf, techniquePdf(gm, woLocal, wiLocal));
-  vec3 le = emissionAtPoint(lm, lightTri, pl, v0, v1, v2);
-  vec3 contribution = path.throughput.rgb * f * le * (wiLocal.z * weight / (pdf * float(samples)));
+  float weight = kMis == kMisNone || ls.delta ? 1.0 : misWeight(kMis, float(samples) * ls.pdf, techniquePdf(gm, woLocal, wiLocal));
+  vec3 contribution = path.throughput.rgb * f * ls.arriving * (wiLocal.z * weight / (ls.pdf * float(samples)));
   if (!allFinite(contribution)) atomicAdd(control.nonfiniteLightSamples, 1u);  // still queued: it poisons the sample
   else if (!(maxComponent(contribution) > 0.0)) return false;
   if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * pixelEstimate[path.pixel]) {
@@ -176,14 +226,28 @@ bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo
     if (!rr.survives) return false;
     contribution /= rr.survival;
   }
-  vec3 origin = offsetRayOrigin(s.p, s.pError, s.ng, wi);
-  vec3 target = offsetRayOrigin(pl, ls.pointError, nl, -wi);
+  vec3 origin = offsetRayOrigin(s.p, s.pError, s.ng, ls.wi);
   ray.origin = vec4(origin, 1.0 - 1e-4);
-  ray.direction = vec4(target - origin, uintBitsToFloat(path.rootPath));
+  ray.direction = vec4(ls.target - origin, uintBitsToFloat(path.rootPath));
   ray.contribution = vec4(contribution, uintBitsToFloat(alphaKey(key, lightDim(depth, j, 0u) | 0x80000000u)));
   return true;
 }
 
+// Radiance an escaped ray brings: the background, and the environment light MIS-weighted against light sampling
+// for BSDF-sampled rays (as emissionAt weighs emitters).
+vec3 escapedRadiance(PathState path) {
+  vec3 radiance = pc.background.rgb;
+  if (kHasEnvironment != 0u) {
+    vec3 w = path.direction.xyz;
+    float weight = 1.0;
+    if (kNee != 0u && path.direction.w > 0.0 && envHeader.selectionPmf > 0.0) {
+      float pl = envHeader.selectionPmf * environmentPdf(envHeader, w);
+      weight = kMis == kMisNone ? 0.0 : misWeight(kMis, path.direction.w, float(lightSamplesAt(path.depth - 1u)) * pl);
+    }
+    radiance += environmentRadiance(w) * weight;
+  }
+  return path.throughput.rgb * radiance;
+}
 
 // Emission seen at s from the path's last ray, MIS-weighted against light sampling for BSDF-sampled rays.
 vec3 emissionAt(PathState path, SurfacePoint s, Material m, uint tri, vec4 hit, vec3 wo) {

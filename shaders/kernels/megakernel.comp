@@ -56,7 +56,7 @@ void main() {
         break;
       }
       if (tri == kMissPrimitive) {
-        radiance += path.throughput.rgb * pc.background.rgb;
+        radiance += escapedRadiance(path);
         break;
       }
       s = surfaceAt(tri, hit.yz, wo);

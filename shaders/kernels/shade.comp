@@ -7,7 +7,7 @@
 // MIS-weighted against light sampling for BSDF-sampled rays; next-event estimation with M light samples (M > 1
 // splits the first kSplitDepth bounces), each queued as a shadow ray, optionally rouletted when its
 // contribution is tiny against the pixel's running estimate; the BSDF continuation (uniform, cosine or glTF BRDF
-// sampling), split K ways at the first bounces, and Russian roulette on it. Escaped rays gather the background.
+// sampling), split K ways at the first bounces, and Russian roulette on it. Escaped rays gather the background and the environment light.
 #include "common.glsl"
 #include "shading.glsl"
 
@@ -42,7 +42,7 @@ void main() {
   if (kRecordDepthStats != 0u && path.depth >= 1u && path.depth <= kRouletteTableDepths)
     depthStats[id * kRouletteTableDepths + path.depth - 1u].y = luminance(path.radiance.rgb);
   if (tri == kMissPrimitive) {
-    addToSample(id, root, path.throughput.rgb * pc.background.rgb);
+    addToSample(id, root, escapedRadiance(path));
     return;
   }
   SurfacePoint s = surfaceAt(tri, hit.yz, wo);

@@ -64,7 +64,7 @@ void decodeScene() {
     float scaled = (float(k) + 0.5) / float(pc.pixelCount) * float(lightCount);
     uint slot = aliasSlot(scaled, lightCount);
     uvec4 chosen = imageLoad(lights, int(aliasChoice(scaled, slot, imageLoad(lights, int(slot)))));
-    put(lightEntryTriangle(chosen));
+    put(lightEntryIndex(chosen));
     putf(lightEntryPmf(chosen));
   }
   for (uint w = 0u; w < pc.width; ++w) {

@@ -25,7 +25,10 @@
 #define BINDING_TEXTURE_TEXELS 18       // uimageBuffer: every texture's RGBA8 texels, one r32ui each (texture_layout.h)
 #define BINDING_TEXTURES 19             // uimageBuffer: one TextureInfo texel per texture (texture_layout.h)
 #define BINDING_TRIANGLE_ATTRIBUTES 20  // uimageBuffer: per-triangle uvs, tangents, colours (texture_layout.h)
-#define BINDING_COUNT 21
+#define BINDING_PUNCTUAL_LIGHTS 21           // PunctualLight[] (punctual_light.h)
+#define BINDING_ENVIRONMENT 22               // vec4[]: environment radiance, row-major, + header (environment_map.h)
+#define BINDING_ENVIRONMENT_DISTRIBUTION 23  // float[]: its sampling distribution (environment_map.h)
+#define BINDING_COUNT 24
 
 // Texel formats of the scene bindings as GLSL image-format qualifiers (common.glsl declares the bindings with
 // them); the host derives each VkFormat from the same token (sceneTexelFormat in host/render/gpu_scene.cpp).
@@ -41,7 +44,7 @@
 #define SPEC_WORKGROUP_SIZE 0
 #define SPEC_MAX_DEPTH 1   // scattering events; 0 = no cap (Russian roulette only)
 #define SPEC_RR_DEPTH 2    // first depth at which roulette applies
-#define SPEC_HAS_LIGHTS 3  // 0: no emissive triangles, NEE code removed
+#define SPEC_HAS_LIGHTS 3  // 0: nothing to sample (no emissive triangles, punctual lights, environment): NEE removed
 #define SPEC_ANY_HIT 4     // trace_rays: 1 = any-hit query
 // Estimator settings (see host/estimators/estimator_config.h, the one place that sets them).
 #define SPEC_NEE 5             // 0/1: next-event estimation
@@ -63,6 +66,9 @@
 #define SPEC_HAS_NORMAL_MAPS 22      // 0: no normal textures
 #define SPEC_HAS_ALPHA 23            // 0: every material opaque; the walks' alpha tests compiled out
 #define SPEC_WALK_STATS 20           // trace_rays: 1 = count the register-stack walk's steps into Control.walkStats
+// 21-23: the textures' spec constants.
+#define SPEC_HAS_PUNCTUAL 24     // 0: no punctual lights, their sampling code removed
+#define SPEC_HAS_ENVIRONMENT 25  // 0: no environment light (escaped rays see pc.background alone)
 
 VKMC_BEGIN_NAMESPACE
 
@@ -79,6 +85,7 @@ VKMC_CONST uint kQueueStatsBounces = 64u;    // queue occupancy is recorded per 
 VKMC_CONST uint kMisNone = 0u, kMisBalance = 1u, kMisPower = 2u;
 VKMC_CONST uint kBsdfSamplingUniform = 0u, kBsdfSamplingCosine = 1u, kBsdfSamplingFull = 2u;
 VKMC_CONST uint kLightSamplingArea = 0u, kLightSamplingSolidAngle = 1u;
+VKMC_CONST uint kPunctualPoint = 0u, kPunctualSpot = 1u, kPunctualDirectional = 2u;
 VKMC_CONST uint kRouletteNone = 0u, kRouletteFixed = 1u, kRouletteThroughput = 2u, kRouletteEfficiency = 3u;
 
 // A path between stages. direction.w is the solid-angle pdf of the sampling that produced the ray
@@ -118,6 +125,27 @@ struct Material {
   float specular;     // KHR_materials_specular's specularFactor
   float alphaCutoff;  // kMaterialAlphaMask
   TextureSlot baseColorTexture, metallicRoughnessTexture, normalTexture, emissiveTexture;
+};
+
+// A KHR_lights_punctual light instance in world space (punctual_light.h samples it).
+struct PunctualLight {
+  vec4 position;   // xyz: position (point, spot); directional: the scene's bounding-sphere centre, w its radius
+  vec4 direction;  // xyz: unit direction the light shines along (spot, directional), w: unused
+  vec4 intensity;  // rgb: radiant intensity I (W/sr; point, spot) or irradiance E (W/m^2; directional), w: unused
+  uint kind;       // kPunctual*
+  float cosOuter;  // spot: cos(outerConeAngle)
+  float cosInner;  // spot: cos(innerConeAngle)
+  float unused;
+};
+
+// The head of BINDING_ENVIRONMENT, followed by width x height texels of radiance (rgb, row-major from the top
+// row, strength applied); environment_map.h maps directions to them and samples them.
+struct EnvironmentHeader {
+  uint width, height;              // 0 x 0: no environment light (escaped rays see pc.background alone)
+  float cosRotation, sinRotation;  // of the map's rotation about +Y
+  vec4 sceneSphere;                // xyz: the scene's bounding-sphere centre, w: radius (shadow rays end past it)
+  float selectionPmf;              // the environment's light-selection probability (0: not sampled)
+  float unused0, unused1, unused2;
 };
 
 // Film of one batch: float partial sums, folded into double on the host every batch. A channel whose magnitude
@@ -207,6 +235,9 @@ static_assert(sizeof(ShadowRay) == 48);
 static_assert(sizeof(TextureSlot) == 48);
 static_assert(sizeof(Material) == 240 && offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32);
 static_assert(offsetof(Material, baseColorTexture) == 48 && offsetof(Material, emissiveTexture) == 192);
+static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, kind) == 48 && offsetof(PunctualLight, cosInner) == 56);
+static_assert(sizeof(EnvironmentHeader) == 48 && offsetof(EnvironmentHeader, sceneSphere) == 16);
+static_assert(offsetof(EnvironmentHeader, selectionPmf) == 32);
 static_assert(sizeof(FilmPixel) == 64);
 static_assert(sizeof(Control) == 144);
 static_assert(offsetof(Control, deepArgs) == 96);

@@ -4,8 +4,9 @@
 //       kTriangleLightPmfTexel's w holds the triangle's light-selection pmf (0 unless it emits), the others' w 0
 //   triangle info (BINDING_TRIANGLE_INFO, RGBA32UI): one texel per triangle, the three vertex normals
 //       (octahedral, 2 x 16-bit snorm each) and the material id, whose top bit says the material is alpha-tested
-//   lights (BINDING_LIGHTS, RGBA32UI): one alias-table entry per emissive triangle (Walker/Vose):
-//       (keep probability as float bits, alias slot, triangle, selection pmf as float bits)
+//   lights (BINDING_LIGHTS, RGBA32UI): one alias-table entry per light (Walker/Vose), emissive triangles,
+//       punctual lights and the environment chosen together in proportion to power:
+//       (keep probability as float bits, alias slot, kind << kLightKindShift | index, selection pmf as float bits)
 #ifndef VKMC_SCENE_LAYOUT_H
 #define VKMC_SCENE_LAYOUT_H
 #include "glsl_cpp.h"
@@ -47,10 +48,17 @@ VKMC_FN vec3 triangleInfoNormal(uvec4 info, vec3 b) {
   return b.x * decodeOctahedral(info.x) + b.y * decodeOctahedral(info.y) + b.z * decodeOctahedral(info.z);
 }
 
-VKMC_FN uvec4 encodeLightEntry(float keepProbability, uint alias, uint triangle, float pmf) {
-  return uvec4(floatBitsToUint(keepProbability), alias, triangle, floatBitsToUint(pmf));
+// What a light entry's index names: a triangle (BVH order), a PunctualLight, or the environment (index 0).
+VKMC_CONST uint kLightKindTriangle = 0u, kLightKindPunctual = 1u, kLightKindEnvironment = 2u;
+VKMC_CONST uint kLightKindShift = 30u;
+VKMC_CONST uint kLightIndexMask = (1u << kLightKindShift) - 1u;  // triangles and punctual lights below 2^30
+
+VKMC_FN uvec4 encodeLightEntry(float keepProbability, uint alias, uint kind, uint index, float pmf) {
+  return uvec4(floatBitsToUint(keepProbability), alias, (kind << kLightKindShift) | (index & kLightIndexMask),
+               floatBitsToUint(pmf));
 }
-VKMC_FN uint lightEntryTriangle(uvec4 entry) { return entry.z; }
+VKMC_FN uint lightEntryKind(uvec4 entry) { return entry.z >> kLightKindShift; }
+VKMC_FN uint lightEntryIndex(uvec4 entry) { return entry.z & kLightIndexMask; }
 VKMC_FN float lightEntryPmf(uvec4 entry) { return uintBitsToFloat(entry.w); }
 // The alias pick of u in [0, 1) among n entries: scaled = u n selects the slot, whose entry keeps it when the
 // fraction is below its keep probability and sends it to its alias otherwise.

@@ -169,6 +169,12 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"camera_out_of_range", "", "--camera 5", "out of range", 1},
                       BadInput{"fov_0", "", "--fov 0 --look-from 0,0,5 --look-at 0,0,0", "--fov", 1},
                       BadInput{"background_nan", "", "--background nan,0,0", "--background", 1},
+                      BadInput{"environment_missing", "", "--environment /nonexistent/sky.hdr", "cannot open", 1},
+                      BadInput{"environment_not_hdr", "", "--environment /etc/hostname", "neither .hdr nor .exr", 1},
+                      BadInput{"environment_rotation_absurd", "", "--environment sky.hdr --environment-rotation 1e9",
+                               "--environment-rotation", 1},
+                      BadInput{"environment_strength_negative", "", "--environment sky.hdr --environment-strength -1",
+                               "--environment-strength", 1},
                       BadInput{"spp_not_a_number", "", "--spp abc", "spp", 2},
                       BadInput{"unknown_flag", "", "--no-such-flag", "no-such-flag", 2}),
     [](const auto& info) { return std::string(info.param.name); });
@@ -188,10 +194,11 @@ TEST(Cli, ASceneWithoutEmittersIsLitByAWhiteEnvironmentAndSaysSo) {
                        " --report " + report.string();
   RunResult lit = runVkmc(common);
   ASSERT_EQ(lit.code, 0) << lit.err;
-  EXPECT_NE(lit.err.find("no emitters: it is lit by a uniform white environment"), std::string::npos) << lit.err;
+  EXPECT_NE(lit.err.find("no emitters and no punctual lights: it is lit by a uniform white environment"), std::string::npos)
+      << lit.err;
   nlohmann::json j = nlohmann::json::parse(slurp(report));
   EXPECT_GT(j["mean"][0].get<double>(), 0.1);
-  EXPECT_EQ(j["background"][0].get<double>(), 1.0);
+  EXPECT_EQ(j["environment"].get<std::string>(), "constant");
   RunResult black = runVkmc(common + " --background 0,0,0");  // asked for: black, without a word
   ASSERT_EQ(black.code, 0) << black.err;
   EXPECT_EQ(black.err, "");

@@ -200,7 +200,7 @@ TEST(LayoutProbe, GlslDecodesTheSceneTexelsAsTheHostEncodedThem) {
     uint32_t slot = gpu::aliasSlot(scaled, lights);
     glm::uvec4 chosen = lightTexels[gpu::aliasChoice(scaled, slot, lightTexels[slot])];
     uint32_t tri = next();
-    EXPECT_EQ(tri, gpu::lightEntryTriangle(chosen)) << "light pick " << k;
+    EXPECT_EQ(tri, gpu::lightEntryIndex(chosen)) << "light pick " << k;
     EXPECT_EQ(nextf(), gpu::lightEntryPmf(chosen)) << "light pick " << k;
     ASSERT_LT(tri, triangles);
     EXPECT_EQ(gpu::lightEntryPmf(chosen), pmfOf[tri]) << "the entry's pmf is its triangle's";

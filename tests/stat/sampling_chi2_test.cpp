@@ -244,15 +244,15 @@ TEST(Chi2, AliasTableReproducesItsWeights) {
   // The light entries as the device holds them (the triangle is the entry's own index here).
   std::vector<uvec4> entries;
   for (uint32_t i = 0; i < table.size(); ++i)
-    entries.push_back(encodeLightEntry(table[i].probability, table[i].alias, i, table[i].pmf));
+    entries.push_back(encodeLightEntry(table[i].probability, table[i].alias, kLightKindTriangle, i, table[i].pmf));
   const uint32_t n = uint32_t(entries.size());
   for (uint32_t s = 0; s < kSamples; ++s) {
     // The kernel's selection (scene_layout.h): u * n picks a slot, the fraction decides between it and its alias.
     float scaled = randomUnit(pathKey(8u, s, 0u), 0u) * float(n);
     uint32_t slot = aliasSlot(scaled, n);
     uvec4 chosen = entries[aliasChoice(scaled, slot, entries[slot])];
-    ASSERT_EQ(lightEntryPmf(chosen), table[lightEntryTriangle(chosen)].pmf);
-    observed[lightEntryTriangle(chosen)] += 1.0;
+    ASSERT_EQ(lightEntryPmf(chosen), table[lightEntryIndex(chosen)].pmf);
+    observed[lightEntryIndex(chosen)] += 1.0;
   }
   auto r = test::chi2FromCounts(observed, expected);
   EXPECT_GT(r.pValue, test::sidakLevel(kTests)) << r.table;

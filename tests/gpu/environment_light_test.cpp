@@ -1,0 +1,134 @@
+// The environment light rendered: a Lambertian plane of albedo rho in a constant environment L has radiance
+// rho L everywhere (it cannot see itself), the default light of a scene without emitters; under a non-constant
+// map, NEE + MIS, light sampling alone and BSDF sampling alone agree within their measured confidence intervals
+// (the MIS combination with escaped rays is unbiased).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "io/exr.h"
+#include "support/render_helpers.h"
+#include "support/test_scenes.h"
+
+using namespace vkmc;
+using namespace vkmc::test;
+
+namespace {
+constexpr float kRho = 0.5f;
+
+Scene planeScene() {
+  Scene s;
+  Material m;
+  m.baseColor = glm::vec3(kRho);
+  m.metallic = 0.0f;
+  m.specular = 0.0f;
+  s.materials.push_back(m);
+  addQuad(s, glm::vec3(-1.0f, -1.0f, 0.0f), glm::vec3(2.0f, 0.0f, 0.0f), glm::vec3(0.0f, 2.0f, 0.0f), 0);
+  return s;
+}
+
+// Looking down -Z at the plane, which fills the image.
+RenderOptions planeView(uint32_t spp, uint32_t seed) {
+  RenderOptions o;
+  o.scenePath = "in-memory plane";
+  o.width = 16;
+  o.height = 16;
+  o.spp = spp;
+  o.seed = seed;
+  o.progress = false;
+  o.lookFrom = glm::vec3(0.0f, 0.0f, 3.0f);
+  o.lookAt = glm::vec3(0.0f);
+  o.fovDegrees = 20.0f;
+  return o;
+}
+
+// 32 x 16: a dim sky gradient and a sun of 2 x 2 pixels 200 times brighter.
+std::string writeSunMap() {
+  static const std::filesystem::path dir = makeTempDir("environment_light");
+  ExrImage image;
+  image.width = 32, image.height = 16;
+  for (const char* c : {"R", "G", "B"}) image.channels[c].resize(32 * 16);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 32; ++x) {
+      float sky = 0.2f + 0.05f * float(16 - y), sun = (x >= 26 && x < 28 && y >= 3 && y < 5) ? 200.0f : 0.0f;
+      image.channels["R"][y * 32 + x] = sky + sun;
+      image.channels["G"][y * 32 + x] = sky + 0.8f * sun;
+      image.channels["B"][y * 32 + x] = 1.5f * sky + 0.5f * sun;
+    }
+  std::string path = (dir / "sun.exr").string();
+  writeExr(path, image);
+  return path;
+}
+}  // namespace
+
+TEST(EnvironmentLight, ASceneWithoutEmittersIsLitByAConstantEnvironmentAndConverges) {
+  // rho L = 0.5 on every pixel, by NEE + MIS (the default) and by BSDF sampling alone.
+  for (bool nee : {true, false}) {
+    RenderOptions o = planeView(16, nee ? 3 : 4);
+    o.estimator.nee = nee;
+    RenderOutcome r = runRender(sharedContext(), o, planeScene());
+    EXPECT_EQ(r.environment, "constant");
+    ASSERT_FALSE(r.warnings.empty());
+    EXPECT_NE(r.warnings[0].find("uniform white environment"), std::string::npos);
+    EXPECT_EQ(r.film.totalNonfinite(), 0u);
+    EXPECT_TRUE(regionMatches(whole(r.film), glm::dvec3(kRho), 5.0)) << (nee ? "NEE + MIS" : "BSDF sampling");
+  }
+}
+
+TEST(EnvironmentLight, NeeWithMisLightSamplingAloneAndBsdfSamplingAgreeUnderAMap) {
+  const std::string map = writeSunMap();
+  auto render = [&](bool nee, MisHeuristic mis, uint32_t spp, uint32_t seed) {
+    RenderOptions o = planeView(spp, seed);
+    o.environmentPath = map;
+    o.environmentRotation = -40.0f;  // turns the sun to about (0.24, 0.71, 0.67): above the plane
+    o.estimator.nee = nee;
+    o.estimator.mis = mis;
+    RenderOutcome r = runRender(sharedContext(), o, planeScene());
+    EXPECT_EQ(r.film.totalNonfinite(), 0u);
+    EXPECT_TRUE(r.warnings.empty());
+    return whole(r.film);
+  };
+  RegionStats bsdf = render(false, MisHeuristic::Power, 256, 11);
+  RegionStats mis = render(true, MisHeuristic::Power, 64, 12);
+  RegionStats light = render(true, MisHeuristic::None, 64, 13);
+  EXPECT_GT(mis.mean.x, 0.1);
+  EXPECT_TRUE(regionsAgree(mis, bsdf, 5.0)) << "NEE + MIS against BSDF sampling";
+  EXPECT_TRUE(regionsAgree(light, bsdf, 5.0)) << "light sampling alone against BSDF sampling";
+  EXPECT_LT(mis.variance.x, bsdf.variance.x) << "importance sampling the sun should beat BSDF sampling";
+}
+
+TEST(EnvironmentLight, MisWeightsStayUnbiasedWhenTheLightTableMixesEveryKind) {
+  // An emissive quad, a point light and the map share one power-proportional table, so the selection pmfs that
+  // weigh BSDF-sampled hits on the quad and escaped rays (emissionAt, escapedRadiance) include the point light's
+  // and the environment's power. NEE + MIS must agree with light sampling alone (which never uses those
+  // weights), in both integrators.
+  const std::string map = writeSunMap();
+  auto scene = [] {
+    Scene s = planeScene();
+    Material lamp;
+    lamp.emission = glm::vec3(4.0f, 3.0f, 2.0f);
+    s.materials.push_back(lamp);
+    addQuad(s, glm::vec3(-0.3f, -0.3f, 1.5f), glm::vec3(0.0f, 0.6f, 0.0f), glm::vec3(0.6f, 0.0f, 0.0f), 1);  // facing -z
+    PunctualLight point;
+    point.position = glm::vec3(0.5f, 0.2f, 0.7f);
+    point.intensity = glm::vec3(0.5f, 1.0f, 0.7f);
+    s.punctualLights.push_back(point);
+    return s;
+  };
+  auto render = [&](MisHeuristic mis, Integrator integrator, uint32_t seed) {
+    RenderOptions o = planeView(64, seed);
+    o.environmentPath = map;
+    o.environmentRotation = -40.0f;
+    o.estimator.mis = mis;
+    o.integrator = integrator;
+    RenderOutcome r = runRender(sharedContext(), o, scene());
+    EXPECT_EQ(r.film.totalNonfinite(), 0u);
+    EXPECT_EQ(r.sceneInfo.punctualLights, 1u);
+    return whole(r.film);
+  };
+  RegionStats light = render(MisHeuristic::None, Integrator::Wavefront, 21);
+  RegionStats mis = render(MisHeuristic::Power, Integrator::Wavefront, 22);
+  RegionStats mega = render(MisHeuristic::Balance, Integrator::Megakernel, 23);
+  EXPECT_TRUE(regionsAgree(mis, light, 5.0)) << "power heuristic against light sampling alone";
+  EXPECT_TRUE(regionsAgree(mega, light, 5.0)) << "megakernel, balance heuristic, against light sampling alone";
+}
