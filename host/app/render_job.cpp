@@ -48,16 +48,26 @@ void validateOptions(const RenderOptions& o) {
 }
 
 namespace {
-// The environment light: --environment's map; else, for a scene with nothing to light it (no emitters, no
-// punctual lights, no --background), a constant environment of radiance 1, importance sampled, with a warning.
+// Whether every emissive triangle's material has an emissive texture: emissive maps are decorations (a helmet's
+// lamps, a bottle's label), not the lights a scene is meant to be seen by.
+bool onlyTexturedEmitters(const Scene& scene) {
+  for (uint32_t m : scene.materialIds)
+    if (scene.materials[m].isEmissive() && !scene.materials[m].emissiveTexture.present()) return false;
+  return true;
+}
+
+// The environment light: --environment's map; else, for a scene with nothing to light it (no punctual lights, no
+// --background, and no emitters or only textured ones), a constant environment of radiance 1, importance sampled,
+// with a warning.
 void addEnvironmentLight(const RenderOptions& options, Scene& scene, RenderOutcome& out) {
   if (!options.environmentPath.empty()) {
     scene.environment = readEnvironmentMap(options.environmentPath, options.environmentRotation, options.environmentStrength);
-  } else if (!options.background && !scanFeatures(scene).emitters() && scene.punctualLights.empty()) {
+  } else if (!options.background && scene.punctualLights.empty() && onlyTexturedEmitters(scene)) {
     scene.environment = EnvironmentMap::constant(glm::vec3(1.0f));
-    out.warnings.push_back(
-        "the scene has no emitters and no punctual lights: it is lit by a uniform white environment of radiance 1, "
-        "importance sampled (--environment or --background sets another; --background 0,0,0 renders it black)");
+    out.warnings.push_back(std::string("the scene has no punctual lights and ") +
+                           (scanFeatures(scene).emitters() ? "only textured emitters (emissive maps)" : "no emitters") +
+                           ": it is lit by a uniform white environment of radiance 1, importance sampled (--environment "
+                           "or --background sets another; --background 0,0,0 renders it black)");
   }
   out.environment = scene.environment ? scene.environment->source : "";
 }

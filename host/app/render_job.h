@@ -29,7 +29,8 @@ struct RenderOptions {
   std::optional<glm::vec3> background;
   // An environment light (.hdr or .exr, equirectangular, +Y up, the image's centre along -Z), importance sampled
   // and combined with BSDF sampling by MIS; rotated about +Y by environmentRotation degrees, scaled by
-  // environmentStrength. Unset in a scene with no emitters and no punctual lights (and no --background): a
+  // environmentStrength. Unset in a scene with no punctual lights and no emitters or only textured ones (and no
+  // --background): a
   // constant environment of radiance 1, with a warning.
   std::string environmentPath;
   float environmentRotation = 0.0f;

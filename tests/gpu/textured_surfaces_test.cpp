@@ -130,3 +130,22 @@ TEST(NormalMap, ATiltedNormalSeesTheFractionOfTheEnvironmentAboveThePlane) {
   EXPECT_NEAR(test::whole(f.film).mean.g, 1.0, 1e-4);  // every sample is 1 up to rounding
   EXPECT_TRUE(test::regionMatches(test::whole(m.film), glm::dvec3(expected), 5.0)) << "expected " << expected;
 }
+
+TEST(DefaultLight, EmissiveMapsAloneDoNotLightAModelButUntexturedEmittersDo) {
+  // A quad with an emissive texture (a decoration) gets the default environment; one with a plain emissive
+  // factor (a light, as in the Cornell box) does not.
+  auto dir = test::makeTempDir("defaultlight");
+  std::string png = test::writePng(dir, "glow", 1, 1, {255, 128, 0, 255});
+  std::string extra = R"("images":[{"uri":")" + png + R"("}],"textures":[{"source":0}])";
+  std::vector<test::QuadSpec> quads = {{{-1, -1, 0}, {2, 0, 0}, {0, 2, 0}, 0}};
+  std::string mapped = test::writeQuadsGltf(dir, "mapped", quads, R"({"emissiveFactor":[1,1,1],"emissiveTexture":{"index":0}})",
+                                            extra);
+  std::string plain = test::writeQuadsGltf(dir, "plain", quads, R"({"emissiveFactor":[1,1,1]})");
+  RenderOutcome m = render(mapped, {0, 0, 3}, {0, 0, 0}, 30.0f, 1);
+  RenderOutcome p = render(plain, {0, 0, 3}, {0, 0, 0}, 30.0f, 1);
+  EXPECT_EQ(m.environment, "constant");
+  EXPECT_TRUE(p.environment.empty()) << p.environment;
+  bool warned = false;
+  for (const std::string& w : m.warnings) warned |= w.find("only textured emitters") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
