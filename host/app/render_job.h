@@ -30,8 +30,7 @@ struct RenderOptions {
   // An environment light (.hdr or .exr, equirectangular, +Y up, the image's centre along -Z), importance sampled
   // and combined with BSDF sampling by MIS; rotated about +Y by environmentRotation degrees, scaled by
   // environmentStrength. Unset in a scene with no punctual lights and no emitters or only textured ones (and no
-  // --background): a
-  // constant environment of radiance 1, with a warning.
+  // --background): a constant environment of radiance 1, with a warning.
   std::string environmentPath;
   float environmentRotation = 0.0f;
   float environmentStrength = 1.0f;
