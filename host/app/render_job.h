@@ -35,11 +35,11 @@ struct RenderOptions {
   float environmentRotation = 0.0f;
   float environmentStrength = 1.0f;
   bool progress = true;
-  double timeBudget = 0.0;      // seconds; 0 = render spp samples
-  std::string referencePath;    // EXR to compare with: mse, relmse, efficiency in the report
-  bool specialize = true;       // false: pipelines with every feature on (for comparison)
+  double timeBudget = 0.0;       // seconds; 0 = render spp samples
+  std::string referencePath;     // EXR to compare with: mse, relmse, efficiency in the report
+  bool specialize = true;        // false: pipelines with every feature on (for comparison)
   bool withoutTextures = false;  // textures, vertex colours and alpha compiled out: their cost, by comparison
-  uint32_t workgroupSize = 64;  // invocations per workgroup of every kernel (32, 64, 128, 256)
+  uint32_t workgroupSize = 64;   // invocations per workgroup of every kernel (32, 64, 128, 256)
   Integrator integrator = Integrator::Wavefront;
 };
 

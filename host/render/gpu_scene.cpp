@@ -302,8 +302,8 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   textureTexels_ =
       makeTexelBuffer(ctx, packed.texels.data(), packed.texels.size() * 4, BINDING_TEXTURE_TEXELS, "texture texels", 4);
   textures_ = makeTexelBuffer(ctx, packed.infos.data(), packed.infos.size() * 16, BINDING_TEXTURES, "textures");
-  triangleAttributes_ = makeTexelBuffer(ctx, attributes.data(), attributes.size() * 16, BINDING_TRIANGLE_ATTRIBUTES,
-                                        "triangle attributes");
+  triangleAttributes_ =
+      makeTexelBuffer(ctx, attributes.data(), attributes.size() * 16, BINDING_TRIANGLE_ATTRIBUTES, "triangle attributes");
   materials_ =
       vk::Buffer(ctx, mats.size() * sizeof(gpu::Material), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   materials_.upload(mats.data(), mats.size() * sizeof(gpu::Material));

@@ -11,8 +11,8 @@
 namespace vkmc {
 
 struct PackedTextures {
-  std::vector<uint32_t> texels;     // BINDING_TEXTURE_TEXELS
-  std::vector<glm::uvec4> infos;    // BINDING_TEXTURES, one per Scene::textures entry
+  std::vector<uint32_t> texels;   // BINDING_TEXTURE_TEXELS
+  std::vector<glm::uvec4> infos;  // BINDING_TEXTURES, one per Scene::textures entry
 };
 PackedTextures packTextures(const Scene& scene);
 

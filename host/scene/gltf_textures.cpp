@@ -53,8 +53,8 @@ TextureRef convertRef(int index, int texCoord, const tinygltf::ExtensionMap& ext
     double c = std::cos(rotation), s = std::sin(rotation);
     ref.uvRow0 = glm::vec3(float(c * scale[0]), float(s * scale[1]), float(offset[0]));
     ref.uvRow1 = glm::vec3(float(-s * scale[0]), float(c * scale[1]), float(offset[1]));
-    if (!std::isfinite(rotation) || !std::isfinite(ref.uvRow0.x + ref.uvRow0.y + ref.uvRow0.z + ref.uvRow1.x + ref.uvRow1.y +
-                                                   ref.uvRow1.z))
+    if (!std::isfinite(rotation) ||
+        !std::isfinite(ref.uvRow0.x + ref.uvRow0.y + ref.uvRow0.z + ref.uvRow1.x + ref.uvRow1.y + ref.uvRow1.z))
       throw Error(what + ": KHR_texture_transform is not finite");
   }
   if (ref.texCoord < 0 || ref.texCoord > 1) {

@@ -11,8 +11,8 @@ namespace vkmc {
 
 // A material's reference to a texture (glTF textureInfo), with KHR_texture_transform as a 2x3 matrix on uv.
 struct TextureRef {
-  int texture = -1;  // index into Scene::textures; -1: none
-  int texCoord = 0;  // TEXCOORD_0 or _1
+  int texture = -1;                    // index into Scene::textures; -1: none
+  int texCoord = 0;                    // TEXCOORD_0 or _1
   glm::vec3 uvRow0{1.0f, 0.0f, 0.0f};  // u' = dot(uvRow0, (u, v, 1))
   glm::vec3 uvRow1{0.0f, 1.0f, 0.0f};  // v' = dot(uvRow1, (u, v, 1))
   float scale = 1.0f;                  // normalTexture.scale (1 for the other slots)

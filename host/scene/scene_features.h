@@ -18,9 +18,9 @@ struct SceneFeatures {
   bool metallic = false;
   bool nonDefaultSpecular = false;  // KHR_materials_specular factor other than 1
   bool doubleSided = false;
-  bool textures = false;    // a material samples a texture (or vertex colours tint it)
-  bool normalMaps = false;  // a material has a normal texture
-  bool alpha = false;       // a material is alpha MASK or BLEND: any-hit tests in the walks
+  bool textures = false;        // a material samples a texture (or vertex colours tint it)
+  bool normalMaps = false;      // a material has a normal texture
+  bool alpha = false;           // a material is alpha MASK or BLEND: any-hit tests in the walks
   uint32_t punctualLights = 0;  // KHR_lights_punctual instances
   // An environment light (Scene::environment): --environment, or the constant one that lights a scene with no
   // emitters and no punctual lights.

@@ -7,7 +7,9 @@ namespace vkmc {
 namespace {
 
 uint32_t wrapCode(TextureWrap w) {
-  return w == TextureWrap::ClampToEdge ? gpu::kWrapClampToEdge : w == TextureWrap::MirroredRepeat ? gpu::kWrapMirroredRepeat : gpu::kWrapRepeat;
+  return w == TextureWrap::ClampToEdge      ? gpu::kWrapClampToEdge
+         : w == TextureWrap::MirroredRepeat ? gpu::kWrapMirroredRepeat
+                                            : gpu::kWrapRepeat;
 }
 
 glm::vec4 texel(const Texture& t, int x, int y, bool srgb) {

@@ -37,9 +37,8 @@ KernelLayout::KernelLayout(Context& ctx) : ctx_(ctx) {
   pci.pPushConstantRanges = &range;
   check(vkCreatePipelineLayout(ctx.device(), &pci, nullptr, &pipelineLayout_), "vkCreatePipelineLayout");
 
-  std::array<VkDescriptorPoolSize, 2> sizes{
-      {{VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, uint32_t(std::size(gpu::kTexelBindings))},
-       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT}}};
+  std::array<VkDescriptorPoolSize, 2> sizes{{{VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, uint32_t(std::size(gpu::kTexelBindings))},
+                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT}}};
   VkDescriptorPoolCreateInfo dpci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   dpci.maxSets = 1;
   dpci.poolSizeCount = static_cast<uint32_t>(sizes.size());

@@ -4,27 +4,27 @@
 #include "glsl_cpp.h"
 
 // Descriptor bindings of the single set used by every kernel.
-#define BINDING_TRIANGLES 0        // imageBuffer: triangle vertices and light pmfs (scene_layout.h)
-#define BINDING_TRIANGLE_INFO 1    // uimageBuffer: per-triangle normals and material (scene_layout.h)
-#define BINDING_BVH_NODES 2        // uimageBuffer: BVH nodes (bvh_layout.h)
-#define BINDING_LIGHTS 3           // uimageBuffer: light alias table (scene_layout.h)
-#define BINDING_MATERIALS 4        // Material[]
-#define BINDING_PATHS 5            // PathState[]
-#define BINDING_HITS 6             // vec4[] (t, b1, b2, triangle bits)
-#define BINDING_RAY_QUEUES 7       // uint[2 * capacity]: path ids, ping-pong by bounce parity
-#define BINDING_SHADOW_QUEUE 8     // ShadowRay[]
-#define BINDING_CONTROL 9          // Control
-#define BINDING_FILM 10            // FilmPixel[]
-#define BINDING_TEST_RAYS 11       // TestRay[] (trace_rays kernel only)
-#define BINDING_TEST_HITS 12       // vec4[] (trace_rays kernel only)
-#define BINDING_PIXEL_ESTIMATE 13  // float[]: running luminance estimate per pixel (shadow-ray roulette)
-#define BINDING_ROULETTE_TABLE 14  // float[kRouletteTableDepths]: efficiency roulette scale per depth
-#define BINDING_DEPTH_STATS 15     // vec2[pool * kRouletteTableDepths]: pilot (beta, gathered) per path and depth
-#define BINDING_QUEUE_STATS 16     // uvec2[kQueueStatsBounces]: per bounce, paths queued (x) and shadow rays (y)
-#define BINDING_DEEP_WALKS 17      // uint[]: items whose walk outgrew the register stack (deferred_walk.glsl)
-#define BINDING_TEXTURE_TEXELS 18       // uimageBuffer: every texture's RGBA8 texels, one r32ui each (texture_layout.h)
-#define BINDING_TEXTURES 19             // uimageBuffer: one TextureInfo texel per texture (texture_layout.h)
-#define BINDING_TRIANGLE_ATTRIBUTES 20  // uimageBuffer: per-triangle uvs, tangents, colours (texture_layout.h)
+#define BINDING_TRIANGLES 0                  // imageBuffer: triangle vertices and light pmfs (scene_layout.h)
+#define BINDING_TRIANGLE_INFO 1              // uimageBuffer: per-triangle normals and material (scene_layout.h)
+#define BINDING_BVH_NODES 2                  // uimageBuffer: BVH nodes (bvh_layout.h)
+#define BINDING_LIGHTS 3                     // uimageBuffer: light alias table (scene_layout.h)
+#define BINDING_MATERIALS 4                  // Material[]
+#define BINDING_PATHS 5                      // PathState[]
+#define BINDING_HITS 6                       // vec4[] (t, b1, b2, triangle bits)
+#define BINDING_RAY_QUEUES 7                 // uint[2 * capacity]: path ids, ping-pong by bounce parity
+#define BINDING_SHADOW_QUEUE 8               // ShadowRay[]
+#define BINDING_CONTROL 9                    // Control
+#define BINDING_FILM 10                      // FilmPixel[]
+#define BINDING_TEST_RAYS 11                 // TestRay[] (trace_rays kernel only)
+#define BINDING_TEST_HITS 12                 // vec4[] (trace_rays kernel only)
+#define BINDING_PIXEL_ESTIMATE 13            // float[]: running luminance estimate per pixel (shadow-ray roulette)
+#define BINDING_ROULETTE_TABLE 14            // float[kRouletteTableDepths]: efficiency roulette scale per depth
+#define BINDING_DEPTH_STATS 15               // vec2[pool * kRouletteTableDepths]: pilot (beta, gathered) per path and depth
+#define BINDING_QUEUE_STATS 16               // uvec2[kQueueStatsBounces]: per bounce, paths queued (x) and shadow rays (y)
+#define BINDING_DEEP_WALKS 17                // uint[]: items whose walk outgrew the register stack (deferred_walk.glsl)
+#define BINDING_TEXTURE_TEXELS 18            // uimageBuffer: every texture's RGBA8 texels, one r32ui each (texture_layout.h)
+#define BINDING_TEXTURES 19                  // uimageBuffer: one TextureInfo texel per texture (texture_layout.h)
+#define BINDING_TRIANGLE_ATTRIBUTES 20       // uimageBuffer: per-triangle uvs, tangents, colours (texture_layout.h)
 #define BINDING_PUNCTUAL_LIGHTS 21           // PunctualLight[] (punctual_light.h)
 #define BINDING_ENVIRONMENT 22               // vec4[]: environment radiance, row-major, + header (environment_map.h)
 #define BINDING_ENVIRONMENT_DISTRIBUTION 23  // float[]: its sampling distribution (environment_map.h)
@@ -109,9 +109,9 @@ struct ShadowRay {
 
 // A material's texture: uv' = (dot(uvRow0.xyz, (u, v, 1)), dot(uvRow1.xyz, (u, v, 1))) (KHR_texture_transform).
 struct TextureSlot {
-  vec4 uvRow0;   // xyz: first row of the uv transform, w: normal-map scale (normalTexture.scale)
-  vec4 uvRow1;   // xyz: second row, w: unused
-  uint texture;  // index of its TextureInfo texel, or kNoTexture
+  vec4 uvRow0;    // xyz: first row of the uv transform, w: normal-map scale (normalTexture.scale)
+  vec4 uvRow1;    // xyz: second row, w: unused
+  uint texture;   // index of its TextureInfo texel, or kNoTexture
   uint texCoord;  // 0: TEXCOORD_0, 1: TEXCOORD_1
   uint unusedSlot0, unusedSlot1;
 };
@@ -226,9 +226,9 @@ VKMC_END_NAMESPACE
 #ifdef __cplusplus
 namespace vkmc::gpu {
 // The bindings read as storage texel buffers (the others are storage buffers).
-inline constexpr uint32_t kTexelBindings[] = {BINDING_TRIANGLES,      BINDING_TRIANGLE_INFO, BINDING_BVH_NODES,
-                                              BINDING_LIGHTS,         BINDING_TEXTURE_TEXELS, BINDING_TEXTURES,
-                                              BINDING_TRIANGLE_ATTRIBUTES};
+inline constexpr uint32_t kTexelBindings[] = {
+    BINDING_TRIANGLES,      BINDING_TRIANGLE_INFO, BINDING_BVH_NODES,          BINDING_LIGHTS,
+    BINDING_TEXTURE_TEXELS, BINDING_TEXTURES,      BINDING_TRIANGLE_ATTRIBUTES};
 static_assert(sizeof(PathState) == 80);
 static_assert(offsetof(PathState, pixel) == 64 && offsetof(PathState, rootPath) == 76);
 static_assert(sizeof(ShadowRay) == 48);

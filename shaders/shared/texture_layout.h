@@ -72,9 +72,7 @@ VKMC_FN vec4 decodeTangent(uvec4 texel, uint corner) {
   return vec4(decodeOctahedral(bits), ((texel.w >> corner) & 1u) != 0u ? -1.0f : 1.0f);
 }
 
-VKMC_FN uvec4 encodeColors(vec4 c0, vec4 c1, vec4 c2) {
-  return uvec4(packUnorm4x8(c0), packUnorm4x8(c1), packUnorm4x8(c2), 0u);
-}
+VKMC_FN uvec4 encodeColors(vec4 c0, vec4 c1, vec4 c2) { return uvec4(packUnorm4x8(c0), packUnorm4x8(c1), packUnorm4x8(c2), 0u); }
 VKMC_FN vec4 decodeColor(uvec4 texel, uint corner) {
   return unpackUnorm4x8(corner == 0u ? texel.x : (corner == 1u ? texel.y : texel.z));
 }

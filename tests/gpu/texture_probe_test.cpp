@@ -33,7 +33,8 @@ glm::dvec4 texel(const Texture& t, int x, int y, bool decode) {
 }
 glm::dvec4 reference(const Texture& t, const TextureRef& ref, glm::dvec2 uv0, glm::dvec2 uv1, bool decode) {
   glm::dvec2 uv = ref.texCoord == 1 ? uv1 : uv0;
-  glm::dvec2 st(ref.uvRow0.x * uv.x + ref.uvRow0.y * uv.y + ref.uvRow0.z, ref.uvRow1.x * uv.x + ref.uvRow1.y * uv.y + ref.uvRow1.z);
+  glm::dvec2 st(ref.uvRow0.x * uv.x + ref.uvRow0.y * uv.y + ref.uvRow0.z,
+                ref.uvRow1.x * uv.x + ref.uvRow1.y * uv.y + ref.uvRow1.z);
   if (t.nearest) return texel(t, int(std::floor(st.x * t.width)), int(std::floor(st.y * t.height)), decode);
   double x = st.x * t.width - 0.5, y = st.y * t.height - 0.5;
   int x0 = int(std::floor(x)), y0 = int(std::floor(y));

@@ -53,7 +53,8 @@ std::string sheetScene(const std::filesystem::path& dir, const std::string& name
 TEST(AlphaBlend, AHalfTransparentBlackSheetPassesHalfTheLight) {
   auto dir = test::makeTempDir("alpha");
   std::string sheet = R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,0.5],"metallicFactor":0},"alphaMode":"BLEND",
-    "doubleSided":true,)" + std::string(kNoSpecular) + "}";
+    "doubleSided":true,)" +
+                      std::string(kNoSpecular) + "}";
   RenderOutcome r = render(sheetScene(dir, "blend", sheet), {0, 0, 3}, {0, 0, 0}, 30.0f, 16);
   EXPECT_TRUE(r.features.alpha);
   // The sheet reflects nothing towards the camera: every sample sees the emitter (1) or the sheet (0).
@@ -76,7 +77,8 @@ TEST(AlphaMask, TheTexturesAlphaDecidesPerTexel) {
   auto dir = test::makeTempDir("alpha");
   std::string png = test::writePng(dir, "half", 2, 1, {255, 255, 255, 0, 255, 255, 255, 255});
   std::string sheet = R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1],"metallicFactor":0,
-    "baseColorTexture":{"index":0}},"alphaMode":"MASK",)" + std::string(kNoSpecular) + "}";
+    "baseColorTexture":{"index":0}},"alphaMode":"MASK",)" +
+                      std::string(kNoSpecular) + "}";
   std::string extra = R"("images":[{"uri":")" + png + R"("}],"samplers":[{"magFilter":9728,"minFilter":9728}],
     "textures":[{"source":0,"sampler":0}])";
   RenderOutcome r = render(sheetScene(dir, "masktex", sheet, extra), {0, 0, 3}, {0, 0, 0}, 30.0f, 4);
@@ -96,7 +98,8 @@ TEST(AlphaBlend, ShadowRaysPassAHalfTransparentSheetHalfTheTime) {
   std::string open = test::writeQuadsGltf(dir, "open", quads, materials, kSpecularExtension);
   quads.push_back({{-3, 0.5f, -3}, {6, 0, 0}, {0, 0, 6}, 2});
   std::string sheet = R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,0.5],"metallicFactor":0},"alphaMode":"BLEND",
-    "doubleSided":true,)" + std::string(kNoSpecular) + "}";
+    "doubleSided":true,)" +
+                      std::string(kNoSpecular) + "}";
   std::string shaded = test::writeQuadsGltf(dir, "shaded", quads, materials + "," + sheet, kSpecularExtension);
   RenderOutcome a = render(open, {0, 0.4f, 0}, {0, 0, 0.001f}, 40.0f, 64, 1);
   RenderOutcome b = render(shaded, {0, 0.4f, 0}, {0, 0, 0.001f}, 40.0f, 64, 1);
@@ -138,8 +141,8 @@ TEST(DefaultLight, EmissiveMapsAloneDoNotLightAModelButUntexturedEmittersDo) {
   std::string png = test::writePng(dir, "glow", 1, 1, {255, 128, 0, 255});
   std::string extra = R"("images":[{"uri":")" + png + R"("}],"textures":[{"source":0}])";
   std::vector<test::QuadSpec> quads = {{{-1, -1, 0}, {2, 0, 0}, {0, 2, 0}, 0}};
-  std::string mapped = test::writeQuadsGltf(dir, "mapped", quads, R"({"emissiveFactor":[1,1,1],"emissiveTexture":{"index":0}})",
-                                            extra);
+  std::string mapped =
+      test::writeQuadsGltf(dir, "mapped", quads, R"({"emissiveFactor":[1,1,1],"emissiveTexture":{"index":0}})", extra);
   std::string plain = test::writeQuadsGltf(dir, "plain", quads, R"({"emissiveFactor":[1,1,1]})");
   RenderOutcome m = render(mapped, {0, 0, 3}, {0, 0, 0}, 30.0f, 1);
   RenderOutcome p = render(plain, {0, 0, 3}, {0, 0, 0}, 30.0f, 1);

@@ -97,8 +97,8 @@ std::string writeQuadsGltf(const std::filesystem::path& dir, const std::string& 
     size_t a = 3 * q;
     const char* sep = q ? "," : "";
     nodes << sep << R"({"mesh":)" << q << "}";
-    meshes << sep << R"({"primitives":[{"attributes":{"POSITION":)" << a << R"(,"TEXCOORD_0":)" << a + 1
-           << R"(},"indices":)" << a + 2 << R"(,"material":)" << s.material << "}]}";
+    meshes << sep << R"({"primitives":[{"attributes":{"POSITION":)" << a << R"(,"TEXCOORD_0":)" << a + 1 << R"(},"indices":)"
+           << a + 2 << R"(,"material":)" << s.material << "}]}";
     accessors << sep << R"({"bufferView":)" << a << R"(,"componentType":5126,"type":"VEC3","count":4,"min":[)" << lo[0] << ","
               << lo[1] << "," << lo[2] << R"(],"max":[)" << hi[0] << "," << hi[1] << "," << hi[2] << "]}";
     accessors << R"(,{"bufferView":)" << a + 1 << R"(,"componentType":5126,"type":"VEC2","count":4})";

@@ -65,8 +65,8 @@ TEST(GltfTextures, UndecodableAndOversizedImagesAreIgnoredWithAWarningNamingThem
   std::ofstream(dir / "junk.png") << "not a png";
   std::string wide = test::writePng(dir, "wide", 20000, 1, std::vector<uint8_t>(20000 * 4, 7));
   std::string material = R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}},"emissiveTexture":{"index":1}})";
-  std::string extra = R"("images":[{"uri":"junk.png","name":"junk"},{"uri":")" + wide +
-                      R"("}],"textures":[{"source":0},{"source":1}])";
+  std::string extra =
+      R"("images":[{"uri":"junk.png","name":"junk"},{"uri":")" + wide + R"("}],"textures":[{"source":0},{"source":1}])";
   Scene s = loadGltf(test::writeQuadsGltf(dir, "bad", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
   EXPECT_TRUE(anyWarningHas(s, "image 0 (junk)"));
   EXPECT_TRUE(anyWarningHas(s, "20000x1 exceeds 16384"));
