@@ -3,17 +3,9 @@
 
 #include "../shaders/shared/texture_layout.h"
 #include "error.h"
+#include "scene/texture_sampler.h"
 
 namespace vkmc {
-namespace {
-
-uint32_t wrapCode(TextureWrap w) {
-  return w == TextureWrap::ClampToEdge      ? gpu::kWrapClampToEdge
-         : w == TextureWrap::MirroredRepeat ? gpu::kWrapMirroredRepeat
-                                            : gpu::kWrapRepeat;
-}
-
-}  // namespace
 
 PackedTextures packTextures(const Scene& scene) {
   PackedTextures out;

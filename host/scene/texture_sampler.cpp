@@ -6,12 +6,6 @@
 namespace vkmc {
 namespace {
 
-uint32_t wrapCode(TextureWrap w) {
-  return w == TextureWrap::ClampToEdge      ? gpu::kWrapClampToEdge
-         : w == TextureWrap::MirroredRepeat ? gpu::kWrapMirroredRepeat
-                                            : gpu::kWrapRepeat;
-}
-
 glm::vec4 texel(const Texture& t, int x, int y, bool srgb) {
   x = gpu::wrapTexel(x, int(t.width), wrapCode(t.wrapS));
   y = gpu::wrapTexel(y, int(t.height), wrapCode(t.wrapT));
@@ -22,6 +16,12 @@ glm::vec4 texel(const Texture& t, int x, int y, bool srgb) {
 }
 
 }  // namespace
+
+uint32_t wrapCode(TextureWrap w) {
+  return w == TextureWrap::ClampToEdge      ? gpu::kWrapClampToEdge
+         : w == TextureWrap::MirroredRepeat ? gpu::kWrapMirroredRepeat
+                                            : gpu::kWrapRepeat;
+}
 
 glm::vec4 sampleTexture(const Texture& t, glm::vec2 uv, bool srgb) {
   if (t.width == 0 || t.height == 0) return glm::vec4(1.0f);

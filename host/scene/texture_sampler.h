@@ -7,6 +7,9 @@
 
 namespace vkmc {
 
+// A sampler's wrap mode as the device encodes it (texture_layout.h kWrap*).
+uint32_t wrapCode(TextureWrap wrap);
+
 // The texture's filtered RGBA at uv (bilinear or nearest, its wrap modes); rgb decoded from sRGB when `srgb`.
 glm::vec4 sampleTexture(const Texture& texture, glm::vec2 uv, bool srgb);
 
