@@ -210,10 +210,13 @@ int runSpecializationBench(const BenchOptions& o, const std::vector<std::string>
   vk::Context ctx;
   std::printf("device: %s; %dx%d, %d spp per run, %d runs; medians [min-max]\n", ctx.deviceName().c_str(), o.width, o.height,
               o.spp, o.runs);
-  std::printf("%-34s %-12s %14s %22s %12s\n", "scene", "pipelines", "us per sample", "[min-max]", "pipelines s");
+  std::printf("%-34s %-12s %14s %22s %12s %10s\n", "scene", "pipelines", "us per sample", "[min-max]", "pipelines s",
+              "Mrays/s");
   nlohmann::json out = nlohmann::json::array();
   for (const std::string& scene : scenes) {
-    std::vector<double> perSample[3], pipes[3];
+    // Rays per second too: without textures a textured scene's paths differ (albedos, emission), so time per
+    // sample alone would mix the cost of texturing with that of other paths.
+    std::vector<double> perSample[3], pipes[3], mrays[3];
     int variants = 2;
     for (int run = -1; run < o.runs; ++run)
       for (int general = 0; general < variants; ++general) {
@@ -230,24 +233,31 @@ int runSpecializationBench(const BenchOptions& o, const std::vector<std::string>
         if (run < 0 && general == 0 && r.features.textures) variants = 3;
         if (run < 0) continue;
         perSample[general].push_back(r.stats.seconds / double(r.film.totalSamples()) * 1e6);
+        mrays[general].push_back(double(r.stats.rays()) / r.stats.seconds * 1e-6);
         pipes[general].push_back(r.setup.pipelines);
       }
     std::string name = std::filesystem::path(scene).filename().string();
     const char* labels[3] = {"specialized", "general", "untextured"};
     for (int general = 0; general < variants; ++general) {
       auto [lo, hi] = std::minmax_element(perSample[general].begin(), perSample[general].end());
-      std::printf("%-34s %-12s %14.3f %10.3f-%-10.3f %12.3f\n", name.c_str(), labels[general], median(perSample[general]), *lo,
-                  *hi, median(pipes[general]));
+      std::printf("%-34s %-12s %14.3f %10.3f-%-10.3f %12.3f %10.2f\n", name.c_str(), labels[general], median(perSample[general]),
+                  *lo, *hi, median(pipes[general]), median(mrays[general]));
     }
     std::printf("%-34s %-12s %14.2fx\n", "", "ratio", median(perSample[1]) / median(perSample[0]));
     if (variants == 3)
-      std::printf("%-34s %-12s %14.2fx\n", "", "textured / untextured", median(perSample[0]) / median(perSample[2]));
+      std::printf("%-34s %-12s %14.2fx time per sample, %.2fx rays per second\n", "", "textured / untextured",
+                  median(perSample[0]) / median(perSample[2]), median(mrays[0]) / median(mrays[2]));
     nlohmann::json row = {{"scene", scene},
                           {"specialized_us_per_sample", median(perSample[0])},
                           {"general_us_per_sample", median(perSample[1])},
                           {"specialized_pipeline_seconds", median(pipes[0])},
                           {"general_pipeline_seconds", median(pipes[1])}};
-    if (variants == 3) row["untextured_us_per_sample"] = median(perSample[2]);
+    row["specialized_mrays_per_second"] = median(mrays[0]);
+    row["general_mrays_per_second"] = median(mrays[1]);
+    if (variants == 3) {
+      row["untextured_us_per_sample"] = median(perSample[2]);
+      row["untextured_mrays_per_second"] = median(mrays[2]);
+    }
     out.push_back(row);
   }
   if (!o.jsonPath.empty())

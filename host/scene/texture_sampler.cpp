@@ -7,8 +7,8 @@ namespace vkmc {
 namespace {
 
 glm::vec4 texel(const Texture& t, int x, int y, bool srgb) {
-  x = gpu::wrapTexel(x, int(t.width), wrapCode(t.wrapS));
-  y = gpu::wrapTexel(y, int(t.height), wrapCode(t.wrapT));
+  x = gpu::wrapNearTexel(x, int(t.width), wrapCode(t.wrapS));
+  y = gpu::wrapNearTexel(y, int(t.height), wrapCode(t.wrapT));
   glm::vec4 c = glm::unpackUnorm4x8(t.texels[size_t(y) * t.width + size_t(x)]);
   if (srgb)
     for (int k = 0; k < 3; ++k) c[k] = gpu::srgbToLinear(c[k]);
@@ -25,6 +25,7 @@ uint32_t wrapCode(TextureWrap w) {
 
 glm::vec4 sampleTexture(const Texture& t, glm::vec2 uv, bool srgb) {
   if (t.width == 0 || t.height == 0) return glm::vec4(1.0f);
+  uv = glm::vec2(gpu::wrapUnit(uv.x, wrapCode(t.wrapS)), gpu::wrapUnit(uv.y, wrapCode(t.wrapT)));
   if (t.nearest) return texel(t, gpu::nearestTexel(uv.x, int(t.width)), gpu::nearestTexel(uv.y, int(t.height)), srgb);
   float fx = 0.0f, fy = 0.0f;
   int x = gpu::bilinearLow(uv.x, int(t.width), fx), y = gpu::bilinearLow(uv.y, int(t.height), fy);

@@ -3,11 +3,12 @@
 #ifndef VKMC_TEXTURES_GLSL
 #define VKMC_TEXTURES_GLSL
 
-// RGBA of texel (x, y), any integers, under the texture's wrap modes; rgb decoded from sRGB when asked.
+// RGBA of texel (x, y), each in [-1, n] (wrapUnit's folded range), under the texture's wrap modes; rgb decoded
+// from sRGB when asked.
 vec4 textureTexel(uvec4 info, int x, int y, bool srgb) {
   int w = int(info.y), h = int(info.z);
-  x = wrapTexel(x, w, textureWrapS(info));
-  y = wrapTexel(y, h, textureWrapT(info));
+  x = wrapNearTexel(x, w, textureWrapS(info));
+  y = wrapNearTexel(y, h, textureWrapT(info));
   vec4 c = unpackUnorm4x8(imageLoad(textureTexels, int(info.x) + y * w + x).x);
   if (srgb) c.rgb = vec3(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
   return c;
@@ -16,6 +17,7 @@ vec4 textureTexel(uvec4 info, int x, int y, bool srgb) {
 // The filtered texture at uv: bilinear over decoded texels (filtering happens in linear space), or nearest.
 vec4 sampleTexture(uint texture, vec2 uv, bool srgb) {
   uvec4 info = imageLoad(textureInfos, int(texture));
+  uv = vec2(wrapUnit(uv.x, textureWrapS(info)), wrapUnit(uv.y, textureWrapT(info)));
   if (textureNearest(info)) return textureTexel(info, nearestTexel(uv.x, int(info.y)), nearestTexel(uv.y, int(info.z)), srgb);
   float fx, fy;
   int x = bilinearLow(uv.x, int(info.y), fx), y = bilinearLow(uv.y, int(info.z), fy);

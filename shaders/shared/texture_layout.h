@@ -23,17 +23,23 @@ VKMC_FN uint textureWrapS(uvec4 info) { return info.w & 3u; }
 VKMC_FN uint textureWrapT(uvec4 info) { return (info.w >> 2u) & 3u; }
 VKMC_FN bool textureNearest(uvec4 info) { return (info.w & kTextureNearest) != 0u; }
 
-// i mod n in [0, n) for any i (GLSL's % is undefined for negative operands).
-VKMC_FN int positiveModulo(int i, int n) { return i >= 0 ? i % n : (n - 1) - ((-1 - i) % n); }
-
-// Texel index i (any integer) of an axis of n texels under a wrap mode (glTF sampler wrapS / wrapT).
-VKMC_FN int wrapTexel(int i, int n, uint mode) {
-  if (mode == kWrapClampToEdge) return clamp(i, 0, n - 1);
+// Wrapping without integer division (llvmpipe has no vector divide: a % per tap was most of the shade stage's
+// time): u is first folded into one period of its wrap mode, [0, 1) for REPEAT and [0, 1] for MIRRORED_REPEAT
+// (reflected) and CLAMP_TO_EDGE (clamped); the texels a filter then reads lie in [-1, n], which wrapNearTexel
+// maps into [0, n) with compares: REPEAT wraps them round, MIRRORED_REPEAT reflects -1 to 0 and n to n - 1, and
+// CLAMP_TO_EDGE clamps.
+VKMC_FN float wrapUnit(float u, uint mode) {
+  if (!(abs(u) < 1.0e9f)) u = 0.0f;  // NaN, infinities and uvs past float's integer precision
+  if (mode == kWrapClampToEdge) return clamp(u, 0.0f, 1.0f);
   if (mode == kWrapMirroredRepeat) {
-    int m = positiveModulo(i, 2 * n);
-    return m < n ? m : 2 * n - 1 - m;
+    float m = u - 2.0f * floor(0.5f * u);
+    return m > 1.0f ? 2.0f - m : m;
   }
-  return positiveModulo(i, n);
+  return u - floor(u);
+}
+VKMC_FN int wrapNearTexel(int i, int n, uint mode) {
+  if (mode == kWrapRepeat) return i < 0 ? i + n : (i >= n ? i - n : i);
+  return clamp(i, 0, n - 1);
 }
 
 // Texel coordinate x (texel centres at i + 0.5) bounded so that int conversion stays defined; NaN becomes 0.
