@@ -52,7 +52,7 @@ printf 'name\tpath\tfeatures\trc\tstatus\twall_s\trender_s\ttriangles\tmessages\
 # One line of the table's "messages": the error and warning lines, without the no-emitters warning that
 # nearly every sample model gets (it is counted in the summary instead), joined by " / ".
 messages() {
-  grep -E '(^|: )(error|warning)|^warning|^vkmc: ' "$1" | grep -v 'the scene has no emitters' |
+  grep -E '(^|: )(error|warning)|^warning|^vkmc: ' "$1" | grep -v 'it is lit by a uniform white environment' |
     sed -E "s/^vkmc: error: cannot load '[^']*': /error: /; s/^warning +/warning: /; s/[[:space:]]+/ /g" |
     head -n 6 | cut -c1-300 | paste -sd'|' - | sed 's/|/ \/ /g'
 }

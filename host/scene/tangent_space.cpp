@@ -66,7 +66,8 @@ std::vector<glm::vec4> generateTangents(const std::vector<glm::vec3>& positions,
       continue;
     }
     t = glm::normalize(t);
-    float w = glm::dot(glm::cross(n, t), bitangentSum[i]) < 0.0f ? -1.0f : 1.0f;
+    // glTF's v runs down the image while a normal map's +Y (green) points up it: the bitangent is -dP/dv.
+    float w = glm::dot(glm::cross(n, t), bitangentSum[i]) > 0.0f ? -1.0f : 1.0f;
     out[i] = glm::vec4(t, w);
   }
   return out;

@@ -14,7 +14,8 @@ namespace vkmc {
 //
 // MikkTSpace's essentials: per-face tangent and bitangent from the UV derivatives, each projected onto the vertex
 // normal's plane and accumulated weighted by the corner angle, Gram-Schmidt against the vertex normal, the sign
-// from the accumulated bitangent's handedness. What differs from the reference MikkTSpace: it welds vertices by
+// from the accumulated bitangent's handedness, with the bitangent -dP/dv because glTF's v runs down the image
+// while the normal map's +Y points up it (the sign files written by MikkTSpace exporters carry). What differs from the reference MikkTSpace: it welds vertices by
 // position, normal and UV and splits a vertex whose faces disagree in handedness into separate tangent spaces;
 // here every indexed vertex gets exactly one tangent (mirrored UV seams that share a vertex average across the
 // seam), and faces are not grouped by smoothing. Files with such shared-vertex mirror seams should ship TANGENT.

@@ -152,3 +152,28 @@ TEST(DefaultLight, EmissiveMapsAloneDoNotLightAModelButUntexturedEmittersDo) {
   for (const std::string& w : m.warnings) warned |= w.find("only textured emitters") != std::string::npos;
   EXPECT_TRUE(warned);
 }
+
+TEST(NormalMap, GreenTiltsTheNormalUpTheImage) {
+  // A white plane facing +z whose uvs run (0,0) at -x-y to (1,1) at +x+y, so the image's "up" (-v) is -y, lit
+  // by an emitter on its +y side. A normal map tilting its normals 60 degrees up the image (green > 0.5) turns
+  // them away from the light; tilting them down it (green < 0.5) turns them toward it. Generated tangents with
+  // the wrong bitangent sign swap the two.
+  auto dir = test::makeTempDir("normalmap");
+  const double s = std::sin(60.0 * 3.14159265358979 / 180.0), c = 0.5;
+  auto byte = [](double x) { return uint8_t(std::lround((x + 1.0) * 0.5 * 255.0)); };
+  std::string up = test::writePng(dir, "up", 1, 1, {byte(0), byte(s), byte(c), 255});
+  std::string down = test::writePng(dir, "down", 1, 1, {byte(0), byte(-s), byte(c), 255});
+  std::vector<test::QuadSpec> quads = {{{-1, -1, 0}, {2, 0, 0}, {0, 2, 0}, 1},    // the plane
+                                       {{-5, 2, 0.2f}, {10, 0, 0}, {0, 0, 3}, 0}};  // emitter, facing -y
+  auto scene = [&](const std::string& png, const std::string& name) {
+    std::string plane = R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":0},
+      "normalTexture":{"index":0},)" + std::string(kNoSpecular) + "}";
+    std::string extra = std::string(kSpecularExtension) + R"(,"images":[{"uri":")" + png + R"("}],"textures":[{"source":0}])";
+    return test::writeQuadsGltf(dir, name, quads, kEmitter + "," + plane, extra);
+  };
+  RenderOutcome away = render(scene(up, "up"), {0, 0, 1}, {0, 0, 0}, 20.0f, 32, 1);
+  RenderOutcome toward = render(scene(down, "down"), {0, 0, 1}, {0, 0, 0}, 20.0f, 32, 1);
+  double a = test::whole(away.film).mean.g, t = test::whole(toward.film).mean.g;
+  EXPECT_GT(t, 0.02);
+  EXPECT_GT(t, 2.0 * a) << "toward the light " << t << ", away from it " << a;
+}

@@ -83,8 +83,8 @@ TEST(GltfAttributes, TangentsAreGeneratedForNormalMapsAndFlipUnderMirroring) {
     for (size_t c = 0; c < s.tangents.size(); ++c) {
       EXPECT_NEAR(s.tangents[c].x, mirror ? -1.0f : 1.0f, 1e-5f) << "the tangent follows u, through the node transform";
       EXPECT_NEAR(glm::dot(glm::vec3(s.tangents[c]), s.normals[c]), 0.0f, 1e-5f);
-      // The bitangent cross(n, t) * w must follow v (+y) in either case.
-      EXPECT_GT((glm::cross(s.normals[c], glm::vec3(s.tangents[c])) * s.tangents[c].w).y, 0.99f) << "mirror " << mirror;
+      // The bitangent cross(n, t) * w points up the image, against v (v runs along +y here), in either case.
+      EXPECT_LT((glm::cross(s.normals[c], glm::vec3(s.tangents[c])) * s.tangents[c].w).y, -0.99f) << "mirror " << mirror;
     }
   }
 }

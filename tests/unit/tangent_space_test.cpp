@@ -13,16 +13,23 @@ const std::vector<uint32_t> kTriangles = {0, 1, 2, 0, 2, 3};
 const std::vector<glm::vec3> kUp(4, glm::vec3(0, 0, 1));
 }  // namespace
 
-TEST(TangentSpace, TangentFollowsUAndSignFollowsV) {
-  std::vector<glm::vec2> uv = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  for (const glm::vec4& t : generateTangents(kQuad, kUp, uv, kTriangles)) {
+// glTF's uv origin is the image's top-left corner: a texture shown upright on the quad has v running down (-y),
+// and the normal map's +Y (up the image) is +y: bitangent = cross(n, t) w = -dP/dv.
+TEST(TangentSpace, TangentFollowsUAndTheBitangentPointsUpTheImage) {
+  std::vector<glm::vec2> upright = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};  // v runs along -y
+  for (const glm::vec4& t : generateTangents(kQuad, kUp, upright, kTriangles)) {
     EXPECT_NEAR(t.x, 1.0f, 1e-6f);
-    EXPECT_EQ(t.w, 1.0f);
+    EXPECT_EQ(t.w, 1.0f) << "bitangent cross(n, t) = +y, up the image";
   }
-  std::vector<glm::vec2> mirrored = {{1, 0}, {0, 0}, {0, 1}, {1, 1}};  // u runs along -x: a mirrored layout
+  std::vector<glm::vec2> flipped = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};  // v runs along +y: the image upside down
+  for (const glm::vec4& t : generateTangents(kQuad, kUp, flipped, kTriangles)) {
+    EXPECT_NEAR(t.x, 1.0f, 1e-6f);
+    EXPECT_EQ(t.w, -1.0f) << "up the image is -y = -cross(n, t)";
+  }
+  std::vector<glm::vec2> mirrored = {{1, 1}, {0, 1}, {0, 0}, {1, 0}};  // u runs along -x, v along -y
   for (const glm::vec4& t : generateTangents(kQuad, kUp, mirrored, kTriangles)) {
     EXPECT_NEAR(t.x, -1.0f, 1e-6f);
-    EXPECT_EQ(t.w, -1.0f) << "bitangent cross(n, t) = -y but v runs along +y";
+    EXPECT_EQ(t.w, -1.0f) << "cross(n, t) = -y but up the image is +y";
   }
 }
 
