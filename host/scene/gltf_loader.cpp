@@ -68,6 +68,19 @@ double extensionNumber(const tinygltf::ExtensionMap& ext, const char* extension,
   return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
 }
 
+// KHR_materials_unlit as an emission shader (what Blender's importer makes of it): the surface shows its base
+// colour, baseColorFactor x baseColorTexture, as emitted radiance, reflects nothing, and like any emitter lights
+// its surroundings. Its alpha (factor and texture) still applies.
+void makeUnlit(Material& m) {
+  m.emission = m.baseColor;
+  m.emissiveTexture = m.baseColorTexture;
+  m.baseColor = glm::vec3(0.0f);
+  m.metallic = 0.0f;
+  m.specular = 0.0f;
+  m.normalTexture = TextureRef{};
+  m.metallicRoughnessTexture = TextureRef{};
+}
+
 Material convertMaterial(const tinygltf::Material& m, int index, const std::vector<Texture>& textures,
                          std::vector<std::string>& warnings) {
   Material out;
@@ -112,6 +125,7 @@ Material convertMaterial(const tinygltf::Material& m, int index, const std::vect
   if (m.alphaMode == "BLEND") out.alphaMode = AlphaMode::Blend;
   out.alphaCutoff = static_cast<float>(m.alphaCutoff);
   if (!std::isfinite(out.alphaCutoff)) throw Error(name + ": alphaCutoff is not finite");
+  if (m.extensions.count("KHR_materials_unlit")) makeUnlit(out);
   return out;
 }
 

@@ -177,3 +177,16 @@ TEST(NormalMap, GreenTiltsTheNormalUpTheImage) {
   EXPECT_GT(t, 0.02);
   EXPECT_GT(t, 2.0 * a) << "toward the light " << t << ", away from it " << a;
 }
+
+TEST(Unlit, AnUnlitSurfaceShowsItsBaseColour) {
+  // KHR_materials_unlit as an emission shader: seen directly, the quad's radiance is its base colour.
+  auto dir = test::makeTempDir("unlit");
+  std::vector<test::QuadSpec> quads = {{{-2, -2, 0}, {4, 0, 0}, {0, 4, 0}, 0}};
+  std::string unlit = R"({"pbrMetallicRoughness":{"baseColorFactor":[0.2,0.4,0.6,1]},"extensions":{"KHR_materials_unlit":{}}})";
+  RenderOutcome r = render(test::writeQuadsGltf(dir, "unlit", quads, unlit, R"("extensionsUsed":["KHR_materials_unlit"])"),
+                           {0, 0, 3}, {0, 0, 0}, 30.0f, 4);
+  test::RegionStats all = test::whole(r.film);
+  EXPECT_NEAR(all.mean.r, 0.2, 1e-6);
+  EXPECT_NEAR(all.mean.g, 0.4, 1e-6);
+  EXPECT_NEAR(all.mean.b, 0.6, 1e-6);
+}
