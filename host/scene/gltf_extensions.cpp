@@ -19,9 +19,9 @@ constexpr ExtensionRow kExtensions[] = {
     {"KHR_materials_specular", ""},  // specularFactor; the loader warns per material that sets a colour or texture
     {"KHR_lights_punctual", ""},     // range is ignored (physically based), with a warning
     {"KHR_texture_transform", ""},
-    {"KHR_texture_basisu", "KTX2 images are not decoded (a texture's PNG or JPEG fallback source is used)"},
-    {"EXT_texture_webp", "WebP images are not decoded (a texture's PNG or JPEG fallback source is used)"},
-    {"EXT_texture_avif", "AVIF images are not decoded (a texture's PNG or JPEG fallback source is used)"},
+    {"KHR_texture_basisu", "KTX2 images are not decoded (a texture with a PNG or JPEG source as well uses that)"},
+    {"EXT_texture_webp", "WebP images are not decoded (a texture with a PNG or JPEG source as well uses that)"},
+    {"EXT_texture_avif", "AVIF images are not decoded (a texture with a PNG or JPEG source as well uses that)"},
     {"KHR_materials_transmission", "transmission is ignored: such surfaces render opaque"},
     {"KHR_materials_volume", "volumes are ignored"},
     {"KHR_materials_ior", "the index of refraction is ignored"},
