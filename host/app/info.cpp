@@ -24,6 +24,8 @@ const char* specName(uint32_t id) {
     case SPEC_HAS_TEXTURES: return "has_textures";
     case SPEC_HAS_NORMAL_MAPS: return "has_normal_maps";
     case SPEC_HAS_ALPHA: return "has_alpha";
+    case SPEC_HAS_PUNCTUAL: return "has_punctual";
+    case SPEC_HAS_ENVIRONMENT: return "has_environment";
     case SPEC_RR_MODE: return "rr_mode";  // the key rr, named as info has always shown it
     case SPEC_RECORD_DEPTH_STATS: return "record_depth_stats";
   }
@@ -43,7 +45,7 @@ int runInfo(const RenderOptions& options) {
   vk::Context ctx;
   Scene scene = loadGltf(options.scenePath, deviceLoadLimits(ctx));
   SceneFeatures f = scanFeatures(scene);
-  f.environment = !f.emitters() && f.punctualLights == 0;  // the default light a render adds (--environment adds one)
+  f.environment = getsDefaultLight(options, scene) || !options.environmentPath.empty();
   std::printf("scene        %s\n", options.scenePath.c_str());
   std::printf("triangles    %u (%s), %llu zero-area skipped, %u materials, %zu cameras\n", f.triangles, f.sizeClass(),
               static_cast<unsigned long long>(scene.degenerateTriangles), f.materials, scene.cameras.size());
@@ -54,7 +56,9 @@ int runInfo(const RenderOptions& options) {
       f.emitters() ? "yes" : "no", f.emissiveTriangles, f.glossy ? "yes" : "no", f.metallic ? "yes" : "no",
       f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.textures ? "yes" : "no", scene.textures.size(),
       f.normalMaps ? "yes" : "no", f.alpha ? "yes" : "no", f.punctualLights,
-      f.environment ? "constant (the default light: no other)" : "none (unless --environment)");
+      !options.environmentPath.empty() ? options.environmentPath.c_str()
+      : f.environment                  ? "constant (the default light)"
+                                       : "none (unless --environment)");
   std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   const BvhStats& b = bvh.stats;

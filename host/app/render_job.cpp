@@ -55,14 +55,20 @@ bool onlyTexturedEmitters(const Scene& scene) {
     if (scene.materials[m].isEmissive() && !scene.materials[m].emissiveTexture.present()) return false;
   return true;
 }
+}  // namespace
 
+bool getsDefaultLight(const RenderOptions& options, const Scene& scene) {
+  return options.environmentPath.empty() && !options.background && scene.punctualLights.empty() && onlyTexturedEmitters(scene);
+}
+
+namespace {
 // The environment light: --environment's map; else, for a scene with nothing to light it (no punctual lights, no
 // --background, and no emitters or only textured ones), a constant environment of radiance 1, importance sampled,
 // with a warning.
 void addEnvironmentLight(const RenderOptions& options, Scene& scene, RenderOutcome& out) {
   if (!options.environmentPath.empty()) {
     scene.environment = readEnvironmentMap(options.environmentPath, options.environmentRotation, options.environmentStrength);
-  } else if (!options.background && scene.punctualLights.empty() && onlyTexturedEmitters(scene)) {
+  } else if (getsDefaultLight(options, scene)) {
     scene.environment = EnvironmentMap::constant(glm::vec3(1.0f));
     out.warnings.push_back(std::string("the scene has no punctual lights and ") +
                            (scanFeatures(scene).emitters() ? "only textured emitters (emissive maps)" : "no emitters") +

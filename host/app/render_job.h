@@ -70,6 +70,9 @@ struct RenderOutcome {
 // Throws vkmc::Error on bad options or input, before anything is written. Both runRender call it first, so
 // their callers need not.
 void validateOptions(const RenderOptions& options);
+// Whether a render lights the scene with the default constant environment: no --environment or --background, no
+// punctual lights, and no emitters or only textured ones (emissive maps are decorations, not lights).
+bool getsDefaultLight(const RenderOptions& options, const Scene& scene);
 RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options);
 // The same with a scene already in memory (options.scenePath only names it).
 RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene scene);
