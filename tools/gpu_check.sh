@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# vkmc on a lent GPU machine (issue 19): one short, prepared run of `vkmc info`, `vkmc bench-kernels` and a render
+# of every shared scene, with the same commands runnable here on lavapipe for the side-by-side figures.
+#
+#   bash tools/gpu_check.sh bundle     # here: .gpu/ = vkmc + the shared libraries it needs + ../shared/scenes,
+#                                      #       .gl/ = the Vulkan loader's .deb (the device machine has no loader)
+#   bash tools/gpu_check.sh run OUTDIR # there (or here, for lavapipe): every check, logs and reports in OUTDIR
+#
+# On the device tool: run(command="bash tools/gpu_check.sh run $OUT", carry=[".gpu", ".gl"]). Both folders are
+# ignored by git. The bundle carries every library of `ldd build/vkmc` that is not glibc's or the C++ runtime's.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+
+bundle() {
+  set -e
+  rm -rf .gpu && mkdir -p .gpu/lib .gpu/scenes .gl
+  cp build/vkmc .gpu/
+  ldd build/vkmc | awk '/=> \// {print $3}' | grep -vE '/(libc|libm|libgcc_s|libstdc\+\+|ld-linux|libvulkan)\.so' |
+    while read -r lib; do cp -L "$lib" .gpu/lib/; done
+  cp -r ../shared/scenes/. .gpu/scenes/
+  if ! ls .gl/libvulkan1_*.deb >/dev/null 2>&1; then
+    mkdir -p /tmp/amd64/partial
+    local o='-oAPT::Architecture=amd64 -oAPT::Architectures=amd64 -oDir::State::Lists=/tmp/amd64'
+    apt-get $o update -qq && (cd .gl && apt-get $o download libvulkan1)
+  fi
+  du -sh .gpu .gl
+}
+
+run_checks() {
+  local out=$1
+  mkdir -p "$out/reports"
+  local vkmc=./build/vkmc scenes=../shared/scenes
+  if [[ -x .gpu/vkmc ]]; then
+    vkmc=./.gpu/vkmc scenes=.gpu/scenes
+    export LD_LIBRARY_PATH=$PWD/.gpu/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+  fi
+  if ! ldconfig -p | grep -q libvulkan.so.1 && ls .gl/*.deb >/dev/null 2>&1; then
+    for f in .gl/*.deb; do dpkg -x "$f" /; done
+    ldconfig
+  fi
+  local icd=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
+  [[ -f $icd ]] && export VK_DRIVER_FILES=$icd
+  command -v nvidia-smi >/dev/null && nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv
+  local models=("$scenes/DamagedHelmet/DamagedHelmet.gltf" "$scenes/MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.gltf")
+  local t=timeout runs=5 big=1024 bigspp=16
+  # GPU_CHECK_QUICK=1: a smoke test of this script (one run, small sizes), e.g. here on lavapipe before a lease.
+  [[ ${GPU_CHECK_QUICK:-0} == 1 ]] && runs=1 big=256 bigspp=1 && models=("${models[0]}")
+  echo "== info"
+  $t 60 $vkmc info scenes/cornell_box.gltf
+  echo "== bench-kernels 256x256, 4 spp: wavefront and megakernel side by side"
+  $t 240 $vkmc bench-kernels --runs $runs --integrator wavefront megakernel --json "$out/reports/bench_256.json" scenes/cornell_box.gltf "${models[@]}"
+  echo "== bench-kernels 1024x1024, 16 spp"
+  $t 240 $vkmc bench-kernels --runs $runs --spp $bigspp --width $big --height $big --integrator wavefront megakernel \
+    --json "$out/reports/bench_1024.json" scenes/cornell_box.gltf "${models[@]}"
+  echo "== bench-kernels: specialized against general pipelines"
+  $t 120 $vkmc bench-kernels --runs $runs --specialization --json "$out/reports/bench_spec.json" scenes/cornell_box.gltf "${models[0]}"
+  echo "== renders: every shared scene and the built-in ones, 64 spp at 256 wide"
+  local s name
+  for s in scenes/cornell_box.gltf scenes/veach_mis.gltf scenes/many_lights.gltf $(find "$scenes" -name '*.gltf' -o -name '*.glb' | sort); do
+    name=$(basename "${s%.*}")
+    echo "-- $name"
+    $t 120 $vkmc render "$s" --spp 64 -q -o "$out/reports/$name.exr" --report "$out/reports/$name.json" ||
+      echo "render of $name failed (exit $?)"
+    [[ -f $out/reports/$name.json ]] && python3 -c "import json,sys; r=json.load(open(sys.argv[1])); \
+print({k: r.get(k) for k in ('device','seconds','gpu_seconds','rays','mrays_per_second','mean','nonfinite_samples')})" \
+      "$out/reports/$name.json" 2>/dev/null
+  done
+  tar -C "$out" -czf "$out/reports.tar.gz" reports && rm -rf "$out/reports"
+}
+
+case "${1:-}" in
+  bundle) bundle ;;
+  run) run_checks "${2:?usage: gpu_check.sh run OUTDIR}" ;;
+  *) echo "usage: bash tools/gpu_check.sh bundle | run OUTDIR" >&2; exit 2 ;;
+esac
