@@ -18,10 +18,10 @@ bundle() {
   ldd build/vkmc | awk '/=> \// {print $3}' | grep -vE '/(libc|libm|libgcc_s|libstdc\+\+|ld-linux|libvulkan)\.so' |
     while read -r lib; do cp -L "$lib" .gpu/lib/; done
   cp -r ../shared/scenes/. .gpu/scenes/
-  if ! ls .gl/libvulkan1_*.deb >/dev/null 2>&1; then
+  if ! ls .gl/libglvnd0_*.deb >/dev/null 2>&1; then
     mkdir -p /tmp/amd64/partial
     local o='-oAPT::Architecture=amd64 -oAPT::Architectures=amd64 -oDir::State::Lists=/tmp/amd64'
-    apt-get $o update -qq && (cd .gl && apt-get $o download libvulkan1)
+    apt-get $o update -qq && (cd .gl && apt-get $o download libvulkan1 libglvnd0 libglx0 libgl1 libegl1 libopengl0 libgles2)
   fi
   du -sh .gpu .gl
 }
@@ -34,7 +34,7 @@ run_checks() {
     vkmc=./.gpu/vkmc scenes=.gpu/scenes
     export LD_LIBRARY_PATH=$PWD/.gpu/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
   fi
-  if ! ldconfig -p | grep -q libvulkan.so.1 && ls .gl/*.deb >/dev/null 2>&1; then
+  if ls .gl/*.deb >/dev/null 2>&1; then
     for f in .gl/*.deb; do dpkg -x "$f" /; done
     ldconfig
   fi

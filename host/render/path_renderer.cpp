@@ -54,7 +54,7 @@ PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const Render
   allocateBuffers(uint64_t(settings.width) * settings.height, size);
   bindBuffers();
   auto start = Clock::now();
-  std::memset(control_.mapped(), 0, sizeof(gpu::Control));
+  control_.zero();
   kernels_ = buildRenderKernels(ctx, *layout_, settings, hasShadowStage_, pool_);
   timer_ = std::make_unique<vk::GpuTimer>(ctx, 2 * (8 + 5 * kFirstChunkBounces));
   pipelineSeconds_ = since(start);
@@ -73,18 +73,40 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
   shadowQueue_ = storage(hasShadowStage_ ? size.shadowSlots * sizeof(gpu::ShadowRay) : 16);
   // Room for every item of the larger trace stage, so a deferred walk is never turned away in practice.
   deepWalks_ = storage(megakernel ? 16 : std::max<uint64_t>(pool_, size.shadowSlots) * sizeof(uint32_t));
-  control_ = storage(sizeof(gpu::Control), vk::MemoryKind::HostVisible, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
-  film_ = storage(pixels * sizeof(gpu::FilmPixel), vk::MemoryKind::HostVisible);
-  std::memset(film_.mapped(), 0, pixels * sizeof(gpu::FilmPixel));
-  pixelEstimate_ = storage(pixels * sizeof(float), vk::MemoryKind::HostVisible);
-  std::memset(pixelEstimate_.mapped(), 0, pixels * sizeof(float));
+  // What the host reads or writes every pass: mapped in place on unified memory; on a discrete GPU device-local
+  // (the kernels' atomics and the film's read-modify-write stay off the bus), copied at chunk ends and folds.
+  const vk::MemoryKind exchange = ctx_.unifiedMemory() ? vk::MemoryKind::HostVisible : vk::MemoryKind::DeviceLocal;
+  control_ = storage(sizeof(gpu::Control), exchange, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+  if (!control_.mapped()) controlMirror_ = vk::Buffer(ctx_, sizeof(gpu::Control), 0, vk::MemoryKind::HostVisible);
+  film_ = storage(pixels * sizeof(gpu::FilmPixel), exchange);
+  film_.zero();
+  pixelEstimate_ = storage(pixels * sizeof(float), exchange);
+  pixelEstimate_.zero();
   rouletteTable_ = storage(gpu::kRouletteTableDepths * sizeof(float), vk::MemoryKind::HostVisible);
   std::array<float, kRouletteTableDepths> noRoulette;
   noRoulette.fill(std::numeric_limits<float>::infinity());
   setRouletteScales(noRoulette);
   depthStats_ =
       storage(settings_.recordDepthStats ? uint64_t(pool_) * gpu::kRouletteTableDepths * 8 : 16, vk::MemoryKind::HostVisible);
-  queueStats_ = storage(gpu::kQueueStatsBounces * 8, vk::MemoryKind::HostVisible);
+  queueStats_ = storage(gpu::kQueueStatsBounces * 8, exchange);
+}
+
+// The control block as the host sees it after a submit (the mirror a chunk's end copied it to, when not mapped).
+const gpu::Control& PathRenderer::controlView() const {
+  return *static_cast<const gpu::Control*>(control_.mapped() ? control_.mapped() : controlMirror_.mapped());
+}
+
+// Zeroes the control block before a pass's first dispatch: in place when mapped, else on the device.
+void PathRenderer::resetControl(VkCommandBuffer cmd) {
+  if (control_.mapped())
+    std::memset(control_.mapped(), 0, sizeof(gpu::Control));
+  else
+    control_.recordZero(cmd);
+}
+
+// Makes the control block readable by the host once `cmd` completes.
+void PathRenderer::publishControl(VkCommandBuffer cmd) {
+  if (!control_.mapped()) control_.recordCopyTo(cmd, controlMirror_);
 }
 
 void PathRenderer::bindBuffers() {
@@ -150,7 +172,7 @@ gpu::PushConstants PathRenderer::passConstants(uint32_t firstPixel, uint32_t pix
 
 // Ray counts and non-finite values by stage, from the control block after a pass.
 void PathRenderer::collectCounters(RenderStats& stats) {
-  const auto* control = static_cast<const gpu::Control*>(control_.mapped());
+  const gpu::Control* control = &controlView();
   stats.cameraRays += control->cameraRays;
   stats.extensionRays += control->extensionRays;
   stats.shadowRays += control->shadowRays;
@@ -165,11 +187,12 @@ void PathRenderer::collectCounters(RenderStats& stats) {
 
 // Megakernel: one dispatch follows every path of the pass to its end, then accumulate; one submit.
 uint32_t PathRenderer::renderMegakernelPass(const gpu::PushConstants& pc, RenderStats& stats) {
-  std::memset(control_.mapped(), 0, sizeof(gpu::Control));
   VkCommandBuffer cmd = ctx_.beginCommands();
+  resetControl(cmd);
   timer_->reset(cmd);
   vk::dispatch(cmd, *layout_, *kernels_.megakernel, &pc, sizeof(pc), groupsFor(pc.pathCount), timer_.get());
   vk::dispatch(cmd, *layout_, *kernels_.accumulate, &pc, sizeof(pc), groupsFor(pc.pixelCount), timer_.get());
+  publishControl(cmd);
   ctx_.submitAndWait(cmd);
   timer_->collect(stats.stageSeconds);
   collectCounters(stats);
@@ -212,8 +235,6 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
   if (settings_.integrator == Integrator::Megakernel) return renderMegakernelPass(base, stats);
   gpu::PushConstants pc = base;
   const uint32_t count = pc.pathCount;
-  auto* control = static_cast<gpu::Control*>(control_.mapped());
-  std::memset(control, 0, sizeof(gpu::Control));
   if (settings_.recordDepthStats) {  // -1: "no decision recorded at this depth"
     auto* stats = static_cast<float*>(depthStats_.mapped());
     std::fill(stats, stats + size_t(pool_) * kRouletteTableDepths * 2, -1.0f);
@@ -226,6 +247,7 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
     uint32_t chunk = std::min(first ? kFirstChunkBounces : kLaterChunkBounces, depthCap - std::min(depthCap, bounce));
     chunk = std::max(chunk, 1u);
     VkCommandBuffer cmd = ctx_.beginCommands();
+    if (first) resetControl(cmd);
     timer_->reset(cmd);
     if (first) recordCameraRays(cmd, pc, count);
     for (uint32_t b = bounce; b < bounce + chunk; ++b) {
@@ -235,10 +257,11 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
     bounce += chunk;
     pc.bounce = bounce;
     recordAccumulate(cmd, pc);
+    publishControl(cmd);
     ctx_.submitAndWait(cmd);
     timer_->collect(stats.stageSeconds);
     first = false;
-    uint32_t alive = control->rayQueueCount[bounce & 1u];
+    uint32_t alive = controlView().rayQueueCount[bounce & 1u];
     if (alive == 0) break;
     if (bounce >= depthCap) throw Error("internal error: paths alive past the depth cap");
   }
@@ -248,19 +271,27 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
 }
 
 void PathRenderer::foldFilm(Film& film) {
-  film.addBatch(static_cast<const gpu::FilmPixel*>(film_.mapped()));
+  const size_t pixels = film.pixels();
+  if (film_.mapped()) {
+    film.addBatch(static_cast<const gpu::FilmPixel*>(film_.mapped()));
+  } else {
+    std::vector<gpu::FilmPixel> batch(pixels);
+    film_.download(batch.data(), pixels * sizeof(gpu::FilmPixel));
+    film.addBatch(batch.data());
+  }
   // The running pixel estimate that shadow-ray roulette compares tiny contributions against.
-  auto* estimate = static_cast<float*>(pixelEstimate_.mapped());
-  for (size_t p = 0; p < film.pixels(); ++p)
+  std::vector<float> estimate(pixels);
+  for (size_t p = 0; p < pixels; ++p)
     estimate[p] = static_cast<float>(gpu::luminance(glm::vec3(film.mean(p, 0), film.mean(p, 1), film.mean(p, 2))));
-  std::memset(film_.mapped(), 0, film.pixels() * sizeof(gpu::FilmPixel));
+  pixelEstimate_.upload(estimate.data(), pixels * sizeof(float));
+  film_.zero();
 }
 
 Film PathRenderer::render(RenderStats& stats) {
   Film film(settings_.width, settings_.height);
   const uint32_t pixels = settings_.width * settings_.height;
   bool showProgress = settings_.progress && isatty(STDERR_FILENO);
-  std::memset(queueStats_.mapped(), 0, gpu::kQueueStatsBounces * 8);
+  queueStats_.zero();
   auto start = Clock::now();
   double lastProgress = 0.0;
   // Small images take several samples per pixel per pass, so that a pass fills the wavefront.
@@ -310,7 +341,8 @@ Film PathRenderer::render(RenderStats& stats) {
   };
   stats.primarySeconds = stage("intersect_primary");
   stats.incoherentSeconds = stage("intersect");
-  const auto* queueStats = static_cast<const glm::uvec2*>(queueStats_.mapped());
+  std::vector<glm::uvec2> queueStats(gpu::kQueueStatsBounces);
+  queueStats_.download(queueStats.data(), gpu::kQueueStatsBounces * sizeof(glm::uvec2));
   stats.pathsByBounce.resize(gpu::kQueueStatsBounces, 0);
   stats.shadowRaysByBounce.resize(gpu::kQueueStatsBounces, 0);
   for (uint32_t b = 0; b < gpu::kQueueStatsBounces; ++b) {

@@ -46,6 +46,9 @@ class PathRenderer {
   void bindBuffers();
   uint32_t renderMegakernelPass(const gpu::PushConstants& pc, RenderStats& stats);
   gpu::PushConstants passConstants(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples) const;
+  const gpu::Control& controlView() const;
+  void resetControl(VkCommandBuffer cmd);
+  void publishControl(VkCommandBuffer cmd);
   void collectCounters(RenderStats& stats);
   void foldFilm(Film& film);
   uint32_t groupsFor(uint32_t invocations) const;
@@ -61,6 +64,7 @@ class PathRenderer {
   std::unique_ptr<vk::GpuTimer> timer_;
   vk::Buffer paths_, hits_, queues_, shadowQueue_, deepWalks_, control_, film_, pixelEstimate_, rouletteTable_, depthStats_,
       queueStats_;
+  vk::Buffer controlMirror_;  // host-visible copy of control_ where control_ is device-local
   std::vector<PilotPath> pilot_;
   void collectPilot(uint32_t pathCount);
   double pipelineSeconds_ = 0.0;

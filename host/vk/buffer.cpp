@@ -1,6 +1,9 @@
 // Buffer creation, staging uploads and readbacks.
 #include "vk/buffer.h"
 
+#include "vk/kernel.h"
+
+#include <algorithm>
 #include <cstring>
 #include <utility>
 
@@ -86,6 +89,25 @@ void Buffer::download(void* data, VkDeviceSize bytes) {
     vkCmdCopyBuffer(cmd, buffer_, staging.handle(), 1, &region);
   });
   std::memcpy(data, staging.mapped(), bytes);
+}
+
+void Buffer::zero() {
+  if (mapped_) {
+    std::memset(mapped_, 0, size_);
+    return;
+  }
+  ctx_->runCommands([&](VkCommandBuffer cmd) { recordZero(cmd); });
+}
+
+void Buffer::recordZero(VkCommandBuffer cmd) const {
+  vkCmdFillBuffer(cmd, buffer_, 0, VK_WHOLE_SIZE, 0u);
+  computeBarrier(cmd);
+}
+
+void Buffer::recordCopyTo(VkCommandBuffer cmd, const Buffer& dst) const {
+  VkBufferCopy region{0, 0, std::min(size_, dst.size_)};
+  vkCmdCopyBuffer(cmd, buffer_, dst.buffer_, 1, &region);
+  computeBarrier(cmd);
 }
 
 }  // namespace vkmc::vk

@@ -29,6 +29,10 @@ class Buffer {
   // Copies host data in, through a staging buffer when the memory is not mappable.
   void upload(const void* data, VkDeviceSize bytes);
   void download(void* data, VkDeviceSize bytes);
+  void zero();  // every byte 0: in place when mapped, else by a fill on the device
+  // Recorded into a command buffer, each followed by a barrier (kernel.h computeBarrier).
+  void recordZero(VkCommandBuffer cmd) const;
+  void recordCopyTo(VkCommandBuffer cmd, const Buffer& dst) const;  // the first min(size) bytes
 
  private:
   void release();

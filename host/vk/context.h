@@ -30,6 +30,11 @@ class Context {
   std::string deviceName() const { return properties_.deviceName; }
   bool hasTimestamps() const { return timestampBits_ > 0; }
   bool hasFloatAtomics() const { return floatAtomics_; }  // shaderBufferFloat32AtomicAdd enabled
+  // CPU devices (lavapipe) and integrated GPUs: device memory is host memory, so buffers the host reads or writes
+  // each pass are mapped in place; a discrete GPU keeps them device-local and copies (PathRenderer).
+  bool unifiedMemory() const {
+    return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU || properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU;
+  }
   double timestampPeriodNs() const { return properties_.limits.timestampPeriod; }
   uint64_t maxAllocationBytes() const { return maxAllocationBytes_; }  // maxMemoryAllocationSize
   uint64_t largestDeviceLocalHeapBytes() const {
