@@ -28,6 +28,8 @@ const char* specName(uint32_t id) {
     case SPEC_HAS_ENVIRONMENT: return "has_environment";
     case SPEC_RR_MODE: return "rr_mode";  // the key rr, named as info has always shown it
     case SPEC_RECORD_DEPTH_STATS: return "record_depth_stats";
+    case SPEC_SAMPLER_LOG2_SPP: return "zsobol_log2_spp";
+    case SPEC_SAMPLER_DIGITS: return "zsobol_digits";
   }
   for (const EstimatorParam& p : estimatorParams())
     if (p.specId == int(id)) return p.key;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "../shaders/shared/layout.h"
+#include "../shaders/shared/sampler.h"
 #include "vk/kernel.h"
 
 namespace vkmc {
@@ -27,6 +28,11 @@ enum class BsdfSampling : uint32_t {
 };
 enum class LightSampling : uint32_t { Area = gpu::kLightSamplingArea, SolidAngle = gpu::kLightSamplingSolidAngle };
 enum class LightSelect : uint32_t { Uniform, Power };  // host only: which light table GpuScene builds
+enum class Sampler : uint32_t {
+  Independent = gpu::kSamplerIndependent,
+  Sobol = gpu::kSamplerSobol,
+  ZSobol = gpu::kSamplerZSobol
+};
 enum class MisHeuristic : uint32_t { None = gpu::kMisNone, Balance = gpu::kMisBalance, Power = gpu::kMisPower };
 
 struct EstimatorConfig {
@@ -48,6 +54,7 @@ struct EstimatorConfig {
   bool nee{};
   MisHeuristic mis{};
   uint32_t maxDepth{};
+  Sampler sampler{};
   std::string name;  // free text from the estimator file, echoed in reports
 
   // Every key's range, then the rules that join keys; throws vkmc::Error naming the offending key.

@@ -83,6 +83,10 @@ constexpr ParamName kLightSelectNames[] = {{"uniform", valueOf(LightSelect::Unif
 constexpr ParamName kMisNames[] = {
     {"none", valueOf(MisHeuristic::None)}, {"balance", valueOf(MisHeuristic::Balance)}, {"power", valueOf(MisHeuristic::Power)}};
 
+constexpr ParamName kSamplerNames[] = {{"independent", valueOf(Sampler::Independent)},
+                                       {"sobol", valueOf(Sampler::Sobol)},
+                                       {"zsobol", valueOf(Sampler::ZSobol)}};
+
 using C = EstimatorConfig;
 // In the order of --help. The defaults are the renderer's (EstimatorConfig's constructor applies them).
 constexpr EstimatorParam kParams[] = {
@@ -111,6 +115,9 @@ constexpr EstimatorParam kParams[] = {
                             "which emissive triangle a light sample picks"),
     onOff<&C::nee>("nee", true, SPEC_NEE, "next-event estimation"),
     choice<&C::mis>("mis", MisHeuristic::Power, kMisNames, SPEC_MIS, "MIS heuristic of light and BSDF sampling"),
+    choice<&C::sampler>("sampler", Sampler::Independent, kSamplerNames, SPEC_SAMPLER,
+                        "uniform numbers: independent hashes, Owen-scrambled Sobol per pixel, or Morton-ordered "
+                        "ZSobol; the Sobol ones in 4 replicates whose spread is the variance"),
 };
 
 std::string number(double v) {

@@ -7,7 +7,14 @@
 namespace vkmc {
 
 Film::Film(uint32_t w, uint32_t h)
-    : width(w), height(h), sum(3 * pixels(), 0.0), sumSq(3 * pixels(), 0.0), count(pixels(), 0), nonfinite(pixels(), 0) {}
+    : width(w),
+      height(h),
+      sum(3 * pixels(), 0.0),
+      sumSq(3 * pixels(), 0.0),
+      count(pixels(), 0),
+      nonfinite(pixels(), 0),
+      replicateSum(3 * gpu::kSampleReplicates * pixels(), 0.0),
+      replicateCount(gpu::kSampleReplicates * pixels(), 0) {}
 
 void Film::addBatch(const gpu::FilmPixel* px) {
   const double unscale = 1.0 / double(gpu::kFilmHighScale);  // 2^96: exact
@@ -18,12 +25,47 @@ void Film::addBatch(const gpu::FilmPixel* px) {
     }
     count[p] += static_cast<uint64_t>(px[p].sum[3]);
     nonfinite[p] += static_cast<uint64_t>(px[p].sumSq[3]);
+    // The last replicate is the rest of the batch: its sums and count by difference.
+    const uint32_t last = gpu::kSampleReplicates - 1;
+    double rest[3];
+    uint64_t restCount = static_cast<uint64_t>(px[p].sum[3]);
+    for (int c = 0; c < 3; ++c) rest[c] = px[p].sum[c] + double(px[p].sumHigh[c]) * unscale;
+    for (uint32_t r = 0; r < last; ++r) {
+      for (int c = 0; c < 3; ++c) {
+        replicateSum[(p * gpu::kSampleReplicates + r) * 3 + c] += px[p].replicate[r][c];
+        rest[c] -= px[p].replicate[r][c];
+      }
+      replicateCount[p * gpu::kSampleReplicates + r] += static_cast<uint64_t>(px[p].replicate[r][3]);
+      restCount -= static_cast<uint64_t>(px[p].replicate[r][3]);
+    }
+    for (int c = 0; c < 3; ++c) replicateSum[(p * gpu::kSampleReplicates + last) * 3 + c] += rest[c];
+    replicateCount[p * gpu::kSampleReplicates + last] += restCount;
   }
 }
 
 double Film::mean(size_t p, int c) const { return count[p] ? sum[3 * p + c] / static_cast<double>(count[p]) : 0.0; }
 
 double Film::varianceOfMean(size_t p, int c) const {
+  return replicateVariance ? replicateVarianceOfMean(p, c) : sampleVarianceOfMean(p, c);
+}
+
+double Film::replicateVarianceOfMean(size_t p, int c) const {
+  double means[gpu::kSampleReplicates];
+  int k = 0;
+  for (uint32_t r = 0; r < gpu::kSampleReplicates; ++r) {
+    uint64_t n = replicateCount[p * gpu::kSampleReplicates + r];
+    if (n) means[k++] = replicateSum[(p * gpu::kSampleReplicates + r) * 3 + c] / static_cast<double>(n);
+  }
+  if (k < 2) return 0.0;
+  double m = 0.0;
+  for (int i = 0; i < k; ++i) m += means[i];
+  m /= k;
+  double ss = 0.0;
+  for (int i = 0; i < k; ++i) ss += (means[i] - m) * (means[i] - m);
+  return ss / (double(k) * double(k - 1));
+}
+
+double Film::sampleVarianceOfMean(size_t p, int c) const {
   double n = static_cast<double>(count[p]);
   if (n < 2.0) return 0.0;
   double m = sum[3 * p + c] / n;

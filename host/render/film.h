@@ -16,6 +16,12 @@ struct Film {
   std::vector<double> sumSq;    // 3 per pixel
   std::vector<uint64_t> count;  // finite samples per pixel
   std::vector<uint64_t> nonfinite;
+  // Replicates (shaders/shared/sampler.h): per pixel kSampleReplicates sums (3 each) and counts.
+  std::vector<double> replicateSum;
+  std::vector<uint64_t> replicateCount;
+  // QMC samplers: a pixel's samples are correlated, so the variance of its mean comes from the spread of the
+  // replicate means; the independent sampler's samples are independent, so from the samples (more dof).
+  bool replicateVariance = false;
 
   Film() = default;
   // Folds one batch of the GPU's float partial sums (at most 64 samples a pixel) into the double sums: the
@@ -25,8 +31,12 @@ struct Film {
   Film(uint32_t w, uint32_t h);
   size_t pixels() const { return static_cast<size_t>(width) * height; }
   double mean(size_t pixel, int c) const;
-  // Unbiased sample variance / n: the variance of the pixel mean.
+  // The variance of the pixel mean, estimated without bias: sample variance / n, or with replicateVariance
+  // the replicate means' sample variance / (number of replicates). 0 below two samples (or replicates).
   double varianceOfMean(size_t pixel, int c) const;
+  double sampleVarianceOfMean(size_t pixel, int c) const;     // from the samples, as if independent
+  double replicateVarianceOfMean(size_t pixel, int c) const;  // from the replicate means
+
   glm::dvec3 imageMean() const;
   glm::dvec3 imageMeanVarianceOfMean() const;  // image mean of the per-pixel variance of the mean
   uint64_t totalNonfinite() const;

@@ -289,6 +289,7 @@ void PathRenderer::foldFilm(Film& film) {
 
 Film PathRenderer::render(RenderStats& stats) {
   Film film(settings_.width, settings_.height);
+  film.replicateVariance = settings_.estimator.sampler != Sampler::Independent;
   const uint32_t pixels = settings_.width * settings_.height;
   bool showProgress = settings_.progress && isatty(STDERR_FILENO);
   queueStats_.zero();

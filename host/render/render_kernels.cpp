@@ -1,10 +1,13 @@
 // Kernel planning, building and warm-up for one render.
 #include "render/render_kernels.h"
 
+#include <algorithm>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "../shaders/shared/layout.h"
+#include "error.h"
 #include "render/background_warm_up.h"
 #include "spirv/accumulate_spv.h"
 #include "spirv/camera_rays_spv.h"
@@ -21,6 +24,26 @@
 #include "spirv/shadow_spv.h"
 
 namespace vkmc {
+
+namespace {
+uint32_t log2Ceil(uint64_t v) {
+  uint32_t k = 0;
+  while ((uint64_t(1) << k) < v) ++k;
+  return k;
+}
+}  // namespace
+
+ZSobolLayout zsobolLayout(const RenderSettings& s) {
+  ZSobolLayout z;
+  z.log2Spp = log2Ceil((uint64_t(s.spp) + gpu::kSampleReplicates - 1) / gpu::kSampleReplicates);
+  const uint32_t pixelBits = log2Ceil(std::max(s.width, s.height));
+  z.digits = pixelBits + (z.log2Spp + 1) / 2;
+  if (s.estimator.sampler == Sampler::ZSobol && 2 * pixelBits + z.log2Spp > 32)
+    throw Error("--sampler zsobol: " + std::to_string(s.width) + "x" + std::to_string(s.height) + " at " +
+                std::to_string(s.spp) + " spp needs a Morton index of " + std::to_string(2 * pixelBits + z.log2Spp) +
+                " bits, more than 32: use --sampler sobol, fewer samples or a smaller image");
+  return z;
+}
 
 KernelPlan planKernels(const RenderSettings& s) {
   KernelPlan plan;
@@ -46,6 +69,9 @@ KernelPlan planKernels(const RenderSettings& s) {
                 {SPEC_HAS_ALPHA, s.features.alpha ? 1u : 0u},
                 {SPEC_RECORD_DEPTH_STATS, s.recordDepthStats ? 1u : 0u}};
   for (const vk::SpecConstant& c : est.specConstants()) plan.specs.push_back(c);
+  const ZSobolLayout z = zsobolLayout(s);
+  plan.specs.push_back({SPEC_SAMPLER_LOG2_SPP, z.log2Spp});
+  plan.specs.push_back({SPEC_SAMPLER_DIGITS, z.digits});
   return plan;
 }
 

@@ -63,4 +63,11 @@ struct KernelPlan {
 };
 KernelPlan planKernels(const RenderSettings& settings);
 
+// The ZSobol sampler's Morton-index shape (shaders/shared/sampler.h): log2 of a replicate's point count, and
+// the index's base-4 digits. Throws Error where the index would pass 32 bits (zsobol only).
+struct ZSobolLayout {
+  uint32_t log2Spp = 0, digits = 0;
+};
+ZSobolLayout zsobolLayout(const RenderSettings& settings);
+
 }  // namespace vkmc

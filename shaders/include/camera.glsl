@@ -5,8 +5,9 @@
 
 PathState cameraPath(uint id) {
   uint pixel = pc.firstPixel + id % pc.pixelCount;
-  uint key = pathKey(pc.seed, pixel, pc.sampleIndex + id / pc.pixelCount);
-  vec2 jitter = vec2(randomUnit(key, 0u), randomUnit(key, 1u));
+  uint sampleIndex = pc.sampleIndex + id / pc.pixelCount;
+  SampleStream stream = SampleStream(streamKey(kSampler, pc.seed, pixel, sampleIndex), sampleIndex, pixel);
+  vec2 jitter = vec2(sampleU(stream, 0u), sampleU(stream, 1u));
   vec2 ndc = vec2(float(pixel % pc.width) + jitter.x, float(pixel / pc.width) + jitter.y) /
              vec2(float(pc.width), float(pc.height));
   vec2 screen = vec2(2.0 * ndc.x - 1.0, 1.0 - 2.0 * ndc.y);
@@ -24,11 +25,11 @@ PathState cameraPath(uint id) {
   p.throughput = vec4(1.0);
   p.radiance = vec4(0.0);
   p.pixel = pixel;
-  p.rngKey = key;
+  p.rngKey = stream.key;
   p.depth = 0u;
   p.rootPath = id;
   if (kCameraRouletteQ > 0.0) {
-    RouletteStep rr = fixedRoulette(kCameraRouletteQ, randomUnit(key, kDimCameraRoulette));
+    RouletteStep rr = fixedRoulette(kCameraRouletteQ, sampleU(stream, kDimCameraRoulette));
     p.throughput.rgb = vec3(rr.survives ? 1.0 / rr.survival : 0.0);
   }
   return p;

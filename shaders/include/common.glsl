@@ -5,6 +5,7 @@
 #include "scene_layout.h"
 #include "texture_layout.h"
 #include "rng.h"
+#include "sampler.h"
 #include "sampling.h"
 #include "geometry.h"
 
@@ -34,6 +35,9 @@ layout(constant_id = SPEC_WALK_STATS) const uint kWalkStats = 0u;
 layout(constant_id = SPEC_HAS_TEXTURES) const uint kHasTextures = 1u;
 layout(constant_id = SPEC_HAS_NORMAL_MAPS) const uint kHasNormalMaps = 1u;
 layout(constant_id = SPEC_HAS_ALPHA) const uint kHasAlpha = 1u;
+layout(constant_id = SPEC_SAMPLER) const uint kSampler = 0u;
+layout(constant_id = SPEC_SAMPLER_LOG2_SPP) const uint kSamplerLog2Spp = 0u;
+layout(constant_id = SPEC_SAMPLER_DIGITS) const uint kSamplerDigits = 0u;
 
 layout(push_constant, std430) uniform Push { PushConstants pc; };
 
@@ -82,3 +86,8 @@ void triangleVertices(uint tri, out vec3 v0, out vec3 v1, out vec3 v2) {
 }
 
 bool allFinite(vec3 v) { return !any(isnan(v)) && !any(isinf(v)); }
+
+// A path's sample stream (sampler.h): its key, its pixel's sample number (the pass's first plus the root
+// path's sample slot), its pixel; and dimension `dim` of it from the sampler the kernels are specialized for.
+SampleStream pathStream(PathState p) { return SampleStream(p.rngKey, pc.sampleIndex + p.rootPath / pc.pixelCount, p.pixel); }
+float sampleU(SampleStream s, uint dim) { return sampleDimension(kSampler, s, dim, pc.width, kSamplerLog2Spp, kSamplerDigits); }

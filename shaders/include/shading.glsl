@@ -201,11 +201,11 @@ bool sampleEnvironmentLight(float pmf, SurfacePoint s, vec2 u, out LightSample l
 // false when the sample adds nothing (or was rouletted away).
 bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo, uint j, uint samples, out ShadowRay ray) {
   uint depth = path.depth;
-  uint key = path.rngKey;
-  uvec4 light = selectLight(randomUnit(key, lightDim(depth, j, 0u)));
+  SampleStream stream = pathStream(path);
+  uvec4 light = selectLight(sampleU(stream, lightDim(depth, j, 0u)));
   uint kind = lightEntryKind(light);
   float pmf = lightEntryPmf(light);
-  vec2 u = vec2(randomUnit(key, lightDim(depth, j, 1u)), randomUnit(key, lightDim(depth, j, 2u)));
+  vec2 u = vec2(sampleU(stream, lightDim(depth, j, 1u)), sampleU(stream, lightDim(depth, j, 2u)));
   LightSample ls;
   bool sampled = false;
   if (kind == kLightKindTriangle) sampled = sampleEmissiveTriangle(lightEntryIndex(light), pmf, s, u, ls);
@@ -222,14 +222,14 @@ bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo
   if (!allFinite(contribution)) atomicAdd(control.nonfiniteLightSamples, 1u);  // still queued: it poisons the sample
   else if (!(maxComponent(contribution) > 0.0)) return false;
   if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * pixelEstimate[path.pixel]) {
-    RouletteStep rr = fixedRoulette(kShadowRouletteQ, randomUnit(key, lightDim(depth, j, 3u)));
+    RouletteStep rr = fixedRoulette(kShadowRouletteQ, sampleU(stream, lightDim(depth, j, 3u)));
     if (!rr.survives) return false;
     contribution /= rr.survival;
   }
   vec3 origin = offsetRayOrigin(s.p, s.pError, s.ng, ls.wi);
   ray.origin = vec4(origin, 1.0 - 1e-4);
   ray.direction = vec4(ls.target - origin, uintBitsToFloat(path.rootPath));
-  ray.contribution = vec4(contribution, uintBitsToFloat(alphaKey(key, lightDim(depth, j, 0u) | 0x80000000u)));
+  ray.contribution = vec4(contribution, uintBitsToFloat(alphaKey(streamHash(stream), lightDim(depth, j, 0u) | 0x80000000u)));
   return true;
 }
 
@@ -283,9 +283,10 @@ bool continuationIsUseful(uint depth) {
 bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3 woLocal, uint c, float q,
                   inout vec3 gathered, out PathState next) {
   uint depth = path.depth;
-  uint ckey = childKey(path.rngKey, depth, c);
-  vec3 u = vec3(randomUnit(ckey, bounceDim(depth, kDimBsdfLobe)), randomUnit(ckey, bounceDim(depth, kDimBsdf)),
-                randomUnit(ckey, bounceDim(depth, kDimBsdf + 1u)));
+  SampleStream stream = pathStream(path);
+  stream.key = childKey(path.rngKey, depth, c);
+  vec3 u = vec3(sampleU(stream, bounceDim(depth, kDimBsdfLobe)), sampleU(stream, bounceDim(depth, kDimBsdf)),
+                sampleU(stream, bounceDim(depth, kDimBsdf + 1u)));
   vec3 wiLocal = sampleTechnique(gm, woLocal, u);
   float pdf = techniquePdf(gm, woLocal, wiLocal);
   vec3 wi = s.frame * wiLocal;
@@ -300,7 +301,7 @@ bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3
   continues = continues && maxComponent(beta) > 0.0;
 
   if (continues && rouletteApplies(depth, kRouletteDepth) && kRouletteMode != kRouletteNone) {
-    float r = randomUnit(ckey, bounceDim(depth, kDimRoulette));
+    float r = sampleU(stream, bounceDim(depth, kDimRoulette));
     float scale = kRouletteMode == kRouletteEfficiency ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] : 1.0;
     RouletteStep rr = kRouletteMode == kRouletteFixed ? fixedRoulette(kRouletteQ, r)
                                                       : throughputRoulette(maxComponent(beta) * splitWeight, scale, r);
@@ -316,7 +317,7 @@ bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3
   next.direction = vec4(wi, pdf);
   next.throughput = vec4(beta, splitWeight);
   next.pixel = path.pixel;
-  next.rngKey = ckey;
+  next.rngKey = stream.key;
   next.depth = depth + 1u;
   next.rootPath = path.rootPath;
   next.radiance = path.radiance;

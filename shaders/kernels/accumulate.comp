@@ -2,7 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // Stage 5: each finished path's estimate into its pixel's batch sums. One invocation per pixel walks that
 // pixel's samples of the pass, so no atomics. Non-finite estimates are counted and left out, never written;
-// finite ones always count, however large (FilmPixel's high sums).
+// finite ones always count, however large (FilmPixel's high sums). Sample slot s is the pixel's sample
+// pc.sampleIndex + s, so its replicate (sampler.h) is known here.
 #include "common.glsl"
 
 void main() {
@@ -19,6 +20,8 @@ void main() {
       f.sumSq.rgb += low * low;
       f.sumHigh.rgb += scaled;
       f.sumSqHigh.rgb += scaled * scaled;
+      uint replicate = (pc.sampleIndex + s) % kSampleReplicates;
+      if (replicate + 1u < kSampleReplicates) f.replicate[replicate] += vec4(L, 1.0);
     } else {
       f.sumSq.w += 1.0;
     }

@@ -13,7 +13,7 @@ void main() {
   PathState p = paths[id];
   vec4 hit;
   bool complete;
-  walkRayKey = alphaKey(p.rngKey, bounceDim(p.depth, 0u));
+  walkRayKey = alphaKey(streamHash(pathStream(p)), bounceDim(p.depth, 0u));
   if (!traceItem(slot, p.origin.xyz, p.direction.xyz, 3.0e38, false, hit, complete)) return;
   hits[id] = hit;
   if (!complete) {  // counted, and the sample poisoned so accumulate excludes it: never a silently wrong hit

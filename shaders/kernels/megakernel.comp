@@ -37,7 +37,7 @@ void main() {
     vec3 dir = anyHit ? ray.direction.xyz : path.direction.xyz;
     float tMax = anyHit ? ray.origin.w : 3.0e38;
     bool complete;
-    walkRayKey = anyHit ? floatBitsToUint(ray.contribution.w) : alphaKey(path.rngKey, bounceDim(path.depth, 0u));
+    walkRayKey = anyHit ? floatBitsToUint(ray.contribution.w) : alphaKey(streamHash(pathStream(path)), bounceDim(path.depth, 0u));
     vec4 hit = traceRay(origin, dir, tMax, anyHit, complete);
     if (anyHit) {
       if (!complete) {  // as in shadow: counted, and the sample poisoned

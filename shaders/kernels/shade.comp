@@ -62,7 +62,7 @@ void main() {
   // BSDF continuations: q = kBsdfSamples at split depths gives floor(q + u) children weighted 1/q; child 0
   // continues in this slot, the others take slots from the pool (none left: no split, weight 1, unbiased).
   float q = splitFactorAt(depth, kSplitDepth, kBsdfSamples);
-  uint children = continuationIsUseful(depth) ? (q > 1.0 ? splitCount(q, randomUnit(path.rngKey, bounceDim(depth, kDimSplit))) : 1u) : 0u;
+  uint children = continuationIsUseful(depth) ? (q > 1.0 ? splitCount(q, sampleU(pathStream(path), bounceDim(depth, kDimSplit))) : 1u) : 0u;
   uint firstChild = 0u;
   if (children > 1u) {
     uint base = atomicAdd(control.splitChildren, children - 1u);

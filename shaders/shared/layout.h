@@ -69,6 +69,10 @@
 // 21-23: the textures' spec constants.
 #define SPEC_HAS_PUNCTUAL 24     // 0: no punctual lights, their sampling code removed
 #define SPEC_HAS_ENVIRONMENT 25  // 0: no environment light (escaped rays see pc.background alone)
+// 26: the pixel filter's.
+#define SPEC_SAMPLER 27           // kSampler* (sampler.h)
+#define SPEC_SAMPLER_LOG2_SPP 28  // zsobol: log2 of a replicate's sample count, rounded up
+#define SPEC_SAMPLER_DIGITS 29    // zsobol: base-4 digits of the Morton index (pixel bits + log2 spp)
 
 VKMC_BEGIN_NAMESPACE
 
@@ -152,11 +156,17 @@ struct EnvironmentHeader {
 // reaches kFilmHighThreshold (2^56) goes to the high sums scaled by kFilmHighScale (2^-96): its square would
 // overflow float past ~1.8e19, and every finite value up to FLT_MAX (2^128) must count. The host adds the high
 // sums back times 2^96 (squares 2^192) in double.
+// Replicates (sampler.h): sample i of a pixel belongs to replicate i % kSampleReplicates; their separate sums
+// give the variance of the pixel mean when the samples inside a replicate are correlated (QMC). The last
+// replicate's sums are the rest of `sum` (the host subtracts), which keeps the film at 112 bytes a pixel
+// (1024x1024 fits lavapipe's 128 MiB storage-buffer limit).
+VKMC_CONST uint kSampleReplicates = 4u;
 struct FilmPixel {
   vec4 sum;        // rgb: sum of estimate channels below the threshold, w: finite samples
   vec4 sumSq;      // rgb: sum of their squares, w: non-finite samples (counted, excluded)
   vec4 sumHigh;    // rgb: sum of channels at or above the threshold, times kFilmHighScale; w unused
   vec4 sumSqHigh;  // rgb: sum of the squares of those scaled channels; w unused
+  vec4 replicate[kSampleReplicates - 1u];  // rgb: sum of replicate r's finite samples, w: their count
 };
 VKMC_CONST float kFilmHighThreshold = 72057594037927936.0f;          // 2^56
 VKMC_CONST float kFilmHighScale = 1.2621774483536188886587657e-29f;  // 2^-96
@@ -238,7 +248,7 @@ static_assert(offsetof(Material, baseColorTexture) == 48 && offsetof(Material, e
 static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, kind) == 48 && offsetof(PunctualLight, cosInner) == 56);
 static_assert(sizeof(EnvironmentHeader) == 48 && offsetof(EnvironmentHeader, sceneSphere) == 16);
 static_assert(offsetof(EnvironmentHeader, selectionPmf) == 32);
-static_assert(sizeof(FilmPixel) == 64);
+static_assert(sizeof(FilmPixel) == 112 && offsetof(FilmPixel, replicate) == 64);
 static_assert(sizeof(Control) == 144);
 static_assert(offsetof(Control, deepArgs) == 96);
 static_assert(offsetof(Control, rayArgs) == 16 && offsetof(Control, accumulateArgs) == 48);

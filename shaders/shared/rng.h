@@ -1,25 +1,28 @@
-// Counter-based random numbers: u = hash(path key, dimension). Stateless, so every path vertex uses a fixed
-// block of dimensions and runs are reproducible whatever the dispatch order.
+// Counter-based random numbers: u = hash(path key, dimension), and the dimension layout every sampler shares
+// (sampler.h). Stateless, so every path vertex uses a fixed block of dimensions and runs are reproducible
+// whatever the dispatch order. Dimensions pair up (2k, 2k + 1) into the 2D samples of sampler.h: the pairs
+// below keep 2D integrands (pixel, BSDF direction, light point) inside one pair.
 #ifndef VKMC_RNG_H
 #define VKMC_RNG_H
 #include "glsl_cpp.h"
 VKMC_BEGIN_NAMESPACE
 
-VKMC_CONST uint kDimsCamera = 3u;         // pixel jitter (2), camera-ray roulette
+VKMC_CONST uint kDimsCamera = 4u;         // pixel jitter (pair 0), camera-ray roulette, unused
 VKMC_CONST uint kDimCameraRoulette = 2u;  // within the camera block
-VKMC_CONST uint kDimsPerBounce = 9u;      // bsdf lobe, bsdf (2), roulette, shadow roulette, light sample (3), split
-VKMC_CONST uint kDimBsdfLobe = 0u;
-VKMC_CONST uint kDimBsdf = 1u;
-VKMC_CONST uint kDimRoulette = 3u;
-VKMC_CONST uint kDimShadowRoulette = 4u;
-VKMC_CONST uint kDimLightSelect = 5u;
-VKMC_CONST uint kDimLightPoint = 6u;  // and 7
+VKMC_CONST uint kDimsPerBounce = 10u;     // five pairs: bsdf, light point, (lobe, roulette), (light select,
+                                          // shadow roulette), (split, unused)
+VKMC_CONST uint kDimBsdf = 0u;  // and 1
+VKMC_CONST uint kDimLightPoint = 2u;  // and 3
+VKMC_CONST uint kDimBsdfLobe = 4u;
+VKMC_CONST uint kDimRoulette = 5u;
+VKMC_CONST uint kDimLightSelect = 6u;
+VKMC_CONST uint kDimShadowRoulette = 7u;
 VKMC_CONST uint kDimSplit = 8u;
 // Light sample j > 0 of a split bounce takes its three dimensions from a separate stream.
 VKMC_CONST uint kDimsSplitBase = 0x40000000u;
 
 // lowbias32 (Chris Wellons): a well-mixed 32-bit permutation.
-uint hashU32(uint x) {
+VKMC_FN uint hashU32(uint x) {
   x ^= x >> 16u;
   x *= 0x21f0aaadu;
   x ^= x >> 15u;
@@ -50,8 +53,9 @@ VKMC_FN uint bounceDim(uint depth, uint offset) { return kDimsCamera + depth * k
 // Dimension `offset` (0: light select, 1-2: point, 3: shadow roulette) of light sample j at a bounce: sample 0
 // uses the bounce's block, the others a disjoint stream, so splitting leaves sample 0 unchanged.
 VKMC_FN uint lightDim(uint depth, uint sampleIndex, uint offset) {
-  if (sampleIndex == 0u) return offset < 3u ? bounceDim(depth, kDimLightSelect + offset) : bounceDim(depth, kDimShadowRoulette);
-  return kDimsSplitBase + (depth * 4096u + sampleIndex) * 4u + offset;
+  if (sampleIndex == 0u)
+    return bounceDim(depth, offset == 0u ? kDimLightSelect : offset == 3u ? kDimShadowRoulette : kDimLightPoint + offset - 1u);
+  return kDimsSplitBase + (depth * 4096u + sampleIndex) * 4u + (offset == 0u ? 2u : offset == 3u ? 3u : offset - 1u);
 }
 
 VKMC_END_NAMESPACE

@@ -55,6 +55,7 @@ Words echoedByName(const gpu::PathState& p, const gpu::ShadowRay& r, const gpu::
     e.put(t->texture), e.put(t->texCoord), e.put(t->unusedSlot0), e.put(t->unusedSlot1);
   }
   e.put4(f.sum), e.put4(f.sumSq), e.put4(f.sumHigh), e.put4(f.sumSqHigh);
+  for (const glm::vec4& r : f.replicate) e.put4(r);
   e.put(c.rayQueueCount[0]), e.put(c.rayQueueCount[1]), e.put(c.shadowQueueCount), e.put(c.splitChildren);
   e.put4u(c.rayArgs), e.put4u(c.shadowArgs), e.put4u(c.accumulateArgs);
   e.put(c.cameraRays), e.put(c.extensionRays), e.put(c.shadowRays), e.put(c.unusedTotal);
