@@ -28,6 +28,7 @@ const char* specName(uint32_t id) {
     case SPEC_HAS_ENVIRONMENT: return "has_environment";
     case SPEC_RR_MODE: return "rr_mode";  // the key rr, named as info has always shown it
     case SPEC_RECORD_DEPTH_STATS: return "record_depth_stats";
+    case SPEC_PIXEL_FILTER: return "pixel_filter";  // 0: the pixel's box (u as is), 1: a filter's table
   }
   for (const EstimatorParam& p : estimatorParams())
     if (p.specId == int(id)) return p.key;

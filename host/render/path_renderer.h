@@ -60,7 +60,7 @@ class PathRenderer {
   RenderKernels kernels_;
   std::unique_ptr<vk::GpuTimer> timer_;
   vk::Buffer paths_, hits_, queues_, shadowQueue_, deepWalks_, control_, film_, pixelEstimate_, rouletteTable_, depthStats_,
-      queueStats_;
+      queueStats_, pixelFilter_;
   std::vector<PilotPath> pilot_;
   void collectPilot(uint32_t pathCount);
   double pipelineSeconds_ = 0.0;

@@ -34,6 +34,7 @@ layout(constant_id = SPEC_WALK_STATS) const uint kWalkStats = 0u;
 layout(constant_id = SPEC_HAS_TEXTURES) const uint kHasTextures = 1u;
 layout(constant_id = SPEC_HAS_NORMAL_MAPS) const uint kHasNormalMaps = 1u;
 layout(constant_id = SPEC_HAS_ALPHA) const uint kHasAlpha = 1u;
+layout(constant_id = SPEC_PIXEL_FILTER) const uint kPixelFilterSampling = 0u;
 
 layout(push_constant, std430) uniform Push { PushConstants pc; };
 
