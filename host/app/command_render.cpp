@@ -6,6 +6,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "app/commands.h"
 #include "app/render_job.h"
@@ -21,7 +22,7 @@ namespace {
 
 struct RenderArgs {
   RenderOptions options;
-  std::string out = "out.exr", png, report, lookFrom, lookAt, background, estimatorFile;
+  std::string out = "out.exr", png, report, lookFrom, lookAt, background, estimatorFile, filter = "box", filterRadius;
   std::map<std::string, std::string> estimatorValues;  // by key, as typed after the flag
   float exposure = 0.0f;
   bool quiet = false, noSpecialize = false;
@@ -37,6 +38,15 @@ glm::vec3 parseVec3(const std::string& text, const char* flag) {
   if (std::sscanf(text.c_str(), "%f,%f,%f%c", &v.x, &v.y, &v.z, &extra) != 3 || !std::isfinite(v.x) || !std::isfinite(v.y) ||
       !std::isfinite(v.z))
     throw Error(std::string(flag) + " expects three finite numbers x,y,z, got '" + text + "'");
+  return v;
+}
+
+// --filter-radius as typed: a finite number (the range is the filter's check).
+double parseRadius(const std::string& text) {
+  char* end = nullptr;
+  double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v))
+    throw Error("--filter-radius expects a number of pixels, got '" + text + "'");
   return v;
 }
 
@@ -89,6 +99,7 @@ void fillOptions(RenderArgs& a, const CLI::App& cmd) {
   if (!a.lookFrom.empty()) ro.lookFrom = parseVec3(a.lookFrom, "--look-from");
   if (!a.lookAt.empty()) ro.lookAt = parseVec3(a.lookAt, "--look-at");
   if (!a.background.empty()) ro.background = parseVec3(a.background, "--background");
+  ro.filter = pixelFilterFromName(a.filter, a.filterRadius.empty() ? std::nullopt : std::optional<double>(parseRadius(a.filterRadius)));
   ro.progress = !a.quiet;
   ro.specialize = !a.noSpecialize;
   ro.integrator = integratorFromString(a.integrator);
@@ -147,6 +158,8 @@ Command addRenderCommand(CLI::App& app) {
       ->capture_default_str();
   render->add_option("--environment-strength", ro.environmentStrength, "scale of the environment's radiance")
       ->capture_default_str();
+  render->add_option("--filter", a->filter, pixelFilterHelp())->capture_default_str();
+  render->add_option("--filter-radius", a->filterRadius, "the filter's radius in pixels, per axis (default: the filter's)");
   render->add_option("--report", a->report, "JSON report file");
   render->add_option("--png", a->png, "sRGB PNG preview");
   render->add_option("--exposure", a->exposure, "PNG exposure in stops")->capture_default_str();

@@ -30,6 +30,7 @@ const char* specName(uint32_t id) {
     case SPEC_RECORD_DEPTH_STATS: return "record_depth_stats";
     case SPEC_SAMPLER_LOG2_SPP: return "zsobol_log2_spp";
     case SPEC_SAMPLER_DIGITS: return "zsobol_digits";
+    case SPEC_PIXEL_FILTER: return "pixel_filter";  // 0: the pixel's box (u as is), 1: a filter's table
   }
   for (const EstimatorParam& p : estimatorParams())
     if (p.specId == int(id)) return p.key;

@@ -44,6 +44,7 @@ void validateOptions(const RenderOptions& o) {
     throw Error("--environment-strength must be between 0 and 1e9");
   if (o.environmentPath.empty() && (o.environmentRotation != 0.0f || o.environmentStrength != 1.0f))
     throw Error("--environment-rotation and --environment-strength need --environment");
+  validatePixelFilter(o.filter);
   if (!(o.timeBudget >= 0.0) || o.timeBudget > 1e6) throw Error("--time-budget must be between 0 and 1e6 seconds");
 }
 
@@ -153,6 +154,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   settings.seed = options.seed;
   out.background = options.background.value_or(glm::vec3(0.0f));
   settings.background = out.background;
+  settings.filter = options.filter;
   settings.camera = makeCameraRig(camera, width, height);
   settings.progress = options.progress;
   settings.timeBudget = options.timeBudget;
@@ -274,6 +276,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                           {"glossy", r.features.glossy},
                           {"specialized", o.specialize}};
   j["background"] = {r.background.x, r.background.y, r.background.z};
+  j["filter"] = pixelFilterJson(o.filter);
   j["environment"] = r.environment;
   j["scene_info"]["punctual_lights"] = r.sceneInfo.punctualLights;
   j["warnings"] = r.warnings;
@@ -288,7 +291,7 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
   std::snprintf(buf, sizeof(buf),
                 "scene       %s (%u triangles, %u emissive)\n"
                 "device      %s\n"
-                "image       %ux%u, %u spp, camera: %s\n"
+                "image       %ux%u, %u spp, camera: %s, filter: %s\n"
                 "estimator   %s\n"
                 "time        %.3f s render (GPU %.3f s), set-up %.3f s (load %.3f, BVH %.3f, upload %.3f, pipelines %.3f)\n"
                 "rays        %llu (camera %llu, extension %llu, shadow %llu; %llu deep walks): %.2f Mrays/s\n"
@@ -296,7 +299,7 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 "variance    %.3g %.3g %.3g (image mean of the per-pixel variance of the mean)\n"
                 "non-finite  %llu samples excluded\n",
                 o.scenePath.c_str(), r.sceneInfo.triangles, r.sceneInfo.emissiveTriangles, r.device.c_str(), r.width, r.height,
-                s.samplesPerPixel, r.cameraName.c_str(), o.estimator.summary().c_str(), s.seconds, s.gpuSeconds, r.setup.total(),
+                s.samplesPerPixel, r.cameraName.c_str(), pixelFilterSummary(o.filter).c_str(), o.estimator.summary().c_str(), s.seconds, s.gpuSeconds, r.setup.total(),
                 r.setup.load, r.setup.bvh, r.setup.upload, r.setup.pipelines, (unsigned long long)s.rays(),
                 (unsigned long long)s.cameraRays, (unsigned long long)s.extensionRays, (unsigned long long)s.shadowRays,
                 (unsigned long long)s.deepWalks, s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z, var.x,

@@ -10,6 +10,7 @@
 #include "estimators/estimator_config.h"
 #include "render/film.h"
 #include "render/path_renderer.h"
+#include "render/pixel_filter.h"
 #include "scene/scene.h"
 #include "vk/context.h"
 
@@ -34,6 +35,7 @@ struct RenderOptions {
   std::string environmentPath;
   float environmentRotation = 0.0f;
   float environmentStrength = 1.0f;
+  PixelFilter filter;  // pixel reconstruction filter (--filter, --filter-radius; a study's "filter")
   bool progress = true;
   double timeBudget = 0.0;       // seconds; 0 = render spp samples
   std::string referencePath;     // EXR to compare with: mse, relmse, efficiency in the report

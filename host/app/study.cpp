@@ -75,6 +75,13 @@ Study loadStudy(const std::string& path) {
   s.height = count("height", 64, 1, 4096);
   s.repeats = count("repeats", 3, 1, 100);
   s.seed = count("seed", 1, 0, 1u << 30);
+  if (j.contains("filter")) {
+    try {
+      s.filter = pixelFilterFromJson(j["filter"]);
+    } catch (const Error& e) {
+      throw Error(std::string("study: ") + e.what());
+    }
+  }
   if (j.contains("reference")) {
     const auto& r = j["reference"];
     if (r.contains("exr") && r["exr"].is_string())
@@ -124,6 +131,7 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
     o.height = study.height;
     o.estimator = e;
     o.seed = seed;
+    o.filter = study.filter;
     o.progress = false;
     return o;
   };
@@ -137,7 +145,7 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
   } else {
     std::string key = readFile(study.scenePath) + "|" + std::to_string(study.width) + "x" + std::to_string(study.height) + "|" +
                       std::to_string(study.referenceSpp) + "|" + study.configurations[0].estimator.toJson().dump() +
-                      "|vkmc-ref-1";
+                      (study.filter.isPixelBox() ? "" : "|" + pixelFilterJson(study.filter).dump()) + "|vkmc-ref-1";
     char hex[17];
     std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(fnv1a(key)));
     fs::path cached = fs::path(cacheDir()) / "references" / (std::string(hex) + ".exr");

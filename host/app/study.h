@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "estimators/estimator_config.h"
+#include "render/pixel_filter.h"
 
 namespace vkmc {
 
@@ -37,6 +38,7 @@ struct Study {
   bool timeLadder = false;
   uint32_t repeats = 3;
   uint32_t seed = 1;
+  PixelFilter filter;  // "filter": {"name": NAME, "radius": R}, for the reference and every configuration
 };
 
 Study loadStudy(const std::string& path);

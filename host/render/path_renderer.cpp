@@ -15,6 +15,7 @@
 #include "../shaders/shared/sampling.h"
 #include "error.h"
 #include "render/path_pool.h"
+#include "render/pixel_filter_table.h"
 
 namespace vkmc {
 
@@ -89,6 +90,10 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
   depthStats_ =
       storage(settings_.recordDepthStats ? uint64_t(pool_) * gpu::kRouletteTableDepths * 8 : 16, vk::MemoryKind::HostVisible);
   queueStats_ = storage(gpu::kQueueStatsBounces * 8, exchange);
+  // The pixel filter's header and sampling table (read only by filters other than the pixel's box).
+  const std::vector<float> filter = pixelFilterBufferData(buildPixelFilterTable(settings_.filter));
+  pixelFilter_ = storage(filter.size() * sizeof(float));
+  pixelFilter_.upload(filter.data(), filter.size() * sizeof(float));
 }
 
 // The control block as the host sees it after a submit (the mirror a chunk's end copied it to, when not mapped).
@@ -123,6 +128,7 @@ void PathRenderer::bindBuffers() {
   layout_->bindStorage(BINDING_ROULETTE_TABLE, rouletteTable_);
   layout_->bindStorage(BINDING_DEPTH_STATS, depthStats_);
   layout_->bindStorage(BINDING_QUEUE_STATS, queueStats_);
+  layout_->bindStorage(BINDING_PIXEL_FILTER, pixelFilter_);
 }
 
 PathRenderer::~PathRenderer() = default;

@@ -63,7 +63,7 @@ class PathRenderer {
   RenderKernels kernels_;
   std::unique_ptr<vk::GpuTimer> timer_;
   vk::Buffer paths_, hits_, queues_, shadowQueue_, deepWalks_, control_, film_, pixelEstimate_, rouletteTable_, depthStats_,
-      queueStats_;
+      queueStats_, pixelFilter_;
   vk::Buffer controlMirror_;  // host-visible copy of control_ where control_ is device-local
   std::vector<PilotPath> pilot_;
   void collectPilot(uint32_t pathCount);

@@ -67,7 +67,8 @@ KernelPlan planKernels(const RenderSettings& s) {
                 {SPEC_HAS_TEXTURES, s.features.textures ? 1u : 0u},
                 {SPEC_HAS_NORMAL_MAPS, s.features.normalMaps ? 1u : 0u},
                 {SPEC_HAS_ALPHA, s.features.alpha ? 1u : 0u},
-                {SPEC_RECORD_DEPTH_STATS, s.recordDepthStats ? 1u : 0u}};
+                {SPEC_RECORD_DEPTH_STATS, s.recordDepthStats ? 1u : 0u},
+                {SPEC_PIXEL_FILTER, s.filter.specSampling()}};
   for (const vk::SpecConstant& c : est.specConstants()) plan.specs.push_back(c);
   const ZSobolLayout z = zsobolLayout(s);
   plan.specs.push_back({SPEC_SAMPLER_LOG2_SPP, z.log2Spp});

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "estimators/estimator_config.h"
+#include "render/pixel_filter.h"
 #include "scene/camera_rig.h"
 #include "scene/scene_features.h"
 #include "vk/kernel.h"
@@ -27,6 +28,7 @@ struct RenderSettings {
   SceneFeatures features;     // what the pipelines are specialized for (allFeatures(): general pipelines)
   uint32_t seed = 1;
   glm::vec3 background{0.0f};
+  PixelFilter filter;  // pixel reconstruction filter (box of radius 0.5: plain jitter)
   CameraRig camera{};
   bool progress = false;                // progress line on stderr
   uint32_t maxPathsPerPass = 1u << 18;  // wavefront size: paths in flight per pass

@@ -1,13 +1,17 @@
 // The camera path of sample id / pixelCount of pixel firstPixel + id % pixelCount (path id = sample *
 // pixelCount + pixel offset, so accumulate can walk one pixel's samples). Camera-ray roulette (the lecture's bad
-// example): with probability q a sample is 0 (throughput 0), survivors weigh 1/(1-q).
+// example): with probability q a sample is 0 (throughput 0), survivors weigh 1/(1-q). The pixel filter places the
+// sample in its pixel and weighs it (radiance.w, applied by accumulate, so paths and roulette never see a sign).
 #include "roulette.h"
+#include "pixel_filter.glsl"
 
 PathState cameraPath(uint id) {
   uint pixel = pc.firstPixel + id % pc.pixelCount;
   uint sampleIndex = pc.sampleIndex + id / pc.pixelCount;
   SampleStream stream = SampleStream(streamKey(kSampler, pc.seed, pixel, sampleIndex), sampleIndex, pixel);
-  vec2 jitter = vec2(sampleU(stream, 0u), sampleU(stream, 1u));
+  vec2 u = vec2(sampleU(stream, 0u), sampleU(stream, 1u));
+  FilterSample fs = samplePixelFilter(u);
+  vec2 jitter = fs.point;
   vec2 ndc = vec2(float(pixel % pc.width) + jitter.x, float(pixel / pc.width) + jitter.y) /
              vec2(float(pc.width), float(pc.height));
   vec2 screen = vec2(2.0 * ndc.x - 1.0, 1.0 - 2.0 * ndc.y);
@@ -23,7 +27,7 @@ PathState cameraPath(uint id) {
   p.origin = vec4(origin, 0.0);
   p.direction = vec4(dir, 0.0);
   p.throughput = vec4(1.0);
-  p.radiance = vec4(0.0);
+  p.radiance = vec4(0.0, 0.0, 0.0, fs.weight);
   p.pixel = pixel;
   p.rngKey = stream.key;
   p.depth = 0u;

@@ -38,6 +38,7 @@ layout(constant_id = SPEC_HAS_ALPHA) const uint kHasAlpha = 1u;
 layout(constant_id = SPEC_SAMPLER) const uint kSampler = 0u;
 layout(constant_id = SPEC_SAMPLER_LOG2_SPP) const uint kSamplerLog2Spp = 0u;
 layout(constant_id = SPEC_SAMPLER_DIGITS) const uint kSamplerDigits = 0u;
+layout(constant_id = SPEC_PIXEL_FILTER) const uint kPixelFilterSampling = 0u;
 
 layout(push_constant, std430) uniform Push { PushConstants pc; };
 

@@ -2,8 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 // Stage 5: each finished path's estimate into its pixel's batch sums. One invocation per pixel walks that
 // pixel's samples of the pass, so no atomics. Non-finite estimates are counted and left out, never written;
-// finite ones always count, however large (FilmPixel's high sums). Sample slot s is the pixel's sample
-// pc.sampleIndex + s, so its replicate (sampler.h) is known here.
+// finite ones always count, however large (FilmPixel's high sums). A filter other than the pixel's box weighs each
+// estimate by its filter weight (pixel_filter.h; negative in a filter's negative lobes). Sample slot s is the
+// pixel's sample pc.sampleIndex + s, so its replicate (sampler.h) is known here.
 #include "common.glsl"
 
 void main() {
@@ -12,7 +13,8 @@ void main() {
   uint pixel = pc.firstPixel + i;
   FilmPixel f = film[pixel];
   for (uint s = 0u; s < pc.samplesPerPass; ++s) {
-    vec3 L = paths[s * pc.pixelCount + i].radiance.rgb;
+    vec4 estimate = paths[s * pc.pixelCount + i].radiance;
+    vec3 L = kPixelFilterSampling == kPixelFilterSamplingUniform ? estimate.rgb : estimate.rgb * estimate.w;
     if (allFinite(L)) {
       bvec3 high = greaterThanEqual(abs(L), vec3(kFilmHighThreshold));
       vec3 low = mix(L, vec3(0.0), high), scaled = mix(vec3(0.0), L * kFilmHighScale, high);

@@ -28,7 +28,8 @@
 #define BINDING_PUNCTUAL_LIGHTS 21           // PunctualLight[] (punctual_light.h)
 #define BINDING_ENVIRONMENT 22               // vec4[]: environment radiance, row-major, + header (environment_map.h)
 #define BINDING_ENVIRONMENT_DISTRIBUTION 23  // float[]: its sampling distribution (environment_map.h)
-#define BINDING_COUNT 24
+#define BINDING_PIXEL_FILTER 24              // PixelFilterHeader + float[]: the pixel filter's table (pixel_filter.h)
+#define BINDING_COUNT 25
 
 // Texel formats of the scene bindings as GLSL image-format qualifiers (common.glsl declares the bindings with
 // them); the host derives each VkFormat from the same token (sceneTexelFormat in host/render/gpu_scene.cpp).
@@ -69,7 +70,7 @@
 // 21-23: the textures' spec constants.
 #define SPEC_HAS_PUNCTUAL 24     // 0: no punctual lights, their sampling code removed
 #define SPEC_HAS_ENVIRONMENT 25  // 0: no environment light (escaped rays see pc.background alone)
-// 26: the pixel filter's.
+#define SPEC_PIXEL_FILTER 26     // kPixelFilterSampling*: the pixel's box (u as is) or a filter from BINDING_PIXEL_FILTER
 #define SPEC_SAMPLER 27           // kSampler* (sampler.h)
 #define SPEC_SAMPLER_LOG2_SPP 28  // zsobol: log2 of a replicate's sample count, rounded up
 #define SPEC_SAMPLER_DIGITS 29    // zsobol: base-4 digits of the Morton index (pixel bits + log2 spp)
@@ -91,6 +92,10 @@ VKMC_CONST uint kBsdfSamplingUniform = 0u, kBsdfSamplingCosine = 1u, kBsdfSampli
 VKMC_CONST uint kLightSamplingArea = 0u, kLightSamplingSolidAngle = 1u;
 VKMC_CONST uint kPunctualPoint = 0u, kPunctualSpot = 1u, kPunctualDirectional = 2u;
 VKMC_CONST uint kRouletteNone = 0u, kRouletteFixed = 1u, kRouletteThroughput = 2u, kRouletteEfficiency = 3u;
+VKMC_CONST uint kPixelFilterBox = 0u, kPixelFilterGaussian = 1u, kPixelFilterMitchell = 2u, kPixelFilterBlackmanHarris = 3u;
+// SPEC_PIXEL_FILTER: the box of radius 1/2 places a sample at u in its pixel, weight 1, and reads nothing (the
+// default: no filter code in the kernels); every other filter is sampled from BINDING_PIXEL_FILTER's table.
+VKMC_CONST uint kPixelFilterSamplingUniform = 0u, kPixelFilterSamplingTable = 1u;
 
 // A path between stages. direction.w is the solid-angle pdf of the sampling that produced the ray
 // (0 for camera rays: their emission hits are never MIS-weighted).
@@ -98,7 +103,7 @@ struct PathState {
   vec4 origin;      // xyz: ray origin, w: unused
   vec4 direction;   // xyz: unit direction, w: pdf of the direction
   vec4 throughput;  // rgb: path throughput, w: product of the split factors that divided it (roulette undoes none)
-  vec4 radiance;    // rgb: radiance gathered so far, w: unused
+  vec4 radiance;    // rgb: radiance gathered so far, w: the sample's pixel-filter weight (accumulate applies it)
   uint pixel;
   uint rngKey;    // random-number key (a split child gets its own)
   uint depth;     // scattering events so far
@@ -150,6 +155,16 @@ struct EnvironmentHeader {
   vec4 sceneSphere;                // xyz: the scene's bounding-sphere centre, w: radius (shadow rays end past it)
   float selectionPmf;              // the environment's light-selection probability (0: not sampled)
   float unused0, unused1, unused2;
+};
+
+// The head of BINDING_PIXEL_FILTER, followed by its sampling table (pixel_filter.h, built by
+// host/render/pixel_filter_table.cpp).
+struct PixelFilterHeader {
+  uint kind;          // kPixelFilter*
+  float radius;       // pixels, per axis
+  float invIntegral;  // 1 / integral of the 1D filter over [-radius, radius]
+  uint unused0;
+  vec4 params;  // gaussian: x sigma, y exp(-radius^2 / (2 sigma^2)); mitchell: x B, y C
 };
 
 // Film of one batch: float partial sums, folded into double on the host every batch. A channel whose magnitude
@@ -248,6 +263,7 @@ static_assert(offsetof(Material, baseColorTexture) == 48 && offsetof(Material, e
 static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, kind) == 48 && offsetof(PunctualLight, cosInner) == 56);
 static_assert(sizeof(EnvironmentHeader) == 48 && offsetof(EnvironmentHeader, sceneSphere) == 16);
 static_assert(offsetof(EnvironmentHeader, selectionPmf) == 32);
+static_assert(sizeof(PixelFilterHeader) == 32 && offsetof(PixelFilterHeader, params) == 16);
 static_assert(sizeof(FilmPixel) == 112 && offsetof(FilmPixel, replicate) == 64);
 static_assert(sizeof(Control) == 144);
 static_assert(offsetof(Control, deepArgs) == 96);

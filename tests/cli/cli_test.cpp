@@ -175,9 +175,34 @@ INSTANTIATE_TEST_SUITE_P(
                                "--environment-rotation", 1},
                       BadInput{"environment_strength_negative", "", "--environment sky.hdr --environment-strength -1",
                                "--environment-strength", 1},
+                      BadInput{"filter_unknown", "", "--filter lanczos", "--filter 'lanczos' is not a filter", 1},
+                      BadInput{"filter_radius_0", "", "--filter mitchell --filter-radius 0", "--filter-radius", 1},
+                      BadInput{"filter_radius_negative", "", "--filter gaussian --filter-radius -1", "--filter-radius", 1},
+                      BadInput{"filter_radius_nan", "", "--filter gaussian --filter-radius nan", "--filter-radius", 1},
+                      BadInput{"filter_radius_huge", "", "--filter box --filter-radius 1e9", "--filter-radius", 1},
+                      BadInput{"filter_radius_not_a_number", "", "--filter-radius 2px", "--filter-radius", 1},
                       BadInput{"spp_not_a_number", "", "--spp abc", "spp", 2},
                       BadInput{"unknown_flag", "", "--no-such-flag", "no-such-flag", 2}),
     [](const auto& info) { return std::string(info.param.name); });
+
+TEST(Cli, PixelFilterIsEchoedAndTheBoxIsTheDefaultBitForBit) {
+  fs::path report = workDir() / "filter.json";
+  std::string common = "render " + cornell() + " --width 12 --height 12 --spp 2 -q --report " + report.string();
+  ASSERT_EQ(runVkmc(common + " -o " + (workDir() / "default.exr").string()).code, 0);
+  EXPECT_EQ(nlohmann::json::parse(slurp(report))["filter"]["name"], "box");
+  RunResult box = runVkmc(common + " --filter box -o " + (workDir() / "box.exr").string());
+  ASSERT_EQ(box.code, 0) << box.err;
+  EXPECT_EQ(slurp(workDir() / "box.exr"), slurp(workDir() / "default.exr")) << "--filter box is the default, bit for bit";
+  RunResult mitchell = runVkmc(common + " --filter mitchell --filter-radius 1.5 -o " + (workDir() / "mitchell.exr").string());
+  ASSERT_EQ(mitchell.code, 0) << mitchell.err;
+  auto f = nlohmann::json::parse(slurp(report))["filter"];
+  EXPECT_EQ(f["name"], "mitchell");
+  EXPECT_EQ(f["radius"], 1.5);
+  EXPECT_NE(slurp(workDir() / "mitchell.exr"), slurp(workDir() / "default.exr"));
+  RunResult help = runVkmc("render --help");
+  for (const char* name : {"--filter-radius", "gaussian", "mitchell", "blackman-harris"})
+    EXPECT_NE(help.out.find(name), std::string::npos) << name;
+}
 
 TEST(Cli, MissingOutputFolderFailsBeforeRendering) {
   RunResult r = runVkmc("render " + cornell() + " -q -o /nonexistent-folder/x.exr");

@@ -95,6 +95,22 @@ TEST(Study, RejectsBadStudyFiles) {
       Error);
 }
 
+TEST(Study, ReadsItsPixelFilter) {
+  Study s = loadStudy(
+      writeStudy("filtered", R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1], "filter": {"name": "mitchell"}})")
+          .string());
+  EXPECT_EQ(s.filter.kind, gpu::kPixelFilterMitchell);
+  EXPECT_EQ(s.filter.radius, 2.0f);
+  EXPECT_TRUE(loadStudy(writeStudy("unfiltered", R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1]})").string())
+                  .filter.isPixelBox());
+  for (const char* bad : {R"({"name": "lanczos"})", R"({"name": "gaussian", "radius": 0})", R"("mitchell")"})
+    EXPECT_THROW(loadStudy(writeStudy("badfilter", std::string(R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1], "filter": )") +
+                                                       bad + "}")
+                               .string()),
+                 Error)
+        << bad;
+}
+
 TEST(Study, TimeBudgetRendersReachMoreSamplesWithMoreTime) {
   setenv("VKMC_CACHE_DIR", (fs::temp_directory_path() / "vkmc-study-cache").c_str(), 1);
   fs::path file = writeStudy("timed", R"({"name": "timed", "scene": ")" + std::string(VKMC_SOURCE_DIR) +
