@@ -115,24 +115,27 @@ def median_row(runs):
 
 
 def measure(args, ref, work):
-    rows = []
-    for renderer in ("vkmc", "cycles"):
-        render = vkmc_render if renderer == "vkmc" else cycles_render
-        ladder = [("spp", n) for n in args.spp] + [("time", s) for s in args.seconds]
-        for mode, value in ladder:
-            runs = []
-            for r in range(args.repeats):
-                seed = 1 + r
+    # Renderers interleaved run by run (vkmc, Cycles, vkmc, ...) so that load from other processes hits both alike.
+    ladder = [("spp", n) for n in args.spp] + [("time", s) for s in args.seconds]
+    runs = {(renderer, rung): [] for renderer in ("vkmc", "cycles") for rung in ladder}
+    for mode, value in ladder:
+        for r in range(args.repeats):
+            seed = 1 + r
+            for renderer, render in (("vkmc", vkmc_render), ("cycles", cycles_render)):
                 out = os.path.join(work, f"{renderer}-{mode}{value}-seed{seed}.exr")
                 res = render(args, out, spp=value, seed=seed) if mode == "spp" else render(args, out, seconds=value, seed=seed)
-                heat = out[:-4] + ".heat.exr" if r == 0 else None
-                res["relmse"] = compare(out, ref, heat)["relmse"]
+                metrics = compare(out, ref, out[:-4] + ".heat.exr")
+                res["relmse"] = metrics["relmse"]
+                res["mean_difference"] = metrics["mean_difference"]
                 res["relmse_x_spp"] = res["relmse"] * res["spp"]
                 res["efficiency"] = 1.0 / (res["relmse"] * res["seconds"]) if res["relmse"] > 0 and res["seconds"] > 0 else 0.0
-                runs.append(res)
+                runs[(renderer, (mode, value))].append(res)
                 log(f"{renderer:6s} {mode}={value}: seed {seed}: {res['spp']} spp, {res['seconds']:.3f} s, relMSE {res['relmse']:.4g}")
-            row = median_row(runs)
-            row.update(renderer=renderer, mode=mode, target=value, runs=runs)
+    rows = []
+    for renderer in ("vkmc", "cycles"):
+        for mode, value in ladder:
+            row = median_row(runs[(renderer, (mode, value))])
+            row.update(renderer=renderer, mode=mode, target=value, runs=runs[(renderer, (mode, value))])
             rows.append(row)
     return rows
 
@@ -150,14 +153,20 @@ def print_table(args, rows, ref_path, ref_report):
               f"its own expected relMSE {ref_report.get('mean_relvariance', float('nan')):.3g} (included in every relMSE below)")
     else:
         print(f"reference {ref_path}")
-    print("seconds: sample loop only (vkmc report 'seconds'; Cycles render_time without sync, from its EXR header)")
+    print("seconds: sample loop only (vkmc report 'seconds'; Cycles render_time without sync, from its EXR header); "
+          "relMSE spread: (max - min)/median over the repeats; mean - ref mean: image mean minus the reference's, "
+          "over pixels and channels, relative")
     print()
-    print("| renderer | mode | spp | seconds | relMSE | relMSE x spp | efficiency 1/(relMSE x s) | spread |")
-    print("|---|---|---:|---:|---:|---:|---:|---:|")
+    ref_mean = statistics.mean(ref_report["mean"]) if ref_report else float("nan")
+    ref_noise = ref_report.get("mean_relvariance", 0.0) if ref_report else 0.0
+    print("| renderer | mode | spp | seconds | relMSE | relMSE x spp | (relMSE - ref's) x spp | efficiency 1/(relMSE x s) "
+          "| relMSE spread | mean - ref mean |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")
     for r in rows:
         target = f"{r['target']} spp" if r["mode"] == "spp" else f"{r['target']} s"
         print(f"| {r['renderer']} | {target} | {r['spp']:.0f} | {r['seconds']:.3f} | {r['relmse']:.4g} | "
-              f"{r['relmse_x_spp']:.4g} | {r['efficiency']:.4g} | {spread(r['runs'], 'relmse'):.0%} |")
+              f"{r['relmse_x_spp']:.4g} | {(r['relmse'] - ref_noise) * r['spp']:.4g} | {r['efficiency']:.4g} | {spread(r['runs'], 'relmse'):.0%} | "
+              f"{r['mean_difference'] / ref_mean:+.2%} |")
     print()
     by = {(r["renderer"], r["mode"], r["target"]): r for r in rows}
     for n in args.spp:
