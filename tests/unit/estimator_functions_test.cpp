@@ -85,6 +85,13 @@ TEST(EstimatorFunctions, RouletteKeepsTheExpectedValue) {
     }
     EXPECT_NEAR(mean / n, beta, 2e-4 * beta) << "throughput roulette, beta " << beta;
     EXPECT_LE(throughputRoulette(beta, 1.0f, 0.5f).survival, kRouletteMaxSurvival);
+    double sqrtMean = 0;
+    for (int i = 0; i < n; ++i) {
+      RouletteStep s = sqrtThroughputRoulette(beta, (float(i) + 0.5f) / float(n));
+      if (s.survives) sqrtMean += beta / s.survival;
+    }
+    EXPECT_NEAR(sqrtMean / n, beta, 2e-4 * beta) << "sqrt throughput roulette, beta " << beta;
+    EXPECT_NEAR(sqrtThroughputRoulette(beta, 0.5f).survival, std::min(std::sqrt(beta), kRouletteMaxSurvival), 1e-6f);
   }
   EXPECT_TRUE(rouletteApplies(2u, 3u));
   EXPECT_FALSE(rouletteApplies(1u, 3u));
