@@ -181,6 +181,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"filter_radius_nan", "", "--filter gaussian --filter-radius nan", "--filter-radius", 1},
                       BadInput{"filter_radius_huge", "", "--filter box --filter-radius 1e9", "--filter-radius", 1},
                       BadInput{"filter_radius_not_a_number", "", "--filter-radius 2px", "--filter-radius", 1},
+                      BadInput{"sampler_unknown", "", "--sampler halton", "is not one of independent|sobol|zsobol", 1},
+                      BadInput{"zsobol_index_too_long", "", "--sampler zsobol --width 1024 --height 1024 --spp 20000",
+                               "Morton index of 33 bits", 1},
                       BadInput{"spp_not_a_number", "", "--spp abc", "spp", 2},
                       BadInput{"unknown_flag", "", "--no-such-flag", "no-such-flag", 2}),
     [](const auto& info) { return std::string(info.param.name); });
