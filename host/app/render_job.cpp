@@ -251,6 +251,14 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   relVar /= 3.0 * std::max<size_t>(1, r.film.pixels());
   j["mean_relvariance"] = relVar;
   j["estimated_efficiency"] = relVar > 0.0 && s.seconds > 0.0 ? 1.0 / (relVar * s.seconds) : 0.0;
+  // The same efficiency against each cost: wall time, GPU time (kernel timestamps), rays per pixel (a cost that
+  // does not depend on the machine's load); and where the variance came from (sampler.h replicates or samples).
+  const double raysPerPixel = double(s.rays()) / double(std::max<size_t>(1, r.film.pixels()));
+  auto inverse = [&](double cost) { return relVar > 0.0 && cost > 0.0 ? 1.0 / (relVar * cost) : 0.0; };
+  j["estimated_efficiency_by_cost"] = {{"wall_seconds", inverse(s.seconds)},
+                                       {"gpu_seconds", inverse(s.gpuSeconds)},
+                                       {"rays_per_pixel", inverse(raysPerPixel)}};
+  j["variance_from"] = r.film.replicateVariance ? "replicates" : "samples";
   if (r.error) {
     j["reference"] = o.referencePath;
     j["mse"] = r.error->mse;

@@ -48,6 +48,13 @@ TEST(Cli, RenderWritesExrPngAndAConsistentReport) {
   EXPECT_LE(double(j["gpu_seconds"]), seconds * 1.05);
   EXPECT_TRUE(j["estimator"]["unbiased"]);
   EXPECT_GT(double(j["mean"][0]), 0.0);
+  // One efficiency per cost: 1 / (mean_relvariance x cost).
+  double relVar = j["mean_relvariance"];
+  const auto& byCost = j["estimated_efficiency_by_cost"];
+  EXPECT_DOUBLE_EQ(double(byCost["wall_seconds"]), double(j["estimated_efficiency"]));
+  EXPECT_NEAR(double(byCost["gpu_seconds"]), 1.0 / (relVar * double(j["gpu_seconds"])), 1e-9 * double(byCost["gpu_seconds"]));
+  EXPECT_NEAR(double(byCost["rays_per_pixel"]), 1.0 / (relVar * rays / (40 * 30)), 1e-9 * double(byCost["rays_per_pixel"]));
+  EXPECT_EQ(j["variance_from"], "samples");  // the independent sampler (the default)
   // The EXR's image mean is the report's mean.
   double sum = 0;
   for (float v : img.channels["R"]) sum += v;
