@@ -91,17 +91,18 @@ VKMC_FN uint permutationDigit(uint p, uint digit) {
 
 VKMC_FN uint zsobolIndex(uint mortonIndex, uint pair, uint seed, uint digits, bool oddLog2) {
   uint result = 0u;
+  uint pairHash = hashU32(pair * 0x55555555u + seed);
   int lastDigit = oddLog2 ? 1 : 0;
   for (int i = int(digits) - 1; i >= lastDigit; --i) {
     uint shift = uint(2 * i - (oddLog2 ? 1 : 0));
     uint digit = (mortonIndex >> shift) & 3u;
     uint higher = shift + 2u >= 32u ? 0u : mortonIndex >> (shift + 2u);
-    uint p = (hashU32(higher ^ hashU32(pair * 0x55555555u + seed)) >> 24u) % 24u;
+    uint p = (hashU32(higher ^ pairHash) >> 24u) % 24u;
     result |= permutationDigit(p, digit) << shift;
   }
   if (oddLog2) {
     uint digit = mortonIndex & 1u;
-    result |= digit ^ (hashU32((mortonIndex >> 1u) ^ hashU32(pair * 0x55555555u + seed)) & 1u);
+    result |= digit ^ (hashU32((mortonIndex >> 1u) ^ pairHash) & 1u);
   }
   return result;
 }
