@@ -1,8 +1,13 @@
 // `vkmc render SCENE`: options -> RenderOptions -> render -> EXR, PNG and report, all or none.
 #include <CLI/CLI.hpp>
 
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -12,6 +17,8 @@
 #include "app/render_job.h"
 #include "error.h"
 #include "estimators/estimator_params.h"
+#include "app/render_options_json.h"
+#include "io/checkpoint.h"
 #include "io/exr.h"
 #include "io/output_files.h"
 #include "io/png.h"
@@ -30,7 +37,33 @@ struct RenderArgs {
   long long seed = 1;
   int width = -1, height = -1, cameraIndex = -1;
   std::string integrator = "wavefront";
+  std::string checkpoint, resume;
+  double checkpointEvery = 120.0;
 };
+
+// SIGINT and SIGTERM during a checkpointed render: the first asks the render to stop after the pass in flight
+// (the handler only stores the signal), a second one kills as usual.
+std::atomic<int> stopSignal{0};
+static_assert(std::atomic<int>::is_always_lock_free, "stored from a signal handler");
+extern "C" void requestStop(int sig) {
+  stopSignal.store(sig);
+  ::signal(sig, SIG_DFL);
+}
+
+void catchStopSignals() {
+  for (int sig : {SIGINT, SIGTERM}) {
+    struct sigaction now {}, before {};
+    sigaction(sig, nullptr, &before);
+    if (before.sa_handler == SIG_IGN) continue;  // nohup and friends: stay ignored
+    now.sa_handler = requestStop;
+    sigemptyset(&now.sa_mask);
+    sigaction(sig, &now, nullptr);
+  }
+}
+
+std::string absolutePath(const std::string& path) {
+  return path.empty() ? path : std::filesystem::absolute(path).lexically_normal().string();
+}
 
 glm::vec3 parseVec3(const std::string& text, const char* flag) {
   glm::vec3 v;
@@ -107,26 +140,81 @@ void fillOptions(RenderArgs& a, const CLI::App& cmd) {
     throw Error("--exposure must be a finite number of stops in [-100, 100]");
 }
 
-int run(RenderArgs& a, const CLI::App& cmd) {
-  fillOptions(a, cmd);
-  const RenderOptions& ro = a.options;
-  // Output folders are checked before rendering, so a bad path fails in a second, not after the render.
-  checkOutputPaths({{"--output", a.out}, {"--png", a.png}, {"--report", a.report}},
-                   {ro.scenePath, ro.referencePath, a.estimatorFile});
+// --resume without a scene: the render's options and outputs come from the checkpoint; only the outputs and the
+// checkpoint's own flags may be given.
+void optionsFromCheckpoint(RenderArgs& a, const CLI::App& cmd, const nlohmann::json& config) {
+  static const std::vector<std::string> allowed = {"--resume", "--output", "--png", "--report", "--exposure", "--quiet",
+                                                   "--checkpoint", "--checkpoint-every"};
+  for (const CLI::Option* opt : cmd.get_options()) {
+    if (opt->count() == 0 || opt->get_positional()) continue;
+    if (std::find(allowed.begin(), allowed.end(), opt->get_name()) == allowed.end())
+      throw Error(opt->get_name() + " cannot change a resumed render: --resume alone takes the render's options from the " +
+                  "checkpoint (give the scene and the same options to have them checked instead)");
+  }
+  a.options = renderOptionsFromJson(config.at("options"));
+  a.options.progress = !a.quiet;
+  const nlohmann::json& outputs = config.at("outputs");
+  if (!cmd.count("--output")) a.out = outputs.value("output", a.out);
+  if (!cmd.count("--png")) a.png = outputs.value("png", a.png);
+  if (!cmd.count("--report")) a.report = outputs.value("report", a.report);
+  if (!cmd.count("--exposure")) a.exposure = outputs.value("exposure", a.exposure);
+}
 
+int run(RenderArgs& a, const CLI::App& cmd) {
+  std::optional<Checkpoint> resume;
+  if (!a.resume.empty()) resume = readCheckpoint(a.resume);
+  if (a.options.scenePath.empty()) {
+    if (!resume) throw Error("render needs a scene (or --resume CHECKPOINT)");
+    optionsFromCheckpoint(a, cmd, resume->config);
+  } else {
+    fillOptions(a, cmd);
+  }
+  const RenderOptions& ro = a.options;
+  // A resumed render goes on writing checkpoints where it was resumed from, unless told otherwise.
+  const std::string checkpoint = !a.checkpoint.empty() ? a.checkpoint : a.resume;
+  if (!(a.checkpointEvery > 0.0 && a.checkpointEvery <= 1e6))
+    throw Error("--checkpoint-every must be a number of seconds in (0, 1e6]");
+  // Output folders are checked before rendering, so a bad path fails in a second, not after the render.
+  checkOutputPaths({{"--output", a.out}, {"--png", a.png}, {"--report", a.report}, {"--checkpoint", checkpoint}},
+                   {ro.scenePath, ro.referencePath, a.estimatorFile, ro.environmentPath});
+
+  RunControl control;
+  control.checkpointPath = checkpoint;
+  control.checkpointEvery = a.checkpointEvery;
+  control.outputs = {{"output", absolutePath(a.out)}, {"png", absolutePath(a.png)}, {"report", absolutePath(a.report)},
+                     {"exposure", a.exposure}};
+  if (resume) control.resumeConfig = &resume->config, control.resumeState = &resume->state;
+  if (!checkpoint.empty()) {
+    control.stop = &stopSignal;
+    catchStopSignals();
+  }
   vk::Context ctx;
-  RenderOutcome result = runRender(ctx, ro);
+  RenderOutcome result = runRender(ctx, ro, control);
   nlohmann::json j = makeReport(ro, result);
   j["output"] = a.out;
-  // All outputs or none: the EXR is not replaced when the PNG or the report cannot be written.
+  if (!checkpoint.empty()) j["checkpoint"] = checkpoint;
+  // All outputs or none: the EXR is not replaced when the PNG or the report cannot be written. An interrupted
+  // render writes the samples it finished and, with them, the checkpoint to resume it from.
   OutputSet outputs;
   outputs.add(a.out, encodeFilmExr(result.film));
   if (!a.png.empty()) outputs.add(a.png, encodeFilmPng(result.film, a.exposure));
   if (!a.report.empty()) outputs.add(a.report, j.dump(2) + "\n");
+  if (result.interrupted) outputs.add(checkpoint, encodeRenderCheckpoint(result));
   outputs.commit();
   if (!a.quiet) std::cout << summaryText(ro, result) << "output      " << a.out << "\n";
   for (const auto& w : result.warnings)
     if (a.quiet) std::fprintf(stderr, "vkmc: warning: %s\n", w.c_str());
+  if (result.interrupted) {
+    const int sig = stopSignal.load();
+    std::fprintf(stderr, "vkmc: interrupted by %s after %u of %u spp: wrote '%s' and the checkpoint '%s' (resume with: vkmc render --resume %s)\n",
+                 sig == SIGTERM ? "SIGTERM" : "SIGINT", result.stats.samplesPerPixel, ro.spp, a.out.c_str(), checkpoint.c_str(),
+                 checkpoint.c_str());
+    return 128 + sig;
+  }
+  // A finished render needs its checkpoint no more (its outputs hold everything), unless it is not a file.
+  std::error_code ec;
+  if (!checkpoint.empty() && std::filesystem::is_regular_file(std::filesystem::symlink_status(checkpoint, ec)))
+    std::filesystem::remove(checkpoint, ec);
   return 0;
 }
 
@@ -136,7 +224,7 @@ Command addRenderCommand(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
   RenderOptions& ro = a->options;
   CLI::App* render = app.add_subcommand("render", "render a glTF scene to OpenEXR and print the report");
-  render->add_option("scene", ro.scenePath, "scene (.gltf or .glb)")->required();
+  render->add_option("scene", ro.scenePath, "scene (.gltf or .glb); optional with --resume");
   render->add_option("-o,--output", a->out, "OpenEXR output (mean, variance.*, samples)")->capture_default_str();
   render->add_option("--spp", a->spp, "samples per pixel")->capture_default_str();
   render->add_option("--width", a->width, "image width (default 256)");
@@ -169,6 +257,13 @@ Command addRenderCommand(CLI::App& app) {
   render->add_flag("--no-specialize", a->noSpecialize, "build general pipelines (every scene feature on), for comparison");
   render->add_option("--workgroup", ro.workgroupSize, "invocations per workgroup of every kernel: 32, 64, 128, 256")
       ->capture_default_str();
+  render->add_option("--checkpoint", a->checkpoint,
+                     "write the render's state here every --checkpoint-every seconds and on SIGINT/SIGTERM (with the "
+                     "outputs of the samples done); removed when the render finishes");
+  render->add_option("--checkpoint-every", a->checkpointEvery, "seconds of rendering between checkpoints")->capture_default_str();
+  render->add_option("--resume", a->resume,
+                     "continue the render a checkpoint holds, to its original target (alone, or with the same scene and "
+                     "options, which are then checked)");
   render->add_option("--integrator", a->integrator, "wavefront (stage by stage) or megakernel (one dispatch per pass)")
       ->check(CLI::IsMember({"wavefront", "megakernel"}))
       ->capture_default_str();

@@ -1,20 +1,27 @@
 // Render job: the stages in order, each timed; the report and the human summary.
 #include "app/render_job.h"
 
+#include <bit>
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
 #include "../shaders/shared/geometry.h"
 #include "../shaders/shared/sampling.h"
+#include "app/render_options_json.h"
 #include "app/roulette_pilot.h"
 #include "bvh/bvh.h"
 #include "error.h"
+#include "io/checkpoint.h"
 #include "io/environment_image.h"
+#include "io/output_files.h"
 #include "render/gpu_scene.h"
 #include "scene/camera_rig.h"
 #include "scene/gltf_loader.h"
+#include "scene/content_hash.h"
+#include "scene/scene_fingerprint.h"
 
 namespace vkmc {
 namespace {
@@ -80,7 +87,47 @@ void addEnvironmentLight(const RenderOptions& options, Scene& scene, RenderOutco
 }
 
 // The render itself, on options already validated by whichever runRender was called.
-RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene scene) {
+// Efficiency roulette's scales as bit patterns (+inf means no roulette at a depth; JSON has no inf).
+nlohmann::json rouletteJson(const RouletteTable& t) {
+  nlohmann::json bits = nlohmann::json::array();
+  for (float k : t.scale) bits.push_back(std::bit_cast<uint32_t>(k));
+  return bits;
+}
+
+RouletteTable rouletteFromJson(const nlohmann::json& j) {
+  RouletteTable t;
+  if (!j.is_array() || j.size() != t.scale.size()) throw Error("checkpoint: malformed efficiency roulette table");
+  for (size_t d = 0; d < t.scale.size(); ++d) t.scale[d] = std::bit_cast<float>(j[d].get<uint32_t>());
+  return t;
+}
+
+// The checkpoint's configuration must be this render's: the same options (but the reference) and the same scene.
+void checkResumable(const nlohmann::json& config, const nlohmann::json& options, const std::string& fingerprint) {
+  std::string differ = differingRenderOptions(config.at("options"), options);
+  if (!differ.empty()) throw Error("the checkpoint belongs to another render: it differs in " + differ);
+  if (config.at("scene_fingerprint") != fingerprint)
+    throw Error("the checkpoint belongs to another scene: '" + options.at("scene").get<std::string>() +
+                "' (its geometry, materials, lights or environment) changed since it was written");
+}
+
+// Writes a checkpoint atomically with SIGINT and SIGTERM held back, so a signal during the write is handled after
+// it (as a stop request) instead of killing the process halfway. Throws Error when the file cannot be written.
+void writeCheckpoint(const std::string& path, const std::string& bytes) {
+  sigset_t set, old;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  sigprocmask(SIG_BLOCK, &set, &old);
+  try {
+    writeFileAtomically(path, bytes);
+  } catch (...) {
+    sigprocmask(SIG_SETMASK, &old, nullptr);
+    throw;
+  }
+  sigprocmask(SIG_SETMASK, &old, nullptr);
+}
+
+RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene scene, const RunControl& run) {
   std::optional<ExrImage> reference;
   if (!options.referencePath.empty()) reference = readExr(options.referencePath);
   RenderOutcome out;
@@ -162,18 +209,63 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   settings.integrator = options.integrator;
   std::optional<RouletteTable> roulette;
   double pilotSeconds = 0.0;
-  if (options.estimator.rr == RouletteMode::Efficiency) {
+  // What a checkpoint of this render records; a resumed render's must match it, and its learned state (the
+  // efficiency pilot's scales) is used instead of a new pilot.
+  const nlohmann::json optionsJson = renderOptionsJson(options);
+  ContentHash fingerprint;
+  fingerprint.addValue(sceneFingerprint(scene));
+  out.checkpointConfig = {{"options", optionsJson}, {"scene_fingerprint", fingerprint.hex()}, {"device", out.device},
+                          {"outputs", run.outputs}};
+  RenderState state;
+  if (run.resumeConfig) {
+    checkResumable(*run.resumeConfig, optionsJson, fingerprint.hex());
+    state = std::move(*run.resumeState);
+    if (state.film.width != width || state.film.height != height)
+      throw Error("the checkpoint's film is " + std::to_string(state.film.width) + "x" + std::to_string(state.film.height) +
+                  ", the render is " + std::to_string(width) + "x" + std::to_string(height));
+    out.resumed = true;
+    if (run.resumeConfig->at("device") != out.device)
+      out.warnings.push_back("resumed on '" + out.device + "', the checkpoint was written on '" +
+                             run.resumeConfig->at("device").get<std::string>() +
+                             "': the image stays unbiased, but is not bit-identical to an uninterrupted render");
+    if (run.resumeConfig->contains("roulette")) {
+      roulette = rouletteFromJson(run.resumeConfig->at("roulette"));
+      pilotSeconds = run.resumeConfig->at("pilot_seconds");
+    }
+  }
+  if (options.estimator.rr == RouletteMode::Efficiency && !roulette) {
     // Its time is part of the estimator's cost and counts as render time.
     RoulettePilot pilot = runRoulettePilot(ctx, gpuScene, settings);
     out.setup.pipelines += pilot.pipelineSeconds;
     roulette = pilot.table;
     pilotSeconds = pilot.seconds;
   }
-  if (options.timeBudget > 0.0) settings.timeBudget = std::max(1e-3, options.timeBudget - pilotSeconds);
+  if (roulette) out.checkpointConfig["roulette"] = rouletteJson(*roulette), out.checkpointConfig["pilot_seconds"] = pilotSeconds;
+  if (options.timeBudget > 0.0)
+    settings.timeBudget = std::max(1e-3, options.timeBudget - pilotSeconds - state.stats.seconds);
   PathRenderer renderer(ctx, gpuScene, settings);
   if (roulette) renderer.setRouletteScales(roulette->scale);
   out.setup.pipelines += renderer.pipelineSeconds();
-  out.film = renderer.render(out.stats);
+  RenderControl control;
+  control.stop = run.stop;
+  if (!run.checkpointPath.empty()) {
+    control.checkpointEvery = run.checkpointEvery;
+    // A periodic checkpoint that cannot be written (a full disk) leaves the last one intact and the render going.
+    control.checkpoint = [&](const RenderState& now) {
+      try {
+        writeCheckpoint(run.checkpointPath, encodeCheckpoint({out.checkpointConfig, now}));
+        ++out.checkpointsWritten;
+      } catch (const Error& e) {
+        std::fprintf(stderr, "vkmc: warning: %s (the render goes on; the last checkpoint is kept)\n", e.what());
+        out.warnings.push_back(std::string(e.what()) + " (the render went on)");
+      }
+    };
+  }
+  renderer.render(state, control);
+  out.interrupted = state.interrupted;
+  out.film = state.image();
+  out.stats = state.stats;
+  out.finalState = std::move(state);
   out.stats.seconds += pilotSeconds;
   out.pilotSeconds = pilotSeconds;
   out.roulette = roulette;
@@ -182,19 +274,23 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
 }
 }  // namespace
 
-RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options) {
+RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, const RunControl& run) {
   validateOptions(options);
   auto t = Clock::now();
   Scene scene = loadGltf(options.scenePath, deviceLoadLimits(ctx));
   double load = since(t);
-  RenderOutcome out = renderScene(ctx, options, std::move(scene));
+  RenderOutcome out = renderScene(ctx, options, std::move(scene), run);
   out.setup.load = load;
   return out;
 }
 
-RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene scene) {
+RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene scene, const RunControl& run) {
   validateOptions(options);
-  return renderScene(ctx, options, std::move(scene));
+  return renderScene(ctx, options, std::move(scene), run);
+}
+
+std::string encodeRenderCheckpoint(const RenderOutcome& outcome) {
+  return encodeCheckpoint({outcome.checkpointConfig, outcome.finalState});
 }
 
 nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
@@ -240,6 +336,10 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                                 {"formula", "survival = min(scale[depth] * max(throughput), 0.999)"}};
   }
   if (o.timeBudget > 0.0) j["time_budget"] = o.timeBudget;
+  // Checkpoints: a resumed render's counters and seconds include the runs before it (pass time only).
+  j["resumed"] = r.resumed;
+  j["interrupted"] = r.interrupted;
+  j["checkpoints_written"] = r.checkpointsWritten;
   // Without a reference: relative variance (per-pixel variance of the mean over mean^2 + epsilon, averaged
   // over pixels and channels) is the expected relMSE of an unbiased render, so it gives an efficiency too.
   double relVar = 0.0;

@@ -11,6 +11,7 @@
 #include "render/film.h"
 #include "render/path_renderer.h"
 #include "render/pixel_filter.h"
+#include "render/render_state.h"
 #include "scene/scene.h"
 #include "vk/context.h"
 
@@ -45,6 +46,16 @@ struct RenderOptions {
   Integrator integrator = Integrator::Wavefront;
 };
 
+// How a render runs, besides what it renders: checkpoints, a stop flag, and the checkpoint it continues.
+struct RunControl {
+  std::string checkpointPath;           // periodic checkpoints go here ("": none)
+  double checkpointEvery = 120.0;       // seconds of rendering between checkpoints
+  nlohmann::json outputs;               // the outputs' paths, recorded in checkpoints for --resume
+  const std::atomic<int>* stop = nullptr;  // raised (a signal number): stop after the pass in flight
+  const nlohmann::json* resumeConfig = nullptr;  // a checkpoint's configuration, with...
+  RenderState* resumeState = nullptr;            // ...its state, moved into the render
+};
+
 struct SetupTimes {
   double load = 0.0, bvh = 0.0, upload = 0.0, pipelines = 0.0;
   double total() const { return load + bvh + upload + pipelines; }
@@ -67,6 +78,13 @@ struct RenderOutcome {
   std::optional<RouletteTable> roulette;
   glm::vec3 background{0.0f};  // what escaped rays saw besides the environment light
   std::string environment;     // the environment light: its file, "constant", or empty (none)
+  // Checkpoints: the configuration they record, the state at the end (unfolded batch included: what a checkpoint
+  // of this render holds), whether a stop request ended the render early, and what happened to the periodic ones.
+  nlohmann::json checkpointConfig;
+  RenderState finalState;
+  bool interrupted = false;
+  uint32_t checkpointsWritten = 0;
+  bool resumed = false;
 };
 
 // Throws vkmc::Error on bad options or input, before anything is written. Both runRender call it first, so
@@ -75,9 +93,11 @@ void validateOptions(const RenderOptions& options);
 // Whether a render lights the scene with the default constant environment: no --environment or --background, no
 // punctual lights, and no emitters or only textured ones (emissive maps are decorations, not lights).
 bool getsDefaultLight(const RenderOptions& options, const Scene& scene);
-RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options);
+RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, const RunControl& run = {});
 // The same with a scene already in memory (options.scenePath only names it).
-RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene scene);
+RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene scene, const RunControl& run = {});
+// The checkpoint of a render's end state (an interrupted render's, to resume it).
+std::string encodeRenderCheckpoint(const RenderOutcome& outcome);
 nlohmann::json makeReport(const RenderOptions& options, const RenderOutcome& outcome);
 std::string summaryText(const RenderOptions& options, const RenderOutcome& outcome);
 

@@ -285,32 +285,97 @@ void PathRenderer::foldFilm(Film& film) {
     film_.download(batch.data(), pixels * sizeof(gpu::FilmPixel));
     film.addBatch(batch.data());
   }
-  // The running pixel estimate that shadow-ray roulette compares tiny contributions against.
+  uploadPixelEstimate(film);
+  film_.zero();
+}
+
+// The running pixel estimate that shadow-ray roulette compares tiny contributions against: the folded film's.
+void PathRenderer::uploadPixelEstimate(const Film& film) {
+  const size_t pixels = film.pixels();
   std::vector<float> estimate(pixels);
   for (size_t p = 0; p < pixels; ++p)
     estimate[p] = static_cast<float>(gpu::luminance(glm::vec3(film.mean(p, 0), film.mean(p, 1), film.mean(p, 2))));
   pixelEstimate_.upload(estimate.data(), pixels * sizeof(float));
-  film_.zero();
 }
 
 Film PathRenderer::render(RenderStats& stats) {
-  Film film(settings_.width, settings_.height);
-  film.replicateVariance = settings_.estimator.sampler != Sampler::Independent;
+  RenderState state;
+  state.stats = stats;
+  render(state, RenderControl{});
+  stats = state.stats;
+  return std::move(state.film);
+}
+
+void PathRenderer::snapshot(RenderState& state, uint32_t inBatch, double seconds, const std::vector<uint64_t>& pathsBefore,
+                            const std::vector<uint64_t>& shadowBefore) {
+  RenderStats& stats = state.stats;
+  const size_t pixels = state.film.pixels();
+  state.batchSamples = inBatch;
+  state.batch.clear();
+  if (inBatch > 0) {
+    state.batch.resize(pixels);
+    film_.download(state.batch.data(), pixels * sizeof(gpu::FilmPixel));
+  }
+  stats.seconds = seconds;
+  stats.samplesPerPixel = state.nextSample;
+  stats.gpuSeconds = 0.0;
+  for (const auto& [name, secs] : stats.stageSeconds) stats.gpuSeconds += secs;
+  auto stage = [&](const char* name) {
+    auto it = stats.stageSeconds.find(name);
+    return it == stats.stageSeconds.end() ? 0.0 : it->second;
+  };
+  stats.primarySeconds = stage("intersect_primary");
+  stats.incoherentSeconds = stage("intersect");
+  // Queue occupancy: this run's device counters over what the state held when it started.
+  std::vector<glm::uvec2> queueStats(gpu::kQueueStatsBounces);
+  queueStats_.download(queueStats.data(), gpu::kQueueStatsBounces * sizeof(glm::uvec2));
+  stats.pathsByBounce = pathsBefore;
+  stats.shadowRaysByBounce = shadowBefore;
+  stats.pathsByBounce.resize(gpu::kQueueStatsBounces, 0);
+  stats.shadowRaysByBounce.resize(gpu::kQueueStatsBounces, 0);
+  for (uint32_t b = 0; b < gpu::kQueueStatsBounces; ++b) {
+    stats.pathsByBounce[b] += queueStats[b].x;
+    stats.shadowRaysByBounce[b] += queueStats[b].y;
+  }
+}
+
+void PathRenderer::render(RenderState& state, const RenderControl& control) {
   const uint32_t pixels = settings_.width * settings_.height;
+  if (state.film.pixels() == 0) {
+    state.film = Film(settings_.width, settings_.height);
+  } else if (state.film.width != settings_.width || state.film.height != settings_.height) {
+    throw Error("internal error: resumed film size differs from the render's");
+  }
+  state.film.replicateVariance = settings_.estimator.sampler != Sampler::Independent;
+  state.interrupted = false;
+  RenderStats& stats = state.stats;
+  const std::vector<uint64_t> pathsBefore = stats.pathsByBounce, shadowBefore = stats.shadowRaysByBounce;
+  const double secondsBefore = stats.seconds;
   bool showProgress = settings_.progress && isatty(STDERR_FILENO);
   queueStats_.zero();
+  // A resumed render continues the device's float batch where it stopped, with the estimate of the folded film.
+  uint32_t inBatch = state.batchSamples;
+  if (inBatch > 0) film_.upload(state.batch.data(), size_t(pixels) * sizeof(gpu::FilmPixel));
+  if (state.film.totalSamples() + state.film.totalNonfinite() > 0) uploadPixelEstimate(state.film);
+  state.batch.clear();
+  state.batchSamples = 0;
   auto start = Clock::now();
-  double lastProgress = 0.0;
+  double lastProgress = 0.0, lastCheckpoint = 0.0;
   // Small images take several samples per pixel per pass, so that a pass fills the wavefront.
   const uint32_t maxPerPass = std::clamp(capacity_ / std::max(pixels, 1u), 1u, kSamplesPerBatch);
   // A time budget is checked between passes: the first pass takes one sample (a slow scene must not overrun
   // by much), each later one as many as fit in a quarter of the budget at the last pass's rate per sample,
   // which includes the per-pass overhead, so pass sizes grow geometrically on overhead-bound small images.
   uint32_t perPass = settings_.timeBudget > 0.0 ? 1u : maxPerPass;
-  uint32_t inBatch = 0;
   const double budget = settings_.timeBudget;
-  for (uint32_t s = 0; s < settings_.spp;) {
-    if (budget > 0.0 && s > 0 && since(start) >= budget) break;
+  const uint32_t firstSample = state.nextSample;
+  auto stopRequested = [&] { return control.stop && control.stop->load() != 0; };
+  for (uint32_t s = state.nextSample; s < settings_.spp;) {
+    if (budget > 0.0 && s > firstSample && since(start) >= budget) break;
+    if (stopRequested()) {
+      state.interrupted = true;
+      break;
+    }
     uint32_t samples = std::min(perPass, settings_.spp - s);
     double passStart = since(start);
     for (uint32_t first = 0; first < pixels; first += capacity_) {
@@ -319,6 +384,7 @@ Film PathRenderer::render(RenderStats& stats) {
       ++stats.passes;
     }
     s += samples;
+    state.nextSample = s;
     inBatch += samples;
     if (settings_.timeBudget > 0.0) {
       double perSample = std::max(since(start) - passStart, 1e-6) / samples;
@@ -326,37 +392,25 @@ Film PathRenderer::render(RenderStats& stats) {
     }
     bool last = s == settings_.spp || (budget > 0.0 && since(start) >= budget);
     if (inBatch + maxPerPass > kSamplesPerBatch || last) {
-      foldFilm(film);
+      foldFilm(state.film);
       inBatch = 0;
     }
     double elapsed = since(start);
+    if (control.checkpoint && control.checkpointEvery > 0.0 && elapsed - lastCheckpoint >= control.checkpointEvery && !last) {
+      snapshot(state, inBatch, secondsBefore + elapsed, pathsBefore, shadowBefore);
+      control.checkpoint(state);
+      lastCheckpoint = since(start);
+    }
     if (showProgress && (elapsed - lastProgress > 0.25 || last)) {
       lastProgress = elapsed;
-      double eta = budget > 0.0 ? std::max(0.0, budget - elapsed) : elapsed / s * (settings_.spp - s);
+      double eta = budget > 0.0 ? std::max(0.0, budget - elapsed) : elapsed / (s - firstSample) * (settings_.spp - s);
       std::fprintf(stderr, "\rvkmc: %u/%u spp  %.2f Mrays/s  ETA %.1f s   ", s, settings_.spp,
-                   stats.rays() / std::max(elapsed, 1e-9) * 1e-6, eta);
+                   stats.rays() / std::max(secondsBefore + elapsed, 1e-9) * 1e-6, eta);
       std::fflush(stderr);
     }
   }
   if (showProgress) std::fprintf(stderr, "\n");
-  stats.seconds = since(start);
-  stats.samplesPerPixel = film.pixels() ? static_cast<uint32_t>(film.count[0] + film.nonfinite[0]) : 0;
-  for (const auto& [name, secs] : stats.stageSeconds) stats.gpuSeconds += secs;
-  auto stage = [&](const char* name) {
-    auto it = stats.stageSeconds.find(name);
-    return it == stats.stageSeconds.end() ? 0.0 : it->second;
-  };
-  stats.primarySeconds = stage("intersect_primary");
-  stats.incoherentSeconds = stage("intersect");
-  std::vector<glm::uvec2> queueStats(gpu::kQueueStatsBounces);
-  queueStats_.download(queueStats.data(), gpu::kQueueStatsBounces * sizeof(glm::uvec2));
-  stats.pathsByBounce.resize(gpu::kQueueStatsBounces, 0);
-  stats.shadowRaysByBounce.resize(gpu::kQueueStatsBounces, 0);
-  for (uint32_t b = 0; b < gpu::kQueueStatsBounces; ++b) {
-    stats.pathsByBounce[b] += queueStats[b].x;
-    stats.shadowRaysByBounce[b] += queueStats[b].y;
-  }
-  return film;
+  snapshot(state, inBatch, secondsBefore + since(start), pathsBefore, shadowBefore);
 }
 
 }  // namespace vkmc

@@ -13,6 +13,7 @@
 #include "estimators/efficiency_roulette.h"
 #include "estimators/estimator_config.h"
 #include "render/path_pool.h"
+#include "render/render_state.h"
 #include "render/render_kernels.h"
 #include "render/render_settings.h"
 #include "render/film.h"
@@ -29,6 +30,9 @@ class PathRenderer {
   PathRenderer(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings);
   ~PathRenderer();
   Film render(RenderStats& stats);
+  // Renders from `state` (empty, or a checkpoint's) towards settings.spp or the time budget, updating it in
+  // place; stops early, with state.interrupted, when control.stop is raised.
+  void render(RenderState& state, const RenderControl& control);
   double pipelineSeconds() const { return pipelineSeconds_; }
   // Efficiency roulette: the per-depth scales k_d the kernels read.
   void setRouletteScales(const std::array<float, kRouletteTableDepths>& scales);
@@ -51,6 +55,10 @@ class PathRenderer {
   void publishControl(VkCommandBuffer cmd);
   void collectCounters(RenderStats& stats);
   void foldFilm(Film& film);
+  void uploadPixelEstimate(const Film& film);
+  // The state as of the last pass: seconds, queue occupancy, and the device's unfolded batch.
+  void snapshot(RenderState& state, uint32_t inBatch, double seconds, const std::vector<uint64_t>& pathsBefore,
+                const std::vector<uint64_t>& shadowBefore);
   uint32_t groupsFor(uint32_t invocations) const;
 
   vk::Context& ctx_;

@@ -1,0 +1,110 @@
+// RenderOptions <-> JSON (see the header).
+#include "app/render_options_json.h"
+
+#include <filesystem>
+
+#include "error.h"
+
+namespace vkmc {
+namespace {
+
+std::string absolutePath(const std::string& path) {
+  if (path.empty()) return path;
+  std::error_code ec;
+  std::filesystem::path p = std::filesystem::absolute(path, ec);
+  return ec ? path : p.lexically_normal().string();
+}
+
+nlohmann::json vec3Json(const std::optional<glm::vec3>& v) {
+  return v ? nlohmann::json::array({v->x, v->y, v->z}) : nlohmann::json(nullptr);
+}
+
+std::optional<glm::vec3> vec3From(const nlohmann::json& j) {
+  if (j.is_null()) return std::nullopt;
+  return glm::vec3(j.at(0).get<float>(), j.at(1).get<float>(), j.at(2).get<float>());
+}
+
+template <class T>
+nlohmann::json optionalJson(const std::optional<T>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+template <class T>
+std::optional<T> optionalFrom(const nlohmann::json& j) {
+  return j.is_null() ? std::nullopt : std::optional<T>(j.get<T>());
+}
+
+}  // namespace
+
+nlohmann::json renderOptionsJson(const RenderOptions& o) {
+  return {{"scene", absolutePath(o.scenePath)},
+          {"width", optionalJson(o.width)},
+          {"height", optionalJson(o.height)},
+          {"spp", o.spp},
+          {"estimator", o.estimator.toJson()},
+          {"seed", o.seed},
+          {"camera", optionalJson(o.cameraIndex)},
+          {"look_from", vec3Json(o.lookFrom)},
+          {"look_at", vec3Json(o.lookAt)},
+          {"fov", o.fovDegrees},
+          {"background", vec3Json(o.background)},
+          {"environment", absolutePath(o.environmentPath)},
+          {"environment_rotation", o.environmentRotation},
+          {"environment_strength", o.environmentStrength},
+          {"filter", {{"name", pixelFilterName(o.filter.kind)}, {"radius", o.filter.radius}}},
+          {"time_budget", o.timeBudget},
+          {"reference", absolutePath(o.referencePath)},
+          {"specialize", o.specialize},
+          {"without_textures", o.withoutTextures},
+          {"workgroup", o.workgroupSize},
+          {"integrator", toString(o.integrator)}};
+}
+
+RenderOptions renderOptionsFromJson(const nlohmann::json& j) {
+  RenderOptions o;
+  try {
+    o.scenePath = j.at("scene");
+    o.width = optionalFrom<uint32_t>(j.at("width"));
+    o.height = optionalFrom<uint32_t>(j.at("height"));
+    o.spp = j.at("spp");
+    o.estimator.applyJson(j.at("estimator"));
+    o.seed = j.at("seed");
+    o.cameraIndex = optionalFrom<uint32_t>(j.at("camera"));
+    o.lookFrom = vec3From(j.at("look_from"));
+    o.lookAt = vec3From(j.at("look_at"));
+    o.fovDegrees = j.at("fov");
+    o.background = vec3From(j.at("background"));
+    o.environmentPath = j.at("environment");
+    o.environmentRotation = j.at("environment_rotation");
+    o.environmentStrength = j.at("environment_strength");
+    o.filter = pixelFilterFromJson(j.at("filter"));
+    o.timeBudget = j.at("time_budget");
+    o.referencePath = j.at("reference");
+    o.specialize = j.at("specialize");
+    o.withoutTextures = j.at("without_textures");
+    o.workgroupSize = j.at("workgroup");
+    o.integrator = integratorFromString(j.at("integrator"));
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(std::string("malformed render options: ") + e.what());
+  }
+  return o;
+}
+
+std::string differingRenderOptions(const nlohmann::json& a, const nlohmann::json& b) {
+  std::string keys;
+  for (const auto& [key, value] : a.items()) {
+    if (key == "reference") continue;
+    if (b.contains(key) && b.at(key) == value) continue;
+    if (key == "estimator" && value.is_object() && b.contains(key) && b.at(key).is_object()) {
+      for (const auto& [inner, v] : value.items())  // name the estimator's keys: "estimator.rr"
+        if (!b.at(key).contains(inner) || b.at(key).at(inner) != v) keys += (keys.empty() ? "" : ", ") + key + "." + inner;
+      continue;
+    }
+    keys += (keys.empty() ? "" : ", ") + key;
+  }
+  for (const auto& [key, value] : b.items())
+    if (!a.contains(key)) keys += (keys.empty() ? "" : ", ") + key;
+  return keys;
+}
+
+}  // namespace vkmc

@@ -1,0 +1,177 @@
+// Checkpoint files (see the header).
+#include "io/checkpoint.h"
+
+#include <bit>
+#include <fstream>
+#include <sstream>
+
+#include "error.h"
+#include "scene/content_hash.h"
+
+namespace vkmc {
+namespace {
+
+constexpr char kMagic[] = "VKMC-CHECKPOINT\n";  // 16 bytes without the terminator
+constexpr size_t kMagicBytes = sizeof(kMagic) - 1;
+constexpr int kFormatVersion = 1;
+static_assert(std::endian::native == std::endian::little, "checkpoints are little-endian");
+
+nlohmann::json statsJson(const RenderStats& s) {
+  return {{"seconds", s.seconds},
+          {"gpu_seconds", s.gpuSeconds},
+          {"camera_rays", s.cameraRays},
+          {"extension_rays", s.extensionRays},
+          {"shadow_rays", s.shadowRays},
+          {"primary_rays", s.primaryRays},
+          {"primary_seconds", s.primarySeconds},
+          {"incoherent_seconds", s.incoherentSeconds},
+          {"stage_seconds", s.stageSeconds},
+          {"passes", s.passes},
+          {"max_bounces", s.maxBounces},
+          {"samples_per_pixel", s.samplesPerPixel},
+          {"nonfinite_emission", s.nonfiniteEmission},
+          {"nonfinite_light_samples", s.nonfiniteLightSamples},
+          {"nonfinite_throughput", s.nonfiniteThroughput},
+          {"traversals_cut", s.traversalsCut},
+          {"deep_walks", s.deepWalks},
+          {"deep_walks_traced", s.deepWalksTraced},
+          {"paths_by_bounce", s.pathsByBounce},
+          {"shadow_rays_by_bounce", s.shadowRaysByBounce}};
+}
+
+RenderStats statsFromJson(const nlohmann::json& j) {
+  RenderStats s;
+  j.at("seconds").get_to(s.seconds);
+  j.at("gpu_seconds").get_to(s.gpuSeconds);
+  j.at("camera_rays").get_to(s.cameraRays);
+  j.at("extension_rays").get_to(s.extensionRays);
+  j.at("shadow_rays").get_to(s.shadowRays);
+  j.at("primary_rays").get_to(s.primaryRays);
+  j.at("primary_seconds").get_to(s.primarySeconds);
+  j.at("incoherent_seconds").get_to(s.incoherentSeconds);
+  j.at("stage_seconds").get_to(s.stageSeconds);
+  j.at("passes").get_to(s.passes);
+  j.at("max_bounces").get_to(s.maxBounces);
+  j.at("samples_per_pixel").get_to(s.samplesPerPixel);
+  j.at("nonfinite_emission").get_to(s.nonfiniteEmission);
+  j.at("nonfinite_light_samples").get_to(s.nonfiniteLightSamples);
+  j.at("nonfinite_throughput").get_to(s.nonfiniteThroughput);
+  j.at("traversals_cut").get_to(s.traversalsCut);
+  j.at("deep_walks").get_to(s.deepWalks);
+  j.at("deep_walks_traced").get_to(s.deepWalksTraced);
+  j.at("paths_by_bounce").get_to(s.pathsByBounce);
+  j.at("shadow_rays_by_bounce").get_to(s.shadowRaysByBounce);
+  return s;
+}
+
+// The payload's arrays, in order, for a film of `pixels` pixels: one list serves encoding and decoding.
+template <class FilmT, class Visit>
+void forEachArray(FilmT& film, Visit&& visit) {
+  visit(film.sum), visit(film.sumSq), visit(film.count), visit(film.nonfinite), visit(film.replicateSum),
+      visit(film.replicateCount);
+}
+
+void appendU64(std::string& out, uint64_t v) { out.append(reinterpret_cast<const char*>(&v), 8); }
+
+}  // namespace
+
+std::string encodeCheckpoint(const Checkpoint& c) {
+  const RenderState& st = c.state;
+  nlohmann::json header = {{"format", "vkmc checkpoint"},
+                           {"version", kFormatVersion},
+                           {"config", c.config},
+                           {"width", st.film.width},
+                           {"height", st.film.height},
+                           {"replicate_variance", st.film.replicateVariance},
+                           {"next_sample", st.nextSample},
+                           {"batch_samples", st.batchSamples},
+                           {"stats", statsJson(st.stats)}};
+  std::string payload;
+  forEachArray(st.film, [&](const auto& v) { payload.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v[0])); });
+  if (st.batchSamples > 0)
+    payload.append(reinterpret_cast<const char*>(st.batch.data()), st.batch.size() * sizeof(gpu::FilmPixel));
+  const std::string text = header.dump();
+  std::string out(kMagic, kMagicBytes);
+  appendU64(out, text.size());
+  out += text;
+  appendU64(out, payload.size());
+  out += payload;
+  ContentHash h;
+  h.add(out);
+  appendU64(out, h.value());
+  return out;
+}
+
+Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
+  auto fail = [&](const std::string& why) { return Error("checkpoint '" + name + "' " + why); };
+  if (bytes.size() < kMagicBytes || bytes.compare(0, kMagicBytes, kMagic) != 0) throw fail("is not a vkmc checkpoint");
+  size_t at = kMagicBytes;
+  auto readU64 = [&](const char* what) {
+    if (bytes.size() - at < 8) throw fail(std::string("is truncated (") + what + ")");
+    uint64_t v;
+    std::memcpy(&v, bytes.data() + at, 8);
+    at += 8;
+    return v;
+  };
+  const uint64_t headerBytes = readU64("header length");
+  if (headerBytes > bytes.size() - at) throw fail("is truncated (header)");
+  const size_t headerAt = at;
+  at += headerBytes;
+  const uint64_t payloadBytes = readU64("payload length");
+  if (payloadBytes > bytes.size() - at) throw fail("is truncated (payload)");
+  const size_t payloadAt = at;
+  at += payloadBytes;
+  const size_t checked = at;
+  const uint64_t checksum = readU64("checksum");
+  if (at != bytes.size()) throw fail("has " + std::to_string(bytes.size() - at) + " bytes after its end");
+  ContentHash h;
+  h.add(bytes.data(), checked);
+  if (h.value() != checksum) throw fail("is corrupt (its checksum does not match its contents)");
+
+  nlohmann::json header = nlohmann::json::parse(bytes.begin() + headerAt, bytes.begin() + payloadAt - 8, nullptr, false);
+  if (header.is_discarded() || !header.is_object()) throw fail("has a header that is not JSON");
+  if (header.value("format", "") != "vkmc checkpoint") throw fail("is not a vkmc checkpoint");
+  if (header.value("version", 0) != kFormatVersion)
+    throw fail("has format version " + header.value("version", nlohmann::json(0)).dump() + "; this vkmc reads version " +
+               std::to_string(kFormatVersion));
+  Checkpoint c;
+  try {
+    c.config = header.at("config");
+    const uint32_t width = header.at("width"), height = header.at("height");
+    if (width == 0 || height == 0 || width > 16384 || height > 16384) throw fail("has an impossible image size");
+    c.state.film = Film(width, height);
+    c.state.film.replicateVariance = header.at("replicate_variance");
+    c.state.nextSample = header.at("next_sample");
+    c.state.batchSamples = header.at("batch_samples");
+    c.state.stats = statsFromJson(header.at("stats"));
+  } catch (const nlohmann::json::exception& e) {
+    throw fail(std::string("has a malformed header: ") + e.what());
+  }
+  Film& film = c.state.film;
+  uint64_t expected = 0;
+  forEachArray(film, [&](const auto& v) { expected += v.size() * sizeof(v[0]); });
+  if (c.state.batchSamples > 0) expected += film.pixels() * sizeof(gpu::FilmPixel);
+  if (payloadBytes != expected)
+    throw fail("holds " + std::to_string(payloadBytes) + " bytes of film where its image needs " + std::to_string(expected));
+  const char* p = bytes.data() + payloadAt;
+  forEachArray(film, [&](auto& v) {
+    std::memcpy(v.data(), p, v.size() * sizeof(v[0]));
+    p += v.size() * sizeof(v[0]);
+  });
+  if (c.state.batchSamples > 0) {
+    c.state.batch.resize(film.pixels());
+    std::memcpy(c.state.batch.data(), p, film.pixels() * sizeof(gpu::FilmPixel));
+  }
+  return c;
+}
+
+Checkpoint readCheckpoint(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot open checkpoint '" + path + "'");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (!in && !in.eof()) throw Error("cannot read checkpoint '" + path + "'");
+  return decodeCheckpoint(buffer.str(), path);
+}
+
+}  // namespace vkmc
