@@ -2,6 +2,8 @@
 #include "io/checkpoint.h"
 
 #include <bit>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -166,6 +168,9 @@ Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
 }
 
 Checkpoint readCheckpoint(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw Error("checkpoint '" + path + "' does not exist");
+  if (!std::filesystem::is_regular_file(path, ec)) throw Error("checkpoint '" + path + "' is not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error("cannot open checkpoint '" + path + "'");
   std::ostringstream buffer;

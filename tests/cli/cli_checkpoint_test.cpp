@@ -1,0 +1,164 @@
+// Checkpoints end to end: SIGINT and SIGTERM stop a render after the pass in flight and write the samples done
+// with the checkpoint; `--resume` finishes it bit for bit; foreign, corrupt and mismatched checkpoints are refused
+// with one line; a full disk costs the checkpoint, never the render or an old output.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "support/cli_run.h"
+
+namespace fs = std::filesystem;
+using namespace vkmc::test;
+
+extern char** environ;
+
+namespace {
+
+fs::path dir() {
+  static fs::path d = makeTempDir("cli-checkpoint");
+  return d;
+}
+
+pid_t spawnVkmc(std::vector<std::string> args) {
+  args.insert(args.begin(), VKMC_BINARY);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = -1;
+  posix_spawn(&pid, VKMC_BINARY, nullptr, nullptr, argv.data(), environ);
+  return pid;
+}
+
+// 64x64 pixels take 64 samples a pass: 8 passes, a second or more on lavapipe.
+const std::string kRender = " --width 64 --height 64 --spp 512 --seed 5 -q";
+
+int lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
+
+}  // namespace
+
+TEST(CliCheckpoint, ASignalStopsTheRenderAndResumeFinishesItBitForBit) {
+  for (int sig : {SIGINT, SIGTERM}) {
+    fs::path d = dir() / (sig == SIGINT ? "int" : "term");
+    fs::create_directories(d);
+    const std::string ck = (d / "render.ckpt").string(), out = (d / "out.exr").string(), report = (d / "report.json").string();
+    pid_t pid = spawnVkmc({"render", cornell(), "--width", "64", "--height", "64", "--spp", "512", "--seed", "5", "-q", "-o", out,
+                           "--report", report, "--checkpoint", ck, "--checkpoint-every", "0.01"});
+    ASSERT_GT(pid, 0);
+    // The first periodic checkpoint says the passes have begun (a hang guard only: minutes).
+    for (int i = 0; i < 6000 && !fs::exists(ck); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    kill(pid, sig);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status));
+    if (WEXITSTATUS(status) == 0) GTEST_SKIP() << "the render finished before the signal arrived";
+    EXPECT_EQ(WEXITSTATUS(status), 128 + sig);
+    nlohmann::json j = nlohmann::json::parse(slurp(report));
+    EXPECT_TRUE(j["interrupted"].get<bool>());
+    EXPECT_LT(j["spp"].get<int>(), 512);
+    EXPECT_GT(j["samples"].get<uint64_t>(), 0u);  // the EXR holds the samples done
+    EXPECT_TRUE(fs::exists(out));
+    EXPECT_FALSE(hasTemporaries(d));
+
+    RunResult resumed = runVkmc("render --resume " + ck + " -q --report " + (d / "resumed.json").string());
+    EXPECT_EQ(resumed.code, 0) << resumed.err;
+    nlohmann::json r = nlohmann::json::parse(slurp(d / "resumed.json"));
+    EXPECT_TRUE(r["resumed"].get<bool>());
+    EXPECT_EQ(r["spp"].get<int>(), 512);
+    EXPECT_FALSE(fs::exists(ck)) << "a finished render removes its checkpoint";
+    RunResult uninterrupted = runVkmc("render " + cornell() + kRender + " -o " + (d / "whole.exr").string());
+    ASSERT_EQ(uninterrupted.code, 0) << uninterrupted.err;
+    EXPECT_TRUE(slurp(out) == slurp(d / "whole.exr")) << "the resumed render (written to the original -o) differs";
+  }
+}
+
+TEST(CliCheckpoint, ForeignCorruptAndMismatchedCheckpointsAreRefusedWithOneLine) {
+  fs::path d = dir() / "refuse";
+  fs::create_directories(d);
+  const std::string ck = (d / "r.ckpt").string();
+  // A checkpoint to refuse things with: the render is stopped at once by SIGTERM after its first checkpoint.
+  pid_t pid = spawnVkmc({"render", cornell(), "--width", "64", "--height", "64", "--spp", "512", "--seed", "5", "-q", "-o",
+                         (d / "o.exr").string(), "--checkpoint", ck, "--checkpoint-every", "0.01"});
+  for (int i = 0; i < 6000 && !fs::exists(ck); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (!fs::exists(ck)) GTEST_SKIP() << "the render finished before the signal arrived";
+  const std::string bytes = slurp(ck);
+
+  auto refused = [&](const std::string& args, const std::string& expected) {
+    RunResult r = runVkmc(args);
+    EXPECT_EQ(r.code, 1) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << args << "\n" << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+  };
+  refused("render " + cornell() + " --width 64 --height 64 --spp 256 --seed 5 -q --resume " + ck, "differs in spp");
+  refused("render " + std::string(VKMC_SOURCE_DIR) + "/scenes/veach_mis.gltf --width 64 --height 64 --spp 512 --seed 5 -q --resume " + ck,
+          "differs in scene");
+  refused("render --resume " + ck + " --spp 8", "--spp cannot change a resumed render");
+  std::ofstream(d / "text.ckpt") << "not a checkpoint\n";
+  refused("render --resume " + (d / "text.ckpt").string(), "is not a vkmc checkpoint");
+  std::ofstream(d / "short.ckpt", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  refused("render --resume " + (d / "short.ckpt").string(), "is truncated");
+  std::string flipped = bytes;
+  flipped[flipped.size() / 2] ^= 1;
+  std::ofstream(d / "flipped.ckpt", std::ios::binary) << flipped;
+  refused("render --resume " + (d / "flipped.ckpt").string(), "is corrupt");
+  refused("render --resume " + (d / "missing.ckpt").string(), "does not exist");
+  refused("render --resume " + d.string(), "is not a regular file");
+  // The same scene file with one material changed is another scene.
+  fs::create_directories(d / "scene");
+  for (const char* f : {"cornell_box.gltf", "cornell_box.bin"})
+    if (fs::exists(fs::path(VKMC_SOURCE_DIR) / "scenes" / f)) fs::copy_file(fs::path(VKMC_SOURCE_DIR) / "scenes" / f, d / "scene" / f);
+  // A checkpoint of the copy's render, stopped at once.
+  const std::string ck2 = (d / "copy.ckpt").string();
+  pid = spawnVkmc({"render", (d / "scene/cornell_box.gltf").string(), "--width", "64", "--height", "64", "--spp", "512", "--seed",
+                   "5", "-q", "-o", (d / "c2.exr").string(), "--checkpoint", ck2, "--checkpoint-every", "0.01"});
+  for (int i = 0; i < 6000 && !fs::exists(ck2); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  kill(pid, SIGTERM);
+  waitpid(pid, &status, 0);
+  if (!fs::exists(ck2)) GTEST_SKIP() << "the render finished before the signal arrived";
+  std::string gltf = slurp(d / "scene/cornell_box.gltf");
+  size_t at = gltf.find("\"emissiveFactor\"");
+  ASSERT_NE(at, std::string::npos);
+  size_t digit = gltf.find_first_of("123456789", at);
+  gltf[digit] = gltf[digit] == '9' ? '8' : char(gltf[digit] + 1);
+  std::ofstream(d / "scene/cornell_box.gltf", std::ios::binary | std::ios::trunc) << gltf;
+  refused("render --resume " + ck2, "belongs to another scene");
+}
+
+TEST(CliCheckpoint, AFullDiskCostsTheCheckpointNotTheRender) {
+  if (std::system("unshare -m --propagation private true 2>/dev/null") != 0) GTEST_SKIP() << "no private mount namespace here";
+  fs::path d = dir() / "disk";
+  fs::create_directories(d);
+  // 256 KiB: the 32x32 EXR (~60 KB) and the report fit, a checkpoint of this image (~300 KB) does not.
+  const std::string disk = d.string() + "/mnt";
+  fs::create_directories(disk);
+  std::string script = "mount -t tmpfs -o size=256k tmpfs " + disk + " && " + VKMC_BINARY + " render " + cornell() +
+                       " --width 32 --height 32 --spp 512 -q -o " + disk + "/out.exr --checkpoint " + disk +
+                       "/render.ckpt --checkpoint-every 0.01 2>" + (d / "err.txt").string() + "; echo rc=$?; ls -a " + disk;
+  RunResult r = runShell("unshare -m --propagation private sh -c '" + script + "'");
+  std::string err = slurp(d / "err.txt");
+  EXPECT_NE(r.out.find("rc=0"), std::string::npos) << r.out << err;
+  EXPECT_NE(r.out.find("out.exr"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("render.ckpt"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find(".vkmc-"), std::string::npos) << "a temporary was left behind: " << r.out;
+  EXPECT_NE(err.find("No space left on device (the render goes on"), std::string::npos) << err;
+}
+
+TEST(CliCheckpoint, AnOutputThatIsAFolderIsRefusedBeforeRendering) {
+  fs::create_directories(dir() / "a-folder");
+  RunResult r = runVkmc("render " + cornell() + " --spp 1 -q -o " + (dir() / "a-folder").string());
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("folder"), std::string::npos) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  RunResult c = runVkmc("render " + cornell() + " --spp 1 -q -o " + (dir() / "x.exr").string() + " --checkpoint " +
+                        (dir() / "a-folder").string());
+  EXPECT_EQ(c.code, 1) << c.err;
+  EXPECT_NE(c.err.find("--checkpoint"), std::string::npos) << c.err;
+  EXPECT_FALSE(fs::exists(dir() / "x.exr"));
+}

@@ -1,0 +1,95 @@
+// Checkpoint files (io/checkpoint.h): what is written is read back exactly, and anything that is not a whole,
+// intact checkpoint is refused with a line naming the file and the problem.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "error.h"
+#include "io/checkpoint.h"
+
+using namespace vkmc;
+
+namespace {
+
+Checkpoint sample(bool withBatch) {
+  Checkpoint c;
+  c.config = {{"options", {{"spp", 64}}}, {"scene_fingerprint", "0123456789abcdef"}};
+  RenderState& s = c.state;
+  s.film = Film(3, 2);
+  s.film.replicateVariance = true;
+  for (size_t i = 0; i < s.film.sum.size(); ++i) s.film.sum[i] = 0.1 * double(i) + 1e-17, s.film.sumSq[i] = std::ldexp(1.0, int(i) * 50);
+  for (size_t i = 0; i < s.film.count.size(); ++i) s.film.count[i] = 1000 + i, s.film.nonfinite[i] = i;
+  for (size_t i = 0; i < s.film.replicateSum.size(); ++i) s.film.replicateSum[i] = -double(i) / 3.0;
+  for (size_t i = 0; i < s.film.replicateCount.size(); ++i) s.film.replicateCount[i] = 250 + i;
+  s.nextSample = 40;
+  if (withBatch) {
+    s.batchSamples = 8;
+    s.batch.resize(s.film.pixels());
+    for (size_t p = 0; p < s.batch.size(); ++p) s.batch[p].sum[0] = float(p) + 0.5f, s.batch[p].replicate[2][3] = 2.0f;
+  }
+  s.stats.seconds = 1.25;
+  s.stats.cameraRays = 1ull << 40;
+  s.stats.stageSeconds["shade"] = 0.5;
+  s.stats.pathsByBounce = {7, 8, 9};
+  return c;
+}
+
+std::string refusal(const std::string& bytes) {
+  try {
+    decodeCheckpoint(bytes, "ck.bin");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(Checkpoint, RoundTripsEveryArrayAndCounterExactly) {
+  for (bool withBatch : {false, true}) {
+    const Checkpoint c = sample(withBatch);
+    const Checkpoint d = decodeCheckpoint(encodeCheckpoint(c), "ck.bin");
+    EXPECT_EQ(d.config, c.config);
+    EXPECT_EQ(d.state.film.width, 3u);
+    EXPECT_EQ(d.state.film.height, 2u);
+    EXPECT_TRUE(d.state.film.replicateVariance);
+    EXPECT_EQ(d.state.film.sum, c.state.film.sum);
+    EXPECT_EQ(d.state.film.sumSq, c.state.film.sumSq);
+    EXPECT_EQ(d.state.film.count, c.state.film.count);
+    EXPECT_EQ(d.state.film.nonfinite, c.state.film.nonfinite);
+    EXPECT_EQ(d.state.film.replicateSum, c.state.film.replicateSum);
+    EXPECT_EQ(d.state.film.replicateCount, c.state.film.replicateCount);
+    EXPECT_EQ(d.state.nextSample, 40u);
+    EXPECT_EQ(d.state.batchSamples, c.state.batchSamples);
+    ASSERT_EQ(d.state.batch.size(), c.state.batch.size());
+    if (withBatch) EXPECT_EQ(std::memcmp(d.state.batch.data(), c.state.batch.data(), c.state.batch.size() * sizeof(gpu::FilmPixel)), 0);
+    EXPECT_EQ(d.state.stats.seconds, 1.25);
+    EXPECT_EQ(d.state.stats.cameraRays, 1ull << 40);
+    EXPECT_EQ(d.state.stats.stageSeconds.at("shade"), 0.5);
+    EXPECT_EQ(d.state.stats.pathsByBounce, (std::vector<uint64_t>{7, 8, 9}));
+  }
+}
+
+TEST(Checkpoint, TheImageOfAStateAddsItsUnfoldedBatch) {
+  const Checkpoint c = sample(true);
+  Film image = c.state.image();
+  EXPECT_DOUBLE_EQ(image.sum[3 * 2], c.state.film.sum[3 * 2] + 2.5);
+  EXPECT_DOUBLE_EQ(image.sum[1], c.state.film.sum[1]);
+}
+
+TEST(Checkpoint, EveryCorruptionIsRefusedWithOneReason) {
+  const std::string good = encodeCheckpoint(sample(true));
+  EXPECT_NE(refusal("").find("is not a vkmc checkpoint"), std::string::npos);
+  EXPECT_NE(refusal("P6 3 2 255\n").find("is not a vkmc checkpoint"), std::string::npos);
+  for (size_t cut : {size_t(17), size_t(30), good.size() / 2, good.size() - 1})
+    EXPECT_NE(refusal(good.substr(0, cut)).find("is truncated"), std::string::npos) << cut;
+  EXPECT_NE(refusal(good + "x").find("after its end"), std::string::npos);
+  // One flipped bit anywhere after the magic: the header, the film, the batch or the checksum itself.
+  for (size_t at : {size_t(30), good.size() / 2, good.size() - 40, good.size() - 3}) {
+    std::string bad = good;
+    bad[at] ^= 0x10;
+    std::string why = refusal(bad);
+    EXPECT_TRUE(why.find("corrupt") != std::string::npos || why.find("truncated") != std::string::npos) << at << ": " << why;
+    EXPECT_NE(why.find("'ck.bin'"), std::string::npos) << why;
+  }
+}
