@@ -5,7 +5,10 @@
 #include <cstdio>
 #include <vector>
 
+#include <unistd.h>
+
 #include "app/commands.h"
+#include "dist/rank_group.h"
 #include "error.h"
 
 int main(int argc, char** argv) {
@@ -23,10 +26,25 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  // Under mpirun every rank runs the command (dist/rank_group.h); outside it the group is this process alone.
+  vkmc::RankGroup* group = nullptr;
   try {
+    if (vkmc::launchedByMpi()) group = &vkmc::RankGroup::world();
     for (const vkmc::Command& c : commands)
-      if (c.app->parsed()) return c.run();
+      if (c.app->parsed()) {
+        int code = c.run();
+        if (group) group->finish();
+        return code;
+      }
   } catch (const std::exception& e) {  // vkmc::Error and anything else: one line, exit 1
+    if (group && group->distributed()) {
+      // A failure every rank shares (a bad option, a missing scene) is said once, by rank 0, whose abort ends the
+      // others first; a rank failing alone says so with its name after a moment, then ends the job.
+      if (!group->isRoot()) ::sleep(2);
+      std::fprintf(stderr, "vkmc: error: %s%s\n", group->isRoot() ? "" : (group->describe() + ": ").c_str(), e.what());
+      std::fflush(stderr);
+      group->abort(1);
+    }
     std::fprintf(stderr, "vkmc: error: %s\n", e.what());
     return 1;
   }

@@ -18,6 +18,7 @@
 #include "error.h"
 #include "estimators/estimator_params.h"
 #include "app/render_options_json.h"
+#include "dist/rank_group.h"
 #include "io/checkpoint.h"
 #include "io/exr.h"
 #include "io/output_files.h"
@@ -161,8 +162,15 @@ void optionsFromCheckpoint(RenderArgs& a, const CLI::App& cmd, const nlohmann::j
 }
 
 int run(RenderArgs& a, const CLI::App& cmd) {
+  const RankGroup& group = RankGroup::world();
   std::optional<Checkpoint> resume;
-  if (!a.resume.empty()) resume = readCheckpoint(a.resume);
+  if (!a.resume.empty()) {
+    // Under mpirun rank 0 reads the checkpoint and tells the others (their hosts may not see the file).
+    std::string bytes;
+    if (group.isRoot()) bytes = encodeCheckpoint(readCheckpoint(a.resume));
+    group.broadcast(bytes);
+    resume = decodeCheckpoint(bytes, a.resume);
+  }
   if (a.options.scenePath.empty()) {
     if (!resume) throw Error("render needs a scene (or --resume CHECKPOINT)");
     optionsFromCheckpoint(a, cmd, resume->config);
@@ -174,8 +182,10 @@ int run(RenderArgs& a, const CLI::App& cmd) {
   const std::string checkpoint = !a.checkpoint.empty() ? a.checkpoint : a.resume;
   if (!(a.checkpointEvery > 0.0 && a.checkpointEvery <= 1e6))
     throw Error("--checkpoint-every must be a number of seconds in (0, 1e6]");
-  // Output folders are checked before rendering, so a bad path fails in a second, not after the render.
-  checkOutputPaths({{"--output", a.out}, {"--png", a.png}, {"--report", a.report}, {"--checkpoint", checkpoint}},
+  // Output folders are checked before rendering, so a bad path fails in a second, not after the render (by rank 0,
+  // which writes them).
+  if (group.isRoot())
+    checkOutputPaths({{"--output", a.out}, {"--png", a.png}, {"--report", a.report}, {"--checkpoint", checkpoint}},
                    {ro.scenePath, ro.referencePath, a.estimatorFile, ro.environmentPath});
 
   RunControl control;
@@ -190,6 +200,7 @@ int run(RenderArgs& a, const CLI::App& cmd) {
   }
   vk::Context ctx;
   RenderOutcome result = runRender(ctx, ro, control);
+  if (!group.isRoot()) return 0;  // rank 0 holds the film and writes every output
   nlohmann::json j = makeReport(ro, result);
   j["output"] = a.out;
   if (!checkpoint.empty()) j["checkpoint"] = checkpoint;

@@ -233,12 +233,24 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
       pilotSeconds = run.resumeConfig->at("pilot_seconds");
     }
   }
+  const RankGroup& group = RankGroup::world();
   if (options.estimator.rr == RouletteMode::Efficiency && !roulette) {
-    // Its time is part of the estimator's cost and counts as render time.
-    RoulettePilot pilot = runRoulettePilot(ctx, gpuScene, settings);
-    out.setup.pipelines += pilot.pipelineSeconds;
-    roulette = pilot.table;
-    pilotSeconds = pilot.seconds;
+    // Its time is part of the estimator's cost and counts as render time. Under mpirun rank 0 runs it and tells
+    // the others, so every rank renders with the same scales.
+    std::string shared;
+    if (group.isRoot()) {
+      RoulettePilot pilot = runRoulettePilot(ctx, gpuScene, settings);
+      out.setup.pipelines += pilot.pipelineSeconds;
+      roulette = pilot.table;
+      pilotSeconds = pilot.seconds;
+      shared = nlohmann::json{{"roulette", rouletteJson(*roulette)}, {"pilot_seconds", pilotSeconds}}.dump();
+    }
+    group.broadcast(shared);
+    if (!group.isRoot()) {
+      nlohmann::json j = nlohmann::json::parse(shared);
+      roulette = rouletteFromJson(j.at("roulette"));
+      pilotSeconds = j.at("pilot_seconds");
+    }
   }
   if (roulette) out.checkpointConfig["roulette"] = rouletteJson(*roulette), out.checkpointConfig["pilot_seconds"] = pilotSeconds;
   if (options.timeBudget > 0.0)
@@ -248,7 +260,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.setup.pipelines += renderer.pipelineSeconds();
   RenderControl control;
   control.stop = run.stop;
-  if (!run.checkpointPath.empty()) {
+  if (!run.checkpointPath.empty() && group.isRoot()) {
     control.checkpointEvery = run.checkpointEvery;
     // A periodic checkpoint that cannot be written (a full disk) leaves the last one intact and the render going.
     control.checkpoint = [&](const RenderState& now) {
@@ -261,7 +273,18 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
       }
     };
   }
-  renderer.render(state, control);
+  if (group.distributed()) {
+    DistributedPlan plan;
+    plan.spp = settings.spp;
+    plan.timeBudget = settings.timeBudget;
+    plan.refreshPixelEstimate = options.estimator.shadowRrThreshold > 0.0f;
+    plan.device = out.device;
+    plan.width = width, plan.height = height;
+    plan.replicateVariance = options.estimator.sampler != Sampler::Independent;
+    out.ranks = renderDistributed(renderer, group, state, control, plan);
+  } else {
+    renderer.render(state, control);
+  }
   out.interrupted = state.interrupted;
   out.film = state.image();
   out.stats = state.stats;
@@ -340,6 +363,18 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["resumed"] = r.resumed;
   j["interrupted"] = r.interrupted;
   j["checkpoints_written"] = r.checkpointsWritten;
+  if (!r.ranks.empty()) {
+    nlohmann::json ranks = nlohmann::json::array();
+    for (const RankReport& k : r.ranks)
+      ranks.push_back({{"rank", k.rank},
+                       {"host", k.host},
+                       {"device", k.device},
+                       {"rays", k.rays},
+                       {"batches", k.batches},
+                       {"busy_seconds", k.busySeconds},
+                       {"gpu_seconds", k.gpuSeconds}});
+    j["mpi"] = {{"ranks", r.ranks.size()}, {"per_rank", ranks}};
+  }
   // Without a reference: relative variance (per-pixel variance of the mean over mean^2 + epsilon, averaged
   // over pixels and channels) is the expected relMSE of an unbiased render, so it gives an efficiency too.
   double relVar = 0.0;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "analysis/error_metrics.h"
+#include "dist/distributed_render.h"
 #include "estimators/estimator_config.h"
 #include "render/film.h"
 #include "render/path_renderer.h"
@@ -85,6 +86,7 @@ struct RenderOutcome {
   bool interrupted = false;
   uint32_t checkpointsWritten = 0;
   bool resumed = false;
+  std::vector<RankReport> ranks;  // under mpirun: what each rank did (rank 0 only)
 };
 
 // Throws vkmc::Error on bad options or input, before anything is written. Both runRender call it first, so

@@ -18,7 +18,9 @@ constexpr size_t kMagicBytes = sizeof(kMagic) - 1;
 constexpr int kFormatVersion = 1;
 static_assert(std::endian::native == std::endian::little, "checkpoints are little-endian");
 
-nlohmann::json statsJson(const RenderStats& s) {
+}  // namespace
+
+nlohmann::json renderStatsJson(const RenderStats& s) {
   return {{"seconds", s.seconds},
           {"gpu_seconds", s.gpuSeconds},
           {"camera_rays", s.cameraRays},
@@ -41,7 +43,7 @@ nlohmann::json statsJson(const RenderStats& s) {
           {"shadow_rays_by_bounce", s.shadowRaysByBounce}};
 }
 
-RenderStats statsFromJson(const nlohmann::json& j) {
+RenderStats renderStatsFromJson(const nlohmann::json& j) {
   RenderStats s;
   j.at("seconds").get_to(s.seconds);
   j.at("gpu_seconds").get_to(s.gpuSeconds);
@@ -66,6 +68,8 @@ RenderStats statsFromJson(const nlohmann::json& j) {
   return s;
 }
 
+namespace {
+
 // The payload's arrays, in order, for a film of `pixels` pixels: one list serves encoding and decoding.
 template <class FilmT, class Visit>
 void forEachArray(FilmT& film, Visit&& visit) {
@@ -87,7 +91,7 @@ std::string encodeCheckpoint(const Checkpoint& c) {
                            {"replicate_variance", st.film.replicateVariance},
                            {"next_sample", st.nextSample},
                            {"batch_samples", st.batchSamples},
-                           {"stats", statsJson(st.stats)}};
+                           {"stats", renderStatsJson(st.stats)}};
   std::string payload;
   forEachArray(st.film, [&](const auto& v) { payload.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v[0])); });
   if (st.batchSamples > 0)
@@ -145,7 +149,7 @@ Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
     c.state.film.replicateVariance = header.at("replicate_variance");
     c.state.nextSample = header.at("next_sample");
     c.state.batchSamples = header.at("batch_samples");
-    c.state.stats = statsFromJson(header.at("stats"));
+    c.state.stats = renderStatsFromJson(header.at("stats"));
   } catch (const nlohmann::json::exception& e) {
     throw fail(std::string("has a malformed header: ") + e.what());
   }

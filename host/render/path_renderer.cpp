@@ -290,12 +290,15 @@ void PathRenderer::foldFilm(Film& film) {
 }
 
 // The running pixel estimate that shadow-ray roulette compares tiny contributions against: the folded film's.
-void PathRenderer::uploadPixelEstimate(const Film& film) {
-  const size_t pixels = film.pixels();
-  std::vector<float> estimate(pixels);
-  for (size_t p = 0; p < pixels; ++p)
+std::vector<float> PathRenderer::pixelEstimateOf(const Film& film) {
+  std::vector<float> estimate(film.pixels());
+  for (size_t p = 0; p < estimate.size(); ++p)
     estimate[p] = static_cast<float>(gpu::luminance(glm::vec3(film.mean(p, 0), film.mean(p, 1), film.mean(p, 2))));
-  pixelEstimate_.upload(estimate.data(), pixels * sizeof(float));
+  return estimate;
+}
+
+void PathRenderer::setPixelEstimate(const std::vector<float>& estimate) {
+  pixelEstimate_.upload(estimate.data(), estimate.size() * sizeof(float));
 }
 
 Film PathRenderer::render(RenderStats& stats) {
@@ -306,18 +309,34 @@ Film PathRenderer::render(RenderStats& stats) {
   return std::move(state.film);
 }
 
-void PathRenderer::snapshot(RenderState& state, uint32_t inBatch, double seconds, const std::vector<uint64_t>& pathsBefore,
-                            const std::vector<uint64_t>& shadowBefore) {
-  RenderStats& stats = state.stats;
-  const size_t pixels = state.film.pixels();
-  state.batchSamples = inBatch;
-  state.batch.clear();
-  if (inBatch > 0) {
-    state.batch.resize(pixels);
-    film_.download(state.batch.data(), pixels * sizeof(gpu::FilmPixel));
+uint32_t PathRenderer::samplesPerPass() const {
+  const uint32_t pixels = settings_.width * settings_.height;
+  return std::clamp(capacity_ / std::max(pixels, 1u), 1u, kSamplesPerBatch);
+}
+
+uint32_t PathRenderer::samplesPerBatch() const { return kSamplesPerBatch / samplesPerPass() * samplesPerPass(); }
+
+void PathRenderer::renderSamples(uint32_t s, uint32_t samples, RenderStats& stats) {
+  const uint32_t pixels = settings_.width * settings_.height;
+  for (uint32_t first = 0; first < pixels; first += capacity_) {
+    uint32_t bounces = renderPass(first, std::min(capacity_, pixels - first), s, samples, stats);
+    stats.maxBounces = std::max(stats.maxBounces, bounces);
+    ++stats.passes;
   }
-  stats.seconds = seconds;
-  stats.samplesPerPixel = state.nextSample;
+}
+
+std::vector<gpu::FilmPixel> PathRenderer::takeBatch() {
+  std::vector<gpu::FilmPixel> batch(size_t(settings_.width) * settings_.height);
+  film_.download(batch.data(), batch.size() * sizeof(gpu::FilmPixel));
+  film_.zero();
+  return batch;
+}
+
+void PathRenderer::restoreBatch(const std::vector<gpu::FilmPixel>& batch) {
+  film_.upload(batch.data(), batch.size() * sizeof(gpu::FilmPixel));
+}
+
+void PathRenderer::finishStats(RenderStats& stats, const RenderStats& before) {
   stats.gpuSeconds = 0.0;
   for (const auto& [name, secs] : stats.stageSeconds) stats.gpuSeconds += secs;
   auto stage = [&](const char* name) {
@@ -326,17 +345,30 @@ void PathRenderer::snapshot(RenderState& state, uint32_t inBatch, double seconds
   };
   stats.primarySeconds = stage("intersect_primary");
   stats.incoherentSeconds = stage("intersect");
-  // Queue occupancy: this run's device counters over what the state held when it started.
+  // Queue occupancy: this run's device counters over what the stats held when it started.
   std::vector<glm::uvec2> queueStats(gpu::kQueueStatsBounces);
   queueStats_.download(queueStats.data(), gpu::kQueueStatsBounces * sizeof(glm::uvec2));
-  stats.pathsByBounce = pathsBefore;
-  stats.shadowRaysByBounce = shadowBefore;
+  stats.pathsByBounce = before.pathsByBounce;
+  stats.shadowRaysByBounce = before.shadowRaysByBounce;
   stats.pathsByBounce.resize(gpu::kQueueStatsBounces, 0);
   stats.shadowRaysByBounce.resize(gpu::kQueueStatsBounces, 0);
   for (uint32_t b = 0; b < gpu::kQueueStatsBounces; ++b) {
     stats.pathsByBounce[b] += queueStats[b].x;
     stats.shadowRaysByBounce[b] += queueStats[b].y;
   }
+}
+
+void PathRenderer::snapshot(RenderState& state, uint32_t inBatch, double seconds, const RenderStats& before) {
+  const size_t pixels = state.film.pixels();
+  state.batchSamples = inBatch;
+  state.batch.clear();
+  if (inBatch > 0) {
+    state.batch.resize(pixels);
+    film_.download(state.batch.data(), pixels * sizeof(gpu::FilmPixel));
+  }
+  state.stats.seconds = seconds;
+  state.stats.samplesPerPixel = state.nextSample;
+  finishStats(state.stats, before);
 }
 
 void PathRenderer::render(RenderState& state, const RenderControl& control) {
@@ -349,7 +381,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   state.film.replicateVariance = settings_.estimator.sampler != Sampler::Independent;
   state.interrupted = false;
   RenderStats& stats = state.stats;
-  const std::vector<uint64_t> pathsBefore = stats.pathsByBounce, shadowBefore = stats.shadowRaysByBounce;
+  const RenderStats before = stats;
   const double secondsBefore = stats.seconds;
   bool showProgress = settings_.progress && isatty(STDERR_FILENO);
   queueStats_.zero();
@@ -362,7 +394,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   auto start = Clock::now();
   double lastProgress = 0.0, lastCheckpoint = 0.0;
   // Small images take several samples per pixel per pass, so that a pass fills the wavefront.
-  const uint32_t maxPerPass = std::clamp(capacity_ / std::max(pixels, 1u), 1u, kSamplesPerBatch);
+  const uint32_t maxPerPass = samplesPerPass();
   // A time budget is checked between passes: the first pass takes one sample (a slow scene must not overrun
   // by much), each later one as many as fit in a quarter of the budget at the last pass's rate per sample,
   // which includes the per-pass overhead, so pass sizes grow geometrically on overhead-bound small images.
@@ -378,11 +410,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
     }
     uint32_t samples = std::min(perPass, settings_.spp - s);
     double passStart = since(start);
-    for (uint32_t first = 0; first < pixels; first += capacity_) {
-      uint32_t bounces = renderPass(first, std::min(capacity_, pixels - first), s, samples, stats);
-      stats.maxBounces = std::max(stats.maxBounces, bounces);
-      ++stats.passes;
-    }
+    renderSamples(s, samples, stats);
     s += samples;
     state.nextSample = s;
     inBatch += samples;
@@ -397,7 +425,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
     }
     double elapsed = since(start);
     if (control.checkpoint && control.checkpointEvery > 0.0 && elapsed - lastCheckpoint >= control.checkpointEvery && !last) {
-      snapshot(state, inBatch, secondsBefore + elapsed, pathsBefore, shadowBefore);
+      snapshot(state, inBatch, secondsBefore + elapsed, before);
       control.checkpoint(state);
       lastCheckpoint = since(start);
     }
@@ -410,7 +438,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
     }
   }
   if (showProgress) std::fprintf(stderr, "\n");
-  snapshot(state, inBatch, secondsBefore + since(start), pathsBefore, shadowBefore);
+  snapshot(state, inBatch, secondsBefore + since(start), before);
 }
 
 }  // namespace vkmc

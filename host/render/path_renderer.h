@@ -34,6 +34,21 @@ class PathRenderer {
   // place; stops early, with state.interrupted, when control.stop is raised.
   void render(RenderState& state, const RenderControl& control);
   double pipelineSeconds() const { return pipelineSeconds_; }
+
+  // The pieces render() is made of, for a caller that schedules samples itself (dist/distributed_render.h):
+  // sample passes of samplesPerPass() samples a pixel, summed in float on the device until a batch of
+  // samplesPerBatch() is folded.
+  uint32_t samplesPerPass() const;
+  uint32_t samplesPerBatch() const;
+  void renderSamples(uint32_t firstSample, uint32_t samples, RenderStats& stats);  // one sample pass
+  std::vector<gpu::FilmPixel> takeBatch();                                       // the device's batch, then zeroed
+  void restoreBatch(const std::vector<gpu::FilmPixel>& batch);
+  void uploadPixelEstimate(const Film& film) { setPixelEstimate(pixelEstimateOf(film)); }
+  // Shadow roulette's running per-pixel estimate: the luminance of the film's means.
+  static std::vector<float> pixelEstimateOf(const Film& film);
+  void setPixelEstimate(const std::vector<float>& estimate);
+  // Derived stats (GPU seconds, queue occupancy) once the passes are done; the queue counters add to `before`.
+  void finishStats(RenderStats& stats, const RenderStats& before);
   // Efficiency roulette: the per-depth scales k_d the kernels read.
   void setRouletteScales(const std::array<float, kRouletteTableDepths>& scales);
   // Pilot statistics gathered by render() when settings.recordDepthStats is set.
@@ -55,10 +70,8 @@ class PathRenderer {
   void publishControl(VkCommandBuffer cmd);
   void collectCounters(RenderStats& stats);
   void foldFilm(Film& film);
-  void uploadPixelEstimate(const Film& film);
   // The state as of the last pass: seconds, queue occupancy, and the device's unfolded batch.
-  void snapshot(RenderState& state, uint32_t inBatch, double seconds, const std::vector<uint64_t>& pathsBefore,
-                const std::vector<uint64_t>& shadowBefore);
+  void snapshot(RenderState& state, uint32_t inBatch, double seconds, const RenderStats& before);
   uint32_t groupsFor(uint32_t invocations) const;
 
   vk::Context& ctx_;

@@ -1,0 +1,175 @@
+// Batches across ranks, folded in order at rank 0 (see the header).
+#include "dist/distributed_render.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+
+#include "error.h"
+#include "io/checkpoint.h"
+
+namespace vkmc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Counters of one run added to another's; the maximum for maxima.
+void addCounters(RenderStats& into, const RenderStats& from) {
+  into.cameraRays += from.cameraRays, into.extensionRays += from.extensionRays, into.shadowRays += from.shadowRays;
+  into.primaryRays += from.primaryRays;
+  for (const auto& [name, secs] : from.stageSeconds) into.stageSeconds[name] += secs;
+  into.passes += from.passes;
+  into.maxBounces = std::max(into.maxBounces, from.maxBounces);
+  into.nonfiniteEmission += from.nonfiniteEmission, into.nonfiniteLightSamples += from.nonfiniteLightSamples;
+  into.nonfiniteThroughput += from.nonfiniteThroughput, into.traversalsCut += from.traversalsCut;
+  into.deepWalks += from.deepWalks, into.deepWalksTraced += from.deepWalksTraced;
+  into.pathsByBounce.resize(std::max(into.pathsByBounce.size(), from.pathsByBounce.size()), 0);
+  into.shadowRaysByBounce.resize(std::max(into.shadowRaysByBounce.size(), from.shadowRaysByBounce.size()), 0);
+  for (size_t b = 0; b < from.pathsByBounce.size(); ++b) into.pathsByBounce[b] += from.pathsByBounce[b];
+  for (size_t b = 0; b < from.shadowRaysByBounce.size(); ++b) into.shadowRaysByBounce[b] += from.shadowRaysByBounce[b];
+}
+
+std::string bytesOf(const std::vector<gpu::FilmPixel>& batch) {
+  return std::string(reinterpret_cast<const char*>(batch.data()), batch.size() * sizeof(gpu::FilmPixel));
+}
+
+// Rank 0's pixel estimate (shadow roulette's) on every rank.
+void sharePixelEstimate(PathRenderer& renderer, const RankGroup& group, const Film& rootFilm) {
+  std::string bytes;
+  if (group.isRoot()) {
+    std::vector<float> estimate = PathRenderer::pixelEstimateOf(rootFilm);
+    bytes.assign(reinterpret_cast<const char*>(estimate.data()), estimate.size() * sizeof(float));
+  }
+  group.broadcast(bytes);
+  if (!group.isRoot()) {
+    std::vector<float> estimate(bytes.size() / sizeof(float));
+    std::memcpy(estimate.data(), bytes.data(), estimate.size() * sizeof(float));
+    renderer.setPixelEstimate(estimate);
+  }
+}
+
+}  // namespace
+
+std::vector<RankReport> renderDistributed(PathRenderer& renderer, const RankGroup& group, RenderState& state,
+                                          const RenderControl& control, const DistributedPlan& plan) {
+  const uint32_t ranks = group.size(), me = group.rank();
+  const uint32_t perPass = renderer.samplesPerPass();
+  const uint32_t batchSamples = plan.timeBudget > 0.0 ? perPass : renderer.samplesPerBatch();
+  const uint32_t slots = batchSamples / perPass;  // sample passes a batch takes (fewer for a short one)
+  const RenderStats before = state.stats;
+  RenderStats mine;
+  RankReport report;
+  report.rank = me;
+  report.device = plan.device;
+  char host[256] = "?";
+  ::gethostname(host, sizeof(host) - 1);
+  report.host = host;
+
+  if (state.film.pixels() == 0) state.film = Film(plan.width, plan.height);
+  state.film.replicateVariance = plan.replicateVariance;
+  // Where the render stands: rank 0's state (a checkpoint's, perhaps), told to every rank.
+  std::string where = group.isRoot() ? std::to_string(state.nextSample) + " " + std::to_string(state.batchSamples) : "";
+  group.broadcast(where);
+  uint32_t next = 0, partial = 0;
+  std::sscanf(where.c_str(), "%u %u", &next, &partial);
+  if (group.isRoot()) {
+    if (partial > 0) renderer.restoreBatch(state.batch);  // a single-process checkpoint's unfolded batch: rank 0 finishes it
+    if (state.film.totalSamples() + state.film.totalNonfinite() > 0) renderer.uploadPixelEstimate(state.film);
+  }
+  if (plan.refreshPixelEstimate && group.distributed()) sharePixelEstimate(renderer, group, state.film);
+
+  const uint32_t firstBatch = next / batchSamples;
+  auto range = [&](uint64_t j, uint32_t& lo, uint32_t& hi) {
+    uint64_t l = j == 0 ? next : (firstBatch + j) * uint64_t(batchSamples);
+    uint64_t h = std::min<uint64_t>((firstBatch + j + 1) * uint64_t(batchSamples), plan.spp);
+    lo = uint32_t(std::min<uint64_t>(l, plan.spp)), hi = uint32_t(std::max<uint64_t>(h, lo));
+  };
+  auto start = Clock::now();
+  double lastCheckpoint = 0.0;
+  state.interrupted = false;
+  for (uint64_t round = 0; next < plan.spp; ++round) {
+    uint32_t lo, hi;
+    range(round * ranks + me, lo, hi);
+    bool stop = false;
+    for (uint32_t slot = 0; slot < slots && !stop; ++slot) {
+      uint32_t s = lo + slot * perPass;
+      if (s < hi) {
+        auto t = Clock::now();
+        renderer.renderSamples(s, std::min(perPass, hi - s), mine);
+        report.busySeconds += since(t);
+      }
+      stop = group.maxOver(control.stop && control.stop->load() != 0 ? 1 : 0) != 0;
+    }
+    if (stop) {  // the round in flight is abandoned on every rank: the state stays that of the last round
+      renderer.takeBatch();
+      state.interrupted = true;
+      break;
+    }
+    std::string batch;
+    if (lo < hi) batch = bytesOf(renderer.takeBatch()), ++report.batches;
+    std::vector<std::string> batches = group.gather(batch);
+    uint32_t roundEnd, unused;
+    range(round * ranks + ranks - 1, unused, roundEnd);
+    next = std::max(roundEnd, std::min(next, plan.spp));
+    if (group.isRoot()) {
+      for (const std::string& b : batches)
+        if (!b.empty()) {
+          if (b.size() != state.film.pixels() * sizeof(gpu::FilmPixel)) throw Error("internal error: a rank's batch has the wrong size");
+          state.film.addBatch(reinterpret_cast<const gpu::FilmPixel*>(b.data()));
+        }
+      state.nextSample = next;
+      state.batch.clear(), state.batchSamples = 0;
+      renderer.uploadPixelEstimate(state.film);
+    }
+    if (plan.refreshPixelEstimate && group.distributed()) sharePixelEstimate(renderer, group, state.film);
+    bool budgetSpent = plan.timeBudget > 0.0 && since(start) >= plan.timeBudget;
+    if (group.maxOver(group.isRoot() && budgetSpent ? 1 : 0) != 0) break;
+    if (group.isRoot() && control.checkpoint && control.checkpointEvery > 0.0 && next < plan.spp &&
+        since(start) - lastCheckpoint >= control.checkpointEvery) {
+      state.stats = before;
+      addCounters(state.stats, mine);  // rank 0's own counters so far: the others' arrive at the end
+      state.stats.seconds = before.seconds + since(start);
+      state.stats.samplesPerPixel = next;
+      control.checkpoint(state);
+      lastCheckpoint = since(start);
+    }
+  }
+
+  // Every rank's counters to rank 0, summed over the counters the render started from.
+  renderer.finishStats(mine, RenderStats{});
+  report.rays = mine.rays();
+  report.gpuSeconds = mine.gpuSeconds;
+  nlohmann::json j = {{"stats", renderStatsJson(mine)},
+                      {"rank", report.rank},
+                      {"host", report.host},
+                      {"device", report.device},
+                      {"batches", report.batches},
+                      {"busy_seconds", report.busySeconds}};
+  std::vector<std::string> all = group.gather(j.dump());
+  std::vector<RankReport> reports;
+  if (group.isRoot()) {
+    state.stats = before;
+    for (const std::string& text : all) {
+      nlohmann::json r = nlohmann::json::parse(text);
+      RenderStats s = renderStatsFromJson(r.at("stats"));
+      addCounters(state.stats, s);
+      reports.push_back({r.at("rank"), r.at("host"), r.at("device"), s.rays(), r.at("batches"), r.at("busy_seconds"), s.gpuSeconds});
+    }
+    state.stats.gpuSeconds = 0.0;
+    for (const auto& [name, secs] : state.stats.stageSeconds) state.stats.gpuSeconds += secs;
+    auto stage = [&](const char* name) {
+      auto it = state.stats.stageSeconds.find(name);
+      return it == state.stats.stageSeconds.end() ? 0.0 : it->second;
+    };
+    state.stats.primarySeconds = stage("intersect_primary");
+    state.stats.incoherentSeconds = stage("intersect");
+    state.stats.seconds = before.seconds + since(start);
+    state.stats.samplesPerPixel = state.nextSample;
+  }
+  return reports;
+}
+
+}  // namespace vkmc
