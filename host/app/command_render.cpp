@@ -191,6 +191,7 @@ int run(RenderArgs& a, const CLI::App& cmd) {
   RunControl control;
   control.checkpointPath = checkpoint;
   control.checkpointEvery = a.checkpointEvery;
+  if (!cmd.count("--checkpoint-every")) control.checkpointShare = 0.02;  // the default promises at most 2% of the time
   control.outputs = {{"output", absolutePath(a.out)}, {"png", absolutePath(a.png)}, {"report", absolutePath(a.report)},
                      {"exposure", a.exposure}};
   if (resume) control.resumeConfig = &resume->config, control.resumeState = &resume->state;

@@ -263,10 +263,15 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   if (!run.checkpointPath.empty() && group.isRoot()) {
     control.checkpointEvery = run.checkpointEvery;
     // A periodic checkpoint that cannot be written (a full disk) leaves the last one intact and the render going.
-    control.checkpoint = [&](const RenderState& now) {
+    control.checkpoint = [&, lastEnd = Clock::now(), lastWrite = 0.0](const RenderState& now) mutable {
+      if (run.checkpointShare > 0.0 && since(lastEnd) * run.checkpointShare < lastWrite) return;
+      auto t = Clock::now();
       try {
         writeCheckpoint(run.checkpointPath, encodeCheckpoint({out.checkpointConfig, now}));
         ++out.checkpointsWritten;
+        lastWrite = since(t);
+        lastEnd = Clock::now();
+        out.checkpointSeconds += lastWrite;
       } catch (const Error& e) {
         std::fprintf(stderr, "vkmc: warning: %s (the render goes on; the last checkpoint is kept)\n", e.what());
         out.warnings.push_back(std::string(e.what()) + " (the render went on)");
@@ -363,6 +368,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["resumed"] = r.resumed;
   j["interrupted"] = r.interrupted;
   j["checkpoints_written"] = r.checkpointsWritten;
+  j["checkpoint_seconds"] = r.checkpointSeconds;
   if (!r.ranks.empty()) {
     nlohmann::json ranks = nlohmann::json::array();
     for (const RankReport& k : r.ranks)

@@ -51,6 +51,9 @@ struct RenderOptions {
 struct RunControl {
   std::string checkpointPath;           // periodic checkpoints go here ("": none)
   double checkpointEvery = 120.0;       // seconds of rendering between checkpoints
+  // > 0: periodic checkpoints are spaced further, so that writing them takes at most this share of the time (the
+  // default interval's promise; a film of 2 MP writes ~600 MB).
+  double checkpointShare = 0.0;
   nlohmann::json outputs;               // the outputs' paths, recorded in checkpoints for --resume
   const std::atomic<int>* stop = nullptr;  // raised (a signal number): stop after the pass in flight
   const nlohmann::json* resumeConfig = nullptr;  // a checkpoint's configuration, with...
@@ -85,6 +88,7 @@ struct RenderOutcome {
   RenderState finalState;
   bool interrupted = false;
   uint32_t checkpointsWritten = 0;
+  double checkpointSeconds = 0.0;  // spent encoding and writing periodic checkpoints (inside `stats.seconds`)
   bool resumed = false;
   std::vector<RankReport> ranks;  // under mpirun: what each rank did (rank 0 only)
 };
