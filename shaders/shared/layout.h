@@ -2,6 +2,7 @@
 #ifndef VKMC_LAYOUT_H
 #define VKMC_LAYOUT_H
 #include "glsl_cpp.h"
+#include "roulette.h"  // the roulette modes
 
 // Descriptor bindings of the single set used by every kernel.
 #define BINDING_TRIANGLES 0                  // imageBuffer: triangle vertices and light pmfs (scene_layout.h)
@@ -91,7 +92,6 @@ VKMC_CONST uint kMisNone = 0u, kMisBalance = 1u, kMisPower = 2u;
 VKMC_CONST uint kBsdfSamplingUniform = 0u, kBsdfSamplingCosine = 1u, kBsdfSamplingFull = 2u;
 VKMC_CONST uint kLightSamplingArea = 0u, kLightSamplingSolidAngle = 1u;
 VKMC_CONST uint kPunctualPoint = 0u, kPunctualSpot = 1u, kPunctualDirectional = 2u;
-VKMC_CONST uint kRouletteNone = 0u, kRouletteFixed = 1u, kRouletteThroughput = 2u, kRouletteEfficiency = 3u;
 VKMC_CONST uint kPixelFilterBox = 0u, kPixelFilterGaussian = 1u, kPixelFilterMitchell = 2u, kPixelFilterBlackmanHarris = 3u;
 // SPEC_PIXEL_FILTER: the box of radius 1/2 places a sample at u in its pixel, weight 1, and reads nothing (the
 // default: no filter code in the kernels); every other filter is sampled from BINDING_PIXEL_FILTER's table.
