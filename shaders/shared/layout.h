@@ -238,12 +238,18 @@ struct PushConstants {
 struct FurnaceProbePush {
   float albedo;        // Lambertian albedo of the surface every ray hits
   float emission;      // its emitted radiance Le: L = Le / (1 - albedo)
-  uint rouletteMode;   // kRouletteThroughput or kRouletteEfficiency (scales from BINDING_ROULETTE_TABLE)
-  uint rouletteDepth;  // as SPEC_RR_DEPTH
+  uint rouletteDepth;  // as SPEC_RR_DEPTH (the mode is SPEC_RR_MODE, as in shade)
   uint seed;
   uint verticesPerInvocation;  // a lane starts paths until it has traced this many vertices
   uint invocations;
-  uint unused;
+  uint unused0, unused1;
+};
+
+// What one lane of the furnace probe returns.
+struct FurnaceProbeLane {
+  float sum, sumSq;         // Kahan sums of L and L^2 over its finished paths
+  uint vertices;            // vertices traced
+  uint paths;               // paths finished; top bit: llvmpipe's loop limiter ended the lane with a path in flight
 };
 
 VKMC_END_NAMESPACE
@@ -274,6 +280,7 @@ static_assert(sizeof(TestRay) == 32);
 static_assert(sizeof(PushConstants) == 128);
 static_assert(offsetof(PushConstants, cameraOrigin) == 32);
 static_assert(sizeof(FurnaceProbePush) == 32);
+static_assert(sizeof(FurnaceProbeLane) == 16 && offsetof(FurnaceProbeLane, paths) == 12);
 }  // namespace vkmc::gpu
 #endif
 #endif
