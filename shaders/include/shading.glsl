@@ -303,9 +303,7 @@ bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3
   if (continues && rouletteApplies(depth, kRouletteDepth) && kRouletteMode != kRouletteNone) {
     float r = sampleU(stream, bounceDim(depth, kDimRoulette));
     float scale = kRouletteMode == kRouletteEfficiency ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] : 1.0;
-    RouletteStep rr = kRouletteMode == kRouletteFixed        ? fixedRoulette(kRouletteQ, r)
-                      : kRouletteMode == kRouletteEfficiency ? throughputRoulette(maxComponent(beta) * splitWeight, scale, r)
-                                                             : sqrtThroughputRoulette(maxComponent(beta) * splitWeight, r);
+    RouletteStep rr = rouletteStep(kRouletteMode, maxComponent(beta) * splitWeight, scale, kRouletteQ, r);
     vec3 cValue = beta * kRouletteC;  // the fixed mode's constant c, as throughput
     if (kRouletteMode == kRouletteFixed && rr.survives) gathered -= cValue * fixedRouletteCompensation(kRouletteQ);
     if (kRouletteMode == kRouletteFixed && !rr.survives) gathered += cValue;

@@ -4,42 +4,48 @@
 // every ray hits a Lambertian surface of albedo a that emits Le (L = Le / (1 - a)). Intersection is left out:
 // a 5-sigma interval of 0.1% needs ~2.5e7 paths of ~1 / (1 - a) vertices each, hours through the wavefront on
 // lavapipe, seconds here. What remains is exactly the per-vertex code of shade.comp for a Lambertian scene:
-// cosine sampling and its pdf, the BRDF weight, the roulette decision (roulette.h's throughputRoulette), the
-// random-number dimensions, float throughput over thousands of vertices.
+// cosine sampling and its pdf, the BRDF weight, the roulette decision (roulette.h's rouletteStep, as shade calls
+// it), the random-number dimensions, float throughput over thousands of vertices.
 //
 // One flat loop, one vertex per iteration: a lane starts a new path when one ends until it has spent its vertex
 // budget, then finishes the path in flight (dropping it would favour short paths). Nested loops ran into
 // llvmpipe's silent loop limit (docs/performance.md, "A lavapipe pitfall"); a lane whose loop is cut still has a
 // path in flight, and says so.
-// Output per invocation: (sum of L, sum of L^2, vertices, paths | cut flag in the top bit).
+// Output per invocation: FurnaceProbeLane.
 #include "layout.h"
 #include "rng.h"
 #include "sampling.h"
 #include "roulette.h"
 
 layout(local_size_x_id = SPEC_WORKGROUP_SIZE) in;
+layout(constant_id = SPEC_RR_MODE) const uint kRouletteMode = kRouletteThroughput;  // as in shade: no fixed mode here
 layout(push_constant, std430) uniform Push { FurnaceProbePush probe; };
 layout(binding = BINDING_ROULETTE_TABLE, std430) readonly buffer RouletteTable { float rouletteScale[]; };
-layout(binding = BINDING_TEST_HITS, std430) writeonly buffer Sums { vec4 sums[]; };
+layout(binding = BINDING_TEST_HITS, std430) writeonly buffer Lanes { FurnaceProbeLane lanes[]; };
 
-// shade.comp's continuation at a Lambertian vertex with cosine (= BSDF) sampling, and its roulette.
+// The efficiency scales, read once per lane: a storage-buffer load per vertex made llvmpipe's vertex 1.6x as
+// expensive (LAVAPIPE.md: SSBO loads loop over the lanes). The same values shade reads from rouletteScale.
+float scaleRows[kRouletteTableDepths];
+
+// shade.comp's continuation at a Lambertian vertex with cosine (= BSDF) sampling, and its roulette. Written without
+// early returns (a path that ends discards beta), which llvmpipe runs a little faster; the arithmetic is the same.
 bool continuePath(uint key, uint depth, inout float beta) {
   vec2 u = vec2(randomUnit(key, bounceDim(depth, kDimBsdf)), randomUnit(key, bounceDim(depth, kDimBsdf + 1u)));
   vec3 wi = sampleCosineHemisphere(u);
   float pdf = cosineHemispherePdf(wi.z);
-  if (!(pdf > 0.0 && wi.z > 0.0)) return false;
+  bool continues = pdf > 0.0 && wi.z > 0.0;
   beta *= probe.albedo * kInvPi * (wi.z / pdf);
-  if (!rouletteApplies(depth, probe.rouletteDepth)) return true;
-  float scale = probe.rouletteMode == kRouletteEfficiency ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] : 1.0;
-  RouletteStep rr = throughputRoulette(beta, scale, randomUnit(key, bounceDim(depth, kDimRoulette)));
-  if (!rr.survives) return false;
-  beta /= rr.survival;
-  return true;
+  bool applies = continues && rouletteApplies(depth, probe.rouletteDepth);
+  float scale = kRouletteMode == kRouletteEfficiency ? scaleRows[min(depth, kRouletteTableDepths - 1u)] : 1.0;
+  RouletteStep rr = rouletteStep(kRouletteMode, beta, scale, 0.0, randomUnit(key, bounceDim(depth, kDimRoulette)));
+  beta /= applies ? rr.survival : 1.0;
+  return continues && (!applies || rr.survives);
 }
 
 void main() {
   uint id = gl_GlobalInvocationID.x;
   if (id >= probe.invocations) return;
+  for (uint d = 0u; d < kRouletteTableDepths; ++d) scaleRows[d] = rouletteScale[d];
   // Kahan sums (precise: the compiler must not cancel the compensation away).
   precise float sum = 0.0, sumC = 0.0, sumSq = 0.0, sumSqC = 0.0;
   uint paths = 0u, vertices = 0u, depth = 0u;
@@ -72,5 +78,10 @@ void main() {
     radiance = 0.0;
     depth = 0u;
   }
-  sums[id] = vec4(sum, sumSq, uintBitsToFloat(vertices), uintBitsToFloat(paths | (inFlight ? 0x80000000u : 0u)));
+  FurnaceProbeLane lane;
+  lane.sum = sum;
+  lane.sumSq = sumSq;
+  lane.vertices = vertices;
+  lane.paths = paths | (inFlight ? 0x80000000u : 0u);
+  lanes[id] = lane;
 }

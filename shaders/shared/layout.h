@@ -2,6 +2,7 @@
 #ifndef VKMC_LAYOUT_H
 #define VKMC_LAYOUT_H
 #include "glsl_cpp.h"
+#include "roulette.h"  // the roulette modes
 
 // Descriptor bindings of the single set used by every kernel.
 #define BINDING_TRIANGLES 0                  // imageBuffer: triangle vertices and light pmfs (scene_layout.h)
@@ -91,7 +92,6 @@ VKMC_CONST uint kMisNone = 0u, kMisBalance = 1u, kMisPower = 2u;
 VKMC_CONST uint kBsdfSamplingUniform = 0u, kBsdfSamplingCosine = 1u, kBsdfSamplingFull = 2u;
 VKMC_CONST uint kLightSamplingArea = 0u, kLightSamplingSolidAngle = 1u;
 VKMC_CONST uint kPunctualPoint = 0u, kPunctualSpot = 1u, kPunctualDirectional = 2u;
-VKMC_CONST uint kRouletteNone = 0u, kRouletteFixed = 1u, kRouletteThroughput = 2u, kRouletteEfficiency = 3u;
 VKMC_CONST uint kPixelFilterBox = 0u, kPixelFilterGaussian = 1u, kPixelFilterMitchell = 2u, kPixelFilterBlackmanHarris = 3u;
 // SPEC_PIXEL_FILTER: the box of radius 1/2 places a sample at u in its pixel, weight 1, and reads nothing (the
 // default: no filter code in the kernels); every other filter is sampled from BINDING_PIXEL_FILTER's table.
@@ -238,12 +238,18 @@ struct PushConstants {
 struct FurnaceProbePush {
   float albedo;        // Lambertian albedo of the surface every ray hits
   float emission;      // its emitted radiance Le: L = Le / (1 - albedo)
-  uint rouletteMode;   // kRouletteThroughput or kRouletteEfficiency (scales from BINDING_ROULETTE_TABLE)
-  uint rouletteDepth;  // as SPEC_RR_DEPTH
+  uint rouletteDepth;  // as SPEC_RR_DEPTH (the mode is SPEC_RR_MODE, as in shade)
   uint seed;
   uint verticesPerInvocation;  // a lane starts paths until it has traced this many vertices
   uint invocations;
-  uint unused;
+  uint unused0, unused1;
+};
+
+// What one lane of the furnace probe returns.
+struct FurnaceProbeLane {
+  float sum, sumSq;         // Kahan sums of L and L^2 over its finished paths
+  uint vertices;            // vertices traced
+  uint paths;               // paths finished; top bit: llvmpipe's loop limiter ended the lane with a path in flight
 };
 
 VKMC_END_NAMESPACE
@@ -274,6 +280,7 @@ static_assert(sizeof(TestRay) == 32);
 static_assert(sizeof(PushConstants) == 128);
 static_assert(offsetof(PushConstants, cameraOrigin) == 32);
 static_assert(sizeof(FurnaceProbePush) == 32);
+static_assert(sizeof(FurnaceProbeLane) == 16 && offsetof(FurnaceProbeLane, paths) == 12);
 }  // namespace vkmc::gpu
 #endif
 #endif

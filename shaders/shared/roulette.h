@@ -12,6 +12,9 @@ VKMC_BEGIN_NAMESPACE
 // variance above albedo 0.975. 0.999 keeps the variance finite up to albedo 0.9995 and still ends paths.
 VKMC_CONST float kRouletteMaxSurvival = 0.999f;
 
+// Roulette modes (SPEC_RR_MODE): none, fixed q, throughput (the sqrt rule below), efficiency (scaled max beta).
+VKMC_CONST uint kRouletteNone = 0u, kRouletteFixed = 1u, kRouletteThroughput = 2u, kRouletteEfficiency = 3u;
+
 // One roulette decision: whether the path survives, and the probability a survivor's throughput is divided by.
 struct RouletteStep {
   bool survives;
@@ -49,6 +52,14 @@ VKMC_FN RouletteStep throughputRoulette(float unsplitThroughput, float scale, fl
 // 8% more rays (docs/estimators.md); the efficiency rule keeps k_d * max(beta), which its pilot models.
 VKMC_FN RouletteStep sqrtThroughputRoulette(float unsplitThroughput, float r) {
   return throughputRoulette(sqrt(unsplitThroughput), 1.0f, r);
+}
+
+// The path kernels' decision by mode, one definition for shade and the analytic furnace probe so that the probe
+// tests the renderer's rule: `scale` is the efficiency mode's k_d at this depth, q the fixed mode's probability.
+VKMC_FN RouletteStep rouletteStep(uint mode, float unsplitThroughput, float scale, float q, float r) {
+  return mode == kRouletteFixed        ? fixedRoulette(q, r)
+         : mode == kRouletteEfficiency ? throughputRoulette(unsplitThroughput, scale, r)
+                                       : sqrtThroughputRoulette(unsplitThroughput, r);
 }
 
 // Roulette decides at the continuation from vertex `depth` once depth + 1 reaches the first roulette depth.

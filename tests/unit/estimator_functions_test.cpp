@@ -92,6 +92,13 @@ TEST(EstimatorFunctions, RouletteKeepsTheExpectedValue) {
     }
     EXPECT_NEAR(sqrtMean / n, beta, 2e-4 * beta) << "sqrt throughput roulette, beta " << beta;
     EXPECT_NEAR(sqrtThroughputRoulette(beta, 0.5f).survival, std::min(std::sqrt(beta), kRouletteMaxSurvival), 1e-6f);
+    // rouletteStep, which shade and the furnace probe call: each mode is its rule.
+    for (float r : {0.1f, 0.6f, 0.99f}) {
+      auto same = [](RouletteStep a, RouletteStep b) { return a.survives == b.survives && a.survival == b.survival; };
+      EXPECT_TRUE(same(rouletteStep(kRouletteFixed, beta, 2.0f, 0.3f, r), fixedRoulette(0.3f, r)));
+      EXPECT_TRUE(same(rouletteStep(kRouletteEfficiency, beta, 2.0f, 0.3f, r), throughputRoulette(beta, 2.0f, r)));
+      EXPECT_TRUE(same(rouletteStep(kRouletteThroughput, beta, 2.0f, 0.3f, r), sqrtThroughputRoulette(beta, r)));
+    }
   }
   EXPECT_TRUE(rouletteApplies(2u, 3u));
   EXPECT_FALSE(rouletteApplies(1u, 3u));
