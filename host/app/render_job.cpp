@@ -351,6 +351,8 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                              {"shade_continuation", s.nonfiniteThroughput},
                              {"traversal_cut_by_loop_limit", s.traversalsCut},
                              {"accumulate_excluded_samples", r.film.totalNonfinite()}};
+  // Finite samples too bright for float squares (a channel >= 2^56): counted apart, and kept (scaled sums).
+  j["high_range_samples"] = r.film.totalHighRange();
   j["samples"] = r.film.totalSamples();
   j["mean"] = {mean.x, mean.y, mean.z};
   j["mean_variance"] = {var.x, var.y, var.z};
@@ -446,13 +448,14 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 "rays        %llu (camera %llu, extension %llu, shadow %llu; %llu deep walks): %.2f Mrays/s\n"
                 "mean        %.6g %.6g %.6g\n"
                 "variance    %.3g %.3g %.3g (image mean of the per-pixel variance of the mean)\n"
-                "non-finite  %llu samples excluded\n",
+                "non-finite  %llu samples excluded (%llu finite samples above 2^56 kept in the scaled sums)\n",
                 o.scenePath.c_str(), r.sceneInfo.triangles, r.sceneInfo.emissiveTriangles, r.device.c_str(), r.width, r.height,
                 s.samplesPerPixel, r.cameraName.c_str(), pixelFilterSummary(o.filter).c_str(), o.estimator.summary().c_str(), s.seconds, s.gpuSeconds, r.setup.total(),
                 r.setup.load, r.setup.bvh, r.setup.upload, r.setup.pipelines, (unsigned long long)s.rays(),
                 (unsigned long long)s.cameraRays, (unsigned long long)s.extensionRays, (unsigned long long)s.shadowRays,
                 (unsigned long long)s.deepWalks, s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z, var.x,
-                var.y, var.z, (unsigned long long)r.film.totalNonfinite());
+                var.y, var.z, (unsigned long long)r.film.totalNonfinite(),
+                (unsigned long long)r.film.totalHighRange());
   std::string text = buf;
   if (r.error)
     text += "error       relMSE " + std::to_string(r.error->relmse) + ", MSE " + std::to_string(r.error->mse) +

@@ -73,8 +73,8 @@ namespace {
 // The payload's arrays, in order, for a film of `pixels` pixels: one list serves encoding and decoding.
 template <class FilmT, class Visit>
 void forEachArray(FilmT& film, Visit&& visit) {
-  visit(film.sum), visit(film.sumSq), visit(film.count), visit(film.nonfinite), visit(film.replicateSum),
-      visit(film.replicateCount);
+  visit(film.sum), visit(film.sumSq), visit(film.count), visit(film.nonfinite), visit(film.highRange),
+      visit(film.replicateSum), visit(film.replicateCount);
 }
 
 void appendU64(std::string& out, uint64_t v) { out.append(reinterpret_cast<const char*>(&v), 8); }

@@ -13,6 +13,7 @@ Film::Film(uint32_t w, uint32_t h)
       sumSq(3 * pixels(), 0.0),
       count(pixels(), 0),
       nonfinite(pixels(), 0),
+      highRange(pixels(), 0),
       replicateSum(3 * gpu::kSampleReplicates * pixels(), 0.0),
       replicateCount(gpu::kSampleReplicates * pixels(), 0) {}
 
@@ -25,6 +26,7 @@ void Film::addBatch(const gpu::FilmPixel* px) {
     }
     count[p] += static_cast<uint64_t>(px[p].sum[3]);
     nonfinite[p] += static_cast<uint64_t>(px[p].sumSq[3]);
+    highRange[p] += static_cast<uint64_t>(px[p].sumHigh[3]);
     // The last replicate is the rest of the batch: its sums and count by difference.
     const uint32_t last = gpu::kSampleReplicates - 1;
     double rest[3];
@@ -88,6 +90,12 @@ glm::dvec3 Film::imageMeanVarianceOfMean() const {
 uint64_t Film::totalNonfinite() const {
   uint64_t n = 0;
   for (uint64_t v : nonfinite) n += v;
+  return n;
+}
+
+uint64_t Film::totalHighRange() const {
+  uint64_t n = 0;
+  for (uint64_t v : highRange) n += v;
   return n;
 }
 

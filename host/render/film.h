@@ -16,6 +16,7 @@ struct Film {
   std::vector<double> sumSq;    // 3 per pixel
   std::vector<uint64_t> count;  // finite samples per pixel
   std::vector<uint64_t> nonfinite;
+  std::vector<uint64_t> highRange;  // finite samples with a channel >= 2^56, kept in the scaled high sums
   // Replicates (shaders/shared/sampler.h): per pixel kSampleReplicates sums (3 each) and counts.
   std::vector<double> replicateSum;
   std::vector<uint64_t> replicateCount;
@@ -41,6 +42,7 @@ struct Film {
   glm::dvec3 imageMeanVarianceOfMean() const;  // image mean of the per-pixel variance of the mean
   uint64_t totalNonfinite() const;
   uint64_t totalSamples() const;
+  uint64_t totalHighRange() const;
 };
 
 }  // namespace vkmc

@@ -1,6 +1,7 @@
 // Instance and device creation: Vulkan 1.2, one compute queue, nothing else.
 #include "vk/context.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <vector>
 
@@ -32,15 +33,21 @@ Context::Context(const ContextOptions& options) {
   if (const char* env = std::getenv("VKMC_DEVICE"); env && index < 0) index = std::atoi(env);
   if (index >= static_cast<int>(devices.size())) throw Error("device index " + std::to_string(index) + " out of range");
   if (index < 0) {
-    index = 0;
+    // The first discrete GPU; under mpirun with several on a host, each rank of the host its own, round robin by
+    // the launcher's local rank.
+    std::vector<int> discrete;
     for (size_t i = 0; i < devices.size(); ++i) {
       VkPhysicalDeviceProperties p;
       vkGetPhysicalDeviceProperties(devices[i], &p);
-      if (p.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU) {
-        index = static_cast<int>(i);
+      if (p.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU) discrete.push_back(static_cast<int>(i));
+    }
+    int localRank = 0;
+    for (const char* name : {"OMPI_COMM_WORLD_LOCAL_RANK", "MPI_LOCALRANKID", "SLURM_LOCALID"})
+      if (const char* env = std::getenv(name)) {
+        localRank = std::max(0, std::atoi(env));
         break;
       }
-    }
+    index = discrete.empty() ? 0 : discrete[size_t(localRank) % discrete.size()];
   }
   physical_ = devices[index];
   vkGetPhysicalDeviceProperties(physical_, &properties_);

@@ -20,7 +20,7 @@ void main() {
       vec3 low = mix(L, vec3(0.0), high), scaled = mix(vec3(0.0), L * kFilmHighScale, high);
       f.sum += vec4(low, 1.0);
       f.sumSq.rgb += low * low;
-      f.sumHigh.rgb += scaled;
+      f.sumHigh += vec4(scaled, any(high) ? 1.0 : 0.0);  // w: samples kept in the high sums
       f.sumSqHigh.rgb += scaled * scaled;
       uint replicate = (pc.sampleIndex + s) % kSampleReplicates;
       if (replicate + 1u < kSampleReplicates) f.replicate[replicate] += vec4(L, 1.0);

@@ -179,7 +179,7 @@ VKMC_CONST uint kSampleReplicates = 4u;
 struct FilmPixel {
   vec4 sum;        // rgb: sum of estimate channels below the threshold, w: finite samples
   vec4 sumSq;      // rgb: sum of their squares, w: non-finite samples (counted, excluded)
-  vec4 sumHigh;    // rgb: sum of channels at or above the threshold, times kFilmHighScale; w unused
+  vec4 sumHigh;    // rgb: sum of channels at or above the threshold, times kFilmHighScale; w: samples with one
   vec4 sumSqHigh;  // rgb: sum of the squares of those scaled channels; w unused
   vec4 replicate[kSampleReplicates - 1u];  // rgb: sum of replicate r's finite samples, w: their count
 };

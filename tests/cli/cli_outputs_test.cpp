@@ -252,6 +252,7 @@ TEST(CliOutputs, HugeGroundsAndBrightLightsRender) {
                         " --look-from 0,10,0 --look-at 0,0,1 -o " + (dir() / "g.exr").string() + " --report " + report.string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NEAR(reportMean(report), 1.0, 1e-3);
+  EXPECT_EQ(nlohmann::json::parse(slurp(report))["high_range_samples"].get<uint64_t>(), 0u);
   // Radiance 2e19: finite, but its square overflows float; it was counted as non-finite and dropped.
   std::string bright =
       R"({"emissiveFactor":[1,1,1],"doubleSided":true,"extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":2e19}}})";
@@ -260,6 +261,7 @@ TEST(CliOutputs, HugeGroundsAndBrightLightsRender) {
   ASSERT_EQ(r.code, 0) << r.err;
   nlohmann::json j = nlohmann::json::parse(slurp(report));
   EXPECT_EQ(j["nonfinite_samples"].get<uint64_t>(), 0u);
+  EXPECT_GT(j["high_range_samples"].get<uint64_t>(), 0u);  // counted apart from the non-finite ones, and kept
   EXPECT_GT(j["mean"][0].get<double>(), 1e18);
   EXPECT_TRUE(std::isfinite(j["mean_variance"][0].get<double>()));
 }

@@ -126,3 +126,24 @@ TEST(ResumedRenderRefusal, AnotherConfigurationIsNamed) {
   size.width = 128;
   EXPECT_NE(refusal(size).find("differs in width"), std::string::npos) << refusal(size);
 }
+
+TEST(ResumedTimeBudget, ContinuesWithWhatIsLeftOfTheBudget) {
+  RenderOptions o = options(1u << 24, EstimatorConfig{});
+  o.timeBudget = 0.5;
+  RunControl run;
+  run.checkpointPath = (dir() / "budget.ckpt").string();
+  run.checkpointEvery = 1e-9;
+  RenderOutcome full = runRender(sharedContext(), o, run);
+  if (full.checkpointsWritten == 0) GTEST_SKIP() << "the budget held one pass only";
+  Checkpoint ck = readCheckpoint(run.checkpointPath);
+  RunControl resume;
+  resume.resumeConfig = &ck.config;
+  resume.resumeState = &ck.state;
+  const uint32_t before = ck.state.nextSample;
+  const double secondsBefore = ck.state.stats.seconds;
+  RenderOutcome resumed = runRender(sharedContext(), o, resume);
+  // At least one more pass (a budget always takes one), and the seconds of both runs in the report.
+  EXPECT_GT(resumed.stats.samplesPerPixel, before);
+  EXPECT_GT(resumed.stats.seconds, secondsBefore);
+  EXPECT_EQ(resumed.film.count[0], resumed.stats.samplesPerPixel);
+}
