@@ -158,14 +158,7 @@ std::vector<RankReport> renderDistributed(PathRenderer& renderer, const RankGrou
       addCounters(state.stats, s);
       reports.push_back({r.at("rank"), r.at("host"), r.at("device"), s.rays(), r.at("batches"), r.at("busy_seconds"), s.gpuSeconds});
     }
-    state.stats.gpuSeconds = 0.0;
-    for (const auto& [name, secs] : state.stats.stageSeconds) state.stats.gpuSeconds += secs;
-    auto stage = [&](const char* name) {
-      auto it = state.stats.stageSeconds.find(name);
-      return it == state.stats.stageSeconds.end() ? 0.0 : it->second;
-    };
-    state.stats.primarySeconds = stage("intersect_primary");
-    state.stats.incoherentSeconds = stage("intersect");
+    state.stats.deriveStageTotals();
     state.stats.seconds = before.seconds + since(start);
     state.stats.samplesPerPixel = state.nextSample;
   }

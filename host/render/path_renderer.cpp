@@ -337,14 +337,7 @@ void PathRenderer::restoreBatch(const std::vector<gpu::FilmPixel>& batch) {
 }
 
 void PathRenderer::finishStats(RenderStats& stats, const RenderStats& before) {
-  stats.gpuSeconds = 0.0;
-  for (const auto& [name, secs] : stats.stageSeconds) stats.gpuSeconds += secs;
-  auto stage = [&](const char* name) {
-    auto it = stats.stageSeconds.find(name);
-    return it == stats.stageSeconds.end() ? 0.0 : it->second;
-  };
-  stats.primarySeconds = stage("intersect_primary");
-  stats.incoherentSeconds = stage("intersect");
+  stats.deriveStageTotals();
   // Queue occupancy: this run's device counters over what the stats held when it started.
   std::vector<glm::uvec2> queueStats(gpu::kQueueStatsBounces);
   queueStats_.download(queueStats.data(), gpu::kQueueStatsBounces * sizeof(glm::uvec2));

@@ -56,6 +56,15 @@ struct RenderStats {
   // deeper bounces), over the whole render.
   std::vector<uint64_t> pathsByBounce, shadowRaysByBounce;
   uint64_t rays() const { return cameraRays + extensionRays + shadowRays; }
+  // gpuSeconds, primarySeconds and incoherentSeconds from stageSeconds.
+  void deriveStageTotals() {
+    gpuSeconds = 0.0;
+    for (const auto& [name, secs] : stageSeconds) gpuSeconds += secs;
+    auto it = stageSeconds.find("intersect_primary");
+    primarySeconds = it == stageSeconds.end() ? 0.0 : it->second;
+    it = stageSeconds.find("intersect");
+    incoherentSeconds = it == stageSeconds.end() ? 0.0 : it->second;
+  }
 };
 
 // The kernels a render dispatches, with the specialization constants each is built with.

@@ -15,8 +15,6 @@
 namespace fs = std::filesystem;
 using namespace vkmc::test;
 
-extern char** environ;
-
 namespace {
 
 fs::path dir() {
@@ -24,15 +22,6 @@ fs::path dir() {
   return d;
 }
 
-pid_t spawnVkmc(std::vector<std::string> args) {
-  args.insert(args.begin(), VKMC_BINARY);
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = -1;
-  posix_spawn(&pid, VKMC_BINARY, nullptr, nullptr, argv.data(), environ);
-  return pid;
-}
 
 // 64x64 pixels take 64 samples a pass: 8 passes, a second or more on lavapipe.
 const std::string kRender = " --width 64 --height 64 --spp 512 --seed 5 -q";

@@ -16,23 +16,12 @@
 namespace fs = std::filesystem;
 using namespace vkmc::test;
 
-extern char** environ;
-
 namespace {
 fs::path dir() {
   static fs::path d = makeTempDir("faults");
   return d;
 }
 
-pid_t spawnVkmc(std::vector<std::string> args) {
-  args.insert(args.begin(), VKMC_BINARY);
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = -1;
-  posix_spawn(&pid, VKMC_BINARY, nullptr, nullptr, argv.data(), environ);
-  return pid;
-}
 }  // namespace
 
 TEST(CliFaults, AFullDiskFailsCleanlyAndKeepsTheOldOutput) {

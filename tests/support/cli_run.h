@@ -1,12 +1,15 @@
 // Runs the vkmc binary for end-to-end tests: exit code, stdout and stderr.
 #pragma once
+#include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "test_scenes.h"
 
@@ -44,6 +47,17 @@ inline bool hasTemporaries(const std::filesystem::path& d) {
   for (const auto& f : std::filesystem::directory_iterator(d))
     if (f.path().filename().string().rfind(".vkmc-", 0) == 0) return true;
   return false;
+}
+
+// Starts vkmc with these arguments without waiting (for signals and races); -1 when it could not start.
+inline pid_t spawnVkmc(std::vector<std::string> args) {
+  args.insert(args.begin(), VKMC_BINARY);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = -1;
+  if (posix_spawn(&pid, VKMC_BINARY, nullptr, nullptr, argv.data(), ::environ) != 0) return -1;  // unistd.h (_GNU_SOURCE)
+  return pid;
 }
 
 inline std::string cornell() { return std::string(VKMC_SOURCE_DIR) + "/scenes/cornell_box.gltf"; }
