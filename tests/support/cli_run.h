@@ -1,5 +1,6 @@
 // Runs the vkmc binary for end-to-end tests: exit code, stdout and stderr.
 #pragma once
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -55,9 +56,20 @@ inline pid_t spawnVkmc(std::vector<std::string> args) {
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
+  // SIGINT and SIGTERM at their defaults: a test run from a background shell inherits SIGINT ignored, and vkmc
+  // keeps an ignored signal ignored (nohup), which would make the signal tests skip.
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGINT);
+  sigaddset(&defaults, SIGTERM);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF);
   pid_t pid = -1;
-  if (posix_spawn(&pid, VKMC_BINARY, nullptr, nullptr, argv.data(), ::environ) != 0) return -1;  // unistd.h (_GNU_SOURCE)
-  return pid;
+  int failed = posix_spawn(&pid, VKMC_BINARY, nullptr, &attr, argv.data(), ::environ);  // ::environ: unistd.h
+  posix_spawnattr_destroy(&attr);
+  return failed ? -1 : pid;
 }
 
 inline std::string cornell() { return std::string(VKMC_SOURCE_DIR) + "/scenes/cornell_box.gltf"; }
