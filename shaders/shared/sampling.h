@@ -7,19 +7,25 @@ VKMC_BEGIN_NAMESPACE
 VKMC_CONST float kPi = 3.14159265358979323846f;
 VKMC_CONST float kInvPi = 0.31830988618379067154f;
 
-// Shirley-Chiu concentric map: low distortion, so stratification survives.
+// (cos, sin) of (pi/4) t for t in [-1, 1]: Taylor polynomials to x^10 and x^9, whose remainders there (1e-10,
+// 2e-9) are below float rounding. llvmpipe's general cos and sin reduce the range first: a cosine-sampled
+// vertex of the furnace probe spent a third of its time in them (docs/performance.md, "The furnace probe's vertex").
+VKMC_FN vec2 cosSinQuarterPi(float t) {
+  float x = (kPi / 4.0f) * t, x2 = x * x;
+  float c = 1.0f + x2 * (-0.5f + x2 * (4.16666667e-2f + x2 * (-1.38888889e-3f + x2 * (2.48015873e-5f + x2 * -2.75573192e-7f))));
+  float s = x * (1.0f + x2 * (-1.66666667e-1f + x2 * (8.33333333e-3f + x2 * (-1.98412698e-4f + x2 * 2.75573192e-6f))));
+  return vec2(c, s);
+}
+
+// Shirley-Chiu concentric map: low distortion, so stratification survives. In the wedges where |o.y| >= |o.x|
+// the angle is pi/2 - (pi/4) t, whose cosine and sine are the sine and cosine of (pi/4) t.
 VKMC_FN vec2 sampleUniformDiskConcentric(vec2 u) {
   vec2 o = 2.0f * u - vec2(1.0f);
   if (o.x == 0.0f && o.y == 0.0f) return vec2(0.0f);
-  float r, theta;
-  if (abs(o.x) > abs(o.y)) {
-    r = o.x;
-    theta = (kPi / 4.0f) * (o.y / o.x);
-  } else {
-    r = o.y;
-    theta = (kPi / 2.0f) - (kPi / 4.0f) * (o.x / o.y);
-  }
-  return r * vec2(cos(theta), sin(theta));
+  bool xMajor = abs(o.x) > abs(o.y);
+  float r = xMajor ? o.x : o.y;
+  vec2 cs = cosSinQuarterPi(xMajor ? o.y / o.x : o.x / o.y);
+  return r * (xMajor ? cs : vec2(cs.y, cs.x));
 }
 
 // Inverse of sampleUniformDiskConcentric (pbrt-v4's InvertUniformDiskConcentricSample).

@@ -145,16 +145,7 @@ TEST_P(GlossyTechnique, VeachSceneMatchesTheBaselineOnEachPlate) {
 INSTANTIATE_TEST_SUITE_P(Unbiased, EstimatorVariant, ::testing::ValuesIn(variants()), variantName);
 INSTANTIATE_TEST_SUITE_P(Unbiased, GlossyTechnique, ::testing::ValuesIn(glossyTechniques()), variantName);
 
-TEST(EstimatorUnbiased, StiffFurnaceWithEfficiencyRoulette) {
-  EstimatorConfig c;
-  c.rr = RouletteMode::Efficiency;
-  RenderOutcome r = renderWith("furnace_stiff.gltf", c, 8, 8, 64);
-  ASSERT_EQ(r.film.totalNonfinite(), 0u);
-  RegionStats s = whole(r.film);
-  EXPECT_TRUE(regionMatches(s, glm::dvec3(100.0), 5.0));
-  EXPECT_LT(std::sqrt(s.variance.x), 0.5) << "the test must resolve a 2.5% bias";
-}
-
+// Efficiency roulette on this furnace (8x8, 64 spp, no cap) is stiff_furnace_test's full render, at 5 sigma there.
 TEST(EstimatorUnbiased, StiffFurnaceWithThroughputRoulette) {
   // Albedo 0.99, Le = 1: L = 100. Paths run hundreds of bounces; no depth cap.
   RenderOutcome r = renderWith("furnace_stiff.gltf", EstimatorConfig{}, 16, 16, 192);
