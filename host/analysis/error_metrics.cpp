@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "analysis/student_t.h"
 #include "error.h"
 #include "render/film.h"
 
@@ -55,6 +56,11 @@ ErrorMetrics compareImages(const ExrImage& a, const ExrImage& b, double alpha, b
   const char* rgb[] = {"R", "G", "B"};
   const char* var[] = {"variance.R", "variance.G", "variance.B"};
   m.hasZTest = a.channels.count(var[0]) && b.channels.count(var[0]);
+  // With both images' degrees of freedom the test is Welch's t (a QMC pixel's variance has only 3), else the z.
+  const bool hasDof = m.hasZTest && a.channels.count("variance.dof") && b.channels.count("variance.dof");
+  const std::vector<float>* dofA = hasDof ? &channel(a, "variance.dof", "image") : nullptr;
+  const std::vector<float>* dofB = hasDof ? &channel(b, "variance.dof", "reference") : nullptr;
+  m.studentT = hasDof;
   // Sidak: each of the 3 * pixels tests at level 1 - (1 - alpha)^(1 / tests), two-sided.
   double perTest = perPixelLevel ? alpha : 1.0 - std::pow(1.0 - alpha, 1.0 / (3.0 * m.pixels));
   m.zThreshold = normalQuantile(1.0 - perTest / 2.0);
@@ -73,8 +79,13 @@ ErrorMetrics compareImages(const ExrImage& a, const ExrImage& b, double alpha, b
       sumA += x;
       sumB += y;
       if (m.hasZTest) {
-        double s = std::sqrt(double((*sa)[p]) + double((*sb)[p]));
-        if (s > 0 ? std::abs(d) / s >= m.zThreshold : d != 0.0) pass[p] = false;
+        const double a2 = (*sa)[p], b2 = (*sb)[p], s = std::sqrt(a2 + b2);
+        bool passes = s > 0 ? std::abs(d) / s < m.zThreshold : d == 0.0;
+        if (hasDof && s > 0) {
+          const double dof = welchDof(a2, (*dofA)[p], b2, (*dofB)[p]);
+          if (dof < 1e7) passes = studentTwoSidedTail(std::abs(d) / s, dof) > perTest;
+        }
+        if (!passes) pass[p] = false;
       }
     }
   }

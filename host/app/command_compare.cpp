@@ -34,6 +34,7 @@ int run(const CompareArgs& a) {
   if (e.hasZTest) {
     j["ztest_pass_fraction"] = e.zTestPassFraction;
     j["ztest_threshold"] = e.zThreshold;
+    j["ztest_student_t"] = e.studentT;
   }
   OutputSet outputs;
   if (!a.heatmap.empty()) outputs.add(a.heatmap, encodeExr(errorHeatmap(img, ref)));
@@ -42,7 +43,8 @@ int run(const CompareArgs& a) {
   std::printf("MSE %.6g  relMSE %.6g (epsilon %g)  RMSE %.6g  MAE %.6g  mean difference %.6g\n", e.mse, e.relmse, kRelMseEpsilon,
               e.rmse, e.meanAbsoluteError, e.meanDifference);
   if (e.hasZTest)
-    std::printf("per-pixel z-test (Sidak, alpha 0.01, |z| < %.2f): %.4f of pixels pass\n", e.zThreshold, e.zTestPassFraction);
+    std::printf("per-pixel %s (Sidak, alpha 0.01%s%.2f): %.4f of pixels pass\n", e.studentT ? "Welch t-test" : "z-test",
+                e.studentT ? ", the normal's |z| < " : ", |z| < ", e.zThreshold, e.zTestPassFraction);
   return 0;
 }
 

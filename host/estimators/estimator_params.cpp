@@ -115,7 +115,7 @@ constexpr EstimatorParam kParams[] = {
                             "which emissive triangle a light sample picks"),
     onOff<&C::nee>("nee", true, SPEC_NEE, "next-event estimation"),
     choice<&C::mis>("mis", MisHeuristic::Power, kMisNames, SPEC_MIS, "MIS heuristic of light and BSDF sampling"),
-    choice<&C::sampler>("sampler", Sampler::Independent, kSamplerNames, SPEC_SAMPLER,
+    choice<&C::sampler>("sampler", Sampler::Sobol, kSamplerNames, SPEC_SAMPLER,
                         "uniform numbers: independent hashes, Owen-scrambled Sobol per pixel, or Morton-ordered "
                         "ZSobol; the Sobol ones in 4 replicates whose spread is the variance"),
 };

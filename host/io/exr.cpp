@@ -57,8 +57,13 @@ ExrImage filmToImage(const Film& film) {
     }
   }
   auto& s = img.channels["samples"];
+  auto& dof = img.channels["variance.dof"];
   s.resize(film.pixels());
-  for (size_t p = 0; p < film.pixels(); ++p) s[p] = static_cast<float>(film.count[p]);
+  dof.resize(film.pixels());
+  for (size_t p = 0; p < film.pixels(); ++p) {
+    s[p] = static_cast<float>(film.count[p]);
+    dof[p] = static_cast<float>(film.varianceDof(p));
+  }
   return img;
 }
 

@@ -67,6 +67,13 @@ double Film::replicateVarianceOfMean(size_t p, int c) const {
   return ss / (double(k) * double(k - 1));
 }
 
+double Film::varianceDof(size_t p) const {
+  if (!replicateVariance) return count[p] < 2 ? 0.0 : double(count[p] - 1);
+  int k = 0;
+  for (uint32_t r = 0; r < gpu::kSampleReplicates; ++r) k += replicateCount[p * gpu::kSampleReplicates + r] != 0;
+  return k < 2 ? 0.0 : double(k - 1);
+}
+
 double Film::sampleVarianceOfMean(size_t p, int c) const {
   double n = static_cast<double>(count[p]);
   if (n < 2.0) return 0.0;

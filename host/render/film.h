@@ -37,6 +37,9 @@ struct Film {
   double varianceOfMean(size_t pixel, int c) const;
   double sampleVarianceOfMean(size_t pixel, int c) const;     // from the samples, as if independent
   double replicateVarianceOfMean(size_t pixel, int c) const;  // from the replicate means
+  // Degrees of freedom of varianceOfMean: replicates with samples - 1, or samples - 1. A z-test on one pixel
+  // whose variance has few (3 with the QMC samplers) needs Student's t, not the normal, for its bound.
+  double varianceDof(size_t pixel) const;
 
   glm::dvec3 imageMean() const;
   glm::dvec3 imageMeanVarianceOfMean() const;  // image mean of the per-pixel variance of the mean

@@ -54,7 +54,8 @@ TEST(Cli, RenderWritesExrPngAndAConsistentReport) {
   EXPECT_DOUBLE_EQ(double(byCost["wall_seconds"]), double(j["estimated_efficiency"]));
   EXPECT_NEAR(double(byCost["gpu_seconds"]), 1.0 / (relVar * double(j["gpu_seconds"])), 1e-9 * double(byCost["gpu_seconds"]));
   EXPECT_NEAR(double(byCost["rays_per_pixel"]), 1.0 / (relVar * rays / (40 * 30)), 1e-9 * double(byCost["rays_per_pixel"]));
-  EXPECT_EQ(j["variance_from"], "samples");  // the independent sampler (the default)
+  EXPECT_EQ(j["variance_from"], "replicates");  // the sobol sampler (the default)
+  EXPECT_EQ(j["estimator"]["sampler"], "sobol");
   // The EXR's image mean is the report's mean.
   double sum = 0;
   for (float v : img.channels["R"]) sum += v;

@@ -80,8 +80,7 @@ TEST_P(ScaledCornellBox, RendersTheSameAsTheUnscaledBox) {
   int outside = 0;
   for (size_t p = 0; p < r.film.pixels(); ++p)
     for (int c = 0; c < 3; ++c)
-      outside += !zTest2(ref.film.mean(p, c), ref.film.varianceOfMean(p, c), r.film.mean(p, c), r.film.varianceOfMean(p, c), 1e-7)
-                      .within(5.0);
+      outside += !test::pixelsAgree(ref.film, r.film, p, c, 5.0, 1e-7);
   EXPECT_EQ(outside, 0);
   glm::dvec3 a = ref.film.imageMean(), b = r.film.imageMean();
   glm::dvec3 va = ref.film.imageMeanVarianceOfMean(), vb = r.film.imageMeanVarianceOfMean();

@@ -78,6 +78,20 @@ inline RegionStats region(const Film& f, uint32_t x0, uint32_t y0, uint32_t x1, 
 
 inline RegionStats whole(const Film& f) { return region(f, 0, 0, f.width, f.height); }
 
+// One pixel's channel matches an exact value within k sigma, Student's bound for the pixel's degrees of freedom.
+inline bool pixelMatches(const Film& f, size_t p, int c, double expected, double k) {
+  const double dof = f.varianceDof(p);
+  return zTest(f.mean(p, c), expected, std::sqrt(f.varianceOfMean(p, c))).within(dof < 1e7 ? studentBoundForSigmas(k, dof) : k);
+}
+
+// One pixel's channel in two independent renders agrees within k sigma, sigma and its degrees of freedom by
+// Welch (3 dof a pixel under the QMC samplers: Student's bound, not the normal's; analysis/student_t.h).
+inline bool pixelsAgree(const Film& a, const Film& b, size_t p, int c, double k, double slack = 0.0) {
+  const double va = a.varianceOfMean(p, c), vb = b.varianceOfMean(p, c);
+  const double dof = welchDof(va, a.varianceDof(p), vb, b.varianceDof(p));
+  return zTest2(a.mean(p, c), va, b.mean(p, c), vb, slack).within(dof < 1e7 ? studentBoundForSigmas(k, dof) : k);
+}
+
 // The colour channels of two independent region estimates as z-tests (z_test.h).
 inline std::vector<ZTest> channelZTests(const RegionStats& a, const RegionStats& b) {
   std::vector<ZTest> t;

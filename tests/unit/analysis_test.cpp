@@ -1,7 +1,10 @@
 // Error metrics on synthetic images with known answers; estimator configuration parsing and validation.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "analysis/error_metrics.h"
+#include "analysis/student_t.h"
 #include "error.h"
 #include "estimators/efficiency_roulette.h"
 #include "estimators/estimator_config.h"
@@ -40,6 +43,42 @@ TEST(ErrorMetrics, ZTestCountsPixelsOutsideTheirNoise) {
   EXPECT_NEAR(m.zTestPassFraction, 0.99, 1e-12);
   EXPECT_GT(m.zThreshold, 3.5);  // Sidak over 300 tests at 1%
   EXPECT_LT(m.zThreshold, 4.5);
+}
+
+TEST(ErrorMetrics, WithDegreesOfFreedomEachPixelIsWelchsT) {
+  // 9.2 sigma fails the z-test (Sidak over 300 tests: 4.1); at 3 + 3 dof (two QMC pixels: Welch's 6) the t
+  // bound at that level is ~11, so the same difference passes; with 1000 dof each it fails again.
+  ExrImage ref = constant(10, 10, 1.0f, 0.01f), img = constant(10, 10, 1.0f, 0.01f);
+  img.channels["G"][37] = 2.3f;
+  for (ExrImage* i : {&ref, &img}) i->channels["variance.dof"].assign(100, 3.0f);
+  ErrorMetrics few = compareImages(img, ref);
+  EXPECT_TRUE(few.studentT);
+  EXPECT_EQ(few.zTestPassFraction, 1.0);
+  img.channels["G"][37] = 300.0f;  // 2114 sigma: beyond t's bound at 6 dof too
+  EXPECT_NEAR(compareImages(img, ref).zTestPassFraction, 0.99, 1e-12);
+  img.channels["G"][37] = 2.3f;
+  for (ExrImage* i : {&ref, &img}) i->channels["variance.dof"].assign(100, 1000.0f);
+  EXPECT_NEAR(compareImages(img, ref).zTestPassFraction, 0.99, 1e-12);
+}
+
+TEST(StudentT, TailsAndBoundsMatchClosedForms) {
+  // dof 1 (Cauchy): 1 - (2 / pi) atan(t); dof 2: 1 - t / sqrt(2 + t^2); many dof: the normal.
+  for (double t : {0.1, 1.0, 2.0, 7.5, 100.0}) {
+    EXPECT_NEAR(studentTwoSidedTail(t, 1.0), 1.0 - 2.0 / M_PI * std::atan(t), 1e-12) << t;
+    EXPECT_NEAR(studentTwoSidedTail(t, 2.0), 1.0 - t / std::sqrt(2.0 + t * t), 1e-12) << t;
+    EXPECT_NEAR(studentTwoSidedTail(t, 1e9), std::erfc(t / std::sqrt(2.0)), 1e-12) << t;
+  }
+  EXPECT_NEAR(studentTwoSidedTail(2.0, 10.0), 0.0733880347707, 1e-10);  // tables: t_10
+  EXPECT_NEAR(studentTwoSidedTail(3.0, 1e5), std::erfc(3.0 / std::sqrt(2.0)), 1e-6);
+  // The bound has the normal's false-positive rate at every dof.
+  for (double dof : {1.0, 3.0, 10.0, 63.0, 4095.0})
+    for (double k : {3.0, 5.0})
+      EXPECT_NEAR(studentTwoSidedTail(studentBoundForSigmas(k, dof), dof), std::erfc(k / std::sqrt(2.0)),
+                  1e-7 * std::erfc(k / std::sqrt(2.0))) << dof << " dof, " << k << " sigma";
+  EXPECT_NEAR(studentBoundForSigmas(3.0, 3.0), 9.2189, 1e-3);  // t_3 at two-sided 0.0027
+  // Welch: equal variances and dofs add their dofs; one exact variance leaves the other's dof.
+  EXPECT_NEAR(welchDof(1.0, 3.0, 1.0, 3.0), 6.0, 1e-12);
+  EXPECT_NEAR(welchDof(1.0, 3.0, 0.0, 3.0), 3.0, 1e-12);
 }
 
 TEST(ErrorMetrics, MismatchedImagesAreRejected) {

@@ -24,11 +24,12 @@ TEST(Exr, FilmRoundTripsEveryChannel) {
   ExrImage img = readExr(path);
   ASSERT_EQ(img.width, 7);
   ASSERT_EQ(img.height, 5);
-  const char* names[] = {"R", "G", "B", "variance.R", "variance.G", "variance.B", "samples"};
+  const char* names[] = {"R", "G", "B", "variance.R", "variance.G", "variance.B", "variance.dof", "samples"};
   for (const char* n : names) ASSERT_TRUE(img.channels.count(n)) << n;
-  EXPECT_EQ(img.channels.size(), 7u);
+  EXPECT_EQ(img.channels.size(), 8u);
   for (size_t p = 0; p < film.pixels(); ++p) {
     EXPECT_EQ(img.channels["samples"][p], float(film.count[p]));
+    EXPECT_EQ(img.channels["variance.dof"][p], float(film.count[p] - 1));  // independent samples: n - 1
     const char* rgb[] = {"R", "G", "B"};
     const char* var[] = {"variance.R", "variance.G", "variance.B"};
     for (int c = 0; c < 3; ++c) {
@@ -53,4 +54,17 @@ TEST(Exr, ReadingGarbageIsAnError) {
   writeFileAtomically(path, "not an exr file");
   EXPECT_THROW(readExr(path), Error);
   std::filesystem::remove(path);
+}
+
+TEST(Exr, QmcFilmsGiveTheirReplicatesDegreesOfFreedom) {
+  // Under sobol a pixel's variance comes from its replicate means: replicates with samples - 1 dof.
+  Film film(2, 1);
+  film.replicateVariance = true;
+  film.count = {8, 2};
+  for (uint32_t r = 0; r < gpu::kSampleReplicates; ++r) film.replicateCount[r] = 2;  // pixel 0: all 4
+  film.replicateCount[gpu::kSampleReplicates + 0] = 1;                                // pixel 1: 2 of them
+  film.replicateCount[gpu::kSampleReplicates + 1] = 1;
+  ExrImage img = filmToImage(film);
+  EXPECT_EQ(img.channels["variance.dof"][0], float(gpu::kSampleReplicates - 1));
+  EXPECT_EQ(img.channels["variance.dof"][1], 1.0f);
 }
