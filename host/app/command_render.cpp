@@ -37,7 +37,7 @@ struct RenderArgs {
   int spp = 64;
   long long seed = 1;
   int width = -1, height = -1, cameraIndex = -1;
-  std::string integrator = "wavefront";
+  std::string integrator = "auto";
   std::string checkpoint, resume;
   double checkpointEvery = 120.0;
 };
@@ -276,7 +276,8 @@ Command addRenderCommand(CLI::App& app) {
   render->add_option("--resume", a->resume,
                      "continue the render a checkpoint holds, to its original target (alone, or with the same scene and "
                      "options, which are then checked)");
-  render->add_option("--integrator", a->integrator, "wavefront (stage by stage) or megakernel (one dispatch per pass)")
+  render->add_option("--integrator", a->integrator, "auto (default: megakernel on a discrete GPU, wavefront elsewhere), wavefront (stage by stage) or "
+                  "megakernel (one dispatch per pass)")
       ->check(CLI::IsMember({"wavefront", "megakernel"}))
       ->capture_default_str();
   return {render, [a, render] { return run(*a, *render); }};

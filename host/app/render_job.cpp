@@ -10,6 +10,7 @@
 
 #include "../shaders/shared/geometry.h"
 #include "../shaders/shared/sampling.h"
+#include "analysis/variance_reliability.h"
 #include "app/render_options_json.h"
 #include "app/roulette_pilot.h"
 #include "bvh/bvh.h"
@@ -206,12 +207,19 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   settings.progress = options.progress;
   settings.timeBudget = options.timeBudget;
   settings.workgroupSize = options.workgroupSize;
-  settings.integrator = options.integrator;
+  // auto becomes the device's integrator here, so the report and a checkpoint name the one that ran.
+  RenderOptions resolved = options;
+  // BSDF splitting needs the wavefront's path pool, so auto keeps the wavefront for it.
+  if (resolved.integrator == Integrator::Auto)
+    resolved.integrator = ctx.prefersMegakernel() && options.estimator.bsdfSamples <= 1.0f ? Integrator::Megakernel
+                                                                                          : Integrator::Wavefront;
+  settings.integrator = resolved.integrator;
+  out.integrator = resolved.integrator;
   std::optional<RouletteTable> roulette;
   double pilotSeconds = 0.0;
   // What a checkpoint of this render records; a resumed render's must match it, and its learned state (the
   // efficiency pilot's scales) is used instead of a new pilot.
-  const nlohmann::json optionsJson = renderOptionsJson(options);
+  const nlohmann::json optionsJson = renderOptionsJson(resolved);
   ContentHash fingerprint;
   fingerprint.addValue(sceneFingerprint(scene));
   out.checkpointConfig = {{"options", optionsJson}, {"scene_fingerprint", fingerprint.hex()}, {"device", out.device},
@@ -357,6 +365,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["mean"] = {mean.x, mean.y, mean.z};
   j["mean_variance"] = {var.x, var.y, var.z};
   j["device"] = r.device;
+  j["integrator"] = toString(r.integrator);
   j["spp_reached"] = s.samplesPerPixel;
   if (r.roulette) {
     nlohmann::json scales = nlohmann::json::array();
@@ -402,6 +411,15 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                                        {"gpu_seconds", inverse(s.gpuSeconds)},
                                        {"rays_per_pixel", inverse(raysPerPixel)}};
   j["variance_from"] = r.film.replicateVariance ? "replicates" : "samples";
+  // Whether that variance, and so the efficiency, can be trusted (analysis/variance_reliability.h).
+  const VarianceReliability reliability = assessVarianceReliability(r.film);
+  j["variance_reliability"] = {
+      {"relative_standard_error", std::isfinite(reliability.relativeStandardError) ? nlohmann::json(reliability.relativeStandardError)
+                                                                                    : nlohmann::json("unknown")},
+      {"reliable_below", VarianceReliability::kReliableBelow},
+      {"largest_pixel_share", reliability.largestPixelShare},
+      {"pixels_assessed", reliability.pixelsAssessed}};
+  j["estimated_efficiency_reliable"] = reliability.reliable();
   if (r.error) {
     j["reference"] = o.referencePath;
     j["mse"] = r.error->mse;
@@ -461,6 +479,14 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
     text += "error       relMSE " + std::to_string(r.error->relmse) + ", MSE " + std::to_string(r.error->mse) +
             ", efficiency 1/(relMSE x s) " + std::to_string(r.error->relmse > 0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0) +
             "\n";
+  const VarianceReliability reliability = assessVarianceReliability(r.film);
+  if (!reliability.reliable()) {
+    std::snprintf(buf, sizeof(buf),
+                  "reliability the variance estimate is uncertain by %.0f%% (one pixel holds %.0f%% of it: heavy tails or "
+                  "too few samples), so the estimated efficiency is unreliable\n",
+                  100.0 * reliability.relativeStandardError, 100.0 * reliability.largestPixelShare);
+    text += buf;
+  }
   for (const auto& w : r.warnings) text += "warning     " + w + "\n";
   return text;
 }

@@ -44,7 +44,7 @@ struct RenderOptions {
   bool specialize = true;        // false: pipelines with every feature on (for comparison)
   bool withoutTextures = false;  // textures, vertex colours and alpha compiled out: their cost, by comparison
   uint32_t workgroupSize = 64;   // invocations per workgroup of every kernel (32, 64, 128, 256)
-  Integrator integrator = Integrator::Wavefront;
+  Integrator integrator = Integrator::Auto;
 };
 
 // How a render runs, besides what it renders: checkpoints, a stop flag, and the checkpoint it continues.
@@ -75,6 +75,7 @@ struct RenderOutcome {
   std::vector<std::string> warnings;
   std::string cameraName;
   std::string device;
+  Integrator integrator = Integrator::Wavefront;  // the one that ran (auto resolved)
   uint32_t width = 0, height = 0;
   std::optional<ErrorMetrics> error;  // against the reference, when one was given
   double pilotSeconds = 0.0;          // efficiency roulette's pilot, included in stats.seconds

@@ -27,12 +27,15 @@ constexpr uint32_t kLaterChunkBounces = 16;
 constexpr uint32_t kSamplesPerBatch = 64;  // samples in a float batch sum before it is folded into double
 }  // namespace
 
-const char* toString(Integrator i) { return i == Integrator::Megakernel ? "megakernel" : "wavefront"; }
+const char* toString(Integrator i) {
+  return i == Integrator::Megakernel ? "megakernel" : i == Integrator::Auto ? "auto" : "wavefront";
+}
 
 Integrator integratorFromString(const std::string& name) {
   if (name == "wavefront") return Integrator::Wavefront;
   if (name == "megakernel") return Integrator::Megakernel;
-  throw Error("unknown integrator '" + name + "' (wavefront or megakernel)");
+  if (name == "auto") return Integrator::Auto;
+  throw Error("unknown integrator '" + name + "' (auto, wavefront or megakernel)");
 }
 
 uint32_t PathRenderer::groupsFor(uint32_t n) const { return (n + settings_.workgroupSize - 1) / settings_.workgroupSize; }

@@ -56,6 +56,12 @@ TEST(Cli, RenderWritesExrPngAndAConsistentReport) {
   EXPECT_NEAR(double(byCost["rays_per_pixel"]), 1.0 / (relVar * rays / (40 * 30)), 1e-9 * double(byCost["rays_per_pixel"]));
   EXPECT_EQ(j["variance_from"], "replicates");  // the sobol sampler (the default)
   EXPECT_EQ(j["estimator"]["sampler"], "sobol");
+  // How far the variance can be trusted, and the flag it sets (README, "Outputs").
+  const double rse = j["variance_reliability"]["relative_standard_error"];
+  EXPECT_GT(rse, 0.0);
+  EXPECT_EQ(j["estimated_efficiency_reliable"], rse <= double(j["variance_reliability"]["reliable_below"]));
+  // --integrator auto (the default) names the integrator that ran: the wavefront on lavapipe.
+  if (j["device"].get<std::string>().find("llvmpipe") != std::string::npos) EXPECT_EQ(j["integrator"], "wavefront");
   // The EXR's image mean is the report's mean.
   double sum = 0;
   for (float v : img.channels["R"]) sum += v;

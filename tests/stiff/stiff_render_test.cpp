@@ -3,6 +3,7 @@
 
 #include <fstream>
 
+#include "analysis/variance_reliability.h"
 #include "support/render_helpers.h"
 #include "scene/gltf_loader.h"
 #include "support/test_scenes.h"
@@ -58,6 +59,10 @@ TEST(StiffRender, TinyIntenseLightMatchesTheAnalyticRadiance) {
   EXPECT_EQ(b.film.totalNonfinite(), 0u);
   EXPECT_GE(whole(b.film).mean.x, 0.0);
   EXPECT_LT(whole(b.film).mean.x, expectedMean);
+  // The report says so: with light sampling the variance estimate is trustworthy, without it is not (the few
+  // samples that found the light, or none at all, decide it).
+  EXPECT_TRUE(assessVarianceReliability(r.film).reliable()) << assessVarianceReliability(r.film).relativeStandardError;
+  EXPECT_FALSE(assessVarianceReliability(b.film).reliable()) << assessVarianceReliability(b.film).relativeStandardError;
   stabilityRow("2", "tiny intense light, NEE off (64 spp): finite, practically black",
                "finite, <= " + std::to_string(expectedMean), whole(b.film).mean.x, std::sqrt(whole(b.film).variance.x),
                b.film.totalNonfinite() == 0);
