@@ -480,7 +480,10 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
             ", efficiency 1/(relMSE x s) " + std::to_string(r.error->relmse > 0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0) +
             "\n";
   const VarianceReliability reliability = assessVarianceReliability(r.film);
-  if (!reliability.reliable()) {
+  if (!std::isfinite(reliability.relativeStandardError)) {
+    text += "reliability no pixel's samples varied, so nothing measures the variance (a contribution too rare to "
+            "have been met?): the estimated efficiency is unreliable\n";
+  } else if (!reliability.reliable()) {
     std::snprintf(buf, sizeof(buf),
                   "reliability the variance estimate is uncertain by %.0f%% (one pixel holds %.0f%% of it: heavy tails or "
                   "too few samples), so the estimated efficiency is unreliable\n",
