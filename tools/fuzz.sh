@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes the glTF loader and the BVH build with libFuzzer (clang, ASan, UBSan) for SECONDS (default 60):
 #   bash tools/fuzz.sh [SECONDS] [extra libFuzzer flags]
+#   bash tools/fuzz.sh build      (only builds the fuzzer: tools/test.sh does, so that the suite's run is a run)
 # First it replays tests/fuzz/regressions/ (crafted files that once crashed or over-read) under the sanitizers.
 # The corpus is seeded from scenes/, ../shared/scenes (files up to 1 MB, with their .bin files beside them) and
 # the regressions, and kept in build/fuzz/corpus between runs; findings are written to build/fuzz/findings/.
@@ -16,6 +17,7 @@ clang++ -fsanitize=fuzzer /tmp/vkmc-fuzz-probe.cpp -o /tmp/vkmc-fuzz-probe 2>/de
 out=build/fuzz
 cmake -S tools/fuzz -B "$out" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$out" -j"$(nproc)" >/dev/null
+[[ $seconds == build ]] && exit 0
 mkdir -p "$out/corpus" "$out/seeds" "$out/findings"
 for f in scenes/*.gltf scenes/*/*.gltf scenes/*.bin scenes/*/*.bin ../shared/scenes/*/*.gltf ../shared/scenes/*/*.glb \
          ../shared/scenes/*/*.bin ../shared/scenes/*.gltf ../shared/scenes/*.glb ../shared/scenes/*.bin; do

@@ -6,5 +6,6 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh
+bash tools/fuzz.sh build >/dev/null || true  # the fuzzer is built with the rest where clang is (skipped elsewhere)
 cd build
 ctest --output-on-failure --timeout 1200 -j"$(nproc)" "$@"

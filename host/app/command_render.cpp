@@ -278,7 +278,7 @@ Command addRenderCommand(CLI::App& app) {
                      "options, which are then checked)");
   render->add_option("--integrator", a->integrator, "auto (default: megakernel on a discrete GPU, wavefront elsewhere), wavefront (stage by stage) or "
                   "megakernel (one dispatch per pass)")
-      ->check(CLI::IsMember({"wavefront", "megakernel"}))
+      ->check(CLI::IsMember({"auto", "wavefront", "megakernel"}))
       ->capture_default_str();
   return {render, [a, render] { return run(*a, *render); }};
 }

@@ -209,9 +209,12 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   settings.workgroupSize = options.workgroupSize;
   // auto becomes the device's integrator here, so the report and a checkpoint name the one that ran.
   RenderOptions resolved = options;
-  // BSDF splitting needs the wavefront's path pool, so auto keeps the wavefront for it.
+  // BSDF splitting needs the wavefront's path pool, so auto keeps the wavefront for it. A resume continues with
+  // the integrator its checkpoint ran, whatever this device would pick.
+  if (resolved.integrator == Integrator::Auto && run.resumeConfig)
+    resolved.integrator = integratorFromString(run.resumeConfig->at("options").at("integrator").get<std::string>());
   if (resolved.integrator == Integrator::Auto)
-    resolved.integrator = ctx.prefersMegakernel() && options.estimator.bsdfSamples <= 1.0f ? Integrator::Megakernel
+    resolved.integrator = ctx.prefersMegakernel() && !options.estimator.splitsPaths() ? Integrator::Megakernel
                                                                                           : Integrator::Wavefront;
   settings.integrator = resolved.integrator;
   out.integrator = resolved.integrator;
@@ -480,7 +483,10 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
             ", efficiency 1/(relMSE x s) " + std::to_string(r.error->relmse > 0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0) +
             "\n";
   const VarianceReliability reliability = assessVarianceReliability(r.film);
-  if (!std::isfinite(reliability.relativeStandardError)) {
+  if (reliability.pixelsAssessed == 0) {
+    text += "reliability fewer samples than the 4 replicates in every pixel: the variance estimate cannot be assessed, "
+            "so the estimated efficiency is unreliable\n";
+  } else if (!std::isfinite(reliability.relativeStandardError)) {
     text += "reliability no pixel's samples varied, so nothing measures the variance (a contribution too rare to "
             "have been met?): the estimated efficiency is unreliable\n";
   } else if (!reliability.reliable()) {

@@ -132,6 +132,7 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
     o.estimator = e;
     o.seed = seed;
     o.filter = study.filter;
+    o.integrator = Integrator::Wavefront;  // one integrator for every row (auto could mix them on a GPU)
     o.progress = false;
     return o;
   };

@@ -45,6 +45,7 @@ PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const Render
   const auto& limits = ctx.properties().limits;
   checkDeviceLimits(settings, limits);
   const EstimatorConfig& est = settings.estimator;
+  if (settings.integrator == Integrator::Auto) throw Error("internal: the integrator must be resolved before a render");
   const bool megakernel = settings.integrator == Integrator::Megakernel;
   if (megakernel && est.splitsPaths())
     throw Error("bsdf_samples > 1 (splitting paths) needs the wavefront integrator's path pool; use --integrator wavefront");

@@ -221,6 +221,24 @@ TEST(Cli, PixelFilterIsEchoedAndTheBoxIsTheDefaultBitForBit) {
     EXPECT_NE(help.out.find(name), std::string::npos) << name;
 }
 
+TEST(Cli, IntegratorAutoIsTheDefaultAndNamesTheOneThatRan) {
+  fs::path report = workDir() / "integrator.json";
+  std::string common = "render " + cornell() + " --width 12 --height 12 --spp 2 -q --report " + report.string();
+  ASSERT_EQ(runVkmc(common + " -o " + (workDir() / "integrator_default.exr").string()).code, 0);
+  const std::string ran = nlohmann::json::parse(slurp(report))["integrator"];
+  EXPECT_TRUE(ran == "wavefront" || ran == "megakernel") << ran;
+  RunResult autoRun = runVkmc(common + " --integrator auto -o " + (workDir() / "integrator_auto.exr").string());
+  ASSERT_EQ(autoRun.code, 0) << autoRun.err;
+  EXPECT_EQ(slurp(workDir() / "integrator_auto.exr"), slurp(workDir() / "integrator_default.exr")) << "auto is the default";
+  RunResult named = runVkmc(common + " --integrator " + ran + " -o " + (workDir() / "integrator_named.exr").string());
+  ASSERT_EQ(named.code, 0) << named.err;
+  EXPECT_EQ(slurp(workDir() / "integrator_named.exr"), slurp(workDir() / "integrator_default.exr"))
+      << "auto renders exactly what naming its choice renders";
+  RunResult bogus = runVkmc(common + " --integrator fastest -o " + (workDir() / "integrator_bogus.exr").string());
+  EXPECT_NE(bogus.code, 0);
+  EXPECT_FALSE(fs::exists(workDir() / "integrator_bogus.exr"));
+}
+
 TEST(Cli, MissingOutputFolderFailsBeforeRendering) {
   RunResult r = runVkmc("render " + cornell() + " -q -o /nonexistent-folder/x.exr");
   EXPECT_EQ(r.code, 1);

@@ -66,7 +66,7 @@ TEST(StudentT, TailsAndBoundsMatchClosedForms) {
   for (double t : {0.1, 1.0, 2.0, 7.5, 100.0}) {
     EXPECT_NEAR(studentTwoSidedTail(t, 1.0), 1.0 - 2.0 / M_PI * std::atan(t), 1e-12) << t;
     EXPECT_NEAR(studentTwoSidedTail(t, 2.0), 1.0 - t / std::sqrt(2.0 + t * t), 1e-12) << t;
-    EXPECT_NEAR(studentTwoSidedTail(t, 1e9), std::erfc(t / std::sqrt(2.0)), 1e-12) << t;
+    EXPECT_NEAR(studentTwoSidedTail(t, 1e6), std::erfc(t / std::sqrt(2.0)), 1e-6) << t;  // t_1e6 by the beta
   }
   EXPECT_NEAR(studentTwoSidedTail(2.0, 10.0), 0.0733880347707, 1e-10);  // tables: t_10
   EXPECT_NEAR(studentTwoSidedTail(3.0, 1e5), std::erfc(3.0 / std::sqrt(2.0)), 1e-6);
