@@ -133,8 +133,9 @@ TEST_P(HighAlbedoFurnace, RouletteIsUnbiasedToATenthOfAPercent) {
     EXPECT_TRUE(withinSigmas(t, 5.0)) << "full render, " << modeName;
     stabilityRow("1", name + modeName + " roulette, full render (4096 paths)", std::to_string(expected), s.mean.x, t.sigma,
                  t.within(5.0));
-    if (mode == RouletteMode::Efficiency && c.albedo < 0.995f)  // the 0.99 furnace's paths decay: 4096 suffice
+    if (mode == RouletteMode::Efficiency && c.albedo < 0.995f) {  // the 0.99 furnace's paths decay: 4096 suffice
       EXPECT_LT(std::sqrt(s.variance.x), 0.005 * expected) << "the efficiency render must resolve a 2.5% bias";
+    }
     if (mode == RouletteMode::Efficiency) {
       ASSERT_TRUE(r.roulette.has_value());
       scales = r.roulette->scale;
