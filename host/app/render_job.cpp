@@ -207,10 +207,9 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   settings.progress = options.progress;
   settings.timeBudget = options.timeBudget;
   settings.workgroupSize = options.workgroupSize;
-  // auto becomes the device's integrator here, so the report and a checkpoint name the one that ran.
+  // auto becomes the device's integrator here, so the report and a checkpoint name the one that ran: a resume
+  // continues with its checkpoint's, and BSDF splitting keeps the wavefront (it needs the path pool).
   RenderOptions resolved = options;
-  // BSDF splitting needs the wavefront's path pool, so auto keeps the wavefront for it. A resume continues with
-  // the integrator its checkpoint ran, whatever this device would pick.
   if (resolved.integrator == Integrator::Auto && run.resumeConfig)
     resolved.integrator = integratorFromString(run.resumeConfig->at("options").at("integrator").get<std::string>());
   if (resolved.integrator == Integrator::Auto)

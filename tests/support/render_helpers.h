@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "../shaders/shared/layout.h"
+#include "analysis/student_t.h"
 #include "app/render_job.h"
 #include "vk/kernel.h"
 #include "z_test.h"
@@ -81,7 +82,7 @@ inline RegionStats whole(const Film& f) { return region(f, 0, 0, f.width, f.heig
 // One pixel's channel matches an exact value within k sigma, Student's bound for the pixel's degrees of freedom.
 inline bool pixelMatches(const Film& f, size_t p, int c, double expected, double k) {
   const double dof = f.varianceDof(p);
-  return zTest(f.mean(p, c), expected, std::sqrt(f.varianceOfMean(p, c))).within(dof < 1e7 ? studentBoundForSigmas(k, dof) : k);
+  return zTest(f.mean(p, c), expected, std::sqrt(f.varianceOfMean(p, c))).within(studentBoundForSigmas(k, dof));
 }
 
 // One pixel's channel in two independent renders agrees within k sigma, sigma and its degrees of freedom by
@@ -89,7 +90,7 @@ inline bool pixelMatches(const Film& f, size_t p, int c, double expected, double
 inline bool pixelsAgree(const Film& a, const Film& b, size_t p, int c, double k, double slack = 0.0) {
   const double va = a.varianceOfMean(p, c), vb = b.varianceOfMean(p, c);
   const double dof = welchDof(va, a.varianceDof(p), vb, b.varianceDof(p));
-  return zTest2(a.mean(p, c), va, b.mean(p, c), vb, slack).within(dof < 1e7 ? studentBoundForSigmas(k, dof) : k);
+  return zTest2(a.mean(p, c), va, b.mean(p, c), vb, slack).within(studentBoundForSigmas(k, dof));
 }
 
 // The colour channels of two independent region estimates as z-tests (z_test.h).

@@ -10,8 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "analysis/student_t.h"
-
 namespace vkmc::test {
 
 struct ZTest {
@@ -63,13 +61,6 @@ inline SampleMean sampleMean(double sum, double sumSq, double n) {
 inline ::testing::AssertionResult withinSigmas(const ZTest& t, double k) {
   if (t.within(k)) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << t.describe(k);
-}
-// The same bound when sigma is estimated with `dof` degrees of freedom (one pixel of a render: Film::varianceDof):
-// k sigma means Student's t quantile at the normal's k-sigma level (analysis/student_t.h).
-inline ::testing::AssertionResult withinSigmas(const ZTest& t, double k, double dof) {
-  const double bound = studentBoundForSigmas(k, dof);
-  if (t.within(bound)) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << t.describe(bound) << " (" << k << " sigma at " << dof << " dof)";
 }
 inline ::testing::AssertionResult belowSigmas(const ZTest& t, double k) {
   if (t.below(k)) return ::testing::AssertionSuccess();
