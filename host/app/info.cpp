@@ -24,6 +24,7 @@ const char* specName(uint32_t id) {
     case SPEC_HAS_TEXTURES: return "has_textures";
     case SPEC_HAS_NORMAL_MAPS: return "has_normal_maps";
     case SPEC_HAS_ALPHA: return "has_alpha";
+    case SPEC_CULLS_BACK_FACES: return "culls_back_faces";
     case SPEC_HAS_PUNCTUAL: return "has_punctual";
     case SPEC_HAS_ENVIRONMENT: return "has_environment";
     case SPEC_RR_MODE: return "rr_mode";  // the key rr, named as info has always shown it
@@ -54,10 +55,11 @@ int runInfo(const RenderOptions& options) {
               static_cast<unsigned long long>(scene.degenerateTriangles), f.materials, scene.cameras.size());
   std::printf(
       "features     emitters %s (%u emissive triangles), glossy %s, metallic %s, non-default specular %s,\n"
-      "             double-sided %s, textures %s (%zu), normal maps %s, alpha %s, punctual lights %u,\n"
-      "             environment %s\n",
+      "             double-sided %s, single-sided %s, textures %s (%zu), normal maps %s, alpha %s,\n"
+      "             punctual lights %u, environment %s\n",
       f.emitters() ? "yes" : "no", f.emissiveTriangles, f.glossy ? "yes" : "no", f.metallic ? "yes" : "no",
-      f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.textures ? "yes" : "no", scene.textures.size(),
+      f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.singleSided ? "yes" : "no",
+      f.textures ? "yes" : "no", scene.textures.size(),
       f.normalMaps ? "yes" : "no", f.alpha ? "yes" : "no", f.punctualLights,
       !options.environmentPath.empty() ? options.environmentPath.c_str()
       : f.environment                  ? "constant (the default light)"

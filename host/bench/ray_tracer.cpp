@@ -27,7 +27,8 @@ RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh, bo
       binaryBvh ? std::span<const uint32_t>(kSpirv_trace_rays_bvh2) : std::span<const uint32_t>(kSpirv_trace_rays);
   auto specs = [](bool anyHit, bool counting) {
     return std::vector<vk::SpecConstant>{
-        {SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, anyHit}, {SPEC_WALK_STATS, counting}};
+        {SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, anyHit}, {SPEC_WALK_STATS, counting},
+        {SPEC_CULLS_BACK_FACES, 0u}};  // two-sided, as the host walks and Embree's rtcIntersect1 are
   };
   closest_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest", spirv, specs(false, walkStats));
   any_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any", spirv, specs(true, walkStats));

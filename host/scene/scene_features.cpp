@@ -23,6 +23,7 @@ SceneFeatures scanFeatures(const Scene& scene) {
     f.metallic |= m.metallic > 0.0f;
     f.nonDefaultSpecular |= m.specular != 1.0f;
     f.doubleSided |= m.doubleSided;
+    f.singleSided |= !m.doubleSided;
     f.textures |= m.textured();
     f.normalMaps |= m.normalTexture.present();
     f.alpha |= m.alphaMode != AlphaMode::Opaque;
@@ -42,6 +43,7 @@ SceneFeatures allFeatures(const SceneFeatures& scene) {
   f.textures = true;
   f.normalMaps = true;
   f.alpha = true;
+  f.singleSided = true;
   f.punctualLights = std::max(f.punctualLights, 1u);
   f.environment = true;
   return f;

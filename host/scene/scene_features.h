@@ -18,6 +18,7 @@ struct SceneFeatures {
   bool metallic = false;
   bool nonDefaultSpecular = false;  // KHR_materials_specular factor other than 1
   bool doubleSided = false;
+  bool singleSided = false;     // a material is single-sided (glTF's default): the walks cull its back faces
   bool textures = false;        // a material samples a texture (or vertex colours tint it)
   bool normalMaps = false;      // a material has a normal texture
   bool alpha = false;           // a material is alpha MASK or BLEND: any-hit tests in the walks

@@ -35,6 +35,7 @@ layout(constant_id = SPEC_WALK_STATS) const uint kWalkStats = 0u;
 layout(constant_id = SPEC_HAS_TEXTURES) const uint kHasTextures = 1u;
 layout(constant_id = SPEC_HAS_NORMAL_MAPS) const uint kHasNormalMaps = 1u;
 layout(constant_id = SPEC_HAS_ALPHA) const uint kHasAlpha = 1u;
+layout(constant_id = SPEC_CULLS_BACK_FACES) const uint kCullsBackFaces = 1u;
 layout(constant_id = SPEC_SAMPLER) const uint kSampler = 0u;
 layout(constant_id = SPEC_SAMPLER_LOG2_SPP) const uint kSamplerLog2Spp = 0u;
 layout(constant_id = SPEC_SAMPLER_DIGITS) const uint kSamplerDigits = 0u;
@@ -84,6 +85,15 @@ void triangleVertices(uint tri, out vec3 v0, out vec3 v1, out vec3 v2) {
   v0 = imageLoad(triangles, int(kTriangleTexels * tri)).xyz;
   v1 = imageLoad(triangles, int(kTriangleTexels * tri + 1u)).xyz;
   v2 = imageLoad(triangles, int(kTriangleTexels * tri + 2u)).xyz;
+}
+// The vertices for a walk's test, and whether a ray meeting the triangle's back must pass it (SPEC_CULLS_BACK_FACES
+// and a single-sided triangle): the flag rides in a texel the walk loads anyway.
+void triangleVertices(uint tri, out vec3 v0, out vec3 v1, out vec3 v2, out bool cullBack) {
+  vec4 t0 = imageLoad(triangles, int(kTriangleTexels * tri));
+  v0 = t0.xyz;
+  v1 = imageLoad(triangles, int(kTriangleTexels * tri + 1u)).xyz;
+  v2 = imageLoad(triangles, int(kTriangleTexels * tri + 2u)).xyz;
+  cullBack = kCullsBackFaces != 0u && triangleSingleSided(t0);  // t0: texel kTriangleSidesTexel
 }
 
 bool allFinite(vec3 v) { return !any(isnan(v)) && !any(isinf(v)); }

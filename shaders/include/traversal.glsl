@@ -23,8 +23,9 @@ bool intersectLeaf(uint entry, RayShear shear, inout vec4 best) {
   bool found = false;
   for (uint tri = leafFirst(entry); tri < leafEnd(entry); ++tri) {
     vec3 v0, v1, v2;
-    triangleVertices(tri, v0, v1, v2);
-    vec3 h = intersectTriangle(shear, v0, v1, v2, best.x);
+    bool cullBack;
+    triangleVertices(tri, v0, v1, v2, cullBack);
+    vec3 h = intersectTriangle(shear, v0, v1, v2, best.x, cullBack);
     if (hitCounts(h, tri)) {
       best = vec4(h, uintBitsToFloat(tri));
       found = true;
@@ -130,8 +131,9 @@ bool walking(Walk w) { return w.node != kNoEntry || w.triNext < w.triEnd || w.pa
 void triangleStep(inout Walk w, RayShear shear, bool anyHit, inout float bestT, inout uint bestTri) {
   if (w.triNext < w.triEnd) {
     vec3 v0, v1, v2;
-    triangleVertices(w.triNext, v0, v1, v2);
-    vec3 h = intersectTriangle(shear, v0, v1, v2, bestT);
+    bool cullBack;
+    triangleVertices(w.triNext, v0, v1, v2, cullBack);
+    vec3 h = intersectTriangle(shear, v0, v1, v2, bestT, cullBack);
     if (hitCounts(h, w.triNext)) {
       bestT = h.x;
       bestTri = w.triNext;

@@ -47,8 +47,9 @@ VKMC_FN RayShear makeRayShear(vec3 origin, vec3 dir) {
 VKMC_FN float maxFinite(float a, float b) { return a > b ? a : b; }
 
 // Returns (t, b1, b2) with b1, b2 the weights of v1, v2, or t < 0 when there is no hit in (0, tMax).
-// Edges are shared exactly between neighbours: no ray slips between two triangles.
-VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax) {
+// Edges are shared exactly between neighbours: no ray slips between two triangles. cullBack: a ray that meets
+// the back (the side cross(v1 - v0, v2 - v0) points away from) misses.
+VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax, bool cullBack) {
   vec3 A = v0 - r.origin, B = v1 - r.origin, C = v2 - r.origin;
   float Az = pickAxis(A, r.kz), Bz = pickAxis(B, r.kz), Cz = pickAxis(C, r.kz);
   float ax = pickAxis(A, r.kx) - r.shear.x * Az, ay = pickAxis(A, r.ky) - r.shear.y * Az;
@@ -58,7 +59,8 @@ VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax
   float V = ax * cy - ay * cx;
   float W = bx * ay - by * ax;
   vec3 miss = vec3(-1.0f, 0.0f, 0.0f);
-  if ((U < 0.0f || V < 0.0f || W < 0.0f) && (U > 0.0f || V > 0.0f || W > 0.0f)) return miss;
+  // Outside an edge; culled, the back (U, V, W all at most 0) counts as outside too.
+  if ((U < 0.0f || V < 0.0f || W < 0.0f) && (cullBack || U > 0.0f || V > 0.0f || W > 0.0f)) return miss;
   float det = U + V + W;
   if (det == 0.0f) return miss;
   float az = r.shear.z * Az, bz = r.shear.z * Bz, cz = r.shear.z * Cz;
@@ -87,6 +89,9 @@ VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax
   float deltaT = 3.0f * (gammaBound(3.0f) * maxE * maxZ + deltaE * maxZ + deltaZ * maxE) * inv;
   if (t <= deltaT) return miss;
   return vec3(t, V * inv, W * inv);
+}
+VKMC_FN vec3 intersectTriangle(RayShear r, vec3 v0, vec3 v1, vec3 v2, float tMax) {
+  return intersectTriangle(r, v0, v1, v2, tMax, false);
 }
 
 // Bound on the rounding error of b0*v0 + b1*v1 + b2*v2: relative to the coordinates, so scaling or

@@ -75,6 +75,7 @@
 #define SPEC_SAMPLER 27           // kSampler* (sampler.h)
 #define SPEC_SAMPLER_LOG2_SPP 28  // zsobol: log2 of a replicate's sample count, rounded up
 #define SPEC_SAMPLER_DIGITS 29    // zsobol: base-4 digits of the Morton index (pixel bits + log2 spp)
+#define SPEC_CULLS_BACK_FACES 30  // 0: every material double-sided; the walks' back-face test compiled out
 
 VKMC_BEGIN_NAMESPACE
 

@@ -1,7 +1,8 @@
 // The scene texels: the host writes them (host/render/gpu_scene.cpp), the kernels read them (common.glsl,
 // shading.glsl). Encode and decode side by side; both languages compile this file.
 //   triangles (BINDING_TRIANGLES, RGBA32F): kTriangleTexels per triangle, the vertices in xyz; texel
-//       kTriangleLightPmfTexel's w holds the triangle's light-selection pmf (0 unless it emits), the others' w 0
+//       kTriangleLightPmfTexel's w holds the triangle's light-selection pmf (0 unless it emits), texel
+//       kTriangleSidesTexel's w is 1 when the triangle is single-sided (culled from the back), else 0
 //   triangle info (BINDING_TRIANGLE_INFO, RGBA32UI): one texel per triangle, the three vertex normals
 //       (octahedral, 2 x 16-bit snorm each) and the material id, whose top bit says the material is alpha-tested
 //   lights (BINDING_LIGHTS, RGBA32UI): one alias-table entry per light (Walker/Vose), emissive triangles,
@@ -14,6 +15,11 @@ VKMC_BEGIN_NAMESPACE
 
 VKMC_CONST uint kTriangleTexels = 3u;
 VKMC_CONST uint kTriangleLightPmfTexel = 1u;
+// glTF's doubleSided false: only the front face is there (spec 3.9.5, back-face culling), so a ray that meets
+// the back passes. Kept beside the vertices, which the walk loads anyway.
+VKMC_CONST uint kTriangleSidesTexel = 0u;
+VKMC_FN float encodeTriangleSingleSided(bool singleSided) { return singleSided ? 1.0f : 0.0f; }
+VKMC_FN bool triangleSingleSided(vec4 sidesTexel) { return sidesTexel.w != 0.0f; }
 
 // Octahedral unit vectors (Cigolle et al. 2014) in 2 x 16-bit snorm.
 VKMC_FN uint encodeOctahedral(vec3 n) {

@@ -1,6 +1,6 @@
 // Textured surfaces in whole renders with known answers: alpha MASK (a cutoff, from a texture) and BLEND
-// (stochastic transparency, unbiased for the blend) in closest-hit and shadow walks, and normal mapping on a
-// plane under a uniform environment.
+// (stochastic transparency, unbiased for the blend) in closest-hit and shadow walks, back-face culling of
+// single-sided materials in both walks, and normal mapping on a plane under a uniform environment.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -108,6 +108,52 @@ TEST(AlphaBlend, ShadowRaysPassAHalfTransparentSheetHalfTheTime) {
   full.mean *= 0.5;
   full.variance *= 0.25;
   EXPECT_TRUE(test::regionsAgree(half, full, 5.0));
+}
+
+TEST(BackFaces, ASingleSidedSheetSeenFromBehindIsNotThere) {
+  // The black sheet between the camera and the emitter: its front towards the camera hides the emitter; turned
+  // round (front towards the emitter) it is culled unless the material is double-sided.
+  auto dir = test::makeTempDir("sides");
+  const std::string black = R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1],"metallicFactor":0},)";
+  const std::string single = black + kNoSpecular + "}", twoSided = black + R"("doubleSided":true,)" + kNoSpecular + "}";
+  const test::QuadSpec emitter = {{-2, -2, 0}, {4, 0, 0}, {0, 4, 0}, 0};
+  const test::QuadSpec facingCamera = {{-1, -1, 1}, {2, 0, 0}, {0, 2, 0}, 1}, facingAway = {{-1, -1, 1}, {0, 2, 0}, {2, 0, 0}, 1};
+  struct Case {
+    const char* name;
+    test::QuadSpec sheet;
+    std::string material;
+    double expected;
+  };
+  for (const Case& c : {Case{"front", facingCamera, single, 0.0}, Case{"back", facingAway, single, 1.0},
+                        Case{"back_double_sided", facingAway, twoSided, 0.0}}) {
+    std::string path = test::writeQuadsGltf(dir, c.name, {emitter, c.sheet}, kEmitter + "," + c.material, kSpecularExtension);
+    RenderOutcome r = render(path, {0, 0, 3}, {0, 0, 0}, 30.0f, 4);
+    EXPECT_TRUE(r.features.singleSided) << c.name;  // the emitter is single-sided in every case
+    EXPECT_EQ(test::whole(r.film).mean.g, c.expected) << c.name;
+  }
+}
+
+TEST(BackFaces, ShadowRaysPassTheBackOfASingleSidedSheet) {
+  // The floor and emitter of ShadowRaysPassAHalfTransparentSheetHalfTheTime with an opaque black single-sided
+  // sheet between them: facing the emitter, walks from the floor meet its back and the floor is lit as if it
+  // were not there; facing the floor, it blocks every path.
+  auto dir = test::makeTempDir("sides");
+  std::vector<test::QuadSpec> quads = {{{-5, 0, 5}, {10, 0, 0}, {0, 0, -10}, 1},  // floor, facing +y
+                                       {{-1, 1, -1}, {2, 0, 0}, {0, 0, 2}, 0}};   // emitter, facing -y
+  std::string materials = kEmitter + "," + kWhite + "," +
+                          R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1],"metallicFactor":0},)" + kNoSpecular + "}";
+  std::string open = test::writeQuadsGltf(dir, "open", quads, materials, kSpecularExtension);
+  std::vector<test::QuadSpec> up = quads, down = quads;
+  up.push_back({{-3, 0.5f, 3}, {6, 0, 0}, {0, 0, -6}, 2});    // front +y, towards the emitter
+  down.push_back({{-3, 0.5f, -3}, {6, 0, 0}, {0, 0, 6}, 2});  // front -y, towards the floor
+  RenderOutcome a = render(open, {0, 0.4f, 0}, {0, 0, 0.001f}, 40.0f, 64, 1);
+  RenderOutcome b = render(test::writeQuadsGltf(dir, "up", up, materials, kSpecularExtension), {0, 0.4f, 0}, {0, 0, 0.001f},
+                           40.0f, 64, 1);
+  RenderOutcome c = render(test::writeQuadsGltf(dir, "down", down, materials, kSpecularExtension), {0, 0.4f, 0},
+                           {0, 0, 0.001f}, 40.0f, 64, 1);
+  ASSERT_GT(test::whole(a.film).mean.g, 0.05);
+  EXPECT_TRUE(test::regionsAgree(test::whole(b.film), test::whole(a.film), 5.0));
+  EXPECT_EQ(test::whole(c.film).mean.g, 0.0);
 }
 
 TEST(NormalMap, ATiltedNormalSeesTheFractionOfTheEnvironmentAboveThePlane) {

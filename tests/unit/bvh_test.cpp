@@ -215,6 +215,40 @@ TEST_P(BarycentricsFromEachSide, AreRight) {
 INSTANTIATE_TEST_SUITE_P(Geometry, BarycentricsFromEachSide, ::testing::Values(1.0f, -1.0f),
                          [](const auto& info) { return info.param > 0 ? std::string("front") : std::string("back"); });
 
+// Back-face culling (single-sided materials): with cullBack a ray that meets the side the geometric normal
+// cross(v1 - v0, v2 - v0) points away from misses, and one that meets the front gets the unculled hit, for
+// random triangles and directions along every axis's sign (the shear's axis swap must keep the winding).
+TEST(Geometry, CullingRemovesExactlyTheBackHits) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  int front = 0, back = 0;
+  for (int i = 0; i < 20000; ++i) {
+    vec3 v0(u(rng), u(rng), u(rng)), v1(u(rng), u(rng), u(rng)), v2(u(rng), u(rng), u(rng));
+    vec3 target = (v0 + v1 + v2) / 3.0f + 0.1f * vec3(u(rng), u(rng), u(rng));
+    vec3 o = 3.0f * vec3(u(rng), u(rng), u(rng));
+    vec3 d = normalize(target - o);
+    gpu::RayShear shear = gpu::makeRayShear(o, d);
+    vec3 plain = gpu::intersectTriangle(shear, v0, v1, v2, 1e30f);
+    vec3 culled = gpu::intersectTriangle(shear, v0, v1, v2, 1e30f, true);
+    if (plain.x <= 0.0f) {
+      EXPECT_LE(culled.x, 0.0f);
+      continue;
+    }
+    float facing = dot(cross(v1 - v0, v2 - v0), d);
+    if (std::abs(facing) < 1e-4f) continue;  // grazing: the sign is not meaningful at float precision
+    if (facing < 0.0f) {
+      ++front;
+      EXPECT_EQ(culled.x, plain.x);
+      EXPECT_EQ(culled.y, plain.y);
+    } else {
+      ++back;
+      EXPECT_LE(culled.x, 0.0f) << "a back hit survived culling, facing " << facing;
+    }
+  }
+  EXPECT_GT(front, 1000);
+  EXPECT_GT(back, 1000);
+}
+
 class PlaneAtScale : public ::testing::TestWithParam<std::tuple<float, float>> {};
 
 TEST_P(PlaneAtScale, RaysLeavingItNeverReHitIt) {

@@ -11,8 +11,9 @@
 #     from the glTF appendix B model vkmc uses;
 #   - emission emissiveFactor x KHR_materials_emissive_strength as radiance (Cycles' mesh emission of strength 1
 #     is radiance 1, the same unit as vkmc's W m^-2 sr^-1), from the front face only unless the material is
-#     doubleSided (vkmc's rule; Cycles' Emission shader emits from both faces, so the back face gets none
-#     through a Backfacing mix). Every surface reflects on both faces, as in vkmc.
+#     doubleSided (Cycles' Emission shader emits from both faces);
+#   - a single-sided material (doubleSided false, glTF's default) is culled from the back as in vkmc: its back
+#     face is a white Transparent BSDF through a Backfacing mix. Double-sided ones reflect on both faces.
 # Textures, alpha, vertex colours and punctual lights are not mapped (the baseline's scenes have none).
 import json
 import math
@@ -112,24 +113,27 @@ def build_material(mat, row):
         surface.inputs["Sheen"].default_value = 0.0
         surface.inputs["Clearcoat"].default_value = 0.0
         surface.inputs["Emission Strength"].default_value = 0.0
-    shader = surface.outputs[0]
+    front = surface.outputs[0]
     if max(row["emission"]) > 0.0:
         emission = nt.nodes.new("ShaderNodeEmission")
         emission.inputs["Color"].default_value = row["emission"] + [1.0]
         emission.inputs["Strength"].default_value = 1.0
         add = nt.nodes.new("ShaderNodeAddShader")
-        nt.links.new(shader, add.inputs[0])
+        nt.links.new(front, add.inputs[0])
         nt.links.new(emission.outputs[0], add.inputs[1])
         front = add.outputs[0]
-        if row["double_sided"]:
-            shader = front
-        else:
-            geometry = nt.nodes.new("ShaderNodeNewGeometry")
-            mix = nt.nodes.new("ShaderNodeMixShader")  # Fac 0: input 1 (front), 1: input 2 (back)
-            nt.links.new(geometry.outputs["Backfacing"], mix.inputs["Fac"])
-            nt.links.new(front, mix.inputs[1])
-            nt.links.new(surface.outputs[0], mix.inputs[2])
-            shader = mix.outputs[0]
+    shader = front
+    if not row["double_sided"]:
+        # glTF's back-face culling, as vkmc does it: a ray meeting the back of a single-sided surface passes
+        # (a white Transparent BSDF, which Cycles also lets shadow rays through).
+        geometry = nt.nodes.new("ShaderNodeNewGeometry")
+        through = nt.nodes.new("ShaderNodeBsdfTransparent")
+        through.inputs["Color"].default_value = [1.0, 1.0, 1.0, 1.0]
+        mix = nt.nodes.new("ShaderNodeMixShader")  # Fac 0: input 1 (front), 1: input 2 (back)
+        nt.links.new(geometry.outputs["Backfacing"], mix.inputs["Fac"])
+        nt.links.new(front, mix.inputs[1])
+        nt.links.new(through.outputs[0], mix.inputs[2])
+        shader = mix.outputs[0]
     nt.links.new(shader, out.inputs["Surface"])
     return lambert
 
@@ -183,7 +187,7 @@ def setup_scene(args, rows):
     c.caustics_refractive = True
     c.max_bounces = c.diffuse_bounces = c.glossy_bounces = args.max_bounces
     c.transmission_bounces = c.volume_bounces = args.max_bounces
-    c.transparent_max_bounces = args.max_bounces
+    c.transparent_max_bounces = 1024  # culled back faces: vkmc passes them without counting a bounce
     c.min_light_bounces = args.min_bounces
     c.min_transparent_bounces = args.min_bounces
     c.seed = args.seed
