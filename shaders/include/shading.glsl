@@ -61,8 +61,9 @@ vec3 normalMapped(Material m, SurfacePoint s) {
 }
 
 // The material's parameters at s (factors times textures and vertex colours), its emission into s.emission
-// and its normal map into s.frame.
-GltfMaterial shadeSurface(Material m, inout SurfacePoint s) {
+// and its normal map into s.frame; a material with a specular lobe gets a shading normal whose mirror
+// direction of wo stays above the surface (normalForValidReflection).
+GltfMaterial shadeSurface(Material m, inout SurfacePoint s, vec3 wo) {
   vec4 base = m.baseColor;
   float metallic = m.metallic, roughness = m.roughness;
   s.emission = m.emission;
@@ -82,6 +83,10 @@ GltfMaterial shadeSurface(Material m, inout SurfacePoint s) {
       vec3 mapped = normalMapped(m, s);
       s.frame = basisFromNormal(flipped ? -mapped : mapped);
     }
+  }
+  if (kHasGlossy != 0u && (metallic > 0.0 || m.specular > 0.0)) {
+    vec3 n = normalForValidReflection(s.ng, wo, s.frame[2]);
+    if (n != s.frame[2]) s.frame = basisFromNormal(n);
   }
   return makeGltfMaterial(base.rgb, metallic, roughness, m.specular);
 }

@@ -62,7 +62,7 @@ void main() {
       s = surfaceAt(tri, hit.yz, wo);
       Material m = materials[s.material];
       uint depth = path.depth;
-      gm = shadeSurface(m, s);
+      gm = shadeSurface(m, s, wo);
       gathered = emissionAt(path, s, m, tri, hit, wo);
       woLocal = wo * s.frame;
       samples = belowDepthCap(depth) && kHasLights != 0u && kNee != 0u ? lightSamplesAt(depth) : 0u;

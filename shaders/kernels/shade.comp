@@ -48,7 +48,7 @@ void main() {
   SurfacePoint s = surfaceAt(tri, hit.yz, wo);
   Material m = materials[s.material];
   uint depth = path.depth;
-  GltfMaterial gm = shadeSurface(m, s);
+  GltfMaterial gm = shadeSurface(m, s, wo);
   vec3 gathered = emissionAt(path, s, m, tri, hit, wo);
   vec3 woLocal = wo * s.frame;
   if (belowDepthCap(depth) && kHasLights != 0u && kNee != 0u) {

@@ -29,6 +29,32 @@ VKMC_FN GltfMaterial makeGltfMaterial(vec3 baseColor, float metallic, float roug
   return m;
 }
 
+// A shading normal ns (a normal map's, or interpolated normals near a silhouette) can mirror wo below the
+// geometric surface, where the specular lobe's paths die black (the ring round a normal-mapped mirror). As
+// Cycles' ensure_valid_specular_reflection does, ns is turned toward ng just enough that the mirror direction
+// rises to t = min(0.9 wo.ng, 0.01) above the surface; here built as the half vector of wo and the mirror
+// direction raised to height t in its own azimuth, so the change is continuous (ns itself at height t).
+// Unit vectors, wo and ns on ng's side. A deterministic function of wo: the BSDF stays one function per vertex.
+VKMC_FN vec3 normalForValidReflection(vec3 ng, vec3 wo, vec3 ns) {
+  float woZ = dot(wo, ng);
+  vec3 r = 2.0f * dot(ns, wo) * ns - wo;
+  float t = min(0.9f * woZ, 0.01f);
+  float rz = dot(r, ng);
+  if (rz >= t || !(woZ > 0.0f)) return ns;
+  vec3 across = r - rz * ng;
+  float len = length(across);
+  if (!(len > 1e-6f)) {  // r straight down ng: rise toward ns's own tilt, or any direction across ng
+    across = ns - dot(ns, ng) * ng;
+    len = length(across);
+    if (!(len > 1e-6f)) {
+      across = basisFromNormal(ng)[0];
+      len = 1.0f;
+    }
+  }
+  vec3 raised = across * (sqrt(1.0f - t * t) / len) + t * ng;
+  return normalize(wo + raised);
+}
+
 VKMC_FN float pow5(float x) {
   float x2 = x * x;
   return x2 * x2 * x;

@@ -180,6 +180,26 @@ TEST(NormalMap, ATiltedNormalSeesTheFractionOfTheEnvironmentAboveThePlane) {
   EXPECT_TRUE(test::regionMatches(test::whole(m.film), glm::dvec3(expected), 5.0)) << "expected " << expected;
 }
 
+TEST(NormalMap, ATiltedMirrorStillReflectsTheEnvironment) {
+  // A white mirror (metal, roughness 0) seen from straight above with its normal map tilted by 60 degrees: the
+  // mirror direction about the mapped normal points 120 degrees from the geometric one, under the plane, and
+  // such paths died black. The lifted normal (normalForValidReflection) mirrors the view just above the plane,
+  // where the uniform background of radiance 1 is: L = F G2 / G1, 1 for a white metal at alpha 1e-4.
+  auto dir = test::makeTempDir("normalmap");
+  const double theta = 60.0 * 3.14159265358979 / 180.0;
+  auto byte = [](double x) { return uint8_t(std::lround((x + 1.0) * 0.5 * 255.0)); };
+  std::string png = test::writePng(dir, "tilt", 1, 1, {byte(std::sin(theta)), byte(0.0), byte(std::cos(theta)), 255});
+  std::string mirror = R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":1,"roughnessFactor":0},
+    "normalTexture":{"index":0}})";
+  std::string extra = R"("images":[{"uri":")" + png + R"("}],"textures":[{"source":0}])";
+  std::vector<test::QuadSpec> quads = {{{-5, -5, 0}, {10, 0, 0}, {0, 10, 0}, 0}};
+  RenderOutcome m = render(test::writeQuadsGltf(dir, "mirror", quads, mirror, extra), {0, 0, 1}, {0, 0, 0}, 30.0f, 16, 1,
+                           glm::vec3(1.0f));
+  test::RegionStats all = test::whole(m.film);
+  EXPECT_GT(all.mean.g, 0.99);
+  EXPECT_LT(all.mean.g, 1.0 + 5.0 * std::sqrt(all.variance.g) + 1e-4);
+}
+
 TEST(DefaultLight, EmissiveMapsAloneDoNotLightAModelButUntexturedEmittersDo) {
   // A quad with an emissive texture (a decoration) gets the default environment; one with a plain emissive
   // factor (a light, as in the Cornell box) does not.

@@ -1,8 +1,10 @@
 // The shared estimator functions (shaders/shared/sampling.h, light_sampling.h, roulette.h, mis.h) as pure
 // functions: each sampling map with its inverse (round trip), each pdf against the measure it claims, roulette
-// and splitting unbiased in closed form, MIS weights a partition of unity.
+// and splitting unbiased in closed form, MIS weights a partition of unity; the shading normal's lift that keeps
+// the mirror direction above the surface (bsdf_gltf.h).
 #include <gtest/gtest.h>
 
+#include "bsdf_gltf.h"
 #include "light_sampling.h"
 #include "mis.h"
 #include "rng.h"
@@ -115,4 +117,37 @@ TEST(EstimatorFunctions, MisWeightsOfTwoTechniquesSumToOne) {
     EXPECT_EQ(misWeight(kMisNone, a, b), 1.0f);
   }
   EXPECT_EQ(misWeight(kMisPower, 0.0f, 0.0f), 0.0f);
+}
+
+TEST(EstimatorFunctions, ValidReflectionNormalKeepsTheMirrorDirectionAboveTheSurface) {
+  // Random geometric normals, views above the surface and shading normals tilted up to 85 degrees: the returned
+  // normal is unit, on ng's side and facing wo; it mirrors wo to at least t = min(0.9 wo.ng, 0.01) above the
+  // surface; and it is ns itself whenever ns already did.
+  const float kDegree = 0.0174532925f;
+  int lifted = 0, kept = 0;
+  for (uint i = 0; i < 50000; ++i) {
+    uint key = pathKey(5u, i, 0u);
+    vec3 h = sampleUniformHemisphere(vec2(randomUnit(key, 0u), randomUnit(key, 1u)));
+    vec3 ng = randomUnit(key, 6u) < 0.5f ? h : -h;
+    mat3 frame = basisFromNormal(ng);
+    vec3 wo = frame * sampleUniformHemisphere(vec2(randomUnit(key, 2u), randomUnit(key, 3u)));
+    float tilt = 85.0f * kDegree * randomUnit(key, 4u), phi = 6.2831853f * randomUnit(key, 5u);
+    vec3 ns = frame * vec3(std::sin(tilt) * std::cos(phi), std::sin(tilt) * std::sin(phi), std::cos(tilt));
+    vec3 n = normalForValidReflection(ng, wo, ns);
+    float t = std::min(0.9f * dot(wo, ng), 0.01f);
+    vec3 before = 2.0f * dot(ns, wo) * ns - wo, after = 2.0f * dot(n, wo) * n - wo;
+    EXPECT_NEAR(length(n), 1.0f, 1e-5f);
+    EXPECT_GT(dot(n, ng), 0.0f);
+    EXPECT_GT(dot(n, wo), 0.0f);
+    if (dot(before, ng) >= t) {
+      ++kept;
+      EXPECT_EQ(n, ns);
+    } else {
+      ++lifted;
+      EXPECT_GE(dot(after, ng), t - 1e-4f) << "wo.ng " << dot(wo, ng);
+      EXPECT_LE(dot(after, ng), t + 1e-4f);  // just enough: the least lift
+    }
+  }
+  EXPECT_GT(lifted, 5000);
+  EXPECT_GT(kept, 5000);
 }
