@@ -53,6 +53,9 @@ int runInfo(const RenderOptions& options) {
   std::printf("scene        %s\n", options.scenePath.c_str());
   std::printf("triangles    %u (%s), %llu zero-area skipped, %u materials, %zu cameras\n", f.triangles, f.sizeClass(),
               static_cast<unsigned long long>(scene.degenerateTriangles), f.materials, scene.cameras.size());
+  if (!scene.thinSegments.empty())
+    std::printf("lines        %zu point and line segments (a render draws each as a 2-triangle ribbon one pixel wide)\n",
+                scene.thinSegments.size());
   std::printf(
       "features     emitters %s (%u emissive triangles), glossy %s, metallic %s, non-default specular %s,\n"
       "             double-sided %s, single-sided %s, textures %s (%zu), normal maps %s, alpha %s,\n"

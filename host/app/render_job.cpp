@@ -23,6 +23,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/content_hash.h"
 #include "scene/scene_fingerprint.h"
+#include "scene/thin_ribbons.h"
 
 namespace vkmc {
 namespace {
@@ -179,6 +180,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.width = width;
   out.height = height;
 
+  addThinRibbons(scene, camera, height);  // points and lines, one pixel wide for this camera and image
   addEnvironmentLight(options, scene, out);
   auto t = Clock::now();
   std::vector<Aabb> bounds = scene.triangleBounds();

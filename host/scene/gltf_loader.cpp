@@ -214,13 +214,13 @@ class Flattener {
     std::vector<PrimitiveData> data;
     for (size_t p = 0; p < mesh.primitives.size(); ++p) {
       const tinygltf::Primitive& prim = mesh.primitives[p];
-      if (!isTriangleMode(prim.mode)) {
+      if (!isTriangleMode(prim.mode) && !isPointOrLineMode(prim.mode)) {
         data.emplace_back();
         continue;
       }
       PrimitiveRequest request;
       request.weights = node.weights.empty() ? mesh.weights : node.weights;
-      request.generateTangents = hasNormalTexture(model_, prim.material);
+      request.generateTangents = isTriangleMode(prim.mode) && hasNormalTexture(model_, prim.material);
       if (request.generateTangents) request.tangentUvSet = model_.materials[prim.material].normalTexture.texCoord;
       request.maxElements = maxElements_;
       try {
@@ -241,7 +241,7 @@ class Flattener {
       glm::mat4 world = nodeWorld * instance;
       for (size_t p = 0; p < mesh.primitives.size(); ++p) {
         const tinygltf::Primitive& prim = mesh.primitives[p];
-        if (!isTriangleMode(prim.mode)) {
+        if (!isTriangleMode(prim.mode) && !isPointOrLineMode(prim.mode)) {
           ++nonTrianglePrimitives;
           continue;
         }
@@ -250,7 +250,10 @@ class Flattener {
           throw Error("primitive refers to missing material " + std::to_string(materialIndex));
         uint32_t materialId = materialIndex < 0 ? static_cast<uint32_t>(scene_.materials.size() - 1)  // default material
                                                 : static_cast<uint32_t>(materialIndex);
-        addPrimitive(data[p], world, materialId);
+        if (isPointOrLineMode(prim.mode))
+          addSegments(data[p], world, materialId);
+        else
+          addPrimitive(data[p], world, materialId);
       }
     }
   }
@@ -301,6 +304,31 @@ class Flattener {
         scene_.bounds.grow(p[k]);
       }
       scene_.materialIds.push_back(materialId);
+    }
+  }
+
+  // Points and lines in world space; each becomes a two-triangle ribbon at render time, counted here.
+  void addSegments(const PrimitiveData& data, const glm::mat4& world, uint32_t materialId) {
+    size_t segments = data.segments.size() / 2;
+    if (scene_.triangleCount() + 2 * (scene_.thinSegments.size() + segments) > maxTriangles_)
+      throw Error("scene too big: more than " + std::to_string(maxTriangles_) +
+                  " triangles after instancing, points and lines counted as 2 each");
+    for (size_t s = 0; s < segments; ++s) {
+      ThinSegment seg;
+      glm::vec3* ends[2] = {&seg.a, &seg.b};
+      glm::vec4* colors[2] = {&seg.colorA, &seg.colorB};
+      for (int k = 0; k < 2; ++k) {
+        uint32_t v = data.segments[2 * s + k];
+        glm::vec3 local = data.positions[v];
+        if (!finite(local)) throw Error("vertex " + std::to_string(v) + " has a NaN or infinite position");
+        *ends[k] = glm::vec3(world * glm::vec4(local, 1.0f));
+        if (!finite(*ends[k]) || !inRange(*ends[k]))
+          throw Error("vertex " + std::to_string(v) + " lies beyond +-" + coordinateLimit() + " after its node transform");
+        if (!data.colors.empty()) *colors[k] = data.colors[v];
+        scene_.bounds.grow(*ends[k]);
+      }
+      seg.material = materialId;
+      scene_.thinSegments.push_back(seg);
     }
   }
 
@@ -376,11 +404,15 @@ class InstanceCounter {
     if (node.mesh >= 0 && node.mesh < static_cast<int>(model_.meshes.size())) {
       uint64_t meshTriangles = 0;
       for (const tinygltf::Primitive& prim : model_.meshes[node.mesh].primitives) {
-        if (!isTriangleMode(prim.mode)) continue;
+        bool lines = isPointOrLineMode(prim.mode);
+        if (!isTriangleMode(prim.mode) && !lines) continue;
         auto pos = prim.attributes.find("POSITION");
         int accessor = prim.indices >= 0 ? prim.indices : pos == prim.attributes.end() ? -1 : pos->second;
-        if (accessor >= 0 && accessor < static_cast<int>(model_.accessors.size()))
-          meshTriangles = saturatingAdd(meshTriangles, triangleCount(prim.mode, model_.accessors[accessor].count));
+        if (accessor >= 0 && accessor < static_cast<int>(model_.accessors.size())) {
+          size_t elements = model_.accessors[accessor].count;
+          meshTriangles = saturatingAdd(meshTriangles, lines ? 2 * uint64_t(segmentCount(prim.mode, elements))
+                                                             : uint64_t(triangleCount(prim.mode, elements)));
+        }
       }
       total = saturatingMultiply(meshTriangles, instanceCount(node));
     }
@@ -557,10 +589,11 @@ Scene flattenModel(const tinygltf::Model& model, const std::string& path, const 
   for (int root : roots) flattener.visit(root, glm::mat4(1.0f), 0);
   scene.skippedPrimitives = flattener.nonTrianglePrimitives;
   if (scene.skippedPrimitives > 0)
-    scene.warnings.push_back(std::to_string(scene.skippedPrimitives) + " non-triangle primitive(s) skipped");
+    scene.warnings.push_back(std::to_string(scene.skippedPrimitives) + " primitive(s) of an unknown mode skipped");
   if (scene.degenerateTriangles > 0)
     scene.warnings.push_back(std::to_string(scene.degenerateTriangles) + " zero-area triangle(s) skipped");
-  if (scene.triangleCount() == 0) throw Error("scene '" + path + "' has no triangles");
+  if (scene.triangleCount() == 0)
+    throw Error("scene '" + path + "' has no triangles" + std::string(scene.thinSegments.empty() ? "" : " (points and lines alone are not drawn)"));
   return scene;
 }
 

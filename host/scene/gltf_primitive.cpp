@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "error.h"
 #include "scene/gltf_accessors.h"
@@ -78,7 +79,46 @@ std::vector<uint32_t> readTriangles(const tinygltf::Model& model, const tinygltf
   return out;
 }
 
+// Segment s's two elements (glTF 2.0 section 3.7.2.1): points repeat theirs, a loop closes on element 0.
+std::pair<size_t, size_t> segmentElements(int mode, size_t s, size_t elements) {
+  if (mode == TINYGLTF_MODE_POINTS) return {s, s};
+  if (mode == TINYGLTF_MODE_LINE) return {2 * s, 2 * s + 1};
+  return {s, (s + 1) % elements};  // strip and loop
+}
+
+std::vector<uint32_t> readSegments(const tinygltf::Model& model, const tinygltf::Primitive& prim, size_t vertices,
+                                   uint64_t maxElements) {
+  std::vector<uint32_t> indices;
+  if (prim.indices >= 0) indices = readIndexAccessor(model, prim.indices, maxElements);
+  size_t elements = prim.indices >= 0 ? indices.size() : vertices;
+  size_t segments = segmentCount(prim.mode, elements);
+  std::vector<uint32_t> out(2 * segments);
+  for (size_t s = 0; s < segments; ++s) {
+    auto [e0, e1] = segmentElements(prim.mode, s, elements);
+    for (size_t k = 0; k < 2; ++k) {
+      size_t element = k == 0 ? e0 : e1;
+      size_t vertex = prim.indices >= 0 ? indices[element] : element;
+      if (vertex >= vertices)
+        throw Error("index " + std::to_string(vertex) + " out of range (" + std::to_string(vertices) + " vertices)");
+      out[2 * s + k] = static_cast<uint32_t>(vertex);
+    }
+  }
+  return out;
+}
+
 }  // namespace
+
+bool isPointOrLineMode(int mode) {
+  return mode == TINYGLTF_MODE_POINTS || mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_LOOP ||
+         mode == TINYGLTF_MODE_LINE_STRIP;
+}
+
+size_t segmentCount(int mode, size_t elements) {
+  if (mode == TINYGLTF_MODE_POINTS) return elements;
+  if (mode == TINYGLTF_MODE_LINE) return elements / 2;
+  if (mode == TINYGLTF_MODE_LINE_STRIP) return elements >= 2 ? elements - 1 : 0;
+  return elements >= 2 ? elements : 0;  // a loop: one more, back to the start
+}
 
 bool isTriangleMode(int mode) {
   return mode == -1 || mode == TINYGLTF_MODE_TRIANGLES || mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
@@ -111,6 +151,10 @@ PrimitiveData readPrimitive(const tinygltf::Model& model, const tinygltf::Primit
   if (!data.colors.empty() && model.accessors[colorAccessor].type == TINYGLTF_TYPE_VEC3)
     for (glm::vec4& c : data.colors) c.w = 1.0f;
   applyMorphTargets(model, prim, request, data);
+  if (isPointOrLineMode(prim.mode)) {
+    data.segments = readSegments(model, prim, n, limit);
+    return data;
+  }
   data.triangles = readTriangles(model, prim, n, limit);
   if (request.generateTangents && data.tangents.empty())
     data.tangents =

@@ -16,6 +16,7 @@ struct PrimitiveData {
   std::vector<glm::vec4> tangents;  // TANGENT, generated ones, or empty (see PrimitiveRequest::generateTangents)
   std::vector<glm::vec4> colors;    // COLOR_0 as RGBA, empty when absent
   std::vector<uint32_t> triangles;  // 3 vertex indices per triangle, each checked < positions.size()
+  std::vector<uint32_t> segments;   // points and lines: 2 vertex indices per segment (a point: the same twice)
 };
 
 struct PrimitiveRequest {
@@ -25,8 +26,12 @@ struct PrimitiveRequest {
   uint64_t maxElements = 0;       // per accessor (view-less accessors have no data to bound their count)
 };
 
-// Whether glTF draws `mode` as triangles (lists, strips, fans).
+// Whether glTF draws `mode` as triangles (lists, strips, fans), or as points and lines (POINTS, LINES, LINE_LOOP,
+// LINE_STRIP: vkmc draws them as thin ribbons, scene/thin_ribbons.h).
 bool isTriangleMode(int mode);
+bool isPointOrLineMode(int mode);
+// How many segments a point or line primitive of `elements` vertices (or indices) makes.
+size_t segmentCount(int mode, size_t elements);
 // How many triangles a primitive of `elements` vertices (or indices) makes.
 size_t triangleCount(int mode, size_t elements);
 

@@ -103,6 +103,14 @@ struct Aabb {
   }
 };
 
+// A glTF point or line segment in world space (a point: a == b), drawn as a thin ribbon once the camera is known
+// (scene/thin_ribbons.h).
+struct ThinSegment {
+  glm::vec3 a, b;
+  glm::vec4 colorA{1.0f}, colorB{1.0f};  // COLOR_0 at each end
+  uint32_t material = 0;
+};
+
 struct Scene {
   std::vector<glm::vec3> positions;  // 3 per triangle, world space, counter-clockwise front faces
   std::vector<glm::vec3> normals;    // 3 per triangle, world space (geometric normal where the file has none)
@@ -121,7 +129,8 @@ struct Scene {
   std::vector<Camera> cameras;  // camera instances in node order
   Aabb bounds;
   uint64_t degenerateTriangles = 0;  // zero-area triangles skipped
-  uint64_t skippedPrimitives = 0;    // non-triangle primitives skipped
+  uint64_t skippedPrimitives = 0;    // primitives of an unknown mode, skipped
+  std::vector<ThinSegment> thinSegments;  // points and lines, not yet triangles
   std::vector<std::string> warnings;
   std::string path;
   std::vector<PunctualLight> punctualLights;  // KHR_lights_punctual instances in node order

@@ -1,11 +1,13 @@
 // Textured surfaces in whole renders with known answers: alpha MASK (a cutoff, from a texture) and BLEND
 // (stochastic transparency, unbiased for the blend) in closest-hit and shadow walks, back-face culling of
-// single-sided materials in both walks, and normal mapping on a plane under a uniform environment.
+// single-sided materials in both walks, normal mapping on a plane under a uniform environment, and glTF lines
+// drawn one pixel wide.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "app/render_job.h"
+#include "support/gltf_builder.h"
 #include "support/render_helpers.h"
 #include "support/test_scenes.h"
 #include "support/z_test.h"
@@ -198,6 +200,28 @@ TEST(NormalMap, ATiltedMirrorStillReflectsTheEnvironment) {
   test::RegionStats all = test::whole(m.film);
   EXPECT_GT(all.mean.g, 0.99);
   EXPECT_LT(all.mean.g, 1.0 + 5.0 * std::sqrt(all.variance.g) + 1e-4);
+}
+
+TEST(ThinRibbons, ALineCoversOnePixelOfEachColumn) {
+  // A black LINES segment across the middle of the view, in front of an emitter of radiance 1: each sample sees
+  // 1 or 0, so a column's darkness summed over its rows is the line's width in pixels, 1 (the ribbon is a pixel
+  // at its distance; in the central columns the view's obliqueness changes that by under 0.2%).
+  auto dir = test::makeTempDir("ribbons");
+  test::GltfBuilder b;
+  int quad = b.accessor(std::vector<float>{-2, -2, 0, 2, -2, 0, 2, 2, 0, -2, 2, 0}, 5126, "VEC3", 4,
+                        R"("min":[-2,-2,0],"max":[2,2,0])");
+  int quadIndices = b.accessor(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, 5123, "SCALAR", 6);
+  int line = b.accessor(std::vector<float>{-3, 0, 1, 3, 0, 1}, 5126, "VEC3", 2, R"("min":[-3,0,1],"max":[3,0,1])");
+  std::string black = R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1],"metallicFactor":0},)" + std::string(kNoSpecular) + "}";
+  std::string body = R"("nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":{"POSITION":)" + std::to_string(quad) +
+                     R"(},"indices":)" + std::to_string(quadIndices) + R"(,"material":0},{"attributes":{"POSITION":)" +
+                     std::to_string(line) + R"(},"mode":1,"material":1}]}],"materials":[)" + kEmitter + "," + black + "]," +
+                     kSpecularExtension;
+  RenderOutcome r = render(b.write(dir, "line", body), {0, 0, 3}, {0, 0, 0}, 30.0f, 64);
+  test::RegionStats centre = test::region(r.film, 12, 0, 20, 32);  // 8 central columns, every row
+  double darkness = 32.0 * (1.0 - centre.mean.g), sigma = 32.0 * std::sqrt(centre.variance.g);
+  EXPECT_NEAR(darkness, 1.0, 5.0 * sigma + 0.003) << "sigma " << sigma;
+  EXPECT_GT(darkness, 0.5) << "the line is drawn";
 }
 
 TEST(DefaultLight, EmissiveMapsAloneDoNotLightAModelButUntexturedEmittersDo) {

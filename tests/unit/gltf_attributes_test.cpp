@@ -201,3 +201,32 @@ TEST(GltfAttributes, SkinsRenderInBindPoseWithOneWarning) {
   EXPECT_TRUE(hasWarning(s, "skins: rendered in bind pose"));
   EXPECT_EQ(s.warnings.size(), 1u);
 }
+
+TEST(GltfAttributes, PointsAndLinesBecomeSegmentsByTheirMode) {
+  // Four vertices drawn in each point and line mode: POINTS 4 (each its own end twice), LINES 2, LINE_LOOP 4 (the
+  // last back to the first), LINE_STRIP 3; COLOR_0 rides along. A triangle keeps the scene loadable.
+  GltfBuilder b;
+  Quad q = addQuad(b);
+  std::vector<float> p = {0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+  int pos = b.accessor(p, 5126, "VEC3", 4, R"("min":[0,0,1],"max":[1,1,1])");
+  std::vector<float> rgb = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 0};
+  int color = b.accessor(rgb, 5126, "VEC3", 4);
+  std::string prims = primitive(R"("POSITION":)" + std::to_string(q.position), q.indices);
+  for (int mode : {0, 1, 2, 3})
+    prims += R"(,{"attributes":{"POSITION":)" + std::to_string(pos) + R"(,"COLOR_0":)" + std::to_string(color) +
+             R"(},"mode":)" + std::to_string(mode) + "}";
+  Scene s = loadGltf(b.write(dir(), "modes", R"("nodes":[{"mesh":0,"translation":[0,0,2]}],)" + meshJson(prims)));
+  EXPECT_EQ(s.triangleCount(), 2u);
+  ASSERT_EQ(s.thinSegments.size(), 4u + 2u + 4u + 3u);
+  EXPECT_EQ(s.skippedPrimitives, 0u);
+  const ThinSegment& point = s.thinSegments[1];
+  EXPECT_EQ(point.a, point.b);
+  EXPECT_EQ(point.a, glm::vec3(1, 0, 3)) << "world space";
+  EXPECT_EQ(point.colorA, glm::vec4(0, 1, 0, 1));
+  const ThinSegment& line = s.thinSegments[5];  // LINES' second: vertices 2, 3
+  EXPECT_EQ(line.a, glm::vec3(1, 1, 3));
+  EXPECT_EQ(line.b, glm::vec3(0, 1, 3));
+  EXPECT_EQ(s.thinSegments[9].b, glm::vec3(0, 0, 3)) << "the loop closes on its first vertex";
+  EXPECT_EQ(s.thinSegments[12].a, glm::vec3(1, 1, 3)) << "the strip's last segment starts at vertex 2";
+  EXPECT_EQ(s.bounds.max.z, 3.0f) << "segments count in the bounds (the automatic camera frames them)";
+}
