@@ -32,6 +32,7 @@ constexpr ExtensionRow kExtensions[] = {
     {"KHR_materials_dispersion", "dispersion is ignored"},
     {"KHR_materials_diffuse_transmission", "diffuse transmission is ignored"},
     {"KHR_materials_unlit", ""},  // an emission shader of the base colour (gltf_loader.cpp, makeUnlit)
+    {"KHR_materials_pbrSpecularGlossiness", ""},  // converted to metallic-roughness per texel (scene/spec_gloss.h)
     {"KHR_materials_variants", "only each primitive's default material is used"},
     {"KHR_draco_mesh_compression", ""},  // decoded by scene/gltf_decompress (libdraco)
     {"EXT_meshopt_compression", ""},     // decoded by scene/gltf_decompress (libmeshoptimizer)

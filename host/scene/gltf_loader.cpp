@@ -26,6 +26,7 @@
 #include "scene/gltf_lights.h"
 #include "scene/gltf_primitive.h"
 #include "scene/gltf_textures.h"
+#include "scene/spec_gloss.h"
 #include "scene/tangent_space.h"
 
 namespace vkmc {
@@ -81,7 +82,7 @@ void makeUnlit(Material& m) {
   m.metallicRoughnessTexture = TextureRef{};
 }
 
-Material convertMaterial(const tinygltf::Material& m, int index, const std::vector<Texture>& textures,
+Material convertMaterial(const tinygltf::Material& m, int index, std::vector<Texture>& textures,
                          std::vector<std::string>& warnings) {
   Material out;
   const auto& pbr = m.pbrMetallicRoughness;
@@ -125,6 +126,8 @@ Material convertMaterial(const tinygltf::Material& m, int index, const std::vect
   if (m.alphaMode == "BLEND") out.alphaMode = AlphaMode::Blend;
   out.alphaCutoff = static_cast<float>(m.alphaCutoff);
   if (!std::isfinite(out.alphaCutoff)) throw Error(name + ": alphaCutoff is not finite");
+  if (auto sg = m.extensions.find("KHR_materials_pbrSpecularGlossiness"); sg != m.extensions.end() && sg->second.IsObject())
+    applySpecularGlossiness(sg->second, out, textures, name, warnings);
   if (m.extensions.count("KHR_materials_unlit")) makeUnlit(out);
   return out;
 }

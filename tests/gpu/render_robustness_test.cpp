@@ -185,6 +185,9 @@ TEST(RenderRobustness, NonFiniteValuesAreCountedByTheStageThatProducedThem) {
   wall.baseColor = glm::vec3(0.5f);
   Material hot;
   hot.emission = glm::vec3(3e38f);
+  // Double-sided: the camera, below the emitter's plane, must see it (a single-sided one is culled from there);
+  // the overflowing light samples are the ones taken on the emitter itself.
+  hot.doubleSided = true;
   s.materials = {wall, hot};
   test::addQuad(s, glm::vec3(-2, -2, 0), glm::vec3(4, 0, 0), glm::vec3(0, 4, 0), 0);
   test::addQuad(s, glm::vec3(-0.5f, 0.5f, 1), glm::vec3(0, 0, 1), glm::vec3(1, 0, 0),
