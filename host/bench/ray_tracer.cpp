@@ -25,10 +25,12 @@ RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh, bo
   layout_->bindStorage(BINDING_CONTROL, control_);
   std::span<const uint32_t> spirv =
       binaryBvh ? std::span<const uint32_t>(kSpirv_trace_rays_bvh2) : std::span<const uint32_t>(kSpirv_trace_rays);
-  auto specs = [](bool anyHit, bool counting) {
-    return std::vector<vk::SpecConstant>{
-        {SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, anyHit}, {SPEC_WALK_STATS, counting},
-        {SPEC_CULLS_BACK_FACES, 0u}};  // two-sided, as the host walks and Embree's rtcIntersect1 are
+  // Two-sided, as the host walks and Embree's rtcIntersect1 are; the alpha test only where a triangle needs it, as
+  // the renderer's kernels are specialized.
+  const uint32_t alpha = scene.info().alphaTested ? 1u : 0u;
+  auto specs = [alpha](bool anyHit, bool counting) {
+    return std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, anyHit},
+                                         {SPEC_WALK_STATS, counting}, {SPEC_CULLS_BACK_FACES, 0u}, {SPEC_HAS_ALPHA, alpha}};
   };
   closest_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest", spirv, specs(false, walkStats));
   any_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any", spirv, specs(true, walkStats));

@@ -262,6 +262,7 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
     for (int k = 0; k < 3; ++k) texels[k] = glm::vec4(scene.positions[3 * src + k], 0.0f);
     texels[gpu::kTriangleLightPmfTexel].w = lightPmf[i];
     const Material& m = scene.materials[scene.materialIds[src]];
+    info_.alphaTested |= m.alphaMode != AlphaMode::Opaque;
     texels[gpu::kTriangleSidesTexel].w = gpu::encodeTriangleSingleSided(!m.doubleSided);
     infoTexels[i] = gpu::encodeTriangleInfo(scene.normals[3 * src], scene.normals[3 * src + 1], scene.normals[3 * src + 2],
                                             scene.materialIds[src], m.alphaMode != AlphaMode::Opaque);

@@ -18,6 +18,7 @@ struct GpuSceneInfo {
   uint32_t emissiveTriangles = 0;
   uint32_t materials = 0;
   uint32_t punctualLights = 0;  // in the light table (black ones are left out)
+  bool alphaTested = false;     // some triangle's material is alpha MASK or BLEND (the walks' any-hit test)
   double emittedPower = 0.0;    // sum over emissive triangles of luminance(Le) * area * pi * sides
   std::vector<std::pair<std::string, uint64_t>> bufferBytes;
 };

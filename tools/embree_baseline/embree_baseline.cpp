@@ -18,6 +18,7 @@
 
 #include "error.h"
 #include "io/exr.h"
+#include "io/output_files.h"
 #include "bench/benchmark_rays.h"
 #include "render/gpu_scene.h"
 #include "bench/ray_tracer.h"
