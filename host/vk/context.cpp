@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "error.h"
+#include "vk/device_requirements.h"
 
 namespace vkmc::vk {
 
@@ -54,6 +55,12 @@ Context::Context(const ContextOptions& options) {
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
   if (properties_.apiVersion < VK_API_VERSION_1_2)
     throw Error(std::string("device ") + properties_.deviceName + " lacks Vulkan 1.2");
+  std::vector<std::string> missing = missingRequirements(queryCapabilities(physical_));
+  if (!missing.empty()) {
+    std::string list;
+    for (const std::string& m : missing) list += (list.empty() ? "" : "; ") + m;
+    throw Error(std::string("device ") + properties_.deviceName + " lacks what vkmc's kernels use: " + list);
+  }
   VkPhysicalDeviceMaintenance3Properties m3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
   VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &m3};
   vkGetPhysicalDeviceProperties2(physical_, &p2);

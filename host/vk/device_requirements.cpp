@@ -1,0 +1,56 @@
+// Device requirements of the kernels.
+#include "vk/device_requirements.h"
+
+#include "../shaders/shared/layout.h"
+
+namespace vkmc::vk {
+
+std::vector<VkFormat> requiredTexelFormats() {
+  return {VK_FORMAT_R32G32B32A32_SFLOAT, VK_FORMAT_R32G32B32A32_UINT, VK_FORMAT_R32_UINT};
+}
+
+std::vector<std::string> missingRequirements(const DeviceCapabilities& caps) {
+  std::vector<std::string> missing;
+  // The walk's step counters (SPEC_WALK_STATS) use subgroupMax and subgroupElect; they are in every kernel that
+  // walks, so the SPIR-V of all of them declares the capabilities.
+  const VkSubgroupFeatureFlags ops = VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+  if (!(caps.subgroupStages & VK_SHADER_STAGE_COMPUTE_BIT) || (caps.subgroupOperations & ops) != ops)
+    missing.push_back("subgroup basic and arithmetic operations in compute shaders");
+  for (const auto& [format, features] : caps.texelFormats)
+    if (!(features & VK_FORMAT_FEATURE_STORAGE_TEXEL_BUFFER_BIT))
+      missing.push_back("storage texel buffers of format " + std::to_string(int(format)));
+  if (caps.maxWorkgroupSizeX < gpu::kWorkgroupSize || caps.maxWorkgroupInvocations < gpu::kWorkgroupSize)
+    missing.push_back("workgroups of " + std::to_string(gpu::kWorkgroupSize) + " invocations");
+  if (caps.maxPushConstantsSize < sizeof(gpu::PushConstants))
+    missing.push_back(std::to_string(sizeof(gpu::PushConstants)) + " bytes of push constants");
+  uint32_t texel = 0;
+  for (uint32_t b : gpu::kTexelBindings) texel += b < BINDING_COUNT ? 1u : 0u;
+  if (caps.maxStorageImagesPerStage < texel)
+    missing.push_back(std::to_string(texel) + " storage texel buffers per shader stage");
+  if (caps.maxStorageBuffersPerStage < BINDING_COUNT - texel)
+    missing.push_back(std::to_string(BINDING_COUNT - texel) + " storage buffers per shader stage");
+  return missing;
+}
+
+DeviceCapabilities queryCapabilities(VkPhysicalDevice device) {
+  VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
+  vkGetPhysicalDeviceProperties2(device, &p2);
+  const VkPhysicalDeviceLimits& l = p2.properties.limits;
+  DeviceCapabilities caps;
+  caps.subgroupStages = subgroup.supportedStages;
+  caps.subgroupOperations = subgroup.supportedOperations;
+  for (VkFormat f : requiredTexelFormats()) {
+    VkFormatProperties fp;
+    vkGetPhysicalDeviceFormatProperties(device, f, &fp);
+    caps.texelFormats.emplace_back(f, fp.bufferFeatures);
+  }
+  caps.maxWorkgroupSizeX = l.maxComputeWorkGroupSize[0];
+  caps.maxWorkgroupInvocations = l.maxComputeWorkGroupInvocations;
+  caps.maxPushConstantsSize = l.maxPushConstantsSize;
+  caps.maxStorageBuffersPerStage = l.maxPerStageDescriptorStorageBuffers;
+  caps.maxStorageImagesPerStage = l.maxPerStageDescriptorStorageImages;
+  return caps;
+}
+
+}  // namespace vkmc::vk

@@ -1,0 +1,60 @@
+// The device checks (host/vk/device_requirements.h): a device with everything passes, each shortfall is named,
+// and the texel formats checked are the ones the scene buffers use.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "../shaders/shared/layout.h"
+#include "render/gpu_scene.h"
+#include "vk/device_requirements.h"
+
+using namespace vkmc;
+
+namespace {
+vk::DeviceCapabilities capable() {
+  vk::DeviceCapabilities c;
+  c.subgroupStages = VK_SHADER_STAGE_COMPUTE_BIT;
+  c.subgroupOperations = VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+  for (VkFormat f : vk::requiredTexelFormats()) c.texelFormats.emplace_back(f, VK_FORMAT_FEATURE_STORAGE_TEXEL_BUFFER_BIT);
+  c.maxWorkgroupSizeX = c.maxWorkgroupInvocations = 1024;
+  c.maxPushConstantsSize = 128;
+  c.maxStorageBuffersPerStage = c.maxStorageImagesPerStage = 64;
+  return c;
+}
+
+bool names(const std::vector<std::string>& missing, const std::string& what) {
+  return missing.size() == 1 && missing[0].find(what) != std::string::npos;
+}
+}  // namespace
+
+TEST(DeviceRequirements, ACapableDeviceLacksNothing) { EXPECT_TRUE(vk::missingRequirements(capable()).empty()); }
+
+TEST(DeviceRequirements, EachShortfallIsNamed) {
+  vk::DeviceCapabilities c = capable();
+  c.subgroupOperations = VK_SUBGROUP_FEATURE_BASIC_BIT;
+  EXPECT_TRUE(names(vk::missingRequirements(c), "subgroup basic and arithmetic"));
+  c = capable();
+  c.subgroupStages = VK_SHADER_STAGE_FRAGMENT_BIT;
+  EXPECT_TRUE(names(vk::missingRequirements(c), "in compute shaders"));
+  c = capable();
+  c.texelFormats[1].second = 0;
+  EXPECT_TRUE(names(vk::missingRequirements(c), "storage texel buffers of format " + std::to_string(int(c.texelFormats[1].first))));
+  c = capable();
+  c.maxWorkgroupInvocations = 32;
+  EXPECT_TRUE(names(vk::missingRequirements(c), "workgroups of 64"));
+  c = capable();
+  c.maxPushConstantsSize = 16;
+  EXPECT_TRUE(names(vk::missingRequirements(c), "bytes of push constants"));
+  c = capable();
+  c.maxStorageImagesPerStage = 1;
+  EXPECT_TRUE(names(vk::missingRequirements(c), "storage texel buffers per shader stage"));
+  c = capable();
+  c.maxStorageBuffersPerStage = 1;
+  EXPECT_TRUE(names(vk::missingRequirements(c), "storage buffers per shader stage"));
+}
+
+TEST(DeviceRequirements, TheCheckedFormatsAreTheSceneBuffersFormats) {
+  std::vector<VkFormat> checked = vk::requiredTexelFormats();
+  for (uint32_t b : gpu::kTexelBindings)
+    EXPECT_NE(std::find(checked.begin(), checked.end(), sceneTexelFormat(b)), checked.end()) << "binding " << b;
+}
