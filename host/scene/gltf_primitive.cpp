@@ -61,21 +61,28 @@ void applyMorphTargets(const tinygltf::Model& model, const tinygltf::Primitive& 
   }
 }
 
+// The vertex of every element: the index accessor's values, or 0..vertices-1 without one; each checked in range.
+std::vector<uint32_t> readElements(const tinygltf::Model& model, const tinygltf::Primitive& prim, size_t vertices,
+                                   uint64_t maxElements) {
+  if (prim.indices < 0) {
+    std::vector<uint32_t> identity(vertices);
+    for (size_t i = 0; i < vertices; ++i) identity[i] = static_cast<uint32_t>(i);
+    return identity;
+  }
+  std::vector<uint32_t> indices = readIndexAccessor(model, prim.indices, maxElements);
+  for (uint32_t vertex : indices)
+    if (vertex >= vertices)
+      throw Error("index " + std::to_string(vertex) + " out of range (" + std::to_string(vertices) + " vertices)");
+  return indices;
+}
+
 std::vector<uint32_t> readTriangles(const tinygltf::Model& model, const tinygltf::Primitive& prim, size_t vertices,
                                     uint64_t maxElements) {
-  std::vector<uint32_t> indices;
-  if (prim.indices >= 0) indices = readIndexAccessor(model, prim.indices, maxElements);
-  size_t elements = prim.indices >= 0 ? indices.size() : vertices;
-  size_t triangles = triangleCount(prim.mode, elements);
+  std::vector<uint32_t> elements = readElements(model, prim, vertices, maxElements);
+  size_t triangles = triangleCount(prim.mode, elements.size());
   std::vector<uint32_t> out(3 * triangles);
   for (size_t t = 0; t < triangles; ++t)
-    for (int k = 0; k < 3; ++k) {
-      size_t element = cornerElement(prim.mode, t, k);
-      size_t vertex = prim.indices >= 0 ? indices[element] : element;
-      if (vertex >= vertices)
-        throw Error("index " + std::to_string(vertex) + " out of range (" + std::to_string(vertices) + " vertices)");
-      out[3 * t + k] = static_cast<uint32_t>(vertex);
-    }
+    for (int k = 0; k < 3; ++k) out[3 * t + k] = elements[cornerElement(prim.mode, t, k)];
   return out;
 }
 
@@ -88,20 +95,13 @@ std::pair<size_t, size_t> segmentElements(int mode, size_t s, size_t elements) {
 
 std::vector<uint32_t> readSegments(const tinygltf::Model& model, const tinygltf::Primitive& prim, size_t vertices,
                                    uint64_t maxElements) {
-  std::vector<uint32_t> indices;
-  if (prim.indices >= 0) indices = readIndexAccessor(model, prim.indices, maxElements);
-  size_t elements = prim.indices >= 0 ? indices.size() : vertices;
-  size_t segments = segmentCount(prim.mode, elements);
+  std::vector<uint32_t> elements = readElements(model, prim, vertices, maxElements);
+  size_t segments = segmentCount(prim.mode, elements.size());
   std::vector<uint32_t> out(2 * segments);
   for (size_t s = 0; s < segments; ++s) {
-    auto [e0, e1] = segmentElements(prim.mode, s, elements);
-    for (size_t k = 0; k < 2; ++k) {
-      size_t element = k == 0 ? e0 : e1;
-      size_t vertex = prim.indices >= 0 ? indices[element] : element;
-      if (vertex >= vertices)
-        throw Error("index " + std::to_string(vertex) + " out of range (" + std::to_string(vertices) + " vertices)");
-      out[2 * s + k] = static_cast<uint32_t>(vertex);
-    }
+    auto [e0, e1] = segmentElements(prim.mode, s, elements.size());
+    out[2 * s] = elements[e0];
+    out[2 * s + 1] = elements[e1];
   }
   return out;
 }
