@@ -11,6 +11,7 @@
 
 #include "../shaders/shared/environment_map.h"
 #include "../shaders/shared/geometry.h"
+#include "../shaders/shared/layer_albedo_table.h"
 #include "../shaders/shared/layout.h"
 #include "../shaders/shared/punctual_light.h"
 #include "../shaders/shared/sampling.h"
@@ -223,6 +224,7 @@ VkFormat sceneTexelFormat(uint32_t binding) {
     case BINDING_TEXTURE_TEXELS: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_TEXTURE_TEXELS));
     case BINDING_TEXTURES: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_TEXTURES));
     case BINDING_TRIANGLE_ATTRIBUTES: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_TRIANGLE_ATTRIBUTES));
+    case BINDING_LAYER_ALBEDO: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_LAYER_ALBEDO));
   }
   throw Error("internal error: binding " + std::to_string(binding) + " is not a scene texel binding");
 }
@@ -283,6 +285,20 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
     g.metallicRoughnessTexture = textureSlot(m.metallicRoughnessTexture);
     g.normalTexture = textureSlot(m.normalTexture);
     g.emissiveTexture = textureSlot(m.emissiveTexture);
+    g.specularColor = glm::vec4(m.specularColor, m.ior);
+    g.attenuation = glm::vec4(m.attenuation, m.transmission);
+    g.sheen = glm::vec4(m.sheenColor, m.sheenRoughness);
+    g.clearcoat = m.clearcoat;
+    g.clearcoatRoughness = m.clearcoatRoughness;
+    g.volumetric = m.volumetric ? 1u : 0u;
+    g.transmissionTexture = textureSlot(m.transmissionTexture);
+    g.clearcoatTexture = textureSlot(m.clearcoatTexture);
+    g.clearcoatRoughnessTexture = textureSlot(m.clearcoatRoughnessTexture);
+    g.clearcoatNormalTexture = textureSlot(m.clearcoatNormalTexture);
+    g.sheenColorTexture = textureSlot(m.sheenColorTexture);
+    g.sheenRoughnessTexture = textureSlot(m.sheenRoughnessTexture);
+    g.specularTexture = textureSlot(m.specularTexture);
+    g.specularColorTexture = textureSlot(m.specularColorTexture);
     mats.push_back(g);
   }
 
@@ -304,6 +320,7 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   textureTexels_ =
       makeTexelBuffer(ctx, packed.texels.data(), packed.texels.size() * 4, BINDING_TEXTURE_TEXELS, "texture texels", 4);
   textures_ = makeTexelBuffer(ctx, packed.infos.data(), packed.infos.size() * 16, BINDING_TEXTURES, "textures");
+  layerAlbedo_ = makeTexelBuffer(ctx, gpu::kLayerAlbedo, sizeof(gpu::kLayerAlbedo), BINDING_LAYER_ALBEDO, "layer albedo", 4);
   triangleAttributes_ =
       makeTexelBuffer(ctx, attributes.data(), attributes.size() * 16, BINDING_TRIANGLE_ATTRIBUTES, "triangle attributes");
   materials_ =
@@ -333,6 +350,7 @@ void GpuScene::bindTo(vk::KernelLayout& layout, bool binaryBvh) const {
   layout.bindTexel(BINDING_LIGHTS, lights_);
   layout.bindStorage(BINDING_MATERIALS, materials_);
   layout.bindTexel(BINDING_TEXTURE_TEXELS, textureTexels_);
+  layout.bindTexel(BINDING_LAYER_ALBEDO, layerAlbedo_);
   layout.bindTexel(BINDING_TEXTURES, textures_);
   layout.bindTexel(BINDING_TRIANGLE_ATTRIBUTES, triangleAttributes_);
   layout.bindStorage(BINDING_PUNCTUAL_LIGHTS, punctualLights_);

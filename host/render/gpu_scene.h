@@ -64,7 +64,7 @@ class GpuScene {
   GpuSceneInfo info_;
   vk::Buffer triangles_, triangleInfo_, bvhNodes_, binaryBvhNodes_, lights_, materials_, punctualLights_, environment_,
       environmentDistribution_;
-  vk::Buffer textureTexels_, textures_, triangleAttributes_;
+  vk::Buffer textureTexels_, textures_, triangleAttributes_, layerAlbedo_;
 };
 
 }  // namespace vkmc

@@ -68,6 +68,10 @@ KernelPlan planKernels(const RenderSettings& s) {
                 {SPEC_HAS_NORMAL_MAPS, s.features.normalMaps ? 1u : 0u},
                 {SPEC_HAS_ALPHA, s.features.alpha ? 1u : 0u},
                 {SPEC_CULLS_BACK_FACES, s.features.singleSided ? 1u : 0u},
+                {SPEC_HAS_TRANSMISSION, s.features.transmission ? 1u : 0u},
+                {SPEC_HAS_CLEARCOAT, s.features.clearcoat ? 1u : 0u},
+                {SPEC_HAS_SHEEN, s.features.sheen ? 1u : 0u},
+                {SPEC_HAS_DELTA, s.features.delta ? 1u : 0u},
                 {SPEC_RECORD_DEPTH_STATS, s.recordDepthStats ? 1u : 0u},
                 {SPEC_PIXEL_FILTER, s.filter.specSampling()}};
   for (const vk::SpecConstant& c : est.specConstants()) plan.specs.push_back(c);

@@ -16,17 +16,17 @@ struct ExtensionRow {
 
 constexpr ExtensionRow kExtensions[] = {
     {"KHR_materials_emissive_strength", ""},
-    {"KHR_materials_specular", ""},  // specularFactor; the loader warns per material that sets a colour or texture
+    {"KHR_materials_specular", ""},  // factor, colour and textures (scene/gltf_material_extensions.cpp)
     {"KHR_lights_punctual", ""},     // range is ignored (physically based), with a warning
     {"KHR_texture_transform", ""},
     {"KHR_texture_basisu", "KTX2 images are not decoded (a texture with a PNG or JPEG source as well uses that)"},
     {"EXT_texture_webp", "WebP images are not decoded (a texture with a PNG or JPEG source as well uses that)"},
     {"EXT_texture_avif", "AVIF images are not decoded (a texture with a PNG or JPEG source as well uses that)"},
-    {"KHR_materials_transmission", "transmission is ignored: such surfaces render opaque"},
-    {"KHR_materials_volume", "volumes are ignored"},
-    {"KHR_materials_ior", "the index of refraction is ignored"},
-    {"KHR_materials_clearcoat", "clearcoat layers are ignored"},
-    {"KHR_materials_sheen", "sheen is ignored"},
+    {"KHR_materials_transmission", ""},  // bsdf_gltf.h; shadow rays do not pass it (README, Materials)
+    {"KHR_materials_volume", ""},        // refraction and Beer-Lambert attenuation; thicknessTexture is not needed
+    {"KHR_materials_ior", ""},
+    {"KHR_materials_clearcoat", ""},
+    {"KHR_materials_sheen", ""},
     {"KHR_materials_iridescence", "iridescence is ignored"},
     {"KHR_materials_anisotropy", "anisotropy is ignored"},
     {"KHR_materials_dispersion", "dispersion is ignored"},

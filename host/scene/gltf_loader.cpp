@@ -24,6 +24,7 @@
 #include "scene/gltf_decompress.h"
 #include "scene/gltf_extensions.h"
 #include "scene/gltf_lights.h"
+#include "scene/gltf_material_extensions.h"
 #include "scene/gltf_primitive.h"
 #include "scene/gltf_textures.h"
 #include "scene/spec_gloss.h"
@@ -80,6 +81,9 @@ void makeUnlit(Material& m) {
   m.specular = 0.0f;
   m.normalTexture = TextureRef{};
   m.metallicRoughnessTexture = TextureRef{};
+  m.transmission = 0.0f;
+  m.clearcoat = 0.0f;
+  m.sheenColor = glm::vec3(0.0f);
 }
 
 Material convertMaterial(const tinygltf::Material& m, int index, std::vector<Texture>& textures,
@@ -95,19 +99,6 @@ Material convertMaterial(const tinygltf::Material& m, int index, std::vector<Tex
   out.roughness = static_cast<float>(pbr.roughnessFactor);
   if (m.emissiveFactor.size() == 3) out.emission = glm::vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
   double strength = extensionNumber(m.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
-  out.specular = static_cast<float>(extensionNumber(m.extensions, "KHR_materials_specular", "specularFactor", 1.0));
-  if (auto spec = m.extensions.find("KHR_materials_specular"); spec != m.extensions.end()) {
-    // specularFactor is used; a specular colour or texture is not yet (the materials issue).
-    const tinygltf::Value& v = spec->second;
-    bool colour = false;
-    if (v.Has("specularColorFactor") && v.Get("specularColorFactor").IsArray())
-      for (int c = 0; c < 3 && c < int(v.Get("specularColorFactor").ArrayLen()); ++c)
-        colour |=
-            v.Get("specularColorFactor").Get(c).IsNumber() && v.Get("specularColorFactor").Get(c).GetNumberAsDouble() != 1.0;
-    if (colour || v.Has("specularTexture") || v.Has("specularColorTexture"))
-      warnings.push_back(name +
-                         ": KHR_materials_specular's specularColorFactor and textures are ignored (specularFactor is used)");
-  }
   if (!std::isfinite(strength) || strength < 0.0) throw Error(name + ": emissiveStrength is not a finite non-negative number");
   out.emission *= static_cast<float>(strength);
   out.doubleSided = m.doubleSided;
@@ -126,6 +117,7 @@ Material convertMaterial(const tinygltf::Material& m, int index, std::vector<Tex
   if (m.alphaMode == "BLEND") out.alphaMode = AlphaMode::Blend;
   out.alphaCutoff = static_cast<float>(m.alphaCutoff);
   if (!std::isfinite(out.alphaCutoff)) throw Error(name + ": alphaCutoff is not finite");
+  applyMaterialExtensions(m, out, textures, name, warnings);
   if (auto sg = m.extensions.find("KHR_materials_pbrSpecularGlossiness"); sg != m.extensions.end() && sg->second.IsObject())
     applySpecularGlossiness(sg->second, out, textures, name, warnings);
   if (m.extensions.count("KHR_materials_unlit")) makeUnlit(out);
@@ -178,8 +170,10 @@ std::vector<glm::mat4> instanceTransforms(const tinygltf::Model& model, const ti
 }
 
 bool hasNormalTexture(const tinygltf::Model& model, int material) {
-  return material >= 0 && material < static_cast<int>(model.materials.size()) &&
-         model.materials[material].normalTexture.index >= 0;
+  if (material < 0 || material >= static_cast<int>(model.materials.size())) return false;
+  const tinygltf::Material& m = model.materials[material];
+  auto coat = m.extensions.find("KHR_materials_clearcoat");
+  return m.normalTexture.index >= 0 || (coat != m.extensions.end() && coat->second.Has("clearcoatNormalTexture"));
 }
 
 class Flattener {

@@ -145,4 +145,22 @@ TextureRef convertTextureRef(const tinygltf::NormalTextureInfo& info, const std:
   return ref;
 }
 
+TextureRef convertTextureRef(const tinygltf::Value& info, const std::vector<Texture>& textures, const std::string& what,
+                             std::vector<std::string>& warnings) {
+  if (!info.IsObject()) throw Error(what + " is not an object");
+  const tinygltf::Value& index = info.Get("index");
+  if (!index.IsInt()) throw Error(what + " has no integer index");
+  int texCoord = info.Has("texCoord") && info.Get("texCoord").IsInt() ? info.Get("texCoord").GetNumberAsInt() : 0;
+  tinygltf::ExtensionMap extensions;
+  if (info.Has("extensions") && info.Get("extensions").IsObject())
+    for (const std::string& key : info.Get("extensions").Keys()) extensions[key] = info.Get("extensions").Get(key);
+  TextureRef ref = convertRef(index.GetNumberAsInt(), texCoord, extensions, textures, what, warnings);
+  if (info.Has("scale")) {
+    const tinygltf::Value& scale = info.Get("scale");
+    ref.scale = scale.IsNumber() ? static_cast<float>(scale.GetNumberAsDouble()) : NAN;
+    if (!std::isfinite(ref.scale)) throw Error(what + ": scale is not finite");
+  }
+  return ref;
+}
+
 }  // namespace vkmc

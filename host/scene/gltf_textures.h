@@ -13,6 +13,7 @@ class Model;
 struct Image;
 struct TextureInfo;
 struct NormalTextureInfo;
+class Value;
 }  // namespace tinygltf
 
 namespace vkmc {
@@ -43,5 +44,9 @@ TextureRef convertTextureRef(const tinygltf::TextureInfo& info, const std::vecto
                              std::vector<std::string>& warnings);
 TextureRef convertTextureRef(const tinygltf::NormalTextureInfo& info, const std::vector<Texture>& textures,
                              const std::string& what, std::vector<std::string>& warnings);
+
+// A texture info inside a material extension (JSON: index, texCoord, scale, extensions).
+TextureRef convertTextureRef(const tinygltf::Value& info, const std::vector<Texture>& textures, const std::string& what,
+                             std::vector<std::string>& warnings);
 
 }  // namespace vkmc

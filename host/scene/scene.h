@@ -2,6 +2,7 @@
 #pragma once
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -43,10 +44,29 @@ struct Material {
   AlphaMode alphaMode = AlphaMode::Opaque;
   float alphaCutoff = 0.5f;
   TextureRef baseColorTexture, metallicRoughnessTexture, normalTexture, emissiveTexture;
-  bool textured() const {
-    return baseColorTexture.present() || metallicRoughnessTexture.present() || normalTexture.present() ||
-           emissiveTexture.present();
+  // The material extensions (scene/gltf_material_extensions.h).
+  glm::vec3 specularColor{1.0f};  // KHR_materials_specular specularColorFactor
+  float ior = 1.5f;               // KHR_materials_ior
+  float transmission = 0.0f;      // KHR_materials_transmission
+  bool volumetric = false;        // KHR_materials_volume thicknessFactor > 0: transmission refracts into the mesh
+  glm::vec3 attenuation{0.0f};    // its attenuation coefficient, -ln(attenuationColor) / attenuationDistance (1/m)
+  float clearcoat = 0.0f, clearcoatRoughness = 0.0f;
+  glm::vec3 sheenColor{0.0f};
+  float sheenRoughness = 0.0f;
+  TextureRef transmissionTexture, clearcoatTexture, clearcoatRoughnessTexture, clearcoatNormalTexture, sheenColorTexture,
+      sheenRoughnessTexture, specularTexture, specularColorTexture;
+  std::array<const TextureRef*, 12> textureRefs() const {
+    return {&baseColorTexture,          &metallicRoughnessTexture, &normalTexture,     &emissiveTexture,
+            &transmissionTexture,       &clearcoatTexture,         &clearcoatRoughnessTexture,
+            &clearcoatNormalTexture,    &sheenColorTexture,        &sheenRoughnessTexture,
+            &specularTexture,           &specularColorTexture};
   }
+  bool textured() const {
+    for (const TextureRef* t : textureRefs())
+      if (t->present()) return true;
+    return false;
+  }
+  bool hasSheen() const { return sheenColor.x > 0.0f || sheenColor.y > 0.0f || sheenColor.z > 0.0f; }
   bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
 

@@ -1,6 +1,8 @@
 // Feature scan.
 #include "scene/scene_features.h"
 
+#include "microfacet.h"
+
 namespace vkmc {
 
 const char* SceneFeatures::sizeClass() const { return triangles < 1000 ? "small" : triangles < 100000 ? "medium" : "large"; }
@@ -19,7 +21,7 @@ SceneFeatures scanFeatures(const Scene& scene) {
   for (size_t i = 0; i < scene.materials.size(); ++i) {
     if (!used[i]) continue;
     const Material& m = scene.materials[i];
-    f.glossy |= m.metallic > 0.0f || m.specular > 0.0f;
+    f.glossy |= m.metallic > 0.0f || m.specular > 0.0f || m.transmission > 0.0f || m.clearcoat > 0.0f || m.hasSheen();
     f.metallic |= m.metallic > 0.0f;
     f.nonDefaultSpecular |= m.specular != 1.0f;
     f.doubleSided |= m.doubleSided;
@@ -27,6 +29,17 @@ SceneFeatures scanFeatures(const Scene& scene) {
     f.textures |= m.textured();
     f.normalMaps |= m.normalTexture.present();
     f.alpha |= m.alphaMode != AlphaMode::Opaque;
+    f.transmission |= m.transmission > 0.0f;
+    f.volumes |= m.transmission > 0.0f && m.volumetric;
+    f.clearcoat |= m.clearcoat > 0.0f;
+    f.sheen |= m.hasSheen();
+    // Textures only scale roughness down: a roughness texture can make any lobe smooth.
+    auto canBeSmooth = [](float roughness, const TextureRef& texture) {
+      return roughness * roughness < gpu::kDeltaAlpha || texture.present();
+    };
+    bool baseSpecular = m.metallic > 0.0f || m.specular > 0.0f || m.transmission > 0.0f;
+    f.delta |= baseSpecular && canBeSmooth(m.roughness, m.metallicRoughnessTexture);
+    f.delta |= m.clearcoat > 0.0f && canBeSmooth(m.clearcoatRoughness, m.clearcoatRoughnessTexture);
   }
   f.textures |= !scene.colors.empty();
   for (uint32_t m : scene.materialIds) f.emissiveTriangles += scene.materials[m].isEmissive() ? 1 : 0;
@@ -44,6 +57,11 @@ SceneFeatures allFeatures(const SceneFeatures& scene) {
   f.normalMaps = true;
   f.alpha = true;
   f.singleSided = true;
+  f.transmission = true;
+  f.volumes = true;
+  f.clearcoat = true;
+  f.sheen = true;
+  f.delta = true;
   f.punctualLights = std::max(f.punctualLights, 1u);
   f.environment = true;
   return f;

@@ -14,7 +14,7 @@ struct SceneFeatures {
   uint32_t triangles = 0;
   uint32_t emissiveTriangles = 0;
   uint32_t materials = 0;
-  bool glossy = false;  // a material with a specular lobe (metallic > 0 or specularFactor > 0)
+  bool glossy = false;  // a material that is not Lambertian (a specular lobe, transmission, clearcoat or sheen)
   bool metallic = false;
   bool nonDefaultSpecular = false;  // KHR_materials_specular factor other than 1
   bool doubleSided = false;
@@ -22,6 +22,11 @@ struct SceneFeatures {
   bool textures = false;        // a material samples a texture (or vertex colours tint it)
   bool normalMaps = false;      // a material has a normal texture
   bool alpha = false;           // a material is alpha MASK or BLEND: any-hit tests in the walks
+  bool transmission = false;    // KHR_materials_transmission
+  bool volumes = false;         // transmission into a KHR_materials_volume (refraction, attenuation)
+  bool clearcoat = false;       // KHR_materials_clearcoat
+  bool sheen = false;           // KHR_materials_sheen
+  bool delta = false;           // a lobe can be smooth (roughness^2 below kDeltaAlpha): delta BSDF samples
   uint32_t punctualLights = 0;  // KHR_lights_punctual instances
   // An environment light (Scene::environment): --environment, or the constant one that lights a scene with no
   // emitters and no punctual lights.

@@ -23,8 +23,11 @@ uint64_t sceneFingerprint(const Scene& s) {
                          m.emission.z,  m.metallic,    m.roughness,   m.specular, m.alphaCutoff};
     h.add(v, sizeof(v));
     h.addValue(uint64_t(m.doubleSided) | uint64_t(m.alphaMode) << 8);
-    for (const TextureRef* t : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture, &m.emissiveTexture})
-      addTextureRef(h, *t);
+    const float ext[16] = {m.specularColor.x, m.specularColor.y, m.specularColor.z, m.ior, m.transmission,
+                           m.attenuation.x,   m.attenuation.y,   m.attenuation.z,   m.clearcoat, m.clearcoatRoughness,
+                           m.sheenColor.x,    m.sheenColor.y,    m.sheenColor.z,    m.sheenRoughness, float(m.volumetric), 0.0f};
+    h.add(ext, sizeof(ext));
+    for (const TextureRef* t : m.textureRefs()) addTextureRef(h, *t);
   }
   for (const Texture& t : s.textures) {
     h.addValue(uint64_t(t.width) << 32 | t.height);

@@ -24,7 +24,7 @@ PathState cameraPath(uint id) {
     dir = normalize(pc.cameraForward.xyz + screen.x * pc.cameraRight.xyz + screen.y * pc.cameraUp.xyz);
   }
   PathState p;
-  p.origin = vec4(origin, 0.0);
+  p.origin = vec4(origin, 1.0);  // w: pbrt-v4's etaScale (shading.glsl continuePath)
   p.direction = vec4(dir, 0.0);
   p.throughput = vec4(1.0);
   p.radiance = vec4(0.0, 0.0, 0.0, fs.weight);

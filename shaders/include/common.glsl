@@ -36,6 +36,10 @@ layout(constant_id = SPEC_HAS_TEXTURES) const uint kHasTextures = 1u;
 layout(constant_id = SPEC_HAS_NORMAL_MAPS) const uint kHasNormalMaps = 1u;
 layout(constant_id = SPEC_HAS_ALPHA) const uint kHasAlpha = 1u;
 layout(constant_id = SPEC_CULLS_BACK_FACES) const uint kCullsBackFaces = 1u;
+layout(constant_id = SPEC_HAS_TRANSMISSION) const uint kHasTransmission = 1u;
+layout(constant_id = SPEC_HAS_CLEARCOAT) const uint kHasClearcoat = 1u;
+layout(constant_id = SPEC_HAS_SHEEN) const uint kHasSheen = 1u;
+layout(constant_id = SPEC_HAS_DELTA) const uint kHasDelta = 1u;
 layout(constant_id = SPEC_SAMPLER) const uint kSampler = 0u;
 layout(constant_id = SPEC_SAMPLER_LOG2_SPP) const uint kSamplerLog2Spp = 0u;
 layout(constant_id = SPEC_SAMPLER_DIGITS) const uint kSamplerDigits = 0u;
@@ -54,6 +58,7 @@ layout(binding = BINDING_LIGHTS, TEXEL_FORMAT_LIGHTS) uniform readonly uimageBuf
 layout(binding = BINDING_TEXTURE_TEXELS, TEXEL_FORMAT_TEXTURE_TEXELS) uniform readonly uimageBuffer textureTexels;
 layout(binding = BINDING_TEXTURES, TEXEL_FORMAT_TEXTURES) uniform readonly uimageBuffer textureInfos;
 layout(binding = BINDING_TRIANGLE_ATTRIBUTES, TEXEL_FORMAT_TRIANGLE_ATTRIBUTES) uniform readonly uimageBuffer triangleAttributes;
+layout(binding = BINDING_LAYER_ALBEDO, TEXEL_FORMAT_LAYER_ALBEDO) uniform readonly uimageBuffer layerAlbedoTable;
 layout(binding = BINDING_MATERIALS, std430) readonly buffer Materials { Material materials[]; };
 layout(binding = BINDING_PATHS, std430) buffer Paths { PathState paths[]; };
 layout(binding = BINDING_HITS, std430) buffer Hits { vec4 hits[]; };

@@ -47,17 +47,52 @@ SurfacePoint surfaceAt(uint tri, vec2 b12, vec3 wo) {
 
 // The normal-mapped shading normal (tangent-space normal texture, glTF 3.9.3), on the side the unmapped one faces;
 // the unmapped one where the mapped normal would fall below the geometric surface.
-vec3 normalMapped(Material m, SurfacePoint s) {
+vec3 normalMapped(TextureSlot slot, SurfacePoint s) {
   vec3 n = s.frame[2];
   vec3 t = s.attributes.tangent.xyz - n * dot(n, s.attributes.tangent.xyz);
   float tl = length(t);
   if (!(tl > 0.0)) return n;
   t /= tl;
   vec3 bt = cross(n, t) * s.attributes.tangent.w;
-  vec3 c = sampleTexture(m.normalTexture.texture, slotUv(m.normalTexture, s.attributes), false).rgb * 2.0 - 1.0;
-  c.xy *= m.normalTexture.uvRow0.w;
+  vec3 c = sampleTexture(slot.texture, slotUv(slot, s.attributes), false).rgb * 2.0 - 1.0;
+  c.xy *= slot.uvRow0.w;
   vec3 mapped = normalize(t * c.x + bt * c.y + n * c.z);
   return dot(mapped, s.ng) > 0.0 ? mapped : n;
+}
+
+// A texture channel times its factor, or the factor alone without a texture.
+float texturedFactor(float factor, TextureSlot slot, SurfacePoint s, uint channel) {
+  if (kHasTextures == 0u || !hasTexture(slot)) return factor;
+  return factor * sampleTexture(slot.texture, slotUv(slot, s.attributes), false)[channel];
+}
+vec3 texturedColor(vec3 factor, TextureSlot slot, SurfacePoint s) {
+  if (kHasTextures == 0u || !hasTexture(slot)) return factor;
+  return factor * sampleTexture(slot.texture, slotUv(slot, s.attributes), true).rgb;
+}
+
+// The material extensions at s (bsdf_gltf.h): specular colour and ior, transmission (refracting into a volume
+// from a front face, out of it from a back face), clearcoat over the unmapped normal or its own normal map, sheen.
+void shadeExtensions(Material m, SurfacePoint s, vec3 unmappedNormal, inout GltfMaterial gm) {
+  vec3 specularColor = texturedColor(m.specularColor.rgb, m.specularColorTexture, s);
+  setIor(gm, m.specularColor.w, specularColor);
+  if (kHasTransmission != 0u && m.attenuation.w > 0.0) {
+    float ior = m.specularColor.w;
+    setTransmission(gm, texturedFactor(m.attenuation.w, m.transmissionTexture, s, 0u), s.frontFace ? ior : 1.0 / ior,
+                    m.volumetric == 0u);
+  }
+  if (kHasClearcoat != 0u && m.clearcoat > 0.0) {
+    vec3 n = unmappedNormal;
+    if (kHasNormalMaps != 0u && hasTexture(m.clearcoatNormalTexture)) {
+      SurfacePoint front = s;  // the tangent frame belongs to the front face, as in shadeSurface
+      front.frame[2] = s.frontFace ? unmappedNormal : -unmappedNormal;
+      n = normalMapped(m.clearcoatNormalTexture, front);
+      if (!s.frontFace) n = -n;
+    }
+    setClearcoat(gm, texturedFactor(m.clearcoat, m.clearcoatTexture, s, 0u),
+                 texturedFactor(m.clearcoatRoughness, m.clearcoatRoughnessTexture, s, 1u), normalize(n * s.frame));
+  }
+  if (kHasSheen != 0u && maxComponent(m.sheen.rgb) > 0.0)
+    setSheen(gm, texturedColor(m.sheen.rgb, m.sheenColorTexture, s), texturedFactor(m.sheen.w, m.sheenRoughnessTexture, s, 3u));
 }
 
 // The material's parameters at s (factors times textures and vertex colours), its emission into s.emission
@@ -66,6 +101,7 @@ vec3 normalMapped(Material m, SurfacePoint s) {
 GltfMaterial shadeSurface(Material m, inout SurfacePoint s, vec3 wo) {
   vec4 base = m.baseColor;
   float metallic = m.metallic, roughness = m.roughness;
+  vec3 unmappedNormal = s.frame[2];
   s.emission = m.emission;
   if (kHasTextures != 0u) {
     base = baseColorAt(m, s.attributes);
@@ -80,15 +116,25 @@ GltfMaterial shadeSurface(Material m, inout SurfacePoint s, vec3 wo) {
       // The tangent frame belongs to the front face: a back-face hit maps with the unflipped normal, then flips.
       bool flipped = !s.frontFace;
       if (flipped) s.frame[2] = -s.frame[2];
-      vec3 mapped = normalMapped(m, s);
+      vec3 mapped = normalMapped(m.normalTexture, s);
       s.frame = basisFromNormal(flipped ? -mapped : mapped);
     }
   }
-  if (kHasGlossy != 0u && (metallic > 0.0 || m.specular > 0.0)) {
+  float specular = texturedFactor(m.specular, m.specularTexture, s, 3u);
+  if (kHasGlossy != 0u && (metallic > 0.0 || specular > 0.0)) {
     vec3 n = normalForValidReflection(s.ng, wo, s.frame[2]);
     if (n != s.frame[2]) s.frame = basisFromNormal(n);
   }
-  return makeGltfMaterial(base.rgb, metallic, roughness, m.specular);
+  GltfMaterial gm = makeGltfMaterial(base.rgb, metallic, roughness, specular);
+  if (kHasGlossy != 0u) shadeExtensions(m, s, unmappedNormal, gm);
+  return gm;
+}
+
+// Beer-Lambert attenuation of a segment of length t that ended on the inside of a volume (a back face of a
+// material that refracts into one); 1 elsewhere.
+vec3 volumeTransmittance(Material m, SurfacePoint s, float t) {
+  if (kHasTransmission == 0u || s.frontFace || m.volumetric == 0u || m.attenuation.w <= 0.0) return vec3(1.0);
+  return exp(-m.attenuation.rgb * t);
 }
 
 bool emitsToward(Material m, bool frontFace) {
@@ -104,21 +150,34 @@ vec3 emissionAtPoint(Material m, uint tri, vec3 p, vec3 v0, vec3 v1, vec3 v2) {
 }
 
 // The BSDF-sampling technique and its pdf (local frame). In an all-Lambertian scene (kHasGlossy = 0) the
-// glTF BRDF is baseColor / pi and its sampling is cosine sampling: the GGX code is compiled out.
-vec3 sampleTechnique(GltfMaterial gm, vec3 wo, vec3 u) {
-  if (kBsdfSampling == kBsdfSamplingUniform) return sampleUniformHemisphere(u.yz);
-  if (kBsdfSampling == kBsdfSamplingCosine || kHasGlossy == 0u) return sampleCosineHemisphere(u.yz);
-  return sampleGltfBsdf(gm, wo, u);
+// glTF BRDF is baseColor / pi and its sampling is cosine sampling: the GGX code is compiled out. The lecture's
+// uniform and cosine techniques replace the BSDF's own sampling except where it has delta lobes or transmits,
+// which only the BSDF's sampling can reach.
+bool usesOwnSampling(GltfMaterial gm) {
+  if (kHasDelta == 0u && kHasTransmission == 0u) return false;
+  return gm.transmission > 0.0 || isDeltaAlpha(gm.alpha) || (gm.clearcoat > 0.0 && isDeltaAlpha(gm.clearcoatAlpha));
+}
+bool simpleTechnique(GltfMaterial gm) {
+  return kHasGlossy == 0u || (kBsdfSampling != kBsdfSamplingFull && !usesOwnSampling(gm));
 }
 float techniquePdf(GltfMaterial gm, vec3 wo, vec3 wi) {
+  if (!simpleTechnique(gm)) return gltfBsdfPdf(gm, wo, wi);
   if (wi.z <= 0.0) return 0.0;
   if (kBsdfSampling == kBsdfSamplingUniform) return uniformHemispherePdf(wi.z);
-  if (kBsdfSampling == kBsdfSamplingCosine || kHasGlossy == 0u) return cosineHemispherePdf(wi.z);
-  return gltfBsdfPdf(gm, wo, wi);
+  return cosineHemispherePdf(wi.z);
 }
 vec3 bsdfEval(GltfMaterial gm, vec3 wo, vec3 wi) {
   if (kHasGlossy == 0u) return (wo.z > 0.0 && wi.z > 0.0) ? gm.baseColor * kInvPi : vec3(0.0);
   return gltfBsdfEval(gm, wo, wi);
+}
+BsdfSample sampleTechnique(GltfMaterial gm, vec3 wo, vec3 u) {
+  if (!simpleTechnique(gm)) return sampleGltfBsdf(gm, wo, u);
+  BsdfSample bs;
+  bs.wi = kBsdfSampling == kBsdfSamplingUniform ? sampleUniformHemisphere(u.yz) : sampleCosineHemisphere(u.yz);
+  bs.pdf = techniquePdf(gm, wo, bs.wi);
+  bs.weight = bs.pdf > 0.0 ? bsdfEval(gm, wo, bs.wi) * (bs.wi.z / bs.pdf) : vec3(0.0);
+  bs.delta = false;
+  return bs;
 }
 
 uint lightSamplesAt(uint depth) { return splitFactorAt(depth, kSplitDepth, kLightSamples); }
@@ -202,6 +261,15 @@ bool sampleEnvironmentLight(float pmf, SurfacePoint s, vec2 u, out LightSample l
   return pdf > 0.0;
 }
 
+// Whether wi (world; wiLocal in the shading frame) leaves s on the same side of both normals: above for
+// reflection, below for a material that transmits. Elsewhere shading and geometric normals disagree, and light
+// would leak through the surface.
+bool onConsistentSide(SurfacePoint s, GltfMaterial gm, vec3 wi, vec3 wiLocal) {
+  float side = dot(s.ng, wi);
+  if (side > 0.0) return wiLocal.z > 0.0;
+  return side < 0.0 && wiLocal.z < 0.0 && kHasTransmission != 0u && gm.transmission > 0.0;
+}
+
 // Light sample j of `samples` at s: the shadow ray to trace, carrying the contribution it adds if unoccluded;
 // false when the sample adds nothing (or was rouletted away).
 bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo, uint j, uint samples, out ShadowRay ray) {
@@ -216,14 +284,14 @@ bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo
   if (kind == kLightKindTriangle) sampled = sampleEmissiveTriangle(lightEntryIndex(light), pmf, s, u, ls);
   else if (kHasPunctual != 0u && kind == kLightKindPunctual) sampled = samplePunctual(lightEntryIndex(light), pmf, s, ls);
   else if (kHasEnvironment != 0u && kind == kLightKindEnvironment) sampled = sampleEnvironmentLight(pmf, s, u, ls);
-  if (!sampled || dot(s.ng, ls.wi) <= 0.0) return false;
+  if (!sampled || !(ls.pdf > 0.0)) return false;
   vec3 wiLocal = ls.wi * s.frame;
   vec3 woLocal = wo * s.frame;
-  if (wiLocal.z <= 0.0 || !(ls.pdf > 0.0)) return false;
+  if (!onConsistentSide(s, gm, ls.wi, wiLocal)) return false;
   vec3 f = bsdfEval(gm, woLocal, wiLocal);
   // MIS over one BSDF sample and `samples` light samples: the light technique's pdf counts samples times.
   float weight = kMis == kMisNone || ls.delta ? 1.0 : misWeight(kMis, float(samples) * ls.pdf, techniquePdf(gm, woLocal, wiLocal));
-  vec3 contribution = path.throughput.rgb * f * ls.arriving * (wiLocal.z * weight / (ls.pdf * float(samples)));
+  vec3 contribution = path.throughput.rgb * f * ls.arriving * (abs(wiLocal.z) * weight / (ls.pdf * float(samples)));
   if (!allFinite(contribution)) atomicAdd(control.nonfiniteLightSamples, 1u);  // still queued: it poisons the sample
   else if (!(maxComponent(contribution) > 0.0)) return false;
   if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * pixelEstimate[path.pixel]) {
@@ -277,7 +345,7 @@ vec3 emissionAt(PathState path, SurfacePoint s, Material m, uint tri, vec4 hit, 
 bool belowDepthCap(uint depth) { return kMaxDepth == 0u || depth < kMaxDepth; }
 bool continuationIsUseful(uint depth) {
   bool lastVertexIsUseless = kMaxDepth > 0u && depth + 1u >= kMaxDepth && kNee != 0u && kMis == kMisNone &&
-                             kHasLights != 0u && maxComponent(pc.background.rgb) == 0.0;
+                             kHasLights != 0u && kHasDelta == 0u && maxComponent(pc.background.rgb) == 0.0;
   return belowDepthCap(depth) && !lastVertexIsUseless;
 }
 
@@ -292,11 +360,10 @@ bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3
   stream.key = childKey(path.rngKey, depth, c);
   vec3 u = vec3(sampleU(stream, bounceDim(depth, kDimBsdfLobe)), sampleU(stream, bounceDim(depth, kDimBsdf)),
                 sampleU(stream, bounceDim(depth, kDimBsdf + 1u)));
-  vec3 wiLocal = sampleTechnique(gm, woLocal, u);
-  float pdf = techniquePdf(gm, woLocal, wiLocal);
-  vec3 wi = s.frame * wiLocal;
-  bool continues = pdf > 0.0 && wiLocal.z > 0.0 && dot(wi, s.ng) > 0.0;
-  vec3 beta = continues ? path.throughput.rgb * bsdfEval(gm, woLocal, wiLocal) * (wiLocal.z / (pdf * q)) : vec3(0.0);
+  BsdfSample bs = sampleTechnique(gm, woLocal, u);
+  vec3 wi = s.frame * bs.wi;
+  bool continues = onConsistentSide(s, gm, wi, bs.wi);
+  vec3 beta = continues ? path.throughput.rgb * bs.weight / q : vec3(0.0);
   if (!allFinite(beta)) {
     atomicAdd(control.nonfiniteThroughput, 1u);
     gathered += beta;
@@ -304,11 +371,15 @@ bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3
   }
   float splitWeight = path.throughput.w * q;  // roulette judges a child by its unsplit throughput
   continues = continues && maxComponent(beta) > 0.0;
+  // pbrt-v4's etaScale: radiance entering a denser medium is scaled by 1 / eta^2 (bsdf_gltf.h); roulette judges
+  // the throughput without that factor, so paths are not killed for being inside glass.
+  float etaScale = path.origin.w;
+  if (kHasTransmission != 0u && bs.wi.z < 0.0 && !gm.thinWalled) etaScale *= gm.eta * gm.eta;
 
   if (continues && rouletteApplies(depth, kRouletteDepth) && kRouletteMode != kRouletteNone) {
     float r = sampleU(stream, bounceDim(depth, kDimRoulette));
     float scale = kRouletteMode == kRouletteEfficiency ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] : 1.0;
-    RouletteStep rr = rouletteStep(kRouletteMode, maxComponent(beta) * splitWeight, scale, kRouletteQ, r);
+    RouletteStep rr = rouletteStep(kRouletteMode, maxComponent(beta) * splitWeight * etaScale, scale, kRouletteQ, r);
     vec3 cValue = beta * kRouletteC;  // the fixed mode's constant c, as throughput
     if (kRouletteMode == kRouletteFixed && rr.survives) gathered -= cValue * fixedRouletteCompensation(kRouletteQ);
     if (kRouletteMode == kRouletteFixed && !rr.survives) gathered += cValue;
@@ -317,8 +388,8 @@ bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3
   }
   if (kRecordDepthStats != 0u && depth < kRouletteTableDepths && continues)
     depthStats[id * kRouletteTableDepths + depth].x = maxComponent(beta);
-  next.origin = vec4(offsetRayOrigin(s.p, s.pError, s.ng, wi), 0.0);
-  next.direction = vec4(wi, pdf);
+  next.origin = vec4(offsetRayOrigin(s.p, s.pError, s.ng, wi), etaScale);
+  next.direction = vec4(wi, bs.delta ? 0.0 : bs.pdf);  // after a delta lobe emission counts in full, as after the camera
   next.throughput = vec4(beta, splitWeight);
   next.pixel = path.pixel;
   next.rngKey = stream.key;

@@ -61,6 +61,7 @@ void main() {
       }
       s = surfaceAt(tri, hit.yz, wo);
       Material m = materials[s.material];
+      path.throughput.rgb *= volumeTransmittance(m, s, hit.x);
       uint depth = path.depth;
       gm = shadeSurface(m, s, wo);
       gathered = emissionAt(path, s, m, tri, hit, wo);

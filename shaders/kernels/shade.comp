@@ -47,6 +47,7 @@ void main() {
   }
   SurfacePoint s = surfaceAt(tri, hit.yz, wo);
   Material m = materials[s.material];
+  path.throughput.rgb *= volumeTransmittance(m, s, hit.x);
   uint depth = path.depth;
   GltfMaterial gm = shadeSurface(m, s, wo);
   vec3 gathered = emissionAt(path, s, m, tri, hit, wo);

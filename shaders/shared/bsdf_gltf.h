@@ -1,32 +1,86 @@
-// The glTF 2.0 metallic-roughness BRDF (spec appendix B) in the local shading frame (z = normal):
-//   f = (1 - m) [ (1 - F_d) c / pi + F_d D V ] + m F_m D V
-//   F_d = s (0.04 + 0.96 (1 - v.h)^5)            dielectric, s = KHR_materials_specular specularFactor
-//   F_m = c + (1 - c) (1 - v.h)^5                metal, c = baseColor
-//   D = GGX, V = height-correlated Smith G2 / (4 n.l n.v), alpha = roughness^2.
-// Sampling: the specular lobe by GGX visible normals (Heitz 2018), the diffuse lobe by cosine; the lobe is
-// chosen with a probability estimated from its weight at the outgoing direction. Each sampler has its pdf.
+// The glTF 2.0 material as one layered BSDF in the local shading frame (z = normal, wo above):
+//   f = coat + (1 - cc E_c) [ sheen + (1 - s E_s) base ]                 KHR_materials_clearcoat, _sheen
+//   base = (1 - m) [ (1 - T) (1 - F) c / pi + F D V + T c (1 - F) btdf ] + m F_m D V
+//   F = Schlick(f0, f90 = specularFactor) with f0 = min(((ior - 1) / (ior + 1))^2 specularColor, 1) specularFactor
+//   F_m = c + (1 - c) (1 - v.h)^5, D = GGX, V = height-correlated Smith G2 / (4 n.l n.v), alpha = roughness^2.
+// The coat and sheen scale what lies under them by one minus their directional albedo E (tabulated, bounded from
+// above: layer_albedo.h), the smaller of wo's and wi's so f stays reciprocal. The transmission btdf is Walter et
+// al. 2007's rough dielectric (volumetric: it refracts with eta) or, thin-walled (no KHR_materials_volume),
+// GGX reflection mirrored through the surface, so light passes without bending. Radiance crossing into a medium
+// of relative index eta is scaled by 1 / eta^2 (pbrt-v4's convention).
+// Below kDeltaAlpha the base interface (and the coat) are delta lobes: sampled exactly, never evaluated; the
+// diffuse under a smooth interface is then weighted by Fresnel in and out, (1 - F(wo.n)) (1 - F(wi.n)), so
+// delta reflection plus diffuse stays <= 1. Sampling: a lobe chosen with probabilities from its weight at wo,
+// GGX visible normals (Heitz 2018) for the interface and the coat, cosine for diffuse and sheen; the interface
+// reflects or transmits with probabilities from its Fresnel at the sampled normal. Every sampler has its pdf.
 #ifndef VKMC_BSDF_GLTF_H
 #define VKMC_BSDF_GLTF_H
 #include "glsl_cpp.h"
+#include "layer_albedo.h"
+#include "microfacet.h"
 #include "sampling.h"
+#include "sheen.h"
 VKMC_BEGIN_NAMESPACE
-
-VKMC_CONST float kMinAlpha = 1e-4f;  // below this GGX is treated as this sharp (no delta lobes yet)
 
 struct GltfMaterial {
   vec3 baseColor;
   float metallic;
-  float alpha;
-  float specular;
+  float alpha;         // GGX alpha of the base's specular and transmission; below kDeltaAlpha they are deltas
+  float specular;      // KHR_materials_specular specularFactor: the dielectric's f90
+  vec3 f0;             // the dielectric's reflectance at normal incidence (specularFactor included)
+  float transmission;  // KHR_materials_transmission
+  float eta;           // volumetric transmission: n(the side wi enters) / n(wo's side); 1 thin-walled or opaque
+  bool thinWalled;     // transmission without KHR_materials_volume: straight through, no refraction
+  float clearcoat;
+  float clearcoatAlpha;
+  vec3 clearcoatNormal;  // local frame
+  vec3 sheenColor;
+  float sheenAlpha;
 };
+
+VKMC_FN bool isDeltaAlpha(float alpha) { return alpha < kDeltaAlpha; }
 
 VKMC_FN GltfMaterial makeGltfMaterial(vec3 baseColor, float metallic, float roughness, float specular) {
   GltfMaterial m;
   m.baseColor = baseColor;
   m.metallic = clamp(metallic, 0.0f, 1.0f);
-  m.alpha = max(roughness * roughness, kMinAlpha);
+  m.alpha = roughness * roughness;
   m.specular = max(specular, 0.0f);
+  m.f0 = vec3(0.04f * m.specular);  // ior 1.5
+  m.transmission = 0.0f;
+  m.eta = 1.0f;
+  m.thinWalled = true;
+  m.clearcoat = 0.0f;
+  m.clearcoatAlpha = 1.0f;
+  m.clearcoatNormal = vec3(0.0f, 0.0f, 1.0f);
+  m.sheenColor = vec3(0.0f);
+  m.sheenAlpha = 1.0f;
   return m;
+}
+
+// KHR_materials_ior and _specular's colour: f0 = min(((ior - 1) / (ior + 1))^2 specularColor, 1) specularFactor.
+VKMC_FN void setIor(INOUT(GltfMaterial) m, float ior, vec3 specularColor) {
+  float r = (ior - 1.0f) / (ior + 1.0f);
+  m.f0 = min(vec3(r * r) * specularColor, vec3(1.0f)) * m.specular;
+}
+
+// KHR_materials_transmission; eta = n(inside) / n(outside) seen from wo's side (1 / ior on a back face) when
+// volumetric, ignored when thin-walled.
+VKMC_FN void setTransmission(INOUT(GltfMaterial) m, float transmission, float eta, bool thinWalled) {
+  m.transmission = clamp(transmission, 0.0f, 1.0f);
+  m.thinWalled = thinWalled;
+  m.eta = thinWalled ? 1.0f : eta;
+}
+
+VKMC_FN void setClearcoat(INOUT(GltfMaterial) m, float clearcoat, float roughness, vec3 normal) {
+  m.clearcoat = clamp(clearcoat, 0.0f, 1.0f);
+  m.clearcoatAlpha = roughness * roughness;
+  m.clearcoatNormal = normal;
+}
+
+VKMC_FN void setSheen(INOUT(GltfMaterial) m, vec3 color, float roughness) {
+  m.sheenColor = clamp(color, vec3(0.0f), vec3(1.0f));
+  m.sheenAlpha = max(roughness * roughness, kMinSheenAlpha);
 }
 
 // A shading normal ns (a normal map's, or interpolated normals near a silhouette) can mirror wo below the
@@ -55,92 +109,230 @@ VKMC_FN vec3 normalForValidReflection(vec3 ng, vec3 wo, vec3 ns) {
   return normalize(wo + raised);
 }
 
-VKMC_FN float pow5(float x) {
-  float x2 = x * x;
-  return x2 * x2 * x;
+// Fresnel of the base's dielectric interface for wo at cosine cosO to the facet: Schlick on the cosine in the
+// outer medium; from inside a volume that is the refracted one, and past the critical angle all is reflected.
+VKMC_FN vec3 interfaceFresnel(GltfMaterial m, float cosO) {
+  float c = cosO;
+  if (m.eta < 1.0f) {
+    float sin2T = max(0.0f, 1.0f - c * c) / (m.eta * m.eta);
+    if (sin2T >= 1.0f) return vec3(1.0f);
+    c = sqrt(1.0f - sin2T);
+  }
+  return schlickFresnel(m.f0, m.specular, c);
 }
 
-// GGX D from the half vector's local components: h.x^2 + h.y^2 instead of 1 - h.z^2 keeps tiny alphas exact.
-VKMC_FN float ggxD(vec3 h, float alpha) {
-  float a2 = alpha * alpha;
-  float d = h.z * h.z * a2 + (h.x * h.x + h.y * h.y);
-  return d > 0.0f ? a2 / (kPi * d * d) : 0.0f;
+// What the coat and sheen leave to the layers under them for the pair (wo, wi): one minus weight x albedo, the
+// smaller of the two directions'.
+VKMC_FN float coatTransmittance(GltfMaterial m, vec3 wo, vec3 wi) {
+  if (m.clearcoat <= 0.0f) return 1.0f;
+  vec3 n = m.clearcoatNormal;
+  float e = max(layerAlbedo(kLayerAlbedoCoat, dot(wo, n), m.clearcoatAlpha),
+                layerAlbedo(kLayerAlbedoCoat, abs(dot(wi, n)), m.clearcoatAlpha));
+  return 1.0f - m.clearcoat * e;
+}
+VKMC_FN float sheenTransmittance(GltfMaterial m, vec3 wo, vec3 wi) {
+  float s = maxComponent(m.sheenColor);
+  if (s <= 0.0f) return 1.0f;
+  return 1.0f - s * max(layerAlbedo(kLayerAlbedoSheen, wo.z, m.sheenAlpha), layerAlbedo(kLayerAlbedoSheen, abs(wi.z), m.sheenAlpha));
 }
 
-VKMC_FN float smithG1(float cosTheta, float alpha) {
-  float a2 = alpha * alpha;
-  return 2.0f * cosTheta / (cosTheta + sqrt(a2 + (1.0f - a2) * cosTheta * cosTheta));
-}
-
-// Height-correlated Smith G2 / (4 n.l n.v).
-VKMC_FN float smithVisibility(float cosL, float cosV, float alpha) {
-  float a2 = alpha * alpha;
-  float gv = cosL * sqrt(cosV * cosV * (1.0f - a2) + a2);
-  float gl = cosV * sqrt(cosL * cosL * (1.0f - a2) + a2);
-  return 0.5f / (gv + gl);
-}
-
-VKMC_FN vec3 gltfBsdfEval(GltfMaterial m, vec3 wo, vec3 wi) {
-  if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
+// The base's reflection without its delta lobes: diffuse, and the dielectric and metal specular when rough.
+VKMC_FN vec3 baseReflectionEval(GltfMaterial m, vec3 wo, vec3 wi) {
   vec3 h = normalize(wo + wi);
   float vh = max(dot(wo, h), 0.0f);
-  float fw = pow5(1.0f - vh);
-  float fd = m.specular * (0.04f + 0.96f * fw);
-  vec3 fm = m.baseColor + (vec3(1.0f) - m.baseColor) * fw;
-  float dv = ggxD(h, m.alpha) * smithVisibility(wi.z, wo.z, m.alpha);
-  vec3 dielectric = (1.0f - fd) * m.baseColor * kInvPi + vec3(fd * dv);
-  return (1.0f - m.metallic) * dielectric + m.metallic * fm * dv;
-}
-
-// Probability of sampling the specular lobe, from each lobe's weight at normal incidence of the half vector.
-VKMC_FN float gltfSpecularProbability(GltfMaterial m, vec3 wo) {
-  float fw = pow5(1.0f - clamp(wo.z, 0.0f, 1.0f));
-  float fd = m.specular * (0.04f + 0.96f * fw);
-  vec3 fm = m.baseColor + (vec3(1.0f) - m.baseColor) * fw;
-  float specular = (1.0f - m.metallic) * fd + m.metallic * luminance(fm);
-  float diffuse = (1.0f - m.metallic) * (1.0f - fd) * luminance(m.baseColor);
-  if (diffuse <= 0.0f) return specular > 0.0f ? 1.0f : 0.5f;
-  if (specular <= 0.0f) return 0.0f;
-  // Never starve a lobe whose value is non-zero: the pdf must cover the BRDF's support.
-  return clamp(specular / (specular + diffuse), 0.02f, 0.98f);
-}
-
-// Heitz 2018: a visible microfacet normal for view wo (upper hemisphere).
-VKMC_FN vec3 sampleGgxVisibleNormal(vec3 wo, float alpha, vec2 u) {
-  vec3 vh = normalize(vec3(alpha * wo.x, alpha * wo.y, wo.z));
-  float lensq = vh.x * vh.x + vh.y * vh.y;
-  vec3 t1 = lensq > 0.0f ? vec3(-vh.y, vh.x, 0.0f) * inversesqrt(lensq) : vec3(1.0f, 0.0f, 0.0f);
-  vec3 t2 = cross(vh, t1);
-  float r = sqrt(u.x);
-  float phi = 2.0f * kPi * u.y;
-  float p1 = r * cos(phi);
-  float p2 = r * sin(phi);
-  float s = 0.5f * (1.0f + vh.z);
-  p2 = (1.0f - s) * sqrt(max(0.0f, 1.0f - p1 * p1)) + s * p2;
-  vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * vh;
-  return normalize(vec3(alpha * nh.x, alpha * nh.y, max(0.0f, nh.z)));
-}
-
-// pdf of wi = reflect(-wo, h) with h from the visible normals: G1(wo) D(h) / (4 wo.z).
-VKMC_FN float ggxReflectionPdf(vec3 wo, vec3 wi, float alpha) {
-  if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
-  vec3 h = normalize(wo + wi);
-  return smithG1(wo.z, alpha) * ggxD(h, alpha) / (4.0f * wo.z);
-}
-
-VKMC_FN float gltfBsdfPdf(GltfMaterial m, vec3 wo, vec3 wi) {
-  if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
-  float ps = gltfSpecularProbability(m, wo);
-  return ps * ggxReflectionPdf(wo, wi, m.alpha) + (1.0f - ps) * cosineHemispherePdf(wi.z);
-}
-
-// u.x picks the lobe, u.yz the direction. Returns wi (local); its pdf is gltfBsdfPdf(m, wo, wi).
-VKMC_FN vec3 sampleGltfBsdf(GltfMaterial m, vec3 wo, vec3 u) {
-  if (u.x < gltfSpecularProbability(m, wo)) {
-    vec3 h = sampleGgxVisibleNormal(wo, m.alpha, vec2(u.y, u.z));
-    return 2.0f * dot(wo, h) * h - wo;
+  vec3 fd = interfaceFresnel(m, vh);
+  bool isSmooth = isDeltaAlpha(m.alpha);
+  vec3 diffuseWeight = isSmooth ? (vec3(1.0f) - interfaceFresnel(m, wo.z)) * (vec3(1.0f) - interfaceFresnel(m, wi.z)) : vec3(1.0f) - fd;
+  vec3 f = ((1.0f - m.metallic) * (1.0f - m.transmission) * kInvPi) * diffuseWeight * m.baseColor;
+  if (!isSmooth) {
+    float dv = ggxD(h, m.alpha) * smithVisibility(wi.z, wo.z, m.alpha);
+    vec3 fm = schlickFresnel(m.baseColor, 1.0f, vh);
+    f += ((1.0f - m.metallic) * fd + m.metallic * fm) * dv;
   }
-  return sampleCosineHemisphere(vec2(u.y, u.z));
+  return f;
+}
+
+// The base's rough transmission (wi below): Walter's btdf, or thin-walled the GGX reflection mirrored through
+// the surface; both tinted by the base colour.
+VKMC_FN vec3 baseTransmissionEval(GltfMaterial m, vec3 wo, vec3 wi) {
+  vec3 tint = ((1.0f - m.metallic) * m.transmission) * m.baseColor;
+  if (m.thinWalled) {
+    vec3 wr = vec3(wi.x, wi.y, -wi.z);
+    vec3 h = normalize(wo + wr);
+    return tint * (vec3(1.0f) - interfaceFresnel(m, dot(wo, h))) * (ggxD(h, m.alpha) * smithVisibility(wr.z, wo.z, m.alpha));
+  }
+  vec3 h = refractionHalfVector(wo, wi, m.eta);
+  if (h == vec3(0.0f)) return vec3(0.0f);
+  float d = dot(wi, h) + dot(wo, h) / m.eta;
+  float value = ggxD(h, m.alpha) * smithG2(wo.z, wi.z, m.alpha) * abs(dot(wi, h) * dot(wo, h) / (d * d * wi.z * wo.z));
+  return tint * (vec3(1.0f) - interfaceFresnel(m, dot(wo, h))) * (value / (m.eta * m.eta));
+}
+
+// The BSDF without its delta lobes, for wo above and wi anywhere.
+VKMC_FN vec3 gltfBsdfEval(GltfMaterial m, vec3 wo, vec3 wi) {
+  if (wo.z <= 0.0f || wi.z == 0.0f) return vec3(0.0f);
+  float coatT = coatTransmittance(m, wo, wi);
+  float layers = coatT * sheenTransmittance(m, wo, wi);
+  if (wi.z < 0.0f) {
+    bool transmits = m.transmission > 0.0f && m.metallic < 1.0f && !isDeltaAlpha(m.alpha);
+    return transmits ? layers * baseTransmissionEval(m, wo, wi) : vec3(0.0f);
+  }
+  vec3 f = layers * baseReflectionEval(m, wo, wi);
+  if (maxComponent(m.sheenColor) > 0.0f) f += (coatT * sheenEval(wo, wi, m.sheenAlpha)) * m.sheenColor;
+  if (m.clearcoat > 0.0f && !isDeltaAlpha(m.clearcoatAlpha)) {
+    mat3 frame = basisFromNormal(m.clearcoatNormal);
+    f += vec3(m.clearcoat * coatReflectionEval(wo * frame, wi * frame, m.clearcoatAlpha));
+  }
+  return f;
+}
+
+// Lobe-selection probabilities at wo, from each lobe's weight there; a lobe that can contribute keeps at least
+// 2% of the total, so the pdf covers the BSDF's support.
+struct LobeProbabilities {
+  float coat, sheen, specular, diffuse;  // specular: the base's interface (reflection and transmission)
+};
+
+VKMC_FN LobeProbabilities lobeProbabilities(GltfMaterial m, vec3 wo) {
+  LobeProbabilities p;
+  float cosCoat = dot(wo, m.clearcoatNormal);
+  p.coat = m.clearcoat > 0.0f && cosCoat > 0.0f ? m.clearcoat * schlickFresnel(vec3(kCoatF0), 1.0f, cosCoat).x : 0.0f;
+  float under = 1.0f - p.coat;
+  p.sheen = under * luminance(m.sheenColor) * layerAlbedo(kLayerAlbedoSheen, wo.z, m.sheenAlpha);
+  float base = under * sheenTransmittance(m, wo, wo);
+  float f = luminance(interfaceFresnel(m, wo.z));
+  float c = luminance(m.baseColor);
+  p.specular = base * ((1.0f - m.metallic) * (f + m.transmission * (1.0f - f) * c) +
+                       m.metallic * luminance(schlickFresnel(m.baseColor, 1.0f, wo.z)));
+  p.diffuse = base * (1.0f - m.metallic) * (1.0f - m.transmission) * (1.0f - f) * c;
+  float total = p.coat + p.sheen + p.specular + p.diffuse;
+  if (!(total > 0.0f)) return p;
+  float least = 0.02f * total;
+  if (p.coat > 0.0f) p.coat = max(p.coat, least);
+  if (p.sheen > 0.0f) p.sheen = max(p.sheen, least);
+  if (p.specular > 0.0f) p.specular = max(p.specular, least);
+  if (p.diffuse > 0.0f) p.diffuse = max(p.diffuse, least);
+  total = p.coat + p.sheen + p.specular + p.diffuse;
+  p.coat /= total;
+  p.sheen /= total;
+  p.specular /= total;
+  p.diffuse /= total;
+  return p;
+}
+
+// Probability that the interface reflects (rather than transmits) about facet normal h.
+VKMC_FN float reflectProbability(GltfMaterial m, vec3 wo, vec3 h) {
+  if (m.transmission <= 0.0f || m.metallic >= 1.0f) return 1.0f;
+  float vh = dot(wo, h);
+  vec3 fd = interfaceFresnel(m, vh);
+  float r = luminance((1.0f - m.metallic) * fd + m.metallic * schlickFresnel(m.baseColor, 1.0f, vh));
+  float t = luminance(((1.0f - m.metallic) * m.transmission) * (vec3(1.0f) - fd) * m.baseColor);
+  return r + t > 0.0f ? r / (r + t) : 1.0f;
+}
+
+// Density of the rough interface's sampling (visible normals, then reflect or transmit) at wi.
+VKMC_FN float interfacePdf(GltfMaterial m, vec3 wo, vec3 wi) {
+  if (wi.z > 0.0f) return reflectProbability(m, wo, normalize(wo + wi)) * ggxReflectionPdf(wo, wi, m.alpha);
+  if (m.transmission <= 0.0f || m.metallic >= 1.0f) return 0.0f;
+  if (m.thinWalled) {
+    vec3 wr = vec3(wi.x, wi.y, -wi.z);
+    return (1.0f - reflectProbability(m, wo, normalize(wo + wr))) * ggxReflectionPdf(wo, wr, m.alpha);
+  }
+  vec3 h = refractionHalfVector(wo, wi, m.eta);
+  if (h == vec3(0.0f)) return 0.0f;
+  return (1.0f - reflectProbability(m, wo, h)) * ggxVisibleNormalPdf(wo, h, m.alpha) * refractionJacobian(wo, wi, h, m.eta);
+}
+
+// The density of sampleGltfBsdf's non-delta directions (the delta lobes' choices carry no density).
+VKMC_FN float gltfBsdfPdf(GltfMaterial m, vec3 wo, vec3 wi) {
+  if (wo.z <= 0.0f || wi.z == 0.0f) return 0.0f;
+  LobeProbabilities p = lobeProbabilities(m, wo);
+  float pdf = 0.0f;
+  if (wi.z > 0.0f) {
+    pdf += (p.sheen + p.diffuse) * cosineHemispherePdf(wi.z);
+    if (p.coat > 0.0f && !isDeltaAlpha(m.clearcoatAlpha)) {
+      mat3 frame = basisFromNormal(m.clearcoatNormal);
+      pdf += p.coat * ggxReflectionPdf(wo * frame, wi * frame, m.clearcoatAlpha);
+    }
+  }
+  if (p.specular > 0.0f && !isDeltaAlpha(m.alpha)) pdf += p.specular * interfacePdf(m, wo, wi);
+  return pdf;
+}
+
+// A sampled direction: weight = f |cos| / pdf; pdf is the non-delta density (for MIS), 0 for a delta lobe, whose
+// weight is its value over the probability of having chosen it. A zero weight ends the path.
+struct BsdfSample {
+  vec3 wi;
+  vec3 weight;
+  float pdf;
+  bool delta;
+};
+
+VKMC_FN BsdfSample deltaSample(vec3 wi, vec3 weight) {
+  BsdfSample s;
+  s.wi = wi;
+  s.weight = weight;
+  s.pdf = 0.0f;
+  s.delta = true;
+  return s;
+}
+
+// The smooth interface: mirror reflection or transmission (refracted, or straight through thin-walled), chosen by
+// their Fresnel weights with x; pLobe is the probability of having picked the interface.
+VKMC_FN BsdfSample sampleSmoothInterface(GltfMaterial m, vec3 wo, float x, float pLobe) {
+  vec3 fd = interfaceFresnel(m, wo.z);
+  vec3 r = (1.0f - m.metallic) * fd + m.metallic * schlickFresnel(m.baseColor, 1.0f, wo.z);
+  vec3 t = ((1.0f - m.metallic) * m.transmission) * (vec3(1.0f) - fd) * m.baseColor;
+  float pr = luminance(r) + luminance(t) > 0.0f ? luminance(r) / (luminance(r) + luminance(t)) : 1.0f;
+  vec3 wi = vec3(-wo.x, -wo.y, wo.z);
+  if (x < pr) return deltaSample(wi, r * (coatTransmittance(m, wo, wi) * sheenTransmittance(m, wo, wi) / (pLobe * pr)));
+  float eta = 1.0f;
+  if (m.thinWalled) {
+    wi = -wo;
+  } else {
+    eta = m.eta;
+    if (!refractAbout(wo, vec3(0.0f, 0.0f, 1.0f), eta, wi)) return deltaSample(wi, vec3(0.0f));
+  }
+  float layers = coatTransmittance(m, wo, wi) * sheenTransmittance(m, wo, wi);
+  return deltaSample(wi, t * (layers / (pLobe * (1.0f - pr) * eta * eta)));
+}
+
+// u.x picks the lobe (and, rescaled, reflection or transmission), u.yz the direction.
+VKMC_FN BsdfSample sampleGltfBsdf(GltfMaterial m, vec3 wo, vec3 u) {
+  BsdfSample s = deltaSample(vec3(0.0f), vec3(0.0f));
+  s.delta = false;
+  if (wo.z <= 0.0f) return s;
+  LobeProbabilities p = lobeProbabilities(m, wo);
+  vec2 v = vec2(u.y, u.z);
+  float x = u.x;
+  vec3 wi;
+  if (x < p.coat) {
+    mat3 frame = basisFromNormal(m.clearcoatNormal);
+    vec3 woC = wo * frame;
+    vec3 h = isDeltaAlpha(m.clearcoatAlpha) ? vec3(0.0f, 0.0f, 1.0f) : sampleGgxVisibleNormal(woC, m.clearcoatAlpha, v);
+    wi = frame * (2.0f * dot(woC, h) * h - woC);
+    if (isDeltaAlpha(m.clearcoatAlpha)) {
+      float f = m.clearcoat * schlickFresnel(vec3(kCoatF0), 1.0f, woC.z).x;
+      return deltaSample(wi, vec3(wi.z > 0.0f ? f / p.coat : 0.0f));
+    }
+    if (wi.z <= 0.0f) return s;  // below the base: the coat has no density there (gltfBsdfPdf)
+  } else if (x < p.coat + p.sheen + p.specular && x >= p.coat + p.sheen) {
+    float xr = (x - p.coat - p.sheen) / p.specular;
+    if (isDeltaAlpha(m.alpha)) return sampleSmoothInterface(m, wo, xr, p.specular);
+    vec3 h = sampleGgxVisibleNormal(wo, m.alpha, v);
+    wi = 2.0f * dot(wo, h) * h - wo;
+    bool reflects = xr < reflectProbability(m, wo, h);
+    if (wi.z <= 0.0f && (reflects || m.thinWalled)) return s;  // a reflection below the surface: no density there
+    if (!reflects) {
+      if (m.thinWalled) wi.z = -wi.z;
+      else if (!refractAbout(wo, h, m.eta, wi) || wi.z >= 0.0f) return s;
+    }
+  } else {
+    wi = sampleCosineHemisphere(v);  // the sheen and the diffuse lobe
+  }
+  s.wi = wi;
+  s.pdf = gltfBsdfPdf(m, wo, wi);
+  if (s.pdf > 0.0f) s.weight = gltfBsdfEval(m, wo, wi) * (abs(wi.z) / s.pdf);
+  return s;
 }
 
 VKMC_END_NAMESPACE

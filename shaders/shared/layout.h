@@ -30,7 +30,8 @@
 #define BINDING_ENVIRONMENT 22               // vec4[]: environment radiance, row-major, + header (environment_map.h)
 #define BINDING_ENVIRONMENT_DISTRIBUTION 23  // float[]: its sampling distribution (environment_map.h)
 #define BINDING_PIXEL_FILTER 24              // PixelFilterHeader + float[]: the pixel filter's table (pixel_filter.h)
-#define BINDING_COUNT 25
+#define BINDING_LAYER_ALBEDO 25              // uimageBuffer: the clearcoat and sheen albedo table as float bits (layer_albedo.h)
+#define BINDING_COUNT 26
 
 // Texel formats of the scene bindings as GLSL image-format qualifiers (common.glsl declares the bindings with
 // them); the host derives each VkFormat from the same token (sceneTexelFormat in host/render/gpu_scene.cpp).
@@ -41,6 +42,7 @@
 #define TEXEL_FORMAT_TEXTURE_TEXELS r32ui
 #define TEXEL_FORMAT_TEXTURES rgba32ui
 #define TEXEL_FORMAT_TRIANGLE_ATTRIBUTES rgba32ui
+#define TEXEL_FORMAT_LAYER_ALBEDO r32ui
 
 // Specialization constant ids.
 #define SPEC_WORKGROUP_SIZE 0
@@ -76,6 +78,10 @@
 #define SPEC_SAMPLER_LOG2_SPP 28  // zsobol: log2 of a replicate's sample count, rounded up
 #define SPEC_SAMPLER_DIGITS 29    // zsobol: base-4 digits of the Morton index (pixel bits + log2 spp)
 #define SPEC_CULLS_BACK_FACES 30  // 0: every material double-sided; the walks' back-face test compiled out
+#define SPEC_HAS_TRANSMISSION 31  // 0: no KHR_materials_transmission (nor volume): the btdf and attenuation compiled out
+#define SPEC_HAS_CLEARCOAT 32     // 0: no KHR_materials_clearcoat
+#define SPEC_HAS_SHEEN 33         // 0: no KHR_materials_sheen
+#define SPEC_HAS_DELTA 34         // 0: no lobe can be smooth (delta): every BSDF sample is MIS-weighted
 
 VKMC_BEGIN_NAMESPACE
 
@@ -101,7 +107,7 @@ VKMC_CONST uint kPixelFilterSamplingUniform = 0u, kPixelFilterSamplingTable = 1u
 // A path between stages. direction.w is the solid-angle pdf of the sampling that produced the ray
 // (0 for camera rays: their emission hits are never MIS-weighted).
 struct PathState {
-  vec4 origin;      // xyz: ray origin, w: unused
+  vec4 origin;      // xyz: ray origin, w: etaScale, the eta^2 factors its radiance scaling divided out (roulette)
   vec4 direction;   // xyz: unit direction, w: pdf of the direction
   vec4 throughput;  // rgb: path throughput, w: product of the split factors that divided it (roulette undoes none)
   vec4 radiance;    // rgb: radiance gathered so far, w: the sample's pixel-filter weight (accumulate applies it)
@@ -135,6 +141,15 @@ struct Material {
   float specular;     // KHR_materials_specular's specularFactor
   float alphaCutoff;  // kMaterialAlphaMask
   TextureSlot baseColorTexture, metallicRoughnessTexture, normalTexture, emissiveTexture;
+  // The material extensions (bsdf_gltf.h)
+  vec4 specularColor;  // rgb: KHR_materials_specular specularColorFactor, w: KHR_materials_ior ior
+  vec4 attenuation;    // rgb: KHR_materials_volume's coefficient -ln(attenuationColor) / attenuationDistance, w: transmission
+  vec4 sheen;          // rgb: sheenColorFactor, w: sheenRoughnessFactor
+  float clearcoat, clearcoatRoughness;
+  uint volumetric;  // 1: transmission refracts into a closed mesh (KHR_materials_volume thicknessFactor > 0)
+  uint unusedMaterial0;
+  TextureSlot transmissionTexture, clearcoatTexture, clearcoatRoughnessTexture, clearcoatNormalTexture, sheenColorTexture,
+      sheenRoughnessTexture, specularTexture, specularColorTexture;
 };
 
 // A KHR_lights_punctual light instance in world space (punctual_light.h samples it).
@@ -260,13 +275,14 @@ namespace vkmc::gpu {
 // The bindings read as storage texel buffers (the others are storage buffers).
 inline constexpr uint32_t kTexelBindings[] = {
     BINDING_TRIANGLES,      BINDING_TRIANGLE_INFO, BINDING_BVH_NODES,          BINDING_LIGHTS,
-    BINDING_TEXTURE_TEXELS, BINDING_TEXTURES,      BINDING_TRIANGLE_ATTRIBUTES};
+    BINDING_TEXTURE_TEXELS, BINDING_TEXTURES,      BINDING_TRIANGLE_ATTRIBUTES, BINDING_LAYER_ALBEDO};
 static_assert(sizeof(PathState) == 80);
 static_assert(offsetof(PathState, pixel) == 64 && offsetof(PathState, rootPath) == 76);
 static_assert(sizeof(ShadowRay) == 48);
 static_assert(sizeof(TextureSlot) == 48);
-static_assert(sizeof(Material) == 240 && offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32);
+static_assert(sizeof(Material) == 688 && offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32);
 static_assert(offsetof(Material, baseColorTexture) == 48 && offsetof(Material, emissiveTexture) == 192);
+static_assert(offsetof(Material, specularColor) == 240 && offsetof(Material, transmissionTexture) == 304);
 static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, kind) == 48 && offsetof(PunctualLight, cosInner) == 56);
 static_assert(sizeof(EnvironmentHeader) == 48 && offsetof(EnvironmentHeader, sceneSphere) == 16);
 static_assert(offsetof(EnvironmentHeader, selectionPmf) == 32);
