@@ -21,11 +21,12 @@ class Builder:
         self.accessors, self.views, self.cameras = [], [], []
 
     def material(self, name, base, emission=None, strength=1.0, double_sided=False, metallic=0.0, roughness=1.0,
-                 specular=0.0):
-        """specular: KHR_materials_specular specularFactor; 0 (the default here) is a pure Lambertian surface."""
+                 specular=0.0, extensions=None):
+        """specular: KHR_materials_specular specularFactor; 0 (the default here) is a pure Lambertian surface.
+        extensions: further material extensions, e.g. {"KHR_materials_transmission": {...}}."""
         m = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": list(base) + [1.0], "metallicFactor": metallic,
                                                     "roughnessFactor": roughness}, "doubleSided": double_sided}
-        ext = {}
+        ext = dict(extensions or {})
         if specular != 1.0:
             ext["KHR_materials_specular"] = {"specularFactor": specular}
         if emission:
@@ -176,6 +177,54 @@ def furnace(path, albedo, emission, name):
     b.camera("camera", [0, 0, 0], [0, 0, -1], 60.0)
     b.write(path, ["KHR_materials_specular"] + (["KHR_materials_emissive_strength"] if emission != 1.0 else []))
 
+GLASS = {"KHR_materials_transmission": {"transmissionFactor": 1.0}, "KHR_materials_volume": {"thicknessFactor": 1.0},
+         "KHR_materials_ior": {"ior": 1.5}}
+GLASS_EXTENSIONS = ["KHR_materials_transmission", "KHR_materials_volume", "KHR_materials_ior", "KHR_materials_specular"]
+
+def material_furnace(path, kind):
+    """A closed emitter (radiance 1 inside, black) around a sphere of lossless smooth glass or a perfect mirror,
+    seen from inside the emitter: every path ends on the emitter with throughput 1 (Fresnel splits, total
+    internal reflection and the eta^2 radiance scaling on the way in and out cancel), so L = 1 at every pixel."""
+    b = Builder()
+    wall = b.material("emitter", (0, 0, 0), emission=(1.0, 1.0, 1.0), double_sided=True)
+    b.mesh("emitter", icosphere(3.0, 2, inward=True), wall)
+    if kind == "glass":
+        m = b.material("glass", (1, 1, 1), roughness=0.0, specular=1.0, extensions=GLASS)
+    else:
+        m = b.material("mirror", (1, 1, 1), metallic=1.0, roughness=0.0, specular=1.0)
+    b.mesh(kind, icosphere(1.0, 3, inward=False), m)
+    b.camera("camera", [0, 0, 2.5], [0, 0, 0], 45.0)
+    b.write(path, GLASS_EXTENSIONS if kind == "glass" else [])
+
+def caustic(path):
+    """Light through glass: a smooth glass sphere (radius 0.5) on a white Lambertian floor under a small square
+    light 2 m up; its caustic on the floor is reachable only by BSDF sampling through two delta refractions."""
+    b = Builder()
+    floor = b.material("floor", (0.8, 0.8, 0.8))
+    light = b.material("light", (0, 0, 0), emission=(1.0, 1.0, 1.0), strength=50.0)
+    glass = b.material("glass", (1, 1, 1), roughness=0.0, specular=1.0, extensions=GLASS)
+    b.mesh("floor", quad([-3, 0, -3], [-3, 0, 3], [3, 0, 3], [3, 0, -3]), floor)
+    s = 0.2
+    b.mesh("light", quad([0.3 - s, 2, -s], [0.3 + s, 2, -s], [0.3 + s, 2, s], [0.3 - s, 2, s]), light)
+    b.mesh("sphere", translate(icosphere(0.5, 4, inward=False), (0, 0.5, 0)), glass)
+    b.camera("camera", [0, 2.2, 3.2], [0, 0.3, 0], 40.0)
+    b.write(path, GLASS_EXTENSIONS + ["KHR_materials_emissive_strength"])
+
+def glass_bulb(path):
+    """A lamp inside a glass bulb over a diffuse floor: a small emissive sphere (radius 0.05) inside a thin-walled
+    smooth glass shell (radius 0.3, transmission without a volume). Light sampling cannot see the filament through
+    the glass: every light path leaves by BSDF sampling through the delta transmission."""
+    b = Builder()
+    floor = b.material("floor", (0.8, 0.8, 0.8))
+    filament = b.material("filament", (0, 0, 0), emission=(1.0, 0.8, 0.5), strength=400.0)
+    bulb = b.material("bulb", (1, 1, 1), roughness=0.0, specular=1.0, double_sided=True,
+                      extensions={"KHR_materials_transmission": {"transmissionFactor": 1.0}})
+    b.mesh("floor", quad([-3, 0, -3], [-3, 0, 3], [3, 0, 3], [3, 0, -3]), floor)
+    b.mesh("filament", translate(icosphere(0.05, 2, inward=False), (0, 0.8, 0)), filament)
+    b.mesh("bulb", translate(icosphere(0.3, 3, inward=False), (0, 0.8, 0)), bulb)
+    b.camera("camera", [0, 1.2, 2.8], [0, 0.5, 0], 45.0)
+    b.write(path, ["KHR_materials_transmission", "KHR_materials_specular", "KHR_materials_emissive_strength"])
+
 def translate(tris, offset):
     return [tuple([c + o for c, o in zip(v, offset)] for v in t) for t in tris]
 
@@ -253,4 +302,9 @@ if __name__ == "__main__":
     os.makedirs("scenes/stiff", exist_ok=True)
     tiny_light("scenes/stiff/tiny_light.gltf")
     furnace("scenes/stiff/furnace_albedo_0999.gltf", 0.999, 1.0, "furnace_albedo_0.999")
+    os.makedirs("scenes/materials", exist_ok=True)
+    material_furnace("scenes/materials/glass_furnace.gltf", "glass")
+    material_furnace("scenes/materials/mirror_furnace.gltf", "mirror")
+    caustic("scenes/materials/caustic.gltf")
+    glass_bulb("scenes/materials/glass_bulb.gltf")
     print("wrote scenes/cornell_box.gltf, furnace.gltf, furnace_stiff.gltf, veach_mis.gltf, many_lights.gltf")

@@ -265,7 +265,7 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
     texels[gpu::kTriangleLightPmfTexel].w = lightPmf[i];
     const Material& m = scene.materials[scene.materialIds[src]];
     info_.alphaTested |= m.alphaMode != AlphaMode::Opaque;
-    texels[gpu::kTriangleSidesTexel].w = gpu::encodeTriangleSingleSided(!m.doubleSided);
+    texels[gpu::kTriangleSidesTexel].w = gpu::encodeTriangleSingleSided(m.culledFromBehind());
     infoTexels[i] = gpu::encodeTriangleInfo(scene.normals[3 * src], scene.normals[3 * src + 1], scene.normals[3 * src + 2],
                                             scene.materialIds[src], m.alphaMode != AlphaMode::Opaque);
   }

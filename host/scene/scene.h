@@ -66,6 +66,9 @@ struct Material {
       if (t->present()) return true;
     return false;
   }
+  // Back faces the walks cull (glTF 3.9.5): a single-sided material's, except where light must pass through
+  // and leave again (transmission: a refracting volume is entered through front faces and left through back ones).
+  bool culledFromBehind() const { return !doubleSided && transmission <= 0.0f; }
   bool hasSheen() const { return sheenColor.x > 0.0f || sheenColor.y > 0.0f || sheenColor.z > 0.0f; }
   bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };

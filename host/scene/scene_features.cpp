@@ -25,7 +25,7 @@ SceneFeatures scanFeatures(const Scene& scene) {
     f.metallic |= m.metallic > 0.0f;
     f.nonDefaultSpecular |= m.specular != 1.0f;
     f.doubleSided |= m.doubleSided;
-    f.singleSided |= !m.doubleSided;
+    f.singleSided |= m.culledFromBehind();
     f.textures |= m.textured();
     f.normalMaps |= m.normalTexture.present();
     f.alpha |= m.alphaMode != AlphaMode::Opaque;

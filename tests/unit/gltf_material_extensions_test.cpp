@@ -1,0 +1,89 @@
+// The material extensions read into a Material (scene/gltf_material_extensions.cpp): every value, its default,
+// and one error line naming the material, the extension and the key for a value out of range.
+#include <gtest/gtest.h>
+
+#include "scene/gltf_loader.h"
+#include "scene/scene_features.h"
+#include "support/test_scenes.h"
+
+using namespace vkmc;
+using vkmc::test::GltfSpec;
+
+namespace {
+std::filesystem::path dir() {
+  static auto d = test::makeTempDir("material_extensions");
+  return d;
+}
+
+std::string quadWith(const std::string& name, const std::string& extensions) {
+  GltfSpec spec = test::quadSpec();
+  spec.materialJson = R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"roughnessFactor":0.5},"extensions":{)" +
+                      extensions + "}}";
+  return test::writeGltf(dir(), name, spec);
+}
+}  // namespace
+
+TEST(MaterialExtensions, EveryValueIsRead) {
+  Scene s = loadGltf(quadWith("all", R"(
+    "KHR_materials_specular":{"specularFactor":0.5,"specularColorFactor":[2,1,0.5]},
+    "KHR_materials_ior":{"ior":1.33},
+    "KHR_materials_transmission":{"transmissionFactor":0.75},
+    "KHR_materials_volume":{"thicknessFactor":0.1,"attenuationDistance":2,"attenuationColor":[0.5,1,0.25]},
+    "KHR_materials_clearcoat":{"clearcoatFactor":0.6,"clearcoatRoughnessFactor":0.2},
+    "KHR_materials_sheen":{"sheenColorFactor":[0.3,0.2,0.1],"sheenRoughnessFactor":0.4})"));
+  const Material& m = s.materials[0];
+  EXPECT_FLOAT_EQ(m.specular, 0.5f);
+  EXPECT_EQ(m.specularColor, glm::vec3(2.0f, 1.0f, 0.5f));
+  EXPECT_FLOAT_EQ(m.ior, 1.33f);
+  EXPECT_FLOAT_EQ(m.transmission, 0.75f);
+  EXPECT_TRUE(m.volumetric);
+  EXPECT_NEAR(m.attenuation.x, std::log(2.0) / 2, 1e-6);  // -ln(color) / distance
+  EXPECT_EQ(m.attenuation.y, 0.0f);
+  EXPECT_NEAR(m.attenuation.z, std::log(4.0) / 2, 1e-6);
+  EXPECT_FLOAT_EQ(m.clearcoat, 0.6f);
+  EXPECT_FLOAT_EQ(m.clearcoatRoughness, 0.2f);
+  EXPECT_EQ(m.sheenColor, glm::vec3(0.3f, 0.2f, 0.1f));
+  EXPECT_FLOAT_EQ(m.sheenRoughness, 0.4f);
+  EXPECT_FALSE(m.culledFromBehind()) << "a transmitting surface is left through its back faces";
+  SceneFeatures f = scanFeatures(s);
+  EXPECT_TRUE(f.transmission && f.volumes && f.clearcoat && f.sheen && f.glossy);
+  EXPECT_FALSE(f.delta) << "roughness 0.5 and clearcoat roughness 0.2 are rough, and nothing is textured";
+  EXPECT_FALSE(f.singleSided);
+}
+
+TEST(MaterialExtensions, DefaultsAndSmoothLobes) {
+  Scene s = loadGltf(quadWith("defaults", R"("KHR_materials_transmission":{},"KHR_materials_clearcoat":{"clearcoatFactor":1})"));
+  const Material& m = s.materials[0];
+  EXPECT_EQ(m.transmission, 0.0f);
+  EXPECT_FLOAT_EQ(m.ior, 1.5f);
+  EXPECT_FALSE(m.volumetric);
+  EXPECT_EQ(m.clearcoatRoughness, 0.0f);
+  SceneFeatures f = scanFeatures(s);
+  EXPECT_FALSE(f.transmission);
+  EXPECT_TRUE(f.clearcoat);
+  EXPECT_TRUE(f.delta) << "a clearcoat of roughness 0 is a delta lobe";
+  EXPECT_TRUE(f.singleSided);
+}
+
+TEST(MaterialExtensions, BadValuesAreNamedOnOneLine) {
+  struct Row {
+    const char* extensions;
+    const char* message;
+  } rows[] = {
+      {R"("KHR_materials_transmission":{"transmissionFactor":1.5})", "material 0 KHR_materials_transmission.transmissionFactor"},
+      {R"("KHR_materials_ior":{"ior":0.5})", "material 0 KHR_materials_ior.ior"},
+      {R"("KHR_materials_ior":{"ior":"glass"})", "material 0 KHR_materials_ior.ior is not a finite number"},
+      {R"("KHR_materials_volume":{"thicknessFactor":1,"attenuationDistance":0})", "attenuationDistance must be positive"},
+      {R"("KHR_materials_volume":{"attenuationColor":[1,2,1]})", "KHR_materials_volume.attenuationColor"},
+      {R"("KHR_materials_sheen":{"sheenColorFactor":[1,1]})", "KHR_materials_sheen.sheenColorFactor is not an array of 3"},
+      {R"("KHR_materials_clearcoat":{"clearcoatRoughnessFactor":-1})", "KHR_materials_clearcoat.clearcoatRoughnessFactor"},
+      {R"("KHR_materials_clearcoat":{"clearcoatTexture":{"index":9}})", "clearcoatTexture"},
+      {R"("KHR_materials_specular":{"specularColorFactor":[1,-1,1]})", "KHR_materials_specular.specularColorFactor"},
+  };
+  int i = 0;
+  for (const Row& row : rows) {
+    std::string error = test::loadError(quadWith("bad" + std::to_string(i++), row.extensions));
+    EXPECT_NE(error.find(row.message), std::string::npos) << row.extensions << " -> " << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+  }
+}
