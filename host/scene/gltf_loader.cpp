@@ -260,7 +260,7 @@ class Flattener {
     glm::mat3 normalMatrix = glm::transpose(glm::inverse(linear));
     bool flip = glm::determinant(linear) < 0.0f;  // mirroring swaps the winding and the bitangent's handedness
     size_t triangles = data.triangles.size() / 3;
-    if (scene_.triangleCount() + triangles > maxTriangles_)
+    if (scene_.triangleCount() + 2 * scene_.thinSegments.size() + triangles > maxTriangles_)
       throw Error("scene too big: more than " + std::to_string(maxTriangles_) +
                   " triangles after instancing (what the device's buffers and this machine's memory hold)");
     for (size_t t = 0; t < triangles; ++t) {
@@ -407,7 +407,7 @@ class InstanceCounter {
         int accessor = prim.indices >= 0 ? prim.indices : pos == prim.attributes.end() ? -1 : pos->second;
         if (accessor >= 0 && accessor < static_cast<int>(model_.accessors.size())) {
           size_t elements = model_.accessors[accessor].count;
-          meshTriangles = saturatingAdd(meshTriangles, lines ? 2 * uint64_t(segmentCount(prim.mode, elements))
+          meshTriangles = saturatingAdd(meshTriangles, lines ? saturatingMultiply(2, segmentCount(prim.mode, elements))
                                                              : uint64_t(triangleCount(prim.mode, elements)));
         }
       }

@@ -117,7 +117,8 @@ size_t segmentCount(int mode, size_t elements) {
   if (mode == TINYGLTF_MODE_POINTS) return elements;
   if (mode == TINYGLTF_MODE_LINE) return elements / 2;
   if (mode == TINYGLTF_MODE_LINE_STRIP) return elements >= 2 ? elements - 1 : 0;
-  return elements >= 2 ? elements : 0;  // a loop: one more, back to the start
+  // A loop: one more, back to the start; two elements close on themselves (one segment, not the same one twice).
+  return elements > 2 ? elements : elements == 2 ? 1 : 0;
 }
 
 bool isTriangleMode(int mode) {

@@ -30,6 +30,11 @@ void echoStructs() {
   put4(m.baseColor); put3(m.emission); put(m.flags);
   putf(m.metallic); putf(m.roughness); putf(m.specular); putf(m.alphaCutoff);
   putSlot(m.baseColorTexture); putSlot(m.metallicRoughnessTexture); putSlot(m.normalTexture); putSlot(m.emissiveTexture);
+  put4(m.specularColor); put4(m.attenuation); put4(m.sheen);
+  putf(m.clearcoat); putf(m.clearcoatRoughness); put(m.volumetric); put(m.unusedMaterial0);
+  putSlot(m.transmissionTexture); putSlot(m.clearcoatTexture); putSlot(m.clearcoatRoughnessTexture);
+  putSlot(m.clearcoatNormalTexture); putSlot(m.sheenColorTexture); putSlot(m.sheenRoughnessTexture);
+  putSlot(m.specularTexture); putSlot(m.specularColorTexture);
   FilmPixel f = film[0];
   put4(f.sum); put4(f.sumSq); put4(f.sumHigh); put4(f.sumSqHigh);
   for (uint r = 0u; r + 1u < kSampleReplicates; ++r) put4(f.replicate[r]);

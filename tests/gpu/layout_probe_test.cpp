@@ -50,10 +50,18 @@ Words echoedByName(const gpu::PathState& p, const gpu::ShadowRay& r, const gpu::
   e.put4(r.origin), e.put4(r.direction), e.put4(r.contribution);
   e.put4(m.baseColor), e.put3(m.emission), e.put(m.flags);
   e.putf(m.metallic), e.putf(m.roughness), e.putf(m.specular), e.putf(m.alphaCutoff);
-  for (const gpu::TextureSlot* t : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture, &m.emissiveTexture}) {
-    e.put4(t->uvRow0), e.put4(t->uvRow1);
-    e.put(t->texture), e.put(t->texCoord), e.put(t->unusedSlot0), e.put(t->unusedSlot1);
-  }
+  auto putSlot = [&e](const gpu::TextureSlot& t) {
+    e.put4(t.uvRow0), e.put4(t.uvRow1);
+    e.put(t.texture), e.put(t.texCoord), e.put(t.unusedSlot0), e.put(t.unusedSlot1);
+  };
+  for (const gpu::TextureSlot* t : {&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture, &m.emissiveTexture})
+    putSlot(*t);
+  e.put4(m.specularColor), e.put4(m.attenuation), e.put4(m.sheen);
+  e.putf(m.clearcoat), e.putf(m.clearcoatRoughness), e.put(m.volumetric), e.put(m.unusedMaterial0);
+  for (const gpu::TextureSlot* t : {&m.transmissionTexture, &m.clearcoatTexture, &m.clearcoatRoughnessTexture,
+                                    &m.clearcoatNormalTexture, &m.sheenColorTexture, &m.sheenRoughnessTexture,
+                                    &m.specularTexture, &m.specularColorTexture})
+    putSlot(*t);
   e.put4(f.sum), e.put4(f.sumSq), e.put4(f.sumHigh), e.put4(f.sumSqHigh);
   for (const glm::vec4& r : f.replicate) e.put4(r);
   e.put(c.rayQueueCount[0]), e.put(c.rayQueueCount[1]), e.put(c.shadowQueueCount), e.put(c.splitChildren);

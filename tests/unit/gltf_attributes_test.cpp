@@ -4,6 +4,7 @@
 
 #include "error.h"
 #include "scene/gltf_loader.h"
+#include "scene/gltf_primitive.h"
 #include "support/gltf_builder.h"
 #include "support/test_scenes.h"
 
@@ -229,4 +230,13 @@ TEST(GltfAttributes, PointsAndLinesBecomeSegmentsByTheirMode) {
   EXPECT_EQ(s.thinSegments[9].b, glm::vec3(0, 0, 3)) << "the loop closes on its first vertex";
   EXPECT_EQ(s.thinSegments[12].a, glm::vec3(1, 1, 3)) << "the strip's last segment starts at vertex 2";
   EXPECT_EQ(s.bounds.max.z, 3.0f) << "segments count in the bounds (the automatic camera frames them)";
+}
+
+TEST(PointsAndLines, SegmentCountsPerMode) {
+  EXPECT_EQ(segmentCount(0, 3), 3u);  // POINTS
+  EXPECT_EQ(segmentCount(1, 5), 2u);  // LINES: an odd element is dropped
+  EXPECT_EQ(segmentCount(3, 4), 3u);  // LINE_STRIP
+  EXPECT_EQ(segmentCount(2, 4), 4u);  // LINE_LOOP closes back to the start
+  EXPECT_EQ(segmentCount(2, 2), 1u) << "a loop of two vertices is one segment, not the same one twice";
+  EXPECT_EQ(segmentCount(2, 1), 0u);
 }
