@@ -295,7 +295,10 @@ class Flattener {
         appendCorner(scene_.uv0, data.uv0, idx[k], glm::vec2(0.0f), corners);
         appendCorner(scene_.uv1, data.uv1, idx[k], glm::vec2(0.0f), corners);
         appendCorner(scene_.colors, data.colors, idx[k], glm::vec4(1.0f), corners);
-        if (withTangents_) scene_.tangents.push_back(worldTangent(data, idx[k], linear, n[k], flip));
+        // The corner's own tangent when generated per corner (a flip swapped corners 1 and 2).
+        size_t corner = 3 * t + (flip && k > 0 ? 3 - k : k);
+        if (withTangents_)
+          scene_.tangents.push_back(worldTangent(data, data.tangentsPerCorner ? corner : idx[k], linear, n[k], flip));
         scene_.positions.push_back(p[k]);
         scene_.normals.push_back(n[k]);
         scene_.bounds.grow(p[k]);
@@ -330,9 +333,10 @@ class Flattener {
   }
 
   // The tangent by the node's linear part, Gram-Schmidt against the corner's world normal.
-  static glm::vec4 worldTangent(const PrimitiveData& data, uint32_t vertex, const glm::mat3& linear, const glm::vec3& n,
+  // `index`: the vertex, or the corner for tangents generated per corner.
+  static glm::vec4 worldTangent(const PrimitiveData& data, size_t index, const glm::mat3& linear, const glm::vec3& n,
                                 bool flip) {
-    glm::vec4 local = data.tangents.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : data.tangents[vertex];
+    glm::vec4 local = data.tangents.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : data.tangents[index];
     glm::vec3 t = linear * glm::vec3(local);
     t -= n * glm::dot(n, t);
     float tl = glm::length(t);

@@ -157,9 +157,11 @@ PrimitiveData readPrimitive(const tinygltf::Model& model, const tinygltf::Primit
     return data;
   }
   data.triangles = readTriangles(model, prim, n, limit);
-  if (request.generateTangents && data.tangents.empty())
+  if (request.generateTangents && data.tangents.empty()) {
     data.tangents =
         generateTangents(data.positions, data.normals, request.tangentUvSet == 1 ? data.uv1 : data.uv0, data.triangles);
+    data.tangentsPerCorner = true;
+  }
   return data;
 }
 

@@ -1,7 +1,11 @@
-// Tangent generation in the manner of MikkTSpace (see tangent_space.h for what differs).
+// Tangent generation by the reference MikkTSpace (third_party/mikktspace).
 #include "scene/tangent_space.h"
 
 #include <cmath>
+
+extern "C" {
+#include "mikktspace.h"
+}
 
 namespace vkmc {
 namespace {
@@ -12,12 +16,6 @@ bool usable(const glm::vec3& v) {
 }
 
 glm::vec3 projectOnPlane(const glm::vec3& v, const glm::vec3& n) { return v - n * glm::dot(n, v); }
-
-float cornerAngle(const glm::vec3& a, const glm::vec3& b) {
-  if (!usable(a) || !usable(b)) return 0.0f;
-  float c = glm::dot(glm::normalize(a), glm::normalize(b));
-  return std::acos(glm::clamp(c, -1.0f, 1.0f));
-}
 
 std::vector<glm::vec3> faceNormals(const std::vector<glm::vec3>& p, const std::vector<uint32_t>& tri) {
   std::vector<glm::vec3> n(p.size(), glm::vec3(0.0f));
@@ -37,38 +35,68 @@ glm::vec3 anyPerpendicular(const glm::vec3& n) {
   return glm::vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
 }
 
+namespace {
+
+// MikkTSpace's view of an indexed triangle list; its results land per corner.
+struct MikkMesh {
+  const std::vector<glm::vec3>& positions;
+  const std::vector<glm::vec3>& normals;
+  const std::vector<glm::vec2>& uvs;
+  const std::vector<uint32_t>& triangles;
+  std::vector<glm::vec4>& out;
+  static MikkMesh& of(const SMikkTSpaceContext* c) { return *static_cast<MikkMesh*>(c->m_pUserData); }
+  uint32_t vertex(int face, int corner) const { return triangles[3 * size_t(face) + size_t(corner)]; }
+};
+
+int faceCount(const SMikkTSpaceContext* c) { return int(MikkMesh::of(c).triangles.size() / 3); }
+int cornersOfFace(const SMikkTSpaceContext*, const int) { return 3; }
+void position(const SMikkTSpaceContext* c, float out[], const int face, const int corner) {
+  const MikkMesh& m = MikkMesh::of(c);
+  const glm::vec3& p = m.positions[m.vertex(face, corner)];
+  out[0] = p.x, out[1] = p.y, out[2] = p.z;
+}
+void normal(const SMikkTSpaceContext* c, float out[], const int face, const int corner) {
+  const MikkMesh& m = MikkMesh::of(c);
+  const glm::vec3& n = m.normals[m.vertex(face, corner)];
+  out[0] = n.x, out[1] = n.y, out[2] = n.z;
+}
+void texCoord(const SMikkTSpaceContext* c, float out[], const int face, const int corner) {
+  const MikkMesh& m = MikkMesh::of(c);
+  glm::vec2 uv = m.uvs.empty() ? glm::vec2(0.0f) : m.uvs[m.vertex(face, corner)];
+  out[0] = uv.x, out[1] = uv.y;
+}
+void setTangent(const SMikkTSpaceContext* c, const float t[], const float sign, const int face, const int corner) {
+  MikkMesh& m = MikkMesh::of(c);
+  // glTF's v runs down the image while a normal map's +Y (green) points up it: the bitangent is -dP/dv, the
+  // opposite of MikkTSpace's (OpenGL's) sign, as three.js's computeMikkTSpaceTangents(negateSign) does for glTF.
+  m.out[3 * size_t(face) + size_t(corner)] = glm::vec4(t[0], t[1], t[2], sign < 0.0f ? 1.0f : -1.0f);
+}
+
+}  // namespace
+
 std::vector<glm::vec4> generateTangents(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normalsIn,
                                         const std::vector<glm::vec2>& uvs, const std::vector<uint32_t>& tri) {
-  const std::vector<glm::vec3> normals = normalsIn.size() == positions.size() ? normalsIn : faceNormals(positions, tri);
-  std::vector<glm::vec3> tangentSum(positions.size(), glm::vec3(0.0f)), bitangentSum(positions.size(), glm::vec3(0.0f));
-  for (size_t t = 0; t + 2 < tri.size() && uvs.size() == positions.size(); t += 3) {
-    const uint32_t v[3] = {tri[t], tri[t + 1], tri[t + 2]};
-    glm::vec3 e1 = positions[v[1]] - positions[v[0]], e2 = positions[v[2]] - positions[v[0]];
-    glm::vec2 d1 = uvs[v[1]] - uvs[v[0]], d2 = uvs[v[2]] - uvs[v[0]];
-    float det = d1.x * d2.y - d2.x * d1.y;
-    if (!(std::abs(det) > 1e-20f) || !std::isfinite(det)) continue;  // degenerate UVs: this face adds nothing
-    // Solve [e1 e2] = [T B] [d1 d2]: T and B are dP/du and dP/dv; only their directions matter.
-    glm::vec3 faceT = (e1 * d2.y - e2 * d1.y) / det, faceB = (e2 * d1.x - e1 * d2.x) / det;
-    for (int k = 0; k < 3; ++k) {
-      const glm::vec3& n = normals[v[k]];
-      glm::vec3 pt = projectOnPlane(faceT, n), pb = projectOnPlane(faceB, n);
-      float angle = cornerAngle(positions[v[(k + 1) % 3]] - positions[v[k]], positions[v[(k + 2) % 3]] - positions[v[k]]);
-      if (usable(pt)) tangentSum[v[k]] += angle * glm::normalize(pt);
-      if (usable(pb)) bitangentSum[v[k]] += angle * glm::normalize(pb);
-    }
-  }
-  std::vector<glm::vec4> out(positions.size());
-  for (size_t i = 0; i < positions.size(); ++i) {
-    const glm::vec3 n = usable(normals[i]) ? glm::normalize(normals[i]) : glm::vec3(0.0f, 0.0f, 1.0f);
-    glm::vec3 t = projectOnPlane(tangentSum[i], n);  // Gram-Schmidt against the vertex normal
-    if (!usable(t)) {
-      out[i] = glm::vec4(anyPerpendicular(n), 1.0f);
-      continue;
-    }
-    t = glm::normalize(t);
-    // glTF's v runs down the image while a normal map's +Y (green) points up it: the bitangent is -dP/dv.
-    float w = glm::dot(glm::cross(n, t), bitangentSum[i]) > 0.0f ? -1.0f : 1.0f;
-    out[i] = glm::vec4(t, w);
+  std::vector<glm::vec3> normals = normalsIn.size() == positions.size() ? normalsIn : faceNormals(positions, tri);
+  for (glm::vec3& n : normals) n = usable(n) ? glm::normalize(n) : glm::vec3(0.0f, 0.0f, 1.0f);
+  const size_t corners = tri.size() / 3 * 3;
+  std::vector<glm::vec4> out(corners, glm::vec4(0.0f));
+  const std::vector<glm::vec2> noUvs;
+  MikkMesh mesh{positions, normals, uvs.size() == positions.size() ? uvs : noUvs, tri, out};
+  SMikkTSpaceInterface callbacks{};
+  callbacks.m_getNumFaces = faceCount;
+  callbacks.m_getNumVerticesOfFace = cornersOfFace;
+  callbacks.m_getPosition = position;
+  callbacks.m_getNormal = normal;
+  callbacks.m_getTexCoord = texCoord;
+  callbacks.m_setTSpaceBasic = setTangent;
+  SMikkTSpaceContext context{&callbacks, &mesh};
+  if (corners > 0) genTangSpaceDefault(&context);
+  // MikkTSpace leaves what it cannot build (degenerate or missing uvs) as it found it or not unit: some unit
+  // perpendicular of the corner's normal instead, sign +1.
+  for (size_t i = 0; i < corners; ++i) {
+    const glm::vec3& n = normals[tri[i]];
+    glm::vec3 t = projectOnPlane(glm::vec3(out[i]), n);
+    out[i] = usable(t) ? glm::vec4(glm::normalize(t), out[i].w < 0.0f ? -1.0f : 1.0f) : glm::vec4(anyPerpendicular(n), 1.0f);
   }
   return out;
 }

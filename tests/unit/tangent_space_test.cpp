@@ -1,5 +1,5 @@
-// Tangent generation: directions from the UV layout, handedness from the bitangent, orthogonality to the normal,
-// and degenerate UVs.
+// Tangent generation (MikkTSpace): directions from the UV layout, handedness from the bitangent, orthogonality to
+// the normal, per-corner frames across a mirrored seam, and degenerate UVs.
 #include "scene/tangent_space.h"
 
 #include <gtest/gtest.h>
@@ -37,9 +37,10 @@ TEST(TangentSpace, TangentsAreOrthogonalToTiltedNormalsAndUnit) {
   std::vector<glm::vec2> uv = {{0, 0}, {2, 0}, {2, 3}, {0, 3}};
   std::vector<glm::vec3> tilted(4, glm::normalize(glm::vec3(0.3f, 0.2f, 1.0f)));
   std::vector<glm::vec4> t = generateTangents(kQuad, tilted, uv, kTriangles);
+  ASSERT_EQ(t.size(), kTriangles.size()) << "one tangent per corner";
   for (size_t i = 0; i < t.size(); ++i) {
     EXPECT_NEAR(glm::length(glm::vec3(t[i])), 1.0f, 1e-5f);
-    EXPECT_NEAR(glm::dot(glm::vec3(t[i]), tilted[i]), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::dot(glm::vec3(t[i]), tilted[kTriangles[i]]), 0.0f, 1e-5f);
     EXPECT_GT(t[i].x, 0.9f);
   }
 }
@@ -54,4 +55,20 @@ TEST(TangentSpace, DegenerateOrMissingUvsGiveSomePerpendicular) {
     }
   for (glm::vec3 n : {glm::vec3(0, 0, 1), glm::vec3(0, 0, -1), glm::normalize(glm::vec3(1, -2, 0.1f))})
     EXPECT_NEAR(glm::dot(anyPerpendicular(n), n), 0.0f, 1e-6f);
+}
+
+// Two quads side by side sharing the seam's vertices (x = 1), the right one's texture mirrored in u (u runs 0 to
+// 0.5 and back): the shared vertices' corners take each side's frame, +x on the left and -x on the right, with
+// opposite handedness, as MikkTSpace splits them (an average across the seam would be perpendicular to both).
+TEST(TangentSpace, AMirroredSeamGivesEachSideItsOwnFrame) {
+  const std::vector<glm::vec3> p = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
+  const std::vector<glm::vec2> uv = {{0, 1}, {0.5f, 1}, {0, 1}, {0, 0}, {0.5f, 0}, {0, 0}};
+  const std::vector<uint32_t> tri = {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4};
+  std::vector<glm::vec4> t = generateTangents(p, std::vector<glm::vec3>(6, glm::vec3(0, 0, 1)), uv, tri);
+  ASSERT_EQ(t.size(), tri.size());
+  for (size_t i = 0; i < t.size(); ++i) {
+    bool right = i >= 6;
+    EXPECT_NEAR(t[i].x, right ? -1.0f : 1.0f, 1e-5f) << "corner " << i << " (vertex " << tri[i] << ")";
+    EXPECT_EQ(t[i].w, right ? -1.0f : 1.0f) << "corner " << i;
+  }
 }
