@@ -86,8 +86,9 @@ void makeUnlit(Material& m) {
   m.sheenColor = glm::vec3(0.0f);
 }
 
-Material convertMaterial(const tinygltf::Material& m, int index, std::vector<Texture>& textures,
-                         std::vector<std::string>& warnings) {
+// `textures`: the file's; textures baked for the material (specular-glossiness) go to `baked`.
+Material convertMaterial(const tinygltf::Material& m, int index, const std::vector<Texture>& textures,
+                         std::vector<Texture>& baked, std::vector<std::string>& warnings) {
   Material out;
   const auto& pbr = m.pbrMetallicRoughness;
   std::string name = "material " + std::to_string(index);
@@ -119,7 +120,7 @@ Material convertMaterial(const tinygltf::Material& m, int index, std::vector<Tex
   if (!std::isfinite(out.alphaCutoff)) throw Error(name + ": alphaCutoff is not finite");
   applyMaterialExtensions(m, out, textures, name, warnings);
   if (auto sg = m.extensions.find("KHR_materials_pbrSpecularGlossiness"); sg != m.extensions.end() && sg->second.IsObject())
-    applySpecularGlossiness(sg->second, out, textures, name, warnings);
+    applySpecularGlossiness(sg->second, out, textures, baked, name, warnings);
   if (m.extensions.count("KHR_materials_unlit")) makeUnlit(out);
   return out;
 }
@@ -560,8 +561,10 @@ Scene flattenModel(const tinygltf::Model& model, const std::string& path, const 
   Scene scene;
   scene.path = path;
   scene.textures = convertTextures(model, scene.warnings);
+  std::vector<Texture> baked;  // after the file's own, so that no material can refer to them by index
   for (size_t i = 0; i < model.materials.size(); ++i)
-    scene.materials.push_back(convertMaterial(model.materials[i], static_cast<int>(i), scene.textures, scene.warnings));
+    scene.materials.push_back(convertMaterial(model.materials[i], static_cast<int>(i), scene.textures, baked, scene.warnings));
+  scene.textures.insert(scene.textures.end(), std::make_move_iterator(baked.begin()), std::make_move_iterator(baked.end()));
   Material fallback;  // glTF default material: white, fully metallic and rough (Lambert here)
   scene.materials.push_back(fallback);
   scene.warnings.insert(scene.warnings.end(), extensionWarnings.begin(), extensionWarnings.end());

@@ -77,8 +77,8 @@ MetalRoughSample metalRoughFromSpecGloss(glm::vec3 diffuse, glm::vec3 specular, 
   return {base, m, std::clamp(1.0f - glossiness, 0.0f, 1.0f)};
 }
 
-void applySpecularGlossiness(const tinygltf::Value& ext, Material& out, std::vector<Texture>& textures, const std::string& name,
-                             std::vector<std::string>& warnings) {
+void applySpecularGlossiness(const tinygltf::Value& ext, Material& out, const std::vector<Texture>& textures,
+                             std::vector<Texture>& baked, const std::string& name, std::vector<std::string>& warnings) {
   const std::string what = name + " KHR_materials_pbrSpecularGlossiness";
   std::vector<double> d = numbers(ext, "diffuseFactor", {1, 1, 1, 1}), s = numbers(ext, "specularFactor", {1, 1, 1});
   double g = ext.Has("glossinessFactor") && ext.Get("glossinessFactor").IsNumber() ? ext.Get("glossinessFactor").GetNumberAsDouble() : 1.0;
@@ -102,8 +102,9 @@ void applySpecularGlossiness(const tinygltf::Value& ext, Material& out, std::vec
     out.baseColorTexture = {};
     return;
   }
-  // Bake: every texel of the source texture's grid, both textures looked up at its centre.
-  const TextureRef& source = diffuse.present() ? diffuse : specGloss;
+  // Bake: every texel of the finer source grid, both textures looked up at its centre.
+  auto texels = [&](const TextureRef& r) { return r.present() ? uint64_t(textures[r.texture].width) * textures[r.texture].height : 0u; };
+  const TextureRef& source = texels(diffuse) >= texels(specGloss) ? diffuse : specGloss;
   const Texture& grid = textures[source.texture];
   Texture base, metalRough;
   for (Texture* t : {&base, &metalRough}) {
@@ -124,10 +125,10 @@ void applySpecularGlossiness(const tinygltf::Value& ext, Material& out, std::vec
       metalRough.texels[i] = packRgba(0, toByte(m.roughness), toByte(m.metallic), 255);
     }
   TextureRef baseRef = source, metalRoughRef = source;
-  baseRef.texture = int(textures.size());
-  metalRoughRef.texture = int(textures.size()) + 1;
-  textures.push_back(std::move(base));
-  textures.push_back(std::move(metalRough));
+  baseRef.texture = int(textures.size() + baked.size());
+  metalRoughRef.texture = baseRef.texture + 1;
+  baked.push_back(std::move(base));
+  baked.push_back(std::move(metalRough));
   out.baseColor = glm::vec3(1.0f), out.alpha = 1.0f, out.metallic = 1.0f, out.roughness = 1.0f;
   out.baseColorTexture = baseRef;
   out.metallicRoughnessTexture = metalRoughRef;

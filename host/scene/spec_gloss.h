@@ -27,10 +27,12 @@ struct MetalRoughSample {
 MetalRoughSample metalRoughFromSpecGloss(glm::vec3 diffuse, glm::vec3 specular, float glossiness);
 
 // Replaces `out`'s base colour, metallic, roughness and alpha by the extension's (`ext`, its JSON value). With a
-// diffuse or specularGlossiness texture, two textures are baked into `textures` at the resolution of the diffuse
-// one (else the other), sampling both at the same uv: they must share a texture coordinate set and transform,
-// or the specularGlossiness texture is ignored with a warning. `name` names the material in messages.
-void applySpecularGlossiness(const tinygltf::Value& ext, Material& out, std::vector<Texture>& textures, const std::string& name,
-                             std::vector<std::string>& warnings);
+// diffuse or specularGlossiness texture, two textures are baked into `baked` at the resolution of the larger of
+// the two, sampling both at the same uv: they must share a texture coordinate set and transform, or the
+// specularGlossiness texture is ignored with a warning. `textures` are the file's (references are checked against
+// them alone); a baked texture's index is textures.size() + its place in `baked`, where the loader appends them.
+// `name` names the material in messages.
+void applySpecularGlossiness(const tinygltf::Value& ext, Material& out, const std::vector<Texture>& textures,
+                             std::vector<Texture>& baked, const std::string& name, std::vector<std::string>& warnings);
 
 }  // namespace vkmc

@@ -77,3 +77,24 @@ TEST(SpecGloss, TexturesAreBakedPerTexel) {
   EXPECT_NEAR(rightMr.b, 1.0f, 0.01f);
   EXPECT_NEAR(rightMr.g, 1.0f - 128.0f / 255.0f, 0.01f);
 }
+
+TEST(SpecGloss, BakedAtTheFinerGridAndNeverReachableByIndex) {
+  // A 1 x 1 diffuse texture and a 4 x 1 specular-glossiness one: the bake keeps the 4 texels of gloss detail.
+  // A second material that points one past the file's textures is refused, though baked textures sit there.
+  auto dir = test::makeTempDir("specgloss_grid");
+  std::string diffuse = test::writePng(dir, "diffuse", 1, 1, {255, 255, 255, 255});
+  std::string sg = test::writePng(dir, "sg", 4, 1, {10, 10, 10, 255, 10, 10, 10, 0, 10, 10, 10, 255, 10, 10, 10, 0});
+  std::string material = R"({"extensions":{"KHR_materials_pbrSpecularGlossiness":{"diffuseTexture":{"index":0},
+    "specularGlossinessTexture":{"index":1}}}})";
+  std::string extra = std::string(kRequired) + R"(,"images":[{"uri":")" + diffuse + R"("},{"uri":")" + sg +
+                      R"("}],"samplers":[{"magFilter":9728,"minFilter":9728}],"textures":[{"source":0,"sampler":0},{"source":1,"sampler":0}])";
+  Scene s = loadGltf(test::writeQuadsGltf(dir, "grid", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
+  const Texture& mr = s.textures[s.materials[0].metallicRoughnessTexture.texture];
+  ASSERT_EQ(mr.width, 4u);
+  EXPECT_NEAR(sampleTexture(mr, glm::vec2(0.125f, 0.5f), false).g, 0.0f, 0.01f);  // glossiness 1
+  EXPECT_NEAR(sampleTexture(mr, glm::vec2(0.375f, 0.5f), false).g, 1.0f, 0.01f);  // glossiness 0
+  std::string twoMaterials = material + R"(,{"pbrMetallicRoughness":{"baseColorTexture":{"index":2}}})";
+  std::string error = test::loadError(test::writeQuadsGltf(
+      dir, "past", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}, {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}, 1}}, twoMaterials, extra));
+  EXPECT_NE(error.find("refers to missing texture 2"), std::string::npos) << error;
+}
