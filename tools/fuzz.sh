@@ -10,12 +10,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
-command -v clang++ >/dev/null || { echo "fuzz: clang++ not found, skipped"; exit 77; }
+command -v clang++ >/dev/null && command -v clang >/dev/null || { echo "fuzz: clang or clang++ not found, skipped"; exit 77; }
 echo 'extern "C" int LLVMFuzzerTestOneInput(const char*, unsigned long) { return 0; }' > /tmp/vkmc-fuzz-probe.cpp
 clang++ -fsanitize=fuzzer /tmp/vkmc-fuzz-probe.cpp -o /tmp/vkmc-fuzz-probe 2>/dev/null ||
   { echo "fuzz: clang's libFuzzer runtime (libclang-rt-dev) not found, skipped"; exit 77; }
 out=build/fuzz
-cmake -S tools/fuzz -B "$out" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake -S tools/fuzz -B "$out" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$out" -j"$(nproc)" >/dev/null
 [[ $seconds == build ]] && exit 0
 mkdir -p "$out/corpus" "$out/seeds" "$out/findings"

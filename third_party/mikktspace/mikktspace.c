@@ -1457,7 +1457,7 @@ static void QuickSort(int* pSortBuffer, int iLeft, int iRight, unsigned int uSee
 
 	// Random
 	unsigned int t=uSeed&31;
-	t=(uSeed<<t)|(uSeed>>(32-t));
+	t=(uSeed<<t)|(uSeed>>((32-t)&31));  /* vkmc: was >>(32-t), undefined for t = 0 */
 	uSeed=uSeed+t+3;
 	// Random end
 
@@ -1664,7 +1664,7 @@ static void QuickSortEdges(SEdge * pSortBuffer, int iLeft, int iRight, const int
 
 	// Random
 	t=uSeed&31;
-	t=(uSeed<<t)|(uSeed>>(32-t));
+	t=(uSeed<<t)|(uSeed>>((32-t)&31));  /* vkmc: was >>(32-t), undefined for t = 0 */
 	uSeed=uSeed+t+3;
 	// Random end
 
