@@ -3,7 +3,7 @@
 
 Run from the project root: python3 tools/make_scenes.py. The outputs are committed; vkmc never runs this.
 """
-import base64, json, math, os, struct
+import base64, json, math, os, random, struct, zlib
 
 def normalize(v):
     l = math.sqrt(sum(c * c for c in v))
@@ -53,23 +53,34 @@ class Builder:
         self.accessors.append(acc)
         return len(self.accessors) - 1
 
-    def mesh(self, name, triangles, material):
-        """triangles: list of (p0, p1, p2), counter-clockwise seen from the front."""
-        pos, nrm, idx = [], [], []
-        for tri in triangles:
+    def mesh(self, name, triangles, material, uvs=None):
+        """triangles: list of (p0, p1, p2), counter-clockwise seen from the front; uvs: one (uv0, uv1, uv2) each."""
+        pos, nrm, idx, tex = [], [], [], []
+        for k, tri in enumerate(triangles):
             n = normalize(cross(sub(tri[1], tri[0]), sub(tri[2], tri[0])))
-            for p in tri:
+            for c, p in enumerate(tri):
                 idx.append(len(pos) // 3)
                 pos += p
                 nrm += n
+                if uvs:
+                    tex += uvs[k][c]
         lo = [min(pos[i::3]) for i in range(3)]
         hi = [max(pos[i::3]) for i in range(3)]
         pa = self._accessor(pos, "f", len(pos) // 3, "VEC3", 5126, (lo, hi), 34962)
         na = self._accessor(nrm, "f", len(nrm) // 3, "VEC3", 5126, None, 34962)
         ia = self._accessor(idx, "I", len(idx), "SCALAR", 5125, None, 34963)
-        self.meshes.append({"name": name, "primitives": [{"attributes": {"POSITION": pa, "NORMAL": na}, "indices": ia,
+        attributes = {"POSITION": pa, "NORMAL": na}
+        if uvs:
+            attributes["TEXCOORD_0"] = self._accessor(tex, "f", len(tex) // 2, "VEC2", 5126, None, 34962)
+        self.meshes.append({"name": name, "primitives": [{"attributes": attributes, "indices": ia,
                                                           "material": material, "mode": 4}]})
         self.nodes.append({"name": name, "mesh": len(self.meshes) - 1})
+
+    def texture(self, png_bytes):
+        """A PNG texture (embedded as a data URI) with the default sampler (bilinear, REPEAT); returns its index."""
+        self.images = getattr(self, "images", []) + [{"uri": "data:image/png;base64," + base64.b64encode(png_bytes).decode()}]
+        self.textures = getattr(self, "textures", []) + [{"source": len(self.images) - 1}]
+        return len(self.textures) - 1
 
     def camera(self, name, eye, target, yfov_deg, aspect=1.0):
         f = normalize(sub(target, eye))
@@ -97,6 +108,8 @@ class Builder:
                             "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(self.blob)).decode()}]}
         if self.cameras:
             doc["cameras"] = self.cameras
+        if getattr(self, "textures", None):
+            doc["images"], doc["textures"] = self.images, self.textures
         if extensions_used:
             doc["extensionsUsed"] = list(extensions_used)
         with open(path, "w") as f:
@@ -292,6 +305,45 @@ def tiny_light(path):
     b.ortho_camera_down("camera", [0.0, 0.5, 0.0], 1.0)
     b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
 
+def png_rgba(width, height, pixel):
+    """An 8-bit RGBA PNG; pixel(x, y) -> (r, g, b, a) in 0-255, y = 0 the top row."""
+    rows = b"".join(b"\0" + bytes(c for x in range(width) for c in pixel(x, y)) for y in range(height))
+    chunk = lambda kind, data: struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
+
+def leaves(path):
+    """Alpha testing under load: a canopy of 12 x 12 tilted leaf cards (alphaMode MASK on a 64 x 64 texture whose
+    alpha cuts out a leaf shape: about half of each card is a hole) between a white floor and a ceiling lamp.
+    Every camera, bounce and shadow ray that crosses the canopy runs the alpha test (a texture lookup) in the
+    walk; `vkmc bench-kernels scenes/textures/leaves.gltf` measures it."""
+    def leaf(x, y):
+        u, v = (x + 0.5) / 64 - 0.5, (y + 0.5) / 64 - 0.5
+        inside = (u / 0.48) ** 2 + (v / 0.3) ** 2 < 1.0 and abs(v) > 0.02
+        return (40 + 3 * x, 120 + y, 30, 255 if inside else 0)
+    b = Builder()
+    card = b.material("leaf", (1.0, 1.0, 1.0), double_sided=True)
+    b.materials[card]["pbrMetallicRoughness"]["baseColorTexture"] = {"index": b.texture(png_rgba(64, 64, leaf))}
+    b.materials[card]["alphaMode"] = "MASK"
+    floor = b.material("floor", (0.8, 0.8, 0.8))
+    lamp = b.material("lamp", (0, 0, 0), emission=(1.0, 1.0, 1.0), strength=8.0)
+    b.mesh("floor", quad([-2, 0, -2], [-2, 0, 2], [2, 0, 2], [2, 0, -2]), floor)
+    b.mesh("lamp", quad([-0.6, 2.4, -0.6], [0.6, 2.4, -0.6], [0.6, 2.4, 0.6], [-0.6, 2.4, 0.6]), lamp)
+    rng = random.Random(7)
+    tris, uvs = [], []
+    for i in range(12):
+        for j in range(12):
+            cx, cz, cy = -1.65 + 0.3 * i, -1.65 + 0.3 * j, 1.0 + 0.5 * rng.random()
+            a, t, h = rng.uniform(0, math.pi), rng.uniform(-0.6, 0.6), 0.22
+            ex, ez = [h * math.cos(a), 0, h * math.sin(a)], [-h * math.sin(a) * math.cos(t), h * math.sin(t), h * math.cos(a) * math.cos(t)]
+            c = [cx, cy, cz]
+            p = [[c[k] + sx * ex[k] + sz * ez[k] for k in range(3)] for sx, sz in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+            tris += quad(p[0], p[1], p[2], p[3])
+            uvs += [([0, 1], [1, 1], [1, 0]), ([0, 1], [1, 0], [0, 0])]
+    b.mesh("leaves", tris, card, uvs)
+    b.camera("camera", [0.0, 3.2, 3.4], [0.0, 0.6, 0.0], 45.0)
+    b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
+
 if __name__ == "__main__":
     os.makedirs("scenes", exist_ok=True)
     cornell_box("scenes/cornell_box.gltf")
@@ -307,4 +359,6 @@ if __name__ == "__main__":
     material_furnace("scenes/materials/mirror_furnace.gltf", "mirror")
     caustic("scenes/materials/caustic.gltf")
     glass_bulb("scenes/materials/glass_bulb.gltf")
+    os.makedirs("scenes/textures", exist_ok=True)
+    leaves("scenes/textures/leaves.gltf")
     print("wrote scenes/cornell_box.gltf, furnace.gltf, furnace_stiff.gltf, veach_mis.gltf, many_lights.gltf")

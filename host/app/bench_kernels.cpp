@@ -8,6 +8,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "analysis/summary_statistics.h"
 #include "app/render_job.h"
 #include "bvh/bvh.h"
 #include "error.h"
@@ -21,13 +22,6 @@
 
 namespace vkmc {
 namespace {
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 std::vector<std::string> defaultScenes() {
   std::vector<std::string> scenes;

@@ -19,5 +19,6 @@ Command addInfoCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);  // the error-against-time study
 Command addCompareCommand(CLI::App& app);
 Command addBenchKernelsCommand(CLI::App& app);
+Command addBenchTexturesCommand(CLI::App& app);
 
 }  // namespace vkmc

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "analysis/error_metrics.h"
+#include "analysis/summary_statistics.h"
 #include "analysis/plots.h"
 #include "app/render_job.h"
 #include "error.h"
@@ -38,12 +39,6 @@ std::string readFile(const std::string& path) {
 uint64_t fnv1a(const std::string& bytes, uint64_t h = 1469598103934665603ull) {
   for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
   return h;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
 std::string cacheDir() {

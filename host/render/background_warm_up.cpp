@@ -22,7 +22,7 @@ void warmOnSecondDevice(const std::vector<KernelSource>& kernels) {
   vk::Buffer storage(ctx, kBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
   std::memset(storage.mapped(), 0, kBytes);
   for (uint32_t b = 0; b < BINDING_COUNT; ++b)
-    if (!vk::isTexelBinding(b)) layout.bindStorage(b, storage);
+    if (!vk::isTexelBinding(b) && !vk::isImageBinding(b)) layout.bindStorage(b, storage);
   std::vector<vk::Buffer> views;
   for (uint32_t binding : gpu::kTexelBindings) {
     views.emplace_back(ctx, kBytes, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::HostVisible);
@@ -30,6 +30,11 @@ void warmOnSecondDevice(const std::vector<KernelSource>& kernels) {
     views.back().createView(sceneTexelFormat(binding));
     layout.bindTexel(binding, views.back());
   }
+  // The renderer's image formats and samplers: llvmpipe keys variants on them too.
+  const uint32_t white = 0xffffffffu;
+  vk::ArrayImage pages(ctx, 1, 1, 1, &white);
+  vk::Sampler bilinear(ctx, VK_FILTER_LINEAR);
+  bindTexturePages(layout, pages, bilinear);
   gpu::PushConstants pc{};
   for (const KernelSource& k : kernels) {
     vk::Kernel kernel(ctx, layout, k.name, k.spirv, k.specs);

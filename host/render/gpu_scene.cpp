@@ -16,6 +16,7 @@
 #include "../shaders/shared/punctual_light.h"
 #include "../shaders/shared/sampling.h"
 #include "../shaders/shared/scene_layout.h"
+#include "../shaders/shared/texture_layout.h"
 #include "error.h"
 #include "render/alias_table.h"
 #include "render/gpu_textures.h"
@@ -241,7 +242,8 @@ uint64_t maxSceneTriangles(const vk::Context& ctx) {
 LoadLimits deviceLoadLimits(const vk::Context& ctx) {
   LoadLimits limits;
   limits.maxTriangles = maxSceneTriangles(ctx);
-  limits.maxTextureTexels = std::min<uint64_t>(limits.maxTextureTexels, ctx.properties().limits.maxTexelBufferElements);
+  // A texture and its one-texel gutters must fit a page of the texture pages' array image (texture_atlas.h).
+  limits.maxTextureSide = std::min<uint32_t>(limits.maxTextureSide, ctx.properties().limits.maxImageDimension2D - 2);
   return limits;
 }
 
@@ -312,13 +314,15 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   lights_ = makeTexelBuffer(ctx, lights.entries.data(), lights.entries.size() * 16, BINDING_LIGHTS, "lights");
   // Textures and attributes only where a material reads them (SceneFeatures::textures); one texel otherwise.
   bool textured = scanFeatures(scene).textures;
-  PackedTextures packed = textured ? packTextures(scene) : PackedTextures{};
-  if (packed.texels.empty()) packed.texels.push_back(0u);
+  const VkPhysicalDeviceLimits& limits = ctx.properties().limits;
+  const std::vector<Texture> none;
+  PackedTextures packed = packTextures(textured ? scene.textures : none, limits.maxImageDimension2D, limits.maxImageArrayLayers);
   if (packed.infos.empty()) packed.infos.emplace_back(0u);
   std::vector<glm::uvec4> attributes = textured ? packTriangleAttributes(scene, bvh.triangleOrder) : std::vector<glm::uvec4>{};
   if (attributes.empty()) attributes.emplace_back(0u);
-  textureTexels_ =
-      makeTexelBuffer(ctx, packed.texels.data(), packed.texels.size() * 4, BINDING_TEXTURE_TEXELS, "texture texels", 4);
+  const TextureAtlas& atlas = packed.atlas;
+  texturePages_ = std::make_unique<vk::ArrayImage>(ctx, atlas.pageWidth, atlas.pageHeight, atlas.layers, atlas.texels.data());
+  bilinear_ = std::make_unique<vk::Sampler>(ctx, VK_FILTER_LINEAR);
   textures_ = makeTexelBuffer(ctx, packed.infos.data(), packed.infos.size() * 16, BINDING_TEXTURES, "textures");
   layerAlbedo_ = makeTexelBuffer(ctx, gpu::kLayerAlbedo, sizeof(gpu::kLayerAlbedo), BINDING_LAYER_ALBEDO, "layer albedo", 4);
   triangleAttributes_ =
@@ -338,8 +342,13 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
       {"materials", mats.size() * sizeof(gpu::Material)},
       {"punctual_lights", lights.punctual.size() * sizeof(gpu::PunctualLight)},
       {"environment", lights.environment.size() * sizeof(glm::vec4) + lights.environmentTable.size() * sizeof(float)},
-      {"texture_texels", packed.texels.size() * 4},
+      {"texture_pages", atlas.texels.size() * 4},
       {"triangle_attributes", attributes.size() * 16}};
+}
+
+void bindTexturePages(vk::KernelLayout& layout, const vk::ArrayImage& pages, const vk::Sampler& bilinear) {
+  layout.bindSampledImage(BINDING_TEXTURE_PAGES, gpu::kTexturePageUnorm, pages.unormView(), bilinear.handle());
+  layout.bindSampledImage(BINDING_TEXTURE_PAGES, gpu::kTexturePageSrgb, pages.srgbView(), bilinear.handle());
 }
 
 void GpuScene::bindTo(vk::KernelLayout& layout, bool binaryBvh) const {
@@ -349,8 +358,8 @@ void GpuScene::bindTo(vk::KernelLayout& layout, bool binaryBvh) const {
   layout.bindTexel(BINDING_BVH_NODES, binaryBvh ? binaryBvhNodes_ : bvhNodes_);
   layout.bindTexel(BINDING_LIGHTS, lights_);
   layout.bindStorage(BINDING_MATERIALS, materials_);
-  layout.bindTexel(BINDING_TEXTURE_TEXELS, textureTexels_);
   layout.bindTexel(BINDING_LAYER_ALBEDO, layerAlbedo_);
+  bindTexturePages(layout, *texturePages_, *bilinear_);
   layout.bindTexel(BINDING_TEXTURES, textures_);
   layout.bindTexel(BINDING_TRIANGLE_ATTRIBUTES, triangleAttributes_);
   layout.bindStorage(BINDING_PUNCTUAL_LIGHTS, punctualLights_);

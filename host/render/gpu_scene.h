@@ -1,6 +1,7 @@
 // The scene on the device: reordered triangles, per-triangle info, BVH nodes, light table, materials.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "scene/scene.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
+#include "vk/image.h"
 #include "vk/kernel.h"
 
 namespace vkmc {
@@ -45,6 +47,9 @@ double environmentPower(const EnvironmentMap& environment, double sceneRadius);
 // The environment's sampling table (BINDING_ENVIRONMENT_DISTRIBUTION; shaders/shared/environment_map.h).
 std::vector<float> environmentDistribution(const EnvironmentMap& environment);
 
+// The texture pages' views (texture_layout.h kTexturePage*) to BINDING_TEXTURE_PAGES.
+void bindTexturePages(vk::KernelLayout& layout, const vk::ArrayImage& pages, const vk::Sampler& bilinear);
+
 class GpuScene {
  public:
   // uniformLightSelection: every emissive triangle equally likely; otherwise in proportion to emitted power.
@@ -64,7 +69,9 @@ class GpuScene {
   GpuSceneInfo info_;
   vk::Buffer triangles_, triangleInfo_, bvhNodes_, binaryBvhNodes_, lights_, materials_, punctualLights_, environment_,
       environmentDistribution_;
-  vk::Buffer textureTexels_, textures_, triangleAttributes_, layerAlbedo_;
+  vk::Buffer textures_, triangleAttributes_, layerAlbedo_;
+  std::unique_ptr<vk::ArrayImage> texturePages_;
+  std::unique_ptr<vk::Sampler> bilinear_;
 };
 
 }  // namespace vkmc

@@ -1,19 +1,22 @@
 // Texture and attribute packing.
 #include "render/gpu_textures.h"
 
+#include <algorithm>
+
 #include "../shaders/shared/texture_layout.h"
 #include "error.h"
 #include "scene/texture_sampler.h"
 
 namespace vkmc {
 
-PackedTextures packTextures(const Scene& scene) {
+PackedTextures packTextures(const std::vector<Texture>& textures, uint32_t maxPageSide, uint32_t maxPages) {
   PackedTextures out;
-  for (const Texture& t : scene.textures) {
-    if (out.texels.size() + t.texels.size() > 0xffffffffu) throw Error("textures too big: more than 2^32 texels");
-    out.infos.push_back(gpu::encodeTextureInfo(static_cast<uint32_t>(out.texels.size()), t.width, t.height, wrapCode(t.wrapS),
+  out.atlas = packTextureAtlas(textures, maxPageSide, std::min<uint32_t>(maxPages, 0xffffu));  // 16 bits in the info
+  for (size_t i = 0; i < textures.size(); ++i) {
+    const Texture& t = textures[i];
+    const AtlasPlacement& p = out.atlas.placements[i];
+    out.infos.push_back(gpu::encodeTextureInfo(p.x, p.y, p.layer, t.width, t.height, out.atlas.pageWidth, wrapCode(t.wrapS),
                                                wrapCode(t.wrapT), t.nearest));
-    out.texels.insert(out.texels.end(), t.texels.begin(), t.texels.end());
   }
   return out;
 }

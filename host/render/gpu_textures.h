@@ -6,15 +6,17 @@
 #include <vector>
 
 #include "../shaders/shared/layout.h"
+#include "render/texture_atlas.h"
 #include "scene/scene.h"
 
 namespace vkmc {
 
 struct PackedTextures {
-  std::vector<uint32_t> texels;   // BINDING_TEXTURE_TEXELS
-  std::vector<glm::uvec4> infos;  // BINDING_TEXTURES, one per Scene::textures entry
+  TextureAtlas atlas;             // BINDING_TEXTURE_PAGES (render/texture_atlas.h)
+  std::vector<glm::uvec4> infos;  // BINDING_TEXTURES, one per texture
 };
-PackedTextures packTextures(const Scene& scene);
+// maxPageSide, maxPages: the device's largest 2D image side and array layers.
+PackedTextures packTextures(const std::vector<Texture>& textures, uint32_t maxPageSide, uint32_t maxPages);
 
 // kAttributeTexels per triangle, in the given triangle order (the BVH's).
 std::vector<glm::uvec4> packTriangleAttributes(const Scene& scene, const std::vector<uint32_t>& order);

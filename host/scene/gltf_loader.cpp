@@ -507,6 +507,7 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
   std::string compressionNote;
   ImageDecoder imageDecoder;
   imageDecoder.limits.maxTotalTexels = limits.maxTextureTexels;
+  imageDecoder.limits.maxDimension = std::min(imageDecoder.limits.maxDimension, limits.maxTextureSide);
   try {
     std::string_view json =
         binary ? glbJsonChunk(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());

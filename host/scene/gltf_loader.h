@@ -16,6 +16,8 @@ struct LoadLimits {
   uint64_t maxTriangles = uint64_t(1) << 25;
   // Decoded texels of all images together (4 bytes each on the device); images past it are ignored with a warning.
   uint64_t maxTextureTexels = uint64_t(1) << 28;
+  // An image's side; larger ones are ignored with a warning. The renderer lowers it to what a texture page holds.
+  uint32_t maxTextureSide = 16384;
   InputLimits input;
 };
 

@@ -2,6 +2,7 @@
 #include "vk/device_requirements.h"
 
 #include "../shaders/shared/layout.h"
+#include "../shaders/shared/texture_layout.h"
 
 namespace vkmc::vk {
 
@@ -27,8 +28,14 @@ std::vector<std::string> missingRequirements(const DeviceCapabilities& caps) {
   for (uint32_t b : gpu::kTexelBindings) texel += b < BINDING_COUNT ? 1u : 0u;
   if (caps.maxStorageImagesPerStage < texel)
     missing.push_back(std::to_string(texel) + " storage texel buffers per shader stage");
-  if (caps.maxStorageBuffersPerStage < BINDING_COUNT - texel)
-    missing.push_back(std::to_string(BINDING_COUNT - texel) + " storage buffers per shader stage");
+  if (caps.maxStorageBuffersPerStage < BINDING_COUNT - texel - 1)
+    missing.push_back(std::to_string(BINDING_COUNT - texel - 1) + " storage buffers per shader stage");
+  if (caps.maxSampledImagesPerStage < gpu::kTexturePageViews || caps.maxSamplersPerStage < gpu::kTexturePageViews)
+    missing.push_back(std::to_string(gpu::kTexturePageViews) + " sampled images and samplers per shader stage");
+  const VkFormatFeatureFlags sampled = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+  if ((caps.unormImageFeatures & (sampled | VK_FORMAT_FEATURE_TRANSFER_DST_BIT)) != (sampled | VK_FORMAT_FEATURE_TRANSFER_DST_BIT) ||
+      (caps.srgbImageFeatures & sampled) != sampled)
+    missing.push_back("linearly filtered R8G8B8A8 UNORM and SRGB sampled images");
   return missing;
 }
 
@@ -50,6 +57,13 @@ DeviceCapabilities queryCapabilities(VkPhysicalDevice device) {
   caps.maxPushConstantsSize = l.maxPushConstantsSize;
   caps.maxStorageBuffersPerStage = l.maxPerStageDescriptorStorageBuffers;
   caps.maxStorageImagesPerStage = l.maxPerStageDescriptorStorageImages;
+  caps.maxSampledImagesPerStage = l.maxPerStageDescriptorSampledImages;
+  caps.maxSamplersPerStage = l.maxPerStageDescriptorSamplers;
+  VkFormatProperties fp;
+  vkGetPhysicalDeviceFormatProperties(device, VK_FORMAT_R8G8B8A8_UNORM, &fp);
+  caps.unormImageFeatures = fp.optimalTilingFeatures;
+  vkGetPhysicalDeviceFormatProperties(device, VK_FORMAT_R8G8B8A8_SRGB, &fp);
+  caps.srgbImageFeatures = fp.optimalTilingFeatures;
   return caps;
 }
 

@@ -1,6 +1,6 @@
 // What vkmc's kernels need of a Vulkan device, checked once when the device is opened so that a device lacking
 // one stops with a line naming it (not a driver error at the first pipeline): subgroup operations, the storage
-// texel buffer formats, workgroup size, push constants and descriptors per stage.
+// texel buffer formats, the texture pages' image formats, workgroup size, push constants and descriptors per stage.
 #pragma once
 #include <vulkan/vulkan.h>
 
@@ -17,6 +17,8 @@ struct DeviceCapabilities {
   uint32_t maxWorkgroupSizeX = 0, maxWorkgroupInvocations = 0;
   uint32_t maxPushConstantsSize = 0;
   uint32_t maxStorageBuffersPerStage = 0, maxStorageImagesPerStage = 0;  // texel buffers count as storage images
+  uint32_t maxSampledImagesPerStage = 0, maxSamplersPerStage = 0;
+  VkFormatFeatureFlags unormImageFeatures = 0, srgbImageFeatures = 0;  // optimal tiling, R8G8B8A8 UNORM / SRGB
 };
 
 // The formats of the scene's storage texel buffers (gpu_scene.cpp's qualifiers: rgba32f, rgba32ui, r32ui).

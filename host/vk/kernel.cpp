@@ -4,6 +4,7 @@
 #include <array>
 
 #include "../shaders/shared/layout.h"
+#include "../shaders/shared/texture_layout.h"
 #include "error.h"
 
 namespace vkmc::vk {
@@ -14,13 +15,17 @@ bool isTexelBinding(uint32_t b) {
   return false;
 }
 
+bool isImageBinding(uint32_t b) { return b == BINDING_TEXTURE_PAGES; }
+
 KernelLayout::KernelLayout(Context& ctx) : ctx_(ctx) {
   std::vector<VkDescriptorSetLayoutBinding> bindings;
   for (uint32_t b = 0; b < BINDING_COUNT; ++b) {
     VkDescriptorSetLayoutBinding lb{};
     lb.binding = b;
-    lb.descriptorType = isTexelBinding(b) ? VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    lb.descriptorCount = 1;
+    lb.descriptorType = isImageBinding(b)   ? VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER
+                        : isTexelBinding(b) ? VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER
+                                            : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    lb.descriptorCount = isImageBinding(b) ? gpu::kTexturePageViews : 1;
     lb.stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
     bindings.push_back(lb);
   }
@@ -37,8 +42,9 @@ KernelLayout::KernelLayout(Context& ctx) : ctx_(ctx) {
   pci.pPushConstantRanges = &range;
   check(vkCreatePipelineLayout(ctx.device(), &pci, nullptr, &pipelineLayout_), "vkCreatePipelineLayout");
 
-  std::array<VkDescriptorPoolSize, 2> sizes{{{VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, uint32_t(std::size(gpu::kTexelBindings))},
-                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT}}};
+  std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, uint32_t(std::size(gpu::kTexelBindings))},
+                                             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, BINDING_COUNT},
+                                             {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, gpu::kTexturePageViews}}};
   VkDescriptorPoolCreateInfo dpci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   dpci.maxSets = 1;
   dpci.poolSizeCount = static_cast<uint32_t>(sizes.size());
@@ -49,6 +55,11 @@ KernelLayout::KernelLayout(Context& ctx) : ctx_(ctx) {
   ai.descriptorSetCount = 1;
   ai.pSetLayouts = &setLayout_;
   check(vkAllocateDescriptorSets(ctx.device(), &ai, &set_), "vkAllocateDescriptorSets");
+  const uint32_t white = 0xffffffffu;
+  placeholderImage_ = std::make_unique<ArrayImage>(ctx, 1, 1, 1, &white);
+  placeholderSampler_ = std::make_unique<Sampler>(ctx, VK_FILTER_LINEAR);
+  for (uint32_t e = 0; e < gpu::kTexturePageViews; ++e)
+    bindSampledImage(BINDING_TEXTURE_PAGES, e, placeholderImage_->unormView(), placeholderSampler_->handle());
 }
 
 KernelLayout::~KernelLayout() {
@@ -76,6 +87,18 @@ void KernelLayout::bindTexel(uint32_t binding, const Buffer& buffer) {
   w.descriptorCount = 1;
   w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
   w.pTexelBufferView = &view;
+  vkUpdateDescriptorSets(ctx_.device(), 1, &w, 0, nullptr);
+}
+
+void KernelLayout::bindSampledImage(uint32_t binding, uint32_t arrayElement, VkImageView view, VkSampler sampler) {
+  VkDescriptorImageInfo info{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  w.dstSet = set_;
+  w.dstBinding = binding;
+  w.dstArrayElement = arrayElement;
+  w.descriptorCount = 1;
+  w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  w.pImageInfo = &info;
   vkUpdateDescriptorSets(ctx_.device(), 1, &w, 0, nullptr);
 }
 

@@ -5,12 +5,14 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "vk/buffer.h"
 #include "vk/context.h"
+#include "vk/image.h"
 
 namespace vkmc::vk {
 
@@ -19,10 +21,13 @@ struct SpecConstant {
   uint32_t value;
 };
 
-// Whether a binding is a storage texel buffer (gpu::kTexelBindings) rather than a storage buffer.
+// Whether a binding is a storage texel buffer (gpu::kTexelBindings) rather than a storage buffer or, for
+// BINDING_TEXTURE_PAGES, an array of combined image samplers.
 bool isTexelBinding(uint32_t binding);
+bool isImageBinding(uint32_t binding);
 
-// Descriptor set layout (all bindings of layout.h), push-constant range, one descriptor set.
+// Descriptor set layout (all bindings of layout.h), push-constant range, one descriptor set. The image binding
+// starts out pointing at a 1x1 placeholder: lavapipe crashes binding a set with an unwritten image descriptor.
 class KernelLayout {
  public:
   explicit KernelLayout(Context& ctx);
@@ -32,6 +37,7 @@ class KernelLayout {
 
   void bindStorage(uint32_t binding, const Buffer& buffer);
   void bindTexel(uint32_t binding, const Buffer& buffer);  // buffer must have a view
+  void bindSampledImage(uint32_t binding, uint32_t arrayElement, VkImageView view, VkSampler sampler);
   VkPipelineLayout pipelineLayout() const { return pipelineLayout_; }
   VkDescriptorSet set() const { return set_; }
 
@@ -41,6 +47,8 @@ class KernelLayout {
   VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
+  std::unique_ptr<ArrayImage> placeholderImage_;
+  std::unique_ptr<Sampler> placeholderSampler_;
 };
 
 class Kernel {

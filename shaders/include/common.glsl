@@ -55,7 +55,6 @@ layout(binding = BINDING_TRIANGLES, TEXEL_FORMAT_TRIANGLES) uniform readonly ima
 layout(binding = BINDING_TRIANGLE_INFO, TEXEL_FORMAT_TRIANGLE_INFO) uniform readonly uimageBuffer triangleInfo;
 layout(binding = BINDING_BVH_NODES, TEXEL_FORMAT_BVH_NODES) uniform readonly uimageBuffer bvhNodes;
 layout(binding = BINDING_LIGHTS, TEXEL_FORMAT_LIGHTS) uniform readonly uimageBuffer lights;
-layout(binding = BINDING_TEXTURE_TEXELS, TEXEL_FORMAT_TEXTURE_TEXELS) uniform readonly uimageBuffer textureTexels;
 layout(binding = BINDING_TEXTURES, TEXEL_FORMAT_TEXTURES) uniform readonly uimageBuffer textureInfos;
 layout(binding = BINDING_TRIANGLE_ATTRIBUTES, TEXEL_FORMAT_TRIANGLE_ATTRIBUTES) uniform readonly uimageBuffer triangleAttributes;
 layout(binding = BINDING_LAYER_ALBEDO, TEXEL_FORMAT_LAYER_ALBEDO) uniform readonly uimageBuffer layerAlbedoTable;

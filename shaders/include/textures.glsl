@@ -3,27 +3,23 @@
 #ifndef VKMC_TEXTURES_GLSL
 #define VKMC_TEXTURES_GLSL
 
-// RGBA of texel (x, y), each in [-1, n] (wrapUnit's folded range), under the texture's wrap modes; rgb decoded
-// from sRGB when asked.
-vec4 textureTexel(uvec4 info, int x, int y, bool srgb) {
-  int w = int(info.y), h = int(info.z);
-  x = wrapNearTexel(x, w, textureWrapS(info));
-  y = wrapNearTexel(y, h, textureWrapT(info));
-  vec4 c = unpackUnorm4x8(imageLoad(textureTexels, int(info.x) + y * w + x).x);
-  if (srgb) c.rgb = vec3(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
-  return c;
+layout(binding = BINDING_TEXTURE_PAGES) uniform sampler2DArray texturePages[kTexturePageViews];
+
+// Where uv lands in the texture pages: folded into one period of the texture's wrap modes (texture_layout.h),
+// then into the texture's rectangle of its page; the page's gutters give what the wrap modes put past the edges.
+// NEAREST textures land on the centre of their texel, where the bilinear sampler returns that texel alone (one
+// sampler for both filters: a second, nearest one behind a branch cost llvmpipe most of the images' gain).
+vec3 texturePageCoordinate(uvec4 info, vec2 uv) {
+  uv = vec2(wrapUnit(uv.x, textureWrapS(info)), wrapUnit(uv.y, textureWrapT(info)));
+  vec2 texel = vec2(textureOrigin(info)) + uv * vec2(textureExtent(info));
+  if (textureNearest(info)) texel = floor(texel) + 0.5;
+  return vec3(texel * texturePageScale(info), float(texturePage(info)));
 }
 
-// The filtered texture at uv: bilinear over decoded texels (filtering happens in linear space), or nearest.
+// The filtered texture at uv, bilinear (in linear space: the SRGB view decodes before filtering) or nearest.
 vec4 sampleTexture(uint texture, vec2 uv, bool srgb) {
-  uvec4 info = imageLoad(textureInfos, int(texture));
-  uv = vec2(wrapUnit(uv.x, textureWrapS(info)), wrapUnit(uv.y, textureWrapT(info)));
-  if (textureNearest(info)) return textureTexel(info, nearestTexel(uv.x, int(info.y)), nearestTexel(uv.y, int(info.z)), srgb);
-  float fx, fy;
-  int x = bilinearLow(uv.x, int(info.y), fx), y = bilinearLow(uv.y, int(info.z), fy);
-  vec4 top = mix(textureTexel(info, x, y, srgb), textureTexel(info, x + 1, y, srgb), fx);
-  vec4 bottom = mix(textureTexel(info, x, y + 1, srgb), textureTexel(info, x + 1, y + 1, srgb), fx);
-  return mix(top, bottom, fy);
+  vec3 at = texturePageCoordinate(imageLoad(textureInfos, int(texture)), uv);
+  return srgb ? textureLod(texturePages[kTexturePageSrgb], at, 0.0) : textureLod(texturePages[kTexturePageUnorm], at, 0.0);
 }
 
 // Interpolated attributes of a triangle at barycentrics b.

@@ -23,7 +23,8 @@
 #define BINDING_DEPTH_STATS 15               // vec2[pool * kRouletteTableDepths]: pilot (beta, gathered) per path and depth
 #define BINDING_QUEUE_STATS 16               // uvec2[kQueueStatsBounces]: per bounce, paths queued (x) and shadow rays (y)
 #define BINDING_DEEP_WALKS 17                // uint[]: items whose walk outgrew the register stack (deferred_walk.glsl)
-#define BINDING_TEXTURE_TEXELS 18            // uimageBuffer: every texture's RGBA8 texels, one r32ui each (texture_layout.h)
+#define BINDING_TEXTURE_TEXELS 18            // uimageBuffer: the texture pages' RGBA8 texels, one r32ui each: only
+                                             // `vkmc bench-textures` reads textures this way (texture_layout.h)
 #define BINDING_TEXTURES 19                  // uimageBuffer: one TextureInfo texel per texture (texture_layout.h)
 #define BINDING_TRIANGLE_ATTRIBUTES 20       // uimageBuffer: per-triangle uvs, tangents, colours (texture_layout.h)
 #define BINDING_PUNCTUAL_LIGHTS 21           // PunctualLight[] (punctual_light.h)
@@ -31,7 +32,8 @@
 #define BINDING_ENVIRONMENT_DISTRIBUTION 23  // float[]: its sampling distribution (environment_map.h)
 #define BINDING_PIXEL_FILTER 24              // PixelFilterHeader + float[]: the pixel filter's table (pixel_filter.h)
 #define BINDING_LAYER_ALBEDO 25              // uimageBuffer: the clearcoat and sheen albedo table as float bits (layer_albedo.h)
-#define BINDING_COUNT 26
+#define BINDING_TEXTURE_PAGES 26           // sampler2DArray[kTexturePageViews]: every texture in one array image (texture_layout.h)
+#define BINDING_COUNT 27
 
 // Texel formats of the scene bindings as GLSL image-format qualifiers (common.glsl declares the bindings with
 // them); the host derives each VkFormat from the same token (sceneTexelFormat in host/render/gpu_scene.cpp).

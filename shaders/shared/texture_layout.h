@@ -1,8 +1,17 @@
-// Textures and per-triangle shading attributes on the device: the host writes them (host/render/gpu_textures.cpp),
-// the kernels read them (shaders/include/textures.glsl). Encode and decode side by side; both languages compile it.
-//   texture texels (BINDING_TEXTURE_TEXELS, R32UI): every texture's RGBA8 texels (packUnorm4x8), row-major
-//       from the image's top row, textures one after another
-//   textures (BINDING_TEXTURES, RGBA32UI): one texel per glTF texture: (first texel, width, height, flags)
+// Textures and per-triangle shading attributes on the device: the host writes them (host/render/gpu_textures.cpp,
+// host/render/texture_atlas.cpp), the kernels read them (shaders/include/textures.glsl). Encode and decode side by
+// side; both languages compile it.
+//   texture pages (BINDING_TEXTURE_PAGES): every texture in the square pages (layers) of one RGBA8 2D array image,
+//       each inside a one-texel gutter holding the texels its wrap modes reach beyond its edges; a UNORM and an
+//       SRGB view (kTexturePage*), sampled bilinearly, clamped to the page. The kernel folds a uv into one
+//       period of its wrap modes (wrapUnit), so a filter reading at most one texel past an edge finds what the wrap
+//       modes give: sampled images measured 1.13x the samples/s of kernel filtering on DamagedHelmet on llvmpipe
+//       (docs/performance.md, "Textures on the device")
+//   textures (BINDING_TEXTURES, RGBA32UI): one texel per glTF texture: x: its texel (0, 0) in the page,
+//       px | py << 16; y: width | height << 16; z: page | wrapS << 16 | wrapT << 18 | nearest flag; w: float bits
+//       of 1 / page side
+//   texture texels (BINDING_TEXTURE_TEXELS, R32UI): the pages' texels (packUnorm4x8) page by page, row-major
+//       from the top row: the form `vkmc bench-textures` compares with (filtered by textureTexelBuffer* below)
 //   triangle attributes (BINDING_TRIANGLE_ATTRIBUTES, RGBA32UI): kAttributeTexels per triangle (BVH order):
 //       uv0 of the 3 corners, uv1 of the 3 corners (float bits, 6 + 6 words), 3 octahedral tangents with
 //       their bitangent signs, 3 RGBA8 vertex colours
@@ -13,15 +22,23 @@
 VKMC_BEGIN_NAMESPACE
 
 VKMC_CONST uint kWrapRepeat = 0u, kWrapClampToEdge = 1u, kWrapMirroredRepeat = 2u;
-VKMC_CONST uint kTextureNearest = 16u;  // flags bit: magFilter NEAREST (else bilinear)
+VKMC_CONST uint kTextureNearest = 1u << 20u;  // info.z bit: magFilter NEAREST (else bilinear)
 VKMC_CONST uint kAttributeTexels = 5u;
+// The views of the texture pages in BINDING_TEXTURE_PAGES's array, both sampled bilinearly.
+VKMC_CONST uint kTexturePageUnorm = 0u, kTexturePageSrgb = 1u, kTexturePageViews = 2u;
 
-VKMC_FN uvec4 encodeTextureInfo(uint firstTexel, uint width, uint height, uint wrapS, uint wrapT, bool nearest) {
-  return uvec4(firstTexel, width, height, wrapS | (wrapT << 2u) | (nearest ? kTextureNearest : 0u));
+VKMC_FN uvec4 encodeTextureInfo(uint pageX, uint pageY, uint page, uint width, uint height, uint pageSide, uint wrapS, uint wrapT,
+                                bool nearest) {
+  return uvec4(pageX | (pageY << 16u), width | (height << 16u),
+               page | (wrapS << 16u) | (wrapT << 18u) | (nearest ? kTextureNearest : 0u), floatBitsToUint(1.0f / float(pageSide)));
 }
-VKMC_FN uint textureWrapS(uvec4 info) { return info.w & 3u; }
-VKMC_FN uint textureWrapT(uvec4 info) { return (info.w >> 2u) & 3u; }
-VKMC_FN bool textureNearest(uvec4 info) { return (info.w & kTextureNearest) != 0u; }
+VKMC_FN uvec2 textureOrigin(uvec4 info) { return uvec2(info.x & 0xffffu, info.x >> 16u); }
+VKMC_FN uvec2 textureExtent(uvec4 info) { return uvec2(info.y & 0xffffu, info.y >> 16u); }
+VKMC_FN uint texturePage(uvec4 info) { return info.z & 0xffffu; }
+VKMC_FN uint textureWrapS(uvec4 info) { return (info.z >> 16u) & 3u; }
+VKMC_FN uint textureWrapT(uvec4 info) { return (info.z >> 18u) & 3u; }
+VKMC_FN bool textureNearest(uvec4 info) { return (info.z & kTextureNearest) != 0u; }
+VKMC_FN float texturePageScale(uvec4 info) { return uintBitsToFloat(info.w); }
 
 // Wrapping without integer division (llvmpipe has no vector divide: a % per tap was most of the shade stage's
 // time): u is first folded into one period of its wrap mode, [0, 1) for REPEAT and [0, 1] for MIRRORED_REPEAT

@@ -19,6 +19,9 @@ vk::DeviceCapabilities capable() {
   c.maxWorkgroupSizeX = c.maxWorkgroupInvocations = 1024;
   c.maxPushConstantsSize = 128;
   c.maxStorageBuffersPerStage = c.maxStorageImagesPerStage = 64;
+  c.maxSampledImagesPerStage = c.maxSamplersPerStage = 16;
+  c.unormImageFeatures = c.srgbImageFeatures = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
+                                              VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
   return c;
 }
 
@@ -51,6 +54,12 @@ TEST(DeviceRequirements, EachShortfallIsNamed) {
   c = capable();
   c.maxStorageBuffersPerStage = 1;
   EXPECT_TRUE(names(vk::missingRequirements(c), "storage buffers per shader stage"));
+  c = capable();
+  c.maxSampledImagesPerStage = 1;
+  EXPECT_TRUE(names(vk::missingRequirements(c), "sampled images and samplers per shader stage"));
+  c = capable();
+  c.srgbImageFeatures = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
+  EXPECT_TRUE(names(vk::missingRequirements(c), "R8G8B8A8 UNORM and SRGB sampled images"));
 }
 
 TEST(DeviceRequirements, TheCheckedFormatsAreTheSceneBuffersFormats) {
