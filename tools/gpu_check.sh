@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# vkmc on a lent GPU machine (issue 19): one short, prepared run of `vkmc info`, `vkmc bench-kernels` and a render
-# of every shared scene, with the same commands runnable here on lavapipe for the side-by-side figures.
+# vkmc on a lent GPU machine (issue 19): one short, prepared run of `vkmc info`, `vkmc bench-kernels`,
+# `vkmc bench-textures` and a render of every shared scene, with the same commands runnable here on lavapipe for the side-by-side figures.
 #
 #   bash tools/gpu_check.sh bundle     # here: .gpu/ = vkmc + the shared libraries it needs + ../shared/scenes,
 #                                      #       .gl/ = the Vulkan loader's .deb (the device machine has no loader)
@@ -54,9 +54,11 @@ run_checks() {
     --json "$out/reports/bench_1024.json" scenes/cornell_box.gltf "${models[@]}"
   echo "== bench-kernels: specialized against general pipelines"
   $t 120 $vkmc bench-kernels --runs $runs --specialization --json "$out/reports/bench_spec.json" scenes/cornell_box.gltf "${models[0]}"
+  echo "== bench-textures: sampled texture pages against a texel buffer"
+  $t 120 $vkmc bench-textures --rounds $runs "${models[0]}"
   echo "== renders: every shared scene and the built-in ones, 64 spp at 256 wide"
   local s name
-  for s in scenes/cornell_box.gltf scenes/veach_mis.gltf scenes/many_lights.gltf $(find "$scenes" -name '*.gltf' -o -name '*.glb' | sort); do
+  for s in scenes/cornell_box.gltf scenes/veach_mis.gltf scenes/many_lights.gltf scenes/textures/leaves.gltf $(find "$scenes" -name '*.gltf' -o -name '*.glb' | sort); do
     name=$(basename "${s%.*}")
     echo "-- $name"
     $t 120 $vkmc render "$s" --spp 64 -q -o "$out/reports/$name.exr" --report "$out/reports/$name.json" ||
