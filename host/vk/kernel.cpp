@@ -68,38 +68,33 @@ KernelLayout::~KernelLayout() {
   vkDestroyDescriptorSetLayout(ctx_.device(), setLayout_, nullptr);
 }
 
-void KernelLayout::bindStorage(uint32_t binding, const Buffer& buffer) {
-  VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
-  VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  w.dstSet = set_;
-  w.dstBinding = binding;
-  w.descriptorCount = 1;
-  w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  w.pBufferInfo = &info;
-  vkUpdateDescriptorSets(ctx_.device(), 1, &w, 0, nullptr);
-}
-
-void KernelLayout::bindTexel(uint32_t binding, const Buffer& buffer) {
-  VkBufferView view = buffer.view();
-  VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  w.dstSet = set_;
-  w.dstBinding = binding;
-  w.descriptorCount = 1;
-  w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
-  w.pTexelBufferView = &view;
-  vkUpdateDescriptorSets(ctx_.device(), 1, &w, 0, nullptr);
-}
-
-void KernelLayout::bindSampledImage(uint32_t binding, uint32_t arrayElement, VkImageView view, VkSampler sampler) {
-  VkDescriptorImageInfo info{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+void KernelLayout::write(uint32_t binding, uint32_t arrayElement, VkDescriptorType type, const VkDescriptorBufferInfo* buffer,
+                         const VkBufferView* texel, const VkDescriptorImageInfo* image) {
   VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
   w.dstSet = set_;
   w.dstBinding = binding;
   w.dstArrayElement = arrayElement;
   w.descriptorCount = 1;
-  w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  w.pImageInfo = &info;
+  w.descriptorType = type;
+  w.pBufferInfo = buffer;
+  w.pTexelBufferView = texel;
+  w.pImageInfo = image;
   vkUpdateDescriptorSets(ctx_.device(), 1, &w, 0, nullptr);
+}
+
+void KernelLayout::bindStorage(uint32_t binding, const Buffer& buffer) {
+  VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
+  write(binding, 0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &info, nullptr, nullptr);
+}
+
+void KernelLayout::bindTexel(uint32_t binding, const Buffer& buffer) {
+  VkBufferView view = buffer.view();
+  write(binding, 0, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, nullptr, &view, nullptr);
+}
+
+void KernelLayout::bindSampledImage(uint32_t binding, uint32_t arrayElement, VkImageView view, VkSampler sampler) {
+  VkDescriptorImageInfo info{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  write(binding, arrayElement, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr, nullptr, &info);
 }
 
 Kernel::Kernel(Context& ctx, const KernelLayout& layout, std::string name, std::span<const uint32_t> spirv,

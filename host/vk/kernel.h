@@ -42,6 +42,8 @@ class KernelLayout {
   VkDescriptorSet set() const { return set_; }
 
  private:
+  void write(uint32_t binding, uint32_t arrayElement, VkDescriptorType type, const VkDescriptorBufferInfo* buffer,
+             const VkBufferView* texel, const VkDescriptorImageInfo* image);
   Context& ctx_;
   VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
   VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;

@@ -61,7 +61,7 @@ TEST(Cli, RenderWritesExrPngAndAConsistentReport) {
   EXPECT_GT(rse, 0.0);
   EXPECT_EQ(j["estimated_efficiency_reliable"], rse <= double(j["variance_reliability"]["reliable_below"]));
   // --integrator auto (the default) names the integrator that ran: the wavefront on lavapipe.
-  if (j["device"].get<std::string>().find("llvmpipe") != std::string::npos) EXPECT_EQ(j["integrator"], "wavefront");
+  if (j["device"].get<std::string>().find("llvmpipe") != std::string::npos) { EXPECT_EQ(j["integrator"], "wavefront"); }
   // The EXR's image mean is the report's mean.
   double sum = 0;
   for (float v : img.channels["R"]) sum += v;

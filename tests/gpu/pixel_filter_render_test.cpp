@@ -94,7 +94,7 @@ TEST_P(PixelFilterRender, EdgeIsTheFiltersIntegral) {
       lobes = true;
       EXPECT_LT(column.mean.x, 0.0) << "column " << c << " lies in the negative lobe";
     }
-    if (expected > 1.005) EXPECT_GT(column.mean.x, 1.0) << "column " << c << " overshoots";
+    if (expected > 1.005) { EXPECT_GT(column.mean.x, 1.0) << "column " << c << " overshoots"; }
   }
   EXPECT_EQ(lobes, o.filter.kind == gpu::kPixelFilterMitchell);
 }

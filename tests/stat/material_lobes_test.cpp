@@ -126,7 +126,7 @@ TEST(DeltaLobes, LosslessGlassAndMirrorKeepEveryPhoton) {
         refracted += s.wi.z < 0.0f;
         EXPECT_NEAR(s.weight.x * fluxScale(g, s.wi), 1.0f, 1e-5f) << "eta " << eta << " cos " << cosO;
         EXPECT_NEAR(length(s.wi), 1.0f, 1e-5f);
-        if (s.wi.z < 0.0f) EXPECT_NEAR(std::sqrt(1 - s.wi.z * s.wi.z), std::sqrt(1 - cosO * cosO) / eta, 1e-5f);  // Snell
+        if (s.wi.z < 0.0f) { EXPECT_NEAR(std::sqrt(1 - s.wi.z * s.wi.z), std::sqrt(1 - cosO * cosO) / eta, 1e-5f); }  // Snell
         BsdfSample r = sampleGltfBsdf(mirror, wo, u3(i, 34));
         EXPECT_NEAR(r.weight.x, 1.0f, 1e-6f);
         EXPECT_NEAR(r.wi.z, cosO, 1e-6f);

@@ -62,7 +62,7 @@ TEST(Checkpoint, RoundTripsEveryArrayAndCounterExactly) {
     EXPECT_EQ(d.state.nextSample, 40u);
     EXPECT_EQ(d.state.batchSamples, c.state.batchSamples);
     ASSERT_EQ(d.state.batch.size(), c.state.batch.size());
-    if (withBatch) EXPECT_EQ(std::memcmp(d.state.batch.data(), c.state.batch.data(), c.state.batch.size() * sizeof(gpu::FilmPixel)), 0);
+    if (withBatch) { EXPECT_EQ(std::memcmp(d.state.batch.data(), c.state.batch.data(), c.state.batch.size() * sizeof(gpu::FilmPixel)), 0); }
     EXPECT_EQ(d.state.stats.seconds, 1.25);
     EXPECT_EQ(d.state.stats.cameraRays, 1ull << 40);
     EXPECT_EQ(d.state.stats.stageSeconds.at("shade"), 0.5);

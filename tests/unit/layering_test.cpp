@@ -20,8 +20,9 @@ TEST(Layering, NoHostIncludeRunsUpTheLayers) {
     std::ifstream in(entry.path());
     for (std::string line; std::getline(in, line);) {
       std::smatch m;
-      if (std::regex_search(line, m, include) && rank(m[1]) < long(layers.size()))
+      if (std::regex_search(line, m, include) && rank(m[1]) < long(layers.size())) {
         EXPECT_LE(rank(m[1]), rank(folder)) << entry.path().string() << " includes " << m[1] << "/";
+      }
     }
   }
   EXPECT_GT(files, 40u);
