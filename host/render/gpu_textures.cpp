@@ -11,12 +11,13 @@ namespace vkmc {
 
 PackedTextures packTextures(const std::vector<Texture>& textures, uint32_t maxPageSide, uint32_t maxPages) {
   PackedTextures out;
-  out.atlas = packTextureAtlas(textures, maxPageSide, std::min<uint32_t>(maxPages, 0xffffu));  // 16 bits in the info
+  // 16-bit fields in the texture info (texture_layout.h)
+  out.atlas = packTextureAtlas(textures, std::min<uint32_t>(maxPageSide, 0xffffu), std::min<uint32_t>(maxPages, 0xffffu));
   for (size_t i = 0; i < textures.size(); ++i) {
     const Texture& t = textures[i];
     const AtlasPlacement& p = out.atlas.placements[i];
-    out.infos.push_back(gpu::encodeTextureInfo(p.x, p.y, p.layer, t.width, t.height, out.atlas.pageWidth, wrapCode(t.wrapS),
-                                               wrapCode(t.wrapT), t.nearest));
+    out.infos.push_back(gpu::encodeTextureInfo(p.x, p.y, p.layer, t.width, t.height, out.atlas.pageWidth, out.atlas.pageHeight,
+                                               wrapCode(t.wrapS), wrapCode(t.wrapT), t.nearest));
   }
   return out;
 }

@@ -20,8 +20,10 @@ struct TextureAtlas {
 };
 
 // Shelf-packs the textures (tallest first) into square pages, choosing the page side (at most maxSide) that needs
-// the fewest texels in all; throws vkmc::Error naming the texture when one does not fit a page or the pages
-// exceed maxLayers. No textures: one 1x1 page (the kernels' descriptors must point at an image).
+// the fewest texels in all with at most maxLayers pages; a single page is trimmed to what it uses. Throws
+// vkmc::Error naming the texture when one does not fit a page, or when no side needs few enough pages. Textures
+// without texels (images the loader ignored) are left out. No textures: one 1x1 page (the kernels' descriptors
+// must point at an image).
 TextureAtlas packTextureAtlas(const std::vector<Texture>& textures, uint32_t maxSide, uint32_t maxLayers);
 
 }  // namespace vkmc

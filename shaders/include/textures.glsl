@@ -13,7 +13,7 @@ vec3 texturePageCoordinate(uvec4 info, vec2 uv) {
   uv = vec2(wrapUnit(uv.x, textureWrapS(info)), wrapUnit(uv.y, textureWrapT(info)));
   vec2 texel = vec2(textureOrigin(info)) + uv * vec2(textureExtent(info));
   if (textureNearest(info)) texel = floor(texel) + 0.5;
-  return vec3(texel * texturePageScale(info), float(texturePage(info)));
+  return vec3(texel / vec2(texturePageSize(info)), float(texturePage(info)));
 }
 
 // The filtered texture at uv, bilinear (in linear space: the SRGB view decodes before filtering) or nearest.

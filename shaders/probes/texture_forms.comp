@@ -18,8 +18,8 @@ layout(binding = BINDING_TEST_HITS, std430) writeonly buffer Results { vec4 resu
 layout(binding = BINDING_TEXTURE_TEXELS, TEXEL_FORMAT_TEXTURE_TEXELS) uniform readonly uimageBuffer textureTexels;
 
 vec4 pageTexel(uvec4 info, int x, int y, bool srgb) {
-  int side = int(round(1.0 / texturePageScale(info)));
-  vec4 c = unpackUnorm4x8(imageLoad(textureTexels, (int(texturePage(info)) * side + y) * side + x).x);
+  ivec2 size = ivec2(texturePageSize(info));
+  vec4 c = unpackUnorm4x8(imageLoad(textureTexels, (int(texturePage(info)) * size.y + y) * size.x + x).x);
   return srgb ? vec4(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b), c.a) : c;
 }
 

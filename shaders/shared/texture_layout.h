@@ -1,15 +1,15 @@
 // Textures and per-triangle shading attributes on the device: the host writes them (host/render/gpu_textures.cpp,
 // host/render/texture_atlas.cpp), the kernels read them (shaders/include/textures.glsl). Encode and decode side by
 // side; both languages compile it.
-//   texture pages (BINDING_TEXTURE_PAGES): every texture in the square pages (layers) of one RGBA8 2D array image,
-//       each inside a one-texel gutter holding the texels its wrap modes reach beyond its edges; a UNORM and an
-//       SRGB view (kTexturePage*), sampled bilinearly, clamped to the page. The kernel folds a uv into one
-//       period of its wrap modes (wrapUnit), so a filter reading at most one texel past an edge finds what the wrap
-//       modes give: sampled images measured 1.13x the samples/s of kernel filtering on DamagedHelmet on llvmpipe
-//       (docs/performance.md, "Textures on the device")
+//   texture pages (BINDING_TEXTURE_PAGES): every texture in the square pages (layers; a lone page trimmed to
+//       what it uses) of one RGBA8 2D array image, each inside a one-texel gutter holding the texels its wrap
+//       modes reach beyond its edges; a UNORM and an SRGB view (kTexturePage*), sampled bilinearly, clamped to
+//       the page. The kernel folds a uv into one period of its wrap modes (wrapUnit), so a filter reading at most
+//       one texel past an edge finds what the wrap modes give. Sampled so, DamagedHelmet renders 1.05x the
+//       samples/s of filtering in the kernel on llvmpipe (docs/performance.md, "Textures on the device")
 //   textures (BINDING_TEXTURES, RGBA32UI): one texel per glTF texture: x: its texel (0, 0) in the page,
-//       px | py << 16; y: width | height << 16; z: page | wrapS << 16 | wrapT << 18 | nearest flag; w: float bits
-//       of 1 / page side
+//       px | py << 16; y: width | height << 16; z: page | wrapS << 16 | wrapT << 18 | nearest flag; w: the
+//       pages' width | height << 16
 //   texture texels (BINDING_TEXTURE_TEXELS, R32UI): the pages' texels (packUnorm4x8) page by page, row-major
 //       from the top row: the form `vkmc bench-textures` compares with (filtered by textureTexelBuffer* below)
 //   triangle attributes (BINDING_TRIANGLE_ATTRIBUTES, RGBA32UI): kAttributeTexels per triangle (BVH order):
@@ -27,10 +27,10 @@ VKMC_CONST uint kAttributeTexels = 5u;
 // The views of the texture pages in BINDING_TEXTURE_PAGES's array, both sampled bilinearly.
 VKMC_CONST uint kTexturePageUnorm = 0u, kTexturePageSrgb = 1u, kTexturePageViews = 2u;
 
-VKMC_FN uvec4 encodeTextureInfo(uint pageX, uint pageY, uint page, uint width, uint height, uint pageSide, uint wrapS, uint wrapT,
-                                bool nearest) {
+VKMC_FN uvec4 encodeTextureInfo(uint pageX, uint pageY, uint page, uint width, uint height, uint pageWidth, uint pageHeight,
+                                uint wrapS, uint wrapT, bool nearest) {
   return uvec4(pageX | (pageY << 16u), width | (height << 16u),
-               page | (wrapS << 16u) | (wrapT << 18u) | (nearest ? kTextureNearest : 0u), floatBitsToUint(1.0f / float(pageSide)));
+               page | (wrapS << 16u) | (wrapT << 18u) | (nearest ? kTextureNearest : 0u), pageWidth | (pageHeight << 16u));
 }
 VKMC_FN uvec2 textureOrigin(uvec4 info) { return uvec2(info.x & 0xffffu, info.x >> 16u); }
 VKMC_FN uvec2 textureExtent(uvec4 info) { return uvec2(info.y & 0xffffu, info.y >> 16u); }
@@ -38,7 +38,7 @@ VKMC_FN uint texturePage(uvec4 info) { return info.z & 0xffffu; }
 VKMC_FN uint textureWrapS(uvec4 info) { return (info.z >> 16u) & 3u; }
 VKMC_FN uint textureWrapT(uvec4 info) { return (info.z >> 18u) & 3u; }
 VKMC_FN bool textureNearest(uvec4 info) { return (info.z & kTextureNearest) != 0u; }
-VKMC_FN float texturePageScale(uvec4 info) { return uintBitsToFloat(info.w); }
+VKMC_FN uvec2 texturePageSize(uvec4 info) { return uvec2(info.w & 0xffffu, info.w >> 16u); }
 
 // Wrapping without integer division (llvmpipe has no vector divide: a % per tap was most of the shade stage's
 // time): u is first folded into one period of its wrap mode, [0, 1) for REPEAT and [0, 1] for MIRRORED_REPEAT

@@ -80,3 +80,19 @@ TEST(TextureForms, BothFormsReadTheSamePages) {
   double bits = ctx.properties().limits.subTexelPrecisionBits;
   EXPECT_LT(forms[1].maxDifference, 3.0 * (std::ldexp(1.0, 1 - int(bits)) + 1.0 / 255.0)) << "subTexelPrecisionBits " << bits;
 }
+
+TEST(TextureForms, ALonePageIsTrimmedToARectangle) {
+  // One 16x3 texture: its page is 18x5, not 18x18; both forms must address the rectangle.
+  Scene scene = twoTextureScene(8);
+  std::mt19937 rng(9);
+  scene.textures = {randomTexture(16, 3, rng)};
+  scene.textures[0].wrapT = TextureWrap::MirroredRepeat;
+  for (Material& m : scene.materials) m.baseColorTexture.texture = m.metallicRoughnessTexture.texture = m.emissiveTexture.texture = 0;
+  std::vector<gpu::TestRay> lookups = makeTextureLookups(scene, 2048, false, 5);
+  vk::Context& ctx = test::sharedContext();
+  std::vector<TextureFormTiming> forms = timeTextureForms(ctx, scene, lookups, 1);
+  ASSERT_EQ(forms.size(), 2u);
+  ASSERT_EQ(forms[1].skipped, "");
+  double bits = ctx.properties().limits.subTexelPrecisionBits;
+  EXPECT_LT(forms[1].maxDifference, 3.0 * (std::ldexp(1.0, 1 - int(bits)) + 1.0 / 255.0));
+}

@@ -285,7 +285,7 @@ TEST(Unlit, AnUnlitSurfaceShowsItsBaseColour) {
 // shadow ray must find through the texture pages. Without light sampling (emission found by BSDF sampling
 // alone) and in the megakernel (another walk) the image agrees with the default's.
 TEST(AlphaCanopy, EstimatorsAndIntegratorsAgreeThroughTheHoles) {
-  auto canopy = [](bool nee, Integrator integrator, uint32_t seed) {
+  auto canopy = [](bool nee, Integrator integrator, uint32_t seed, bool withoutTextures = false) {
     RenderOptions o;
     o.scenePath = test::scenePath("textures/leaves.gltf");
     o.width = o.height = 32;
@@ -293,6 +293,7 @@ TEST(AlphaCanopy, EstimatorsAndIntegratorsAgreeThroughTheHoles) {
     o.seed = seed;
     o.estimator.nee = nee;
     o.integrator = integrator;
+    o.withoutTextures = withoutTextures;
     o.progress = false;
     return runRender(test::sharedContext(), o);
   };
@@ -306,4 +307,6 @@ TEST(AlphaCanopy, EstimatorsAndIntegratorsAgreeThroughTheHoles) {
     EXPECT_EQ(other.film.totalNonfinite(), 0u);
     EXPECT_TRUE(test::regionsAgree(a, test::whole(other.film), 5.0)) << "nee " << nee << ", " << toString(integrator);
   }
+  // The holes matter: with textures (and so alpha) compiled out the cards are whole and the image is another.
+  EXPECT_FALSE(test::regionsAgree(a, test::whole(canopy(true, Integrator::Wavefront, 14, true).film), 5.0));
 }

@@ -83,6 +83,27 @@ TEST(TextureAtlas, WhatDoesNotFitIsRefusedByName) {
   EXPECT_NO_THROW(packTextureAtlas(many, 32, 9));
 }
 
+TEST(TextureAtlas, TooManyPagesChooseALargerSide) {
+  // Nine 30^2 textures: pages of 32 need 9 layers; with 8 allowed, pages of 64 hold four each.
+  std::mt19937 rng(2);
+  std::vector<Texture> many(9, texture(30, 30, TextureWrap::Repeat, TextureWrap::Repeat, rng));
+  TextureAtlas atlas = packTextureAtlas(many, 64, 8);
+  EXPECT_EQ(atlas.pageWidth, 64u);
+  EXPECT_EQ(atlas.layers, 3u);
+}
+
+TEST(TextureAtlas, OnePageIsTrimmedAndUnusableImagesAreLeftOut) {
+  std::mt19937 rng(4);
+  std::vector<Texture> textures = {texture(1000, 2, TextureWrap::Repeat, TextureWrap::Repeat, rng), Texture{}};
+  textures[1].name = "a KTX2 image the loader could not decode";
+  TextureAtlas atlas = packTextureAtlas(textures, 16384, 2048);
+  EXPECT_EQ(atlas.layers, 1u);
+  EXPECT_EQ(atlas.pageWidth, 1002u);  // not a 1002^2 square for a 1000x2 texture
+  EXPECT_EQ(atlas.pageHeight, 4u);
+  EXPECT_EQ(atlas.texels.size(), size_t(1002) * 4);
+  EXPECT_EQ(atlas.texels[size_t(1002) + 1], textures[0].texels[0]);
+}
+
 TEST(TextureAtlas, NoTexturesGiveOneTexel) {
   TextureAtlas atlas = packTextureAtlas({}, 64, 8);
   EXPECT_EQ(atlas.layers, 1u);
