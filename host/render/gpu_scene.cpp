@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <glm/gtc/packing.hpp>
+#include <optional>
 #include <string_view>
 
 #include "../shaders/shared/environment_map.h"
@@ -19,6 +20,7 @@
 #include "../shaders/shared/texture_layout.h"
 #include "error.h"
 #include "render/alias_table.h"
+#include "render/emitter_pairs.h"
 #include "render/gpu_textures.h"
 #include "scene/scene_features.h"
 #include "scene/texture_sampler.h"
@@ -73,6 +75,7 @@ gpu::PunctualLight toGpu(const PunctualLight& l, const glm::vec3& sceneCentre, f
 struct LightData {
   std::vector<glm::uvec4> entries;
   std::vector<float> trianglePmf;  // per triangle in BVH order, 0 unless it emits
+  std::vector<float> trianglePartner;  // per triangle: an emitter quad's first half names its second (scene_layout.h)
   std::vector<gpu::PunctualLight> punctual;
   std::vector<glm::vec4> environment{3};  // gpu::EnvironmentHeader's 48 bytes, then the radiance texels
   std::vector<float> environmentTable{0.0f};
@@ -84,6 +87,7 @@ struct LightData {
 struct LightRow {
   uint32_t kind, index;
   double power;
+  std::optional<EmitterPair> pair;  // a triangle entry that stands for an emitter quad
 };
 
 // Every light of the scene with its power (gpu_scene.h), emissive triangles first; fills the punctual and
@@ -92,6 +96,10 @@ std::vector<LightRow> collectLights(const Scene& scene, const Bvh& bvh, gpu::Env
   const glm::vec3 centre = scene.bounds.valid() ? scene.bounds.center() : glm::vec3(0.0f);
   const float radius = scene.bounds.valid() ? 0.5f * glm::length(scene.bounds.extent()) : 0.0f;
   std::vector<LightRow> rows;
+  // The emitters, and which of them may pair into quads (untextured, opaque: one emission over both halves).
+  std::vector<glm::vec3> corners;
+  std::vector<uint8_t> pairable;
+  std::vector<uint32_t> materialOf;
   for (uint32_t i = 0; i < scene.triangleCount(); ++i) {
     uint32_t src = bvh.triangleOrder[i];
     const glm::vec3* p = &scene.positions[3 * src];
@@ -99,10 +107,23 @@ std::vector<LightRow> collectLights(const Scene& scene, const Bvh& bvh, gpu::Env
     float area = 0.5f * glm::length(glm::vec3(c)) * c.w * c.w;
     const Material& m = scene.materials[scene.materialIds[src]];
     // A textured emitter is weighted by its mean emission over its area.
-    if (m.isEmissive() && area > 0.0f)
-      rows.push_back({gpu::kLightKindTriangle, i, triangleEmittedPower(averageEmission(scene, src), m.doubleSided, area)});
+    if (!m.isEmissive() || !(area > 0.0f)) continue;
+    rows.push_back({gpu::kLightKindTriangle, i, triangleEmittedPower(averageEmission(scene, src), m.doubleSided, area), {}});
+    corners.insert(corners.end(), p, p + 3);
+    pairable.push_back(!m.emissiveTexture.present() && m.alphaMode == AlphaMode::Opaque && i <= gpu::kMaxEmitterPartner);
+    materialOf.push_back(scene.materialIds[src]);
   }
   out.emissiveTriangles = static_cast<uint32_t>(rows.size());
+  std::vector<uint8_t> merged(rows.size(), 0);
+  for (const EmitterPair& e : findEmitterPairs(corners, pairable, materialOf)) {
+    rows[e.first].power += rows[e.second].power;
+    rows[e.first].pair = EmitterPair{rows[e.first].index, rows[e.second].index, e.apex};
+    merged[e.second] = 1;
+  }
+  size_t kept = 0;
+  for (size_t r = 0; r < rows.size(); ++r)
+    if (!merged[r]) rows[kept++] = rows[r];
+  rows.resize(kept);
   for (const PunctualLight& l : scene.punctualLights) {
     double w = punctualLightPower(l, radius);
     if (!(w > 0.0)) continue;  // black: never sampled, never seen
@@ -130,20 +151,25 @@ LightData buildLights(const Scene& scene, const Bvh& bvh, bool uniformLightSelec
   gpu::EnvironmentHeader env{};
   std::vector<LightRow> rows = collectLights(scene, bvh, env, out);
   out.trianglePmf.assign(scene.triangleCount(), 0.0f);
+  out.trianglePartner.assign(scene.triangleCount(), 0.0f);
   if (!rows.empty()) {
     // A light whose luminance is 0 but whose color is not (pure blue at tiny levels) still gets a chance.
     double total = 0.0;
     for (const LightRow& r : rows) total += r.power;
     std::vector<double> weights;
     for (const LightRow& r : rows) {
-      weights.push_back(uniformLightSelection ? 1.0 : std::max(r.power, total * 1e-12));
+      weights.push_back(uniformLightSelection ? (r.pair ? 2.0 : 1.0) : std::max(r.power, total * 1e-12));
       if (r.kind == gpu::kLightKindTriangle) out.emittedPower += std::max(r.power, total * 1e-12);
     }
     std::vector<AliasEntry> table = buildAliasTable(weights);
     for (size_t k = 0; k < table.size(); ++k) {
       const LightRow& r = rows[k];
       out.entries.push_back(gpu::encodeLightEntry(table[k].probability, table[k].alias, r.kind, r.index, table[k].pmf));
-      if (r.kind == gpu::kLightKindTriangle) out.trianglePmf[r.index] = table[k].pmf;
+      if (r.kind == gpu::kLightKindTriangle && !r.pair) out.trianglePmf[r.index] = table[k].pmf;
+      if (r.pair) {  // each half: half the pair's pmf (shading.glsl, sampleEmissiveTriangle)
+        out.trianglePmf[r.pair->first] = out.trianglePmf[r.pair->second] = 0.5f * table[k].pmf;
+        out.trianglePartner[r.pair->first] = gpu::encodeEmitterPartner(r.pair->second, r.pair->apex);
+      }
       if (r.kind == gpu::kLightKindEnvironment) env.selectionPmf = table[k].pmf;
     }
   } else {
@@ -265,6 +291,7 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
     glm::vec4* texels = &triTexels[gpu::kTriangleTexels * i];
     for (int k = 0; k < 3; ++k) texels[k] = glm::vec4(scene.positions[3 * src + k], 0.0f);
     texels[gpu::kTriangleLightPmfTexel].w = lightPmf[i];
+    texels[gpu::kTrianglePartnerTexel].w = lights.trianglePartner[i];
     const Material& m = scene.materials[scene.materialIds[src]];
     info_.alphaTested |= m.alphaMode != AlphaMode::Opaque;
     texels[gpu::kTriangleSidesTexel].w = gpu::encodeTriangleSingleSided(m.culledFromBehind());

@@ -217,14 +217,51 @@ struct LightSample {
   bool delta;
 };
 
+// The vertex of (v0, v1, v2) that is neither a nor b: the far corner of an emitter quad's second half.
+vec3 emitterFreeVertex(vec3 v0, vec3 v1, vec3 v2, vec3 a, vec3 b) {
+  if (v0 != a && v0 != b) return v0;
+  if (v1 != a && v1 != b) return v1;
+  return v2;
+}
+
+// A light sample on emissive triangle `tri`, chosen with probability pmf. When `tri` is the first half of an emitter
+// quad (render/emitter_pairs.h) the entry stands for the pair: u's unit square maps onto the first half below its
+// diagonal and onto the second above it, so which half and where on it are stratified together. Each half then has
+// its own pmf (half the pair's) over its own area as density, as when sampled alone, which is what MIS at a BSDF hit
+// assumes (lightPdf). Under solid-angle sampling u.x picks the half, which is sampled as a triangle.
 bool sampleEmissiveTriangle(uint tri, float pmf, SurfacePoint s, vec2 u, out LightSample ls) {
   vec3 v0, v1, v2;
   triangleVertices(tri, v0, v1, v2);
+  float partnerCode = imageLoad(triangles, int(kTriangleTexels * tri + kTrianglePartnerTexel)).w;
+  bool pairPoint = false;
+  TriangleLightSample ts;
+  if (hasEmitterPartner(partnerCode)) {
+    pmf *= 0.5;
+    uint apex = emitterApex(partnerCode);  // p1; the shared edge is p0-p2
+    vec3 p0 = apex == 0u ? v2 : (apex == 1u ? v0 : v1);
+    vec3 p1 = apex == 0u ? v0 : (apex == 1u ? v1 : v2);
+    vec3 p2 = apex == 0u ? v1 : (apex == 1u ? v2 : v0);
+    bool second = kLightSampling == kLightSamplingArea ? u.x + u.y > 1.0 : u.x >= 0.5;
+    if (kLightSampling != kLightSamplingArea) u.x = min(second ? 2.0 * u.x - 1.0 : 2.0 * u.x, kOneMinusEpsilon);
+    if (second) {
+      tri = emitterPartner(partnerCode);
+      triangleVertices(tri, v0, v1, v2);
+    }
+    if (kLightSampling == kLightSamplingArea) {
+      vec3 x = second ? emitterFreeVertex(v0, v1, v2, p0, p2) : p1;
+      vec3 wt = second ? vec3(1.0 - u.y, 1.0 - u.x, u.x + u.y - 1.0) : vec3(u.x, u.y, 1.0 - u.x - u.y);
+      ts.point = wt.x * p0 + wt.y * p2 + wt.z * x;
+      ts.pointError = barycentricError(wt, p0, p2, x);
+      ts.spherical = false;
+      ts.solidAngle = 0.0;
+      pairPoint = true;
+    }
+  }
   vec4 cr = scaledTriangleCross(v0, v1, v2);
   float area = scaledCrossArea(cr);
   if (!(area > 0.0)) return false;
   vec3 nl = normalize(cr.xyz);
-  TriangleLightSample ts = sampleTriangleLight(kLightSampling, s.p, v0, v1, v2, nl, u);
+  if (!pairPoint) ts = sampleTriangleLight(kLightSampling, s.p, v0, v1, v2, nl, u);
   vec3 toLight = ts.point - s.p;
   float dist2 = dot(toLight, toLight);
   if (!(dist2 > 0.0)) return false;

@@ -2,7 +2,9 @@
 // shading.glsl). Encode and decode side by side; both languages compile this file.
 //   triangles (BINDING_TRIANGLES, RGBA32F): kTriangleTexels per triangle, the vertices in xyz; texel
 //       kTriangleLightPmfTexel's w holds the triangle's light-selection pmf (0 unless it emits), texel
-//       kTriangleSidesTexel's w is 1 when the triangle is single-sided (culled from the back), else 0
+//       kTriangleSidesTexel's w is 1 when the triangle is single-sided (culled from the back), else 0; texel
+//       kTrianglePartnerTexel's w names the other half of an emitter quad (render/emitter_pairs.h) on the
+//       pair's first triangle, as the float 4 (partner + 1) + apex (exact: partners below 2^22), else 0
 //   triangle info (BINDING_TRIANGLE_INFO, RGBA32UI): one texel per triangle, the three vertex normals
 //       (octahedral, 2 x 16-bit snorm each) and the material id, whose top bit says the material is alpha-tested
 //   lights (BINDING_LIGHTS, RGBA32UI): one alias-table entry per light (Walker/Vose), emissive triangles,
@@ -19,6 +21,14 @@ VKMC_CONST uint kTriangleLightPmfTexel = 1u;
 // the back passes. Kept beside the vertices, which the walk loads anyway.
 VKMC_CONST uint kTriangleSidesTexel = 0u;
 VKMC_FN float encodeTriangleSingleSided(bool singleSided) { return singleSided ? 1.0f : 0.0f; }
+// An emitter quad's first triangle names its second and its own corner opposite the shared edge; the light
+// table's entry for the pair names the first (with the pair's pmf, twice each triangle's).
+VKMC_CONST uint kTrianglePartnerTexel = 2u;
+VKMC_CONST uint kMaxEmitterPartner = (1u << 22u) - 2u;
+VKMC_FN float encodeEmitterPartner(uint partner, uint apex) { return float(((partner + 1u) << 2u) | apex); }
+VKMC_FN bool hasEmitterPartner(float code) { return code >= 4.0f; }
+VKMC_FN uint emitterPartner(float code) { return (uint(code) >> 2u) - 1u; }
+VKMC_FN uint emitterApex(float code) { return uint(code) & 3u; }
 VKMC_FN bool triangleSingleSided(vec4 sidesTexel) { return sidesTexel.w != 0.0f; }
 
 // Octahedral unit vectors (Cigolle et al. 2014) in 2 x 16-bit snorm.

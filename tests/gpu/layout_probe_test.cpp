@@ -212,7 +212,9 @@ TEST(LayoutProbe, GlslDecodesTheSceneTexelsAsTheHostEncodedThem) {
     EXPECT_EQ(tri, gpu::lightEntryIndex(chosen)) << "light pick " << k;
     EXPECT_EQ(nextf(), gpu::lightEntryPmf(chosen)) << "light pick " << k;
     ASSERT_LT(tri, triangles);
-    EXPECT_EQ(gpu::lightEntryPmf(chosen), pmfOf[tri]) << "the entry's pmf is its triangle's";
+    // An emitter quad's entry names its first half and carries the pair's pmf, twice each half's.
+    const bool quad = gpu::hasEmitterPartner(triTexels[gpu::kTriangleTexels * tri + gpu::kTrianglePartnerTexel].w);
+    EXPECT_EQ(gpu::lightEntryPmf(chosen), pmfOf[tri] * (quad ? 2.0f : 1.0f)) << "the entry's pmf is its triangle's";
   }
   for (uint32_t n = 0; n < nodes; ++n) {
     const BvhWideNode& node = probe.bvh.wideNodes[n];
