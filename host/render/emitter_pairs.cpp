@@ -47,6 +47,8 @@ std::vector<EmitterPair> findEmitterPairs(std::span<const glm::vec3> positions, 
         double edge = glm::length(glm::dvec3(p2) - glm::dvec3(p0));
         double areaA = area(pa), areaB = area(pb);
         if (glm::length(glm::dvec3(pb[free]) - corner) > 1e-3 * edge || std::abs(areaA - areaB) > 1e-3 * areaA) continue;
+        // Facing the same way: a one-sided quad whose halves disagree would waste the samples of one.
+        if (glm::dot(glm::cross(pa[1] - pa[0], pa[2] - pa[0]), glm::cross(pb[1] - pb[0], pb[2] - pb[0])) <= 0.0f) continue;
         pairs.push_back({a, b, k});
         paired[a] = paired[b] = 1;
         break;

@@ -241,7 +241,7 @@ bool sampleEmissiveTriangle(uint tri, float pmf, SurfacePoint s, vec2 u, out Lig
     vec3 p0 = apex == 0u ? v2 : (apex == 1u ? v0 : v1);
     vec3 p1 = apex == 0u ? v0 : (apex == 1u ? v1 : v2);
     vec3 p2 = apex == 0u ? v1 : (apex == 1u ? v2 : v0);
-    bool second = kLightSampling == kLightSamplingArea ? u.x + u.y > 1.0 : u.x >= 0.5;
+    bool second = kLightSampling == kLightSamplingArea ? emitterQuadSecondHalf(u) : u.x >= 0.5;
     if (kLightSampling != kLightSamplingArea) u.x = min(second ? 2.0 * u.x - 1.0 : 2.0 * u.x, kOneMinusEpsilon);
     if (second) {
       tri = emitterPartner(partnerCode);
@@ -249,7 +249,7 @@ bool sampleEmissiveTriangle(uint tri, float pmf, SurfacePoint s, vec2 u, out Lig
     }
     if (kLightSampling == kLightSamplingArea) {
       vec3 x = second ? emitterFreeVertex(v0, v1, v2, p0, p2) : p1;
-      vec3 wt = second ? vec3(1.0 - u.y, 1.0 - u.x, u.x + u.y - 1.0) : vec3(u.x, u.y, 1.0 - u.x - u.y);
+      vec3 wt = emitterQuadWeights(u);
       ts.point = wt.x * p0 + wt.y * p2 + wt.z * x;
       ts.pointError = barycentricError(wt, p0, p2, x);
       ts.spherical = false;

@@ -105,6 +105,16 @@ VKMC_FN TriangleLightSample sampleTriangleLight(uint technique, vec3 p, vec3 v0,
   return s;
 }
 
+// A point on an emitter quad from u in the unit square (render/emitter_pairs.h): the first half (p0, p1, p2), apex
+// p1 and shared edge p0-p2, below the diagonal u.x + u.y = 1, the second (p0, p2, w) above it. Both are the point
+// p1 + u.x (p0 - p1) + u.y (p2 - p1) of the parallelogram, written as weights of (p0, p2, x), x = p1 on the first
+// half and w on the second, all in [0, 1], so that the point lies on the half's own triangle even where w is not
+// exactly p0 + p2 - p1. Each half: probability 1/2, uniform on it.
+VKMC_FN bool emitterQuadSecondHalf(vec2 u) { return u.x + u.y > 1.0f; }
+VKMC_FN vec3 emitterQuadWeights(vec2 u) {
+  return emitterQuadSecondHalf(u) ? vec3(1.0f - u.y, 1.0f - u.x, u.x + u.y - 1.0f) : vec3(u.x, u.y, 1.0f - u.x - u.y);
+}
+
 // The solid-angle pdf of a sample times the triangle's selection pmf: pmf / solid angle when sampled spherically,
 // else pmf dist^2 / (area cos) for a point at squared distance dist2 seen under cosLight.
 VKMC_FN float triangleLightPdf(bool spherical, float solidAngle, float pmf, float area, float dist2, float cosLight) {
