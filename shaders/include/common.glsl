@@ -90,6 +90,14 @@ void triangleVertices(uint tri, out vec3 v0, out vec3 v1, out vec3 v2) {
   v1 = imageLoad(triangles, int(kTriangleTexels * tri + 1u)).xyz;
   v2 = imageLoad(triangles, int(kTriangleTexels * tri + 2u)).xyz;
 }
+// The vertices and, riding in the third vertex's texel, an emitter quad's partner code (scene_layout.h).
+void triangleVertices(uint tri, out vec3 v0, out vec3 v1, out vec3 v2, out float partnerCode) {
+  v0 = imageLoad(triangles, int(kTriangleTexels * tri)).xyz;
+  v1 = imageLoad(triangles, int(kTriangleTexels * tri + 1u)).xyz;
+  vec4 t2 = imageLoad(triangles, int(kTriangleTexels * tri + kTrianglePartnerTexel));
+  v2 = t2.xyz;
+  partnerCode = t2.w;
+}
 // The vertices for a walk's test, and whether a ray meeting the triangle's back must pass it (SPEC_CULLS_BACK_FACES
 // and a single-sided triangle): the flag rides in a texel the walk loads anyway.
 void triangleVertices(uint tri, out vec3 v0, out vec3 v1, out vec3 v2, out bool cullBack) {

@@ -231,8 +231,8 @@ vec3 emitterFreeVertex(vec3 v0, vec3 v1, vec3 v2, vec3 a, vec3 b) {
 // assumes (lightPdf). Under solid-angle sampling u.x picks the half, which is sampled as a triangle.
 bool sampleEmissiveTriangle(uint tri, float pmf, SurfacePoint s, vec2 u, out LightSample ls) {
   vec3 v0, v1, v2;
-  triangleVertices(tri, v0, v1, v2);
-  float partnerCode = imageLoad(triangles, int(kTriangleTexels * tri + kTrianglePartnerTexel)).w;
+  float partnerCode;
+  triangleVertices(tri, v0, v1, v2, partnerCode);
   bool pairPoint = false;
   TriangleLightSample ts;
   if (hasEmitterPartner(partnerCode)) {
