@@ -67,6 +67,44 @@ bool onlyTexturedEmitters(const Scene& scene) {
 }
 }  // namespace
 
+namespace {
+// What rr ears learned: the cache's size and use, and each depth's vertices by factor (untrained: throughput
+// roulette; q < 1: roulette; q = 1; q > 1: splitting).
+nlohmann::json earsJson(const EarsSummary& e) {
+  nlohmann::json depths = nlohmann::json::array();
+  for (const auto& row : e.factors)
+    depths.push_back({{"untrained", row[gpu::kEarsBinFallback]}, {"roulette", row[gpu::kEarsBinRoulette]},
+                      {"kept", row[gpu::kEarsBinOne]}, {"split", row[gpu::kEarsBinSplit]}});
+  return {{"cells", e.cells},
+          {"occupied_cells", e.occupiedCells},
+          {"trusted_cells", e.trustedCells},
+          {"device_bytes", e.deviceBytes},
+          {"learning_passes", e.learningPasses},
+          {"image_factor", e.imageFactor},
+          {"training_copies", e.copies},
+          {"mean_lr", {e.meanLr.x, e.meanLr.y, e.meanLr.z}},
+          {"mean_lr_squared", {e.meanLrSquared.x, e.meanLrSquared.y, e.meanLrSquared.z}},
+          {"mean_rays", e.meanRays},
+          {"factors_by_depth", depths},
+          {"note", "the last depth row counts every deeper vertex"}};
+}
+
+// One line: the cache and the first vertices' decisions.
+std::string earsLine(const EarsSummary& e) {
+  char buf[512];
+  const auto& r = e.factors[0];
+  const double n = double(r[0] + r[1] + r[2] + r[3]);
+  auto pct = [&](uint64_t v) { return n > 0 ? 100.0 * double(v) / n : 0.0; };
+  std::snprintf(buf, sizeof(buf),
+                "ears        %u learning passes; cells %u of %u used (%u trusted), %.1f MiB; first hits: %.0f%% untrained, "
+                "%.0f%% rouletted, %.0f%% kept, %.0f%% split\n",
+                e.learningPasses, e.occupiedCells, e.cells, e.trustedCells, double(e.deviceBytes) / (1 << 20),
+                pct(r[gpu::kEarsBinFallback]), pct(r[gpu::kEarsBinRoulette]), pct(r[gpu::kEarsBinOne]),
+                pct(r[gpu::kEarsBinSplit]));
+  return buf;
+}
+}  // namespace
+
 bool getsDefaultLight(const RenderOptions& options, const Scene& scene) {
   return options.environmentPath.empty() && !options.background && scene.punctualLights.empty() && onlyTexturedEmitters(scene);
 }
@@ -309,6 +347,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.stats.seconds += pilotSeconds;
   out.pilotSeconds = pilotSeconds;
   out.roulette = roulette;
+  if (renderer.ears().enabled()) out.ears = renderer.ears().summary();
   if (reference) out.error = compareImages(filmToImage(out.film), *reference);
   return out;
 }
@@ -378,6 +417,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                                 {"scale_per_depth", scales},
                                 {"formula", "survival = min(scale[depth] * max(throughput), 0.999)"}};
   }
+  if (r.ears) j["ears"] = earsJson(*r.ears);
   if (o.timeBudget > 0.0) j["time_budget"] = o.timeBudget;
   // Checkpoints: a resumed render's counters and seconds include the runs before it (pass time only).
   j["resumed"] = r.resumed;
@@ -479,6 +519,7 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 var.y, var.z, (unsigned long long)r.film.totalNonfinite(),
                 (unsigned long long)r.film.totalHighRange());
   std::string text = buf;
+  if (r.ears) text += earsLine(*r.ears);
   if (r.error)
     text += "error       relMSE " + std::to_string(r.error->relmse) + ", MSE " + std::to_string(r.error->mse) +
             ", efficiency 1/(relMSE x s) " + std::to_string(r.error->relmse > 0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0) +

@@ -9,6 +9,7 @@
 #include "analysis/error_metrics.h"
 #include "dist/distributed_render.h"
 #include "estimators/estimator_config.h"
+#include "render/ears_cache.h"
 #include "render/film.h"
 #include "render/path_renderer.h"
 #include "render/pixel_filter.h"
@@ -79,6 +80,7 @@ struct RenderOutcome {
   uint32_t width = 0, height = 0;
   std::optional<ErrorMetrics> error;  // against the reference, when one was given
   double pilotSeconds = 0.0;          // efficiency roulette's pilot, included in stats.seconds
+  std::optional<EarsSummary> ears;    // what rr ears learned
   SceneFeatures features;             // what the pipelines were specialized for
   std::optional<RouletteTable> roulette;
   glm::vec3 background{0.0f};  // what escaped rays saw besides the environment light

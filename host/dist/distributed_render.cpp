@@ -40,13 +40,13 @@ std::string bytesOf(const std::vector<gpu::FilmPixel>& batch) {
 void sharePixelEstimate(PathRenderer& renderer, const RankGroup& group, const Film& rootFilm) {
   std::string bytes;
   if (group.isRoot()) {
-    std::vector<float> estimate = PathRenderer::pixelEstimateOf(rootFilm);
-    bytes.assign(reinterpret_cast<const char*>(estimate.data()), estimate.size() * sizeof(float));
+    std::vector<glm::vec4> estimate = PathRenderer::pixelEstimateOf(rootFilm);
+    bytes.assign(reinterpret_cast<const char*>(estimate.data()), estimate.size() * sizeof(glm::vec4));
   }
   group.broadcast(bytes);
   if (!group.isRoot()) {
-    std::vector<float> estimate(bytes.size() / sizeof(float));
-    std::memcpy(estimate.data(), bytes.data(), estimate.size() * sizeof(float));
+    std::vector<glm::vec4> estimate(bytes.size() / sizeof(glm::vec4));
+    std::memcpy(estimate.data(), bytes.data(), estimate.size() * sizeof(glm::vec4));
     renderer.setPixelEstimate(estimate);
   }
 }
@@ -55,6 +55,8 @@ void sharePixelEstimate(PathRenderer& renderer, const RankGroup& group, const Fi
 
 std::vector<RankReport> renderDistributed(PathRenderer& renderer, const RankGroup& group, RenderState& state,
                                           const RenderControl& control, const DistributedPlan& plan) {
+  if (renderer.ears().enabled())
+    throw Error("rr ears learns between one process's passes; distributed renders (--ranks) do not support it yet");
   const uint32_t ranks = group.size(), me = group.rank();
   const uint32_t perPass = renderer.samplesPerPass();
   const uint32_t batchSamples = plan.timeBudget > 0.0 ? perPass : renderer.samplesPerBatch();

@@ -29,6 +29,8 @@ void EstimatorConfig::validate() const {
   if (rr == RouletteMode::None && maxDepth == 0)
     throw Error("rr none needs a depth cap (--max-depth > 0): without roulette or a cap paths never end");
   if (!nee && lightSamples > 1) throw Error("light_samples > 1 needs nee on");
+  if (rr == RouletteMode::Ears && bsdfSamples > 1.0f)
+    throw Error("rr ears chooses each vertex's splitting itself: leave bsdf_samples at 1");
 }
 
 nlohmann::json EstimatorConfig::toJson() const {
@@ -72,6 +74,7 @@ std::vector<vk::SpecConstant> EstimatorConfig::specConstants() const {
 }
 
 uint32_t EstimatorConfig::pathPoolFactor() const {
+  if (rr == RouletteMode::Ears) return kEarsPoolFactor;
   if (!splitsPaths()) return 1;
   double factor = std::pow(std::ceil(bsdfSamples), std::min<uint32_t>(splitDepth, 3));
   return static_cast<uint32_t>(std::min(64.0, factor));  // 64: the largest factor validate() accepts
@@ -82,7 +85,9 @@ std::string EstimatorConfig::summary() const {
   s << "nee " << nameOf("nee", *this) << ", mis " << nameOf("mis", *this) << ", bsdf " << nameOf("bsdf_sampling", *this)
     << ", lights " << nameOf("light_select", *this) << "/" << nameOf("light_sampling", *this) << ", rr " << nameOf("rr", *this);
   if (rr == RouletteMode::Fixed) s << " (q " << rrQ << ", c " << rrC << ")";
-  if (rr != RouletteMode::None) s << " from depth " << rrDepth;
+  if (rr == RouletteMode::Ears) s << " (learned roulette and splitting at every vertex; throughput roulette from depth "
+                                  << rrDepth << " where nothing is learned yet)";
+  else if (rr != RouletteMode::None) s << " from depth " << rrDepth;
   if (lightSamples > 1) s << ", " << lightSamples << " light samples below depth " << splitDepth;
   if (bsdfSamples > 1) s << ", " << bsdfSamples << " BSDF samples below depth " << splitDepth;
   if (shadowRrThreshold > 0) s << ", shadow rr " << shadowRrThreshold << " (q " << shadowRrQ << ")";

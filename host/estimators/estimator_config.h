@@ -19,7 +19,8 @@ enum class RouletteMode : uint32_t {
   None = gpu::kRouletteNone,
   Fixed = gpu::kRouletteFixed,
   Throughput = gpu::kRouletteThroughput,
-  Efficiency = gpu::kRouletteEfficiency
+  Efficiency = gpu::kRouletteEfficiency,
+  Ears = gpu::kRouletteEars
 };
 enum class BsdfSampling : uint32_t {
   Uniform = gpu::kBsdfSamplingUniform,
@@ -34,6 +35,9 @@ enum class Sampler : uint32_t {
   ZSobol = gpu::kSamplerZSobol
 };
 enum class MisHeuristic : uint32_t { None = gpu::kMisNone, Balance = gpu::kMisBalance, Power = gpu::kMisPower };
+
+// Path slots per camera path under EARS: room for its splits (a full pool leaves a vertex unsplit, unbiased).
+inline constexpr uint32_t kEarsPoolFactor = 4;
 
 struct EstimatorConfig {
   // Every key starts at its default from the table (estimator_params.cpp); {} only keeps a field defined.
@@ -61,9 +65,10 @@ struct EstimatorConfig {
   void validate() const;
   bool unbiased() const { return maxDepth == 0; }
   bool needsFloatAtomics() const { return lightSamples > 1 || splitsPaths(); }
-  bool splitsPaths() const { return bsdfSamples > 1.0f; }
+  bool splitsPaths() const { return bsdfSamples > 1.0f || rr == RouletteMode::Ears; }
   // Room for split children, as a multiple of the camera paths of a pass: ceil(K)^split_depth, at most 64 (a
-  // full pool continues paths unsplit with weight 1, which stays unbiased but loses the variance reduction).
+  // full pool continues paths unsplit with weight 1, which stays unbiased but loses the variance reduction);
+  // kEarsPoolFactor under EARS, whose splits the pool bounds the same way.
   uint32_t pathPoolFactor() const;
   nlohmann::json toJson() const;
   // Applies the keys present in j over the current values (unknown keys are an error).

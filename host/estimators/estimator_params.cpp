@@ -73,7 +73,8 @@ constexpr EstimatorParam onOff(const char* key, bool def, int spec, const char* 
 constexpr ParamName kRouletteNames[] = {{"none", valueOf(RouletteMode::None)},
                                         {"fixed", valueOf(RouletteMode::Fixed)},
                                         {"throughput", valueOf(RouletteMode::Throughput)},
-                                        {"efficiency", valueOf(RouletteMode::Efficiency)}};
+                                        {"efficiency", valueOf(RouletteMode::Efficiency)},
+                                        {"ears", valueOf(RouletteMode::Ears)}};
 constexpr ParamName kBsdfSamplingNames[] = {{"uniform", valueOf(BsdfSampling::Uniform)},
                                             {"cosine", valueOf(BsdfSampling::Cosine)},
                                             {"bsdf", valueOf(BsdfSampling::Bsdf)}};

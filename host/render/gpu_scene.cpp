@@ -277,6 +277,7 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   const size_t n = scene.triangleCount();
   info_.triangles = static_cast<uint32_t>(n);
   info_.materials = static_cast<uint32_t>(scene.materials.size());
+  if (scene.bounds.valid()) info_.boundsMin = scene.bounds.min, info_.boundsMax = scene.bounds.max;
 
   LightData lights = buildLights(scene, bvh, uniformLightSelection);
   info_.emissiveTriangles = lights.emissiveTriangles;

@@ -22,6 +22,7 @@ struct GpuSceneInfo {
   uint32_t punctualLights = 0;  // in the light table (black ones are left out)
   bool alphaTested = false;     // some triangle's material is alpha MASK or BLEND (the walks' any-hit test)
   double emittedPower = 0.0;    // sum over emissive triangles of luminance(Le) * area * pi * sides
+  glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // the scene's bounding box (EARS lays its cache grid over it)
   std::vector<std::pair<std::string, uint64_t>> bufferBytes;
 };
 

@@ -35,6 +35,9 @@ PathPoolSize sizePathPool(const RenderSettings& settings, const VkPhysicalDevice
   capacity = std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::PathState) * poolFactor));
   capacity =
       std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::ShadowRay) * est.lightSamples * poolFactor));
+  if (est.rr == RouletteMode::Ears)  // each slot's training records
+    capacity = std::min<uint32_t>(
+        capacity, limits.maxStorageBufferRange / (sizeof(gpu::EarsRecord) * gpu::kEarsDepths * poolFactor));
   PathPoolSize size;
   size.cameraPaths = std::max(capacity, 1u);
   size.slots = size.cameraPaths * poolFactor;

@@ -14,6 +14,7 @@
 #include "../shaders/shared/layout.h"
 #include "../shaders/shared/sampling.h"
 #include "error.h"
+#include "analysis/error_metrics.h"
 #include "render/path_pool.h"
 #include "render/pixel_filter_table.h"
 
@@ -48,7 +49,7 @@ PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const Render
   if (settings.integrator == Integrator::Auto) throw Error("internal: the integrator must be resolved before a render");
   const bool megakernel = settings.integrator == Integrator::Megakernel;
   if (megakernel && est.splitsPaths())
-    throw Error("bsdf_samples > 1 (splitting paths) needs the wavefront integrator's path pool; use --integrator wavefront");
+    throw Error("bsdf_samples > 1 and rr ears split paths, which needs the wavefront integrator's path pool; use --integrator wavefront");
   if (est.needsFloatAtomics() && !ctx.hasFloatAtomics())
     throw Error("light_samples > 1 needs buffer float atomics (VK_EXT_shader_atomic_float), which this device lacks");
   // A scene without emitters has no shadow stage: its queue is not allocated (a placeholder is bound).
@@ -74,7 +75,8 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
   };
   paths_ = storage(uint64_t(pool_) * sizeof(gpu::PathState));
   hits_ = storage(megakernel ? 16 : uint64_t(pool_) * 16);
-  queues_ = storage(megakernel ? 16 : uint64_t(pool_) * 8);
+  const bool ears = settings_.estimator.rr == RouletteMode::Ears;
+  queues_ = storage(megakernel ? 16 : uint64_t(pool_) * 4 * (ears ? 3 : 2));  // EARS: a copy queue too
   shadowQueue_ = storage(hasShadowStage_ ? size.shadowSlots * sizeof(gpu::ShadowRay) : 16);
   // Room for every item of the larger trace stage, so a deferred walk is never turned away in practice.
   deepWalks_ = storage(megakernel ? 16 : std::max<uint64_t>(pool_, size.shadowSlots) * sizeof(uint32_t));
@@ -85,7 +87,7 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
   if (!control_.mapped()) controlMirror_ = vk::Buffer(ctx_, sizeof(gpu::Control), 0, vk::MemoryKind::HostVisible);
   film_ = storage(pixels * sizeof(gpu::FilmPixel), exchange);
   film_.zero();
-  pixelEstimate_ = storage(pixels * sizeof(float), exchange);
+  pixelEstimate_ = storage(pixels * sizeof(glm::vec4), exchange);
   pixelEstimate_.zero();
   rouletteTable_ = storage(gpu::kRouletteTableDepths * sizeof(float), vk::MemoryKind::HostVisible);
   std::array<float, kRouletteTableDepths> noRoulette;
@@ -95,6 +97,8 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
       storage(settings_.recordDepthStats ? uint64_t(pool_) * gpu::kRouletteTableDepths * 8 : 16, vk::MemoryKind::HostVisible);
   queueStats_ = storage(gpu::kQueueStatsBounces * 8, exchange);
   // The pixel filter's header and sampling table (read only by filters other than the pixel's box).
+  ears_ = std::make_unique<EarsCache>(ctx_, scene_.info(), pool_, settings_.estimator.rr == RouletteMode::Ears);
+  deviceBytes_ += ears_->deviceBytes();
   const std::vector<float> filter = pixelFilterBufferData(buildPixelFilterTable(settings_.filter));
   pixelFilter_ = storage(filter.size() * sizeof(float));
   pixelFilter_.upload(filter.data(), filter.size() * sizeof(float));
@@ -133,6 +137,7 @@ void PathRenderer::bindBuffers() {
   layout_->bindStorage(BINDING_DEPTH_STATS, depthStats_);
   layout_->bindStorage(BINDING_QUEUE_STATS, queueStats_);
   layout_->bindStorage(BINDING_PIXEL_FILTER, pixelFilter_);
+  ears_->bindTo(*layout_);
 }
 
 PathRenderer::~PathRenderer() = default;
@@ -223,6 +228,10 @@ void PathRenderer::recordBounce(VkCommandBuffer cmd, const gpu::PushConstants& p
   vk::dispatchIndirect(cmd, *layout_, *kernels_.intersectDeep, &pc, sizeof(pc), control_, offsetof(gpu::Control, deepArgs));
   if (timer) timer->end(cmd);
   vk::dispatchIndirect(cmd, *layout_, *kernels_.shade, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs), timer);
+  if (kernels_.earsCopies) {
+    vk::dispatch(cmd, *layout_, *kernels_.prepareCopies, &pc, sizeof(pc), 1, timer);
+    vk::dispatchIndirect(cmd, *layout_, *kernels_.earsCopies, &pc, sizeof(pc), control_, offsetof(gpu::Control, copyArgs), timer);
+  }
   if (!hasShadowStage_) return;
   vk::dispatch(cmd, *layout_, *kernels_.prepareShadow, &pc, sizeof(pc), 1, timer);
   if (timer) timer->begin(cmd, "shadow");
@@ -245,6 +254,7 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
   if (settings_.integrator == Integrator::Megakernel) return renderMegakernelPass(base, stats);
   gpu::PushConstants pc = base;
   const uint32_t count = pc.pathCount;
+  ears_->beginPass();
   if (settings_.recordDepthStats) {  // -1: "no decision recorded at this depth"
     auto* stats = static_cast<float*>(depthStats_.mapped());
     std::fill(stats, stats + size_t(pool_) * kRouletteTableDepths * 2, -1.0f);
@@ -277,7 +287,36 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
   }
   collectCounters(stats);
   if (settings_.recordDepthStats) collectPilot(count);
+  if (ears_->enabled()) trainEars(count + std::min(controlView().splitChildren, pool_ - count), stats);
   return bounce;
+}
+
+void PathRenderer::trainEars(uint32_t slotsUsed, RenderStats& stats) {
+  gpu::PushConstants pc{};
+  pc.queueCapacity = pool_;
+  VkCommandBuffer cmd = ctx_.beginCommands();
+  timer_->reset(cmd);
+  pc.pathCount = slotsUsed;
+  vk::dispatch(cmd, *layout_, *kernels_.earsGather, &pc, sizeof(pc), groupsFor(slotsUsed), timer_.get());
+  vk::dispatch(cmd, *layout_, *kernels_.earsTrain, &pc, sizeof(pc), groupsFor(slotsUsed * gpu::kEarsDepths), timer_.get());
+  pc.pathCount = ears_->cellCount();
+  vk::dispatch(cmd, *layout_, *kernels_.earsFold, &pc, sizeof(pc), groupsFor(pc.pathCount), timer_.get());
+  ctx_.submitAndWait(cmd);
+  timer_->collect(stats.stageSeconds);
+}
+
+void PathRenderer::updateEarsStatistics(const Film& film, double raysPerSample) {
+  const size_t pixels = film.pixels();
+  std::vector<gpu::FilmPixel> copy;
+  const auto* batch = static_cast<const gpu::FilmPixel*>(film_.mapped());
+  if (!batch) {
+    copy.resize(pixels);
+    film_.download(copy.data(), pixels * sizeof(gpu::FilmPixel));
+    batch = copy.data();
+  }
+  EarsImageStatistics s = earsImageStatistics(film, batch, kRelMseEpsilon);
+  setPixelEstimate(s.pixelEstimate);
+  ears_->setImageStatistics(raysPerSample, s.relativeVariance);
 }
 
 void PathRenderer::foldFilm(Film& film) {
@@ -293,16 +332,19 @@ void PathRenderer::foldFilm(Film& film) {
   film_.zero();
 }
 
-// The running pixel estimate that shadow-ray roulette compares tiny contributions against: the folded film's.
-std::vector<float> PathRenderer::pixelEstimateOf(const Film& film) {
-  std::vector<float> estimate(film.pixels());
-  for (size_t p = 0; p < estimate.size(); ++p)
-    estimate[p] = static_cast<float>(gpu::luminance(glm::vec3(film.mean(p, 0), film.mean(p, 1), film.mean(p, 2))));
+// The running pixel estimate that shadow-ray roulette and EARS compare contributions against: the folded film's
+// means and their luminance.
+std::vector<glm::vec4> PathRenderer::pixelEstimateOf(const Film& film) {
+  std::vector<glm::vec4> estimate(film.pixels());
+  for (size_t p = 0; p < estimate.size(); ++p) {
+    glm::vec3 mean(film.mean(p, 0), film.mean(p, 1), film.mean(p, 2));
+    estimate[p] = glm::vec4(mean, gpu::luminance(mean));
+  }
   return estimate;
 }
 
-void PathRenderer::setPixelEstimate(const std::vector<float>& estimate) {
-  pixelEstimate_.upload(estimate.data(), estimate.size() * sizeof(float));
+void PathRenderer::setPixelEstimate(const std::vector<glm::vec4>& estimate) {
+  pixelEstimate_.upload(estimate.data(), estimate.size() * sizeof(glm::vec4));
 }
 
 Film PathRenderer::render(RenderStats& stats) {
@@ -398,6 +440,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   uint32_t perPass = settings_.timeBudget > 0.0 ? 1u : maxPerPass;
   const double budget = settings_.timeBudget;
   const uint32_t firstSample = state.nextSample;
+  uint32_t earsPassSamples = 1;
   auto stopRequested = [&] { return control.stop && control.stop->load() != 0; };
   for (uint32_t s = state.nextSample; s < settings_.spp;) {
     if (budget > 0.0 && s > firstSample && since(start) >= budget) break;
@@ -405,9 +448,16 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
       state.interrupted = true;
       break;
     }
-    uint32_t samples = std::min(perPass, settings_.spp - s);
+    // EARS learns between passes: they start at one sample a pixel and double, so the cache and the image
+    // statistics are known early.
+    uint32_t samples = std::min(ears_->enabled() ? std::min(perPass, earsPassSamples) : perPass, settings_.spp - s);
     double passStart = since(start);
+    const uint64_t raysBefore = stats.rays();
     renderSamples(s, samples, stats);
+    if (ears_->enabled()) {
+      updateEarsStatistics(state.film, double(stats.rays() - raysBefore) / (double(pixels) * samples));
+      earsPassSamples = std::min(2 * earsPassSamples, maxPerPass);
+    }
     s += samples;
     state.nextSample = s;
     inBatch += samples;

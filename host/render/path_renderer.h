@@ -16,6 +16,7 @@
 #include "render/render_state.h"
 #include "render/render_kernels.h"
 #include "render/render_settings.h"
+#include "render/ears_cache.h"
 #include "render/film.h"
 #include "render/gpu_scene.h"
 #include "scene/camera_rig.h"
@@ -44,9 +45,9 @@ class PathRenderer {
   std::vector<gpu::FilmPixel> takeBatch();                                       // the device's batch, then zeroed
   void restoreBatch(const std::vector<gpu::FilmPixel>& batch);
   void uploadPixelEstimate(const Film& film) { setPixelEstimate(pixelEstimateOf(film)); }
-  // Shadow roulette's running per-pixel estimate: the luminance of the film's means.
-  static std::vector<float> pixelEstimateOf(const Film& film);
-  void setPixelEstimate(const std::vector<float>& estimate);
+  // The running per-pixel estimate (shadow roulette, EARS): the film's means, w their luminance.
+  static std::vector<glm::vec4> pixelEstimateOf(const Film& film);
+  void setPixelEstimate(const std::vector<glm::vec4>& estimate);
   // Derived stats (GPU seconds, queue occupancy) once the passes are done; the queue counters add to `before`.
   void finishStats(RenderStats& stats, const RenderStats& before);
   // Efficiency roulette: the per-depth scales k_d the kernels read.
@@ -54,6 +55,8 @@ class PathRenderer {
   // Pilot statistics gathered by render() when settings.recordDepthStats is set.
   const std::vector<PilotPath>& pilot() const { return pilot_; }
   uint64_t deviceBytes() const { return deviceBytes_; }
+  // EARS's cache (placeholders unless the estimator's rr is ears).
+  EarsCache& ears() { return *ears_; }
 
  private:
   uint32_t renderPass(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples, RenderStats& stats);
@@ -70,6 +73,10 @@ class PathRenderer {
   void publishControl(VkCommandBuffer cmd);
   void collectCounters(RenderStats& stats);
   void foldFilm(Film& film);
+  // EARS after a pass: its records into the cache (slotsUsed: the pass's path slots), then the image statistics
+  // of the film so far (raysPerSample: the pass's) for the next pass's factors.
+  void trainEars(uint32_t slotsUsed, RenderStats& stats);
+  void updateEarsStatistics(const Film& film, double raysPerSample);
   // The state as of the last pass: seconds, queue occupancy, and the device's unfolded batch.
   void snapshot(RenderState& state, uint32_t inBatch, double seconds, const RenderStats& before);
   uint32_t groupsFor(uint32_t invocations) const;
@@ -86,6 +93,7 @@ class PathRenderer {
   vk::Buffer paths_, hits_, queues_, shadowQueue_, deepWalks_, control_, film_, pixelEstimate_, rouletteTable_, depthStats_,
       queueStats_, pixelFilter_;
   vk::Buffer controlMirror_;  // host-visible copy of control_ where control_ is device-local
+  std::unique_ptr<EarsCache> ears_;
   std::vector<PilotPath> pilot_;
   void collectPilot(uint32_t pathCount);
   double pipelineSeconds_ = 0.0;

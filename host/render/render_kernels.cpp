@@ -11,10 +11,15 @@
 #include "render/background_warm_up.h"
 #include "spirv/accumulate_spv.h"
 #include "spirv/camera_rays_spv.h"
+#include "spirv/ears_copies_spv.h"
+#include "spirv/ears_fold_spv.h"
+#include "spirv/ears_gather_spv.h"
+#include "spirv/ears_train_spv.h"
 #include "spirv/intersect_deep_spv.h"
 #include "spirv/intersect_spv.h"
 #include "spirv/megakernel_spv.h"
 #include "spirv/prepare_bounce_spv.h"
+#include "spirv/prepare_copies_spv.h"
 #include "spirv/prepare_shadow_spv.h"
 #include "spirv/shade_atomic_spv.h"
 #include "spirv/shade_spv.h"
@@ -59,6 +64,9 @@ KernelPlan planKernels(const RenderSettings& s) {
     plan.kernels.push_back(est.needsFloatAtomics() ? "shadow (float atomics)" : "shadow");
   }
   if (s.integrator == Integrator::Wavefront) plan.kernels.push_back("accumulate");
+  if (est.rr == RouletteMode::Ears) {
+    for (const char* k : {"prepare_copies", "ears_copies", "ears_gather", "ears_train", "ears_fold"}) plan.kernels.push_back(k);
+  }
   plan.specs = {{SPEC_WORKGROUP_SIZE, s.workgroupSize},
                 {SPEC_HAS_LIGHTS, s.features.lights() ? 1u : 0u},
                 {SPEC_HAS_PUNCTUAL, s.features.punctualLights > 0 ? 1u : 0u},
@@ -113,6 +121,13 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
     }
   }
   planned.push_back({&k.accumulate, "accumulate", kSpirv_accumulate, true});
+  if (est.rr == RouletteMode::Ears) {
+    planned.push_back({&k.prepareCopies, "prepare_copies", kSpirv_prepare_copies, false});
+    planned.push_back({&k.earsCopies, "ears_copies", kSpirv_ears_copies, false});
+    planned.push_back({&k.earsGather, "ears_gather", kSpirv_ears_gather, false});
+    planned.push_back({&k.earsTrain, "ears_train", kSpirv_ears_train, false});
+    planned.push_back({&k.earsFold, "ears_fold", kSpirv_ears_fold, false});
+  }
   std::vector<KernelSource> helperShare;
   if (compilesAtFirstDispatch(ctx))
     for (const Planned& p : planned)

@@ -12,6 +12,8 @@ namespace vkmc {
 struct RenderKernels {
   std::unique_ptr<vk::Kernel> camera, prepareBounce, intersect, intersectDeep, shade, prepareShadow, shadow, shadowDeep,
       accumulate, megakernel;
+  // EARS: the copy stage after shade, and the training after each pass (kernels/ears_*.comp, prepare_copies.comp).
+  std::unique_ptr<vk::Kernel> prepareCopies, earsCopies, earsGather, earsTrain, earsFold;
 };
 
 // The kernels a render dispatches, with the specialization constants each is built with.

@@ -65,10 +65,14 @@ layout(binding = BINDING_RAY_QUEUES, std430) buffer RayQueues { uint rayQueues[]
 layout(binding = BINDING_SHADOW_QUEUE, std430) buffer ShadowQueue { ShadowRay shadowRays[]; };
 layout(binding = BINDING_CONTROL, std430) buffer ControlBuffer { Control control; };
 layout(binding = BINDING_FILM, std430) buffer Film { FilmPixel film[]; };
-layout(binding = BINDING_PIXEL_ESTIMATE, std430) readonly buffer PixelEstimate { float pixelEstimate[]; };
+layout(binding = BINDING_PIXEL_ESTIMATE, std430) readonly buffer PixelEstimate { vec4 pixelEstimate[]; };
 layout(binding = BINDING_ROULETTE_TABLE, std430) readonly buffer RouletteTable { float rouletteScale[]; };
 layout(binding = BINDING_DEPTH_STATS, std430) buffer DepthStats { vec2 depthStats[]; };
 layout(binding = BINDING_QUEUE_STATS, std430) buffer QueueStats { uvec2 queueStats[]; };
+layout(binding = BINDING_EARS_HEADER, std430) buffer EarsHeaderBuffer { EarsHeader earsHeader; };
+layout(binding = BINDING_EARS_CELLS, std430) buffer EarsCells { EarsCell earsCells[]; };
+layout(binding = BINDING_EARS_RECORDS, std430) buffer EarsRecords { EarsRecord earsRecords[]; };
+layout(binding = BINDING_EARS_SLOTS, std430) buffer EarsSlots { EarsSlot earsSlots[]; };
 layout(binding = BINDING_PUNCTUAL_LIGHTS, std430) readonly buffer PunctualLights { PunctualLight punctualLights[]; };
 layout(binding = BINDING_ENVIRONMENT, std430) readonly buffer Environment {
   EnvironmentHeader envHeader;
@@ -80,6 +84,11 @@ layout(binding = BINDING_ENVIRONMENT_DISTRIBUTION, std430) readonly buffer Envir
 uint invocationIndex() {
   return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
 }
+
+// EARS: whether a path (by its sample's root slot) trains the cache: the pass's first kEarsTrainingPaths samples,
+// at least its first sample of each pixel, and the copies split from them. The training's atomics (slots, records,
+// cells) then cost a share of a large pass, not all of it.
+bool earsTrains(uint root) { return root < max(pc.pixelCount, kEarsTrainingPaths); }
 
 uint inQueueBase() { return (pc.bounce & 1u) * pc.queueCapacity; }
 uint outQueueBase() { return ((pc.bounce + 1u) & 1u) * pc.queueCapacity; }

@@ -308,8 +308,9 @@ bool onConsistentSide(SurfacePoint s, GltfMaterial gm, vec3 wi, vec3 wiLocal) {
 }
 
 // Light sample j of `samples` at s: the shadow ray to trace, carrying the contribution it adds if unoccluded;
-// false when the sample adds nothing (or was rouletted away).
-bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo, uint j, uint samples, out ShadowRay ray) {
+// false when the sample adds nothing (or was rouletted away). `slot` is the path copy's slot (EARS trains on it).
+bool prepareLightSample(PathState path, uint slot, SurfacePoint s, GltfMaterial gm, vec3 wo, uint j, uint samples,
+                        out ShadowRay ray) {
   uint depth = path.depth;
   SampleStream stream = pathStream(path);
   uvec4 light = selectLight(sampleU(stream, lightDim(depth, j, 0u)));
@@ -331,13 +332,13 @@ bool prepareLightSample(PathState path, SurfacePoint s, GltfMaterial gm, vec3 wo
   vec3 contribution = path.throughput.rgb * f * ls.arriving * (abs(wiLocal.z) * weight / (ls.pdf * float(samples)));
   if (!allFinite(contribution)) atomicAdd(control.nonfiniteLightSamples, 1u);  // still queued: it poisons the sample
   else if (!(maxComponent(contribution) > 0.0)) return false;
-  if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * pixelEstimate[path.pixel]) {
+  if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * pixelEstimate[path.pixel].w) {
     RouletteStep rr = fixedRoulette(kShadowRouletteQ, sampleU(stream, lightDim(depth, j, 3u)));
     if (!rr.survives) return false;
     contribution /= rr.survival;
   }
   vec3 origin = offsetRayOrigin(s.p, s.pError, s.ng, ls.wi);
-  ray.origin = vec4(origin, 1.0 - 1e-4);
+  ray.origin = vec4(origin, uintBitsToFloat(slot));
   ray.direction = vec4(ls.target - origin, uintBitsToFloat(path.rootPath));
   ray.contribution = vec4(contribution, uintBitsToFloat(alphaKey(streamHash(stream), lightDim(depth, j, 0u) | 0x80000000u)));
   return true;
@@ -406,14 +407,17 @@ bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3
     gathered += beta;
     return false;
   }
-  float splitWeight = path.throughput.w * q;  // roulette judges a child by its unsplit throughput
+  // Roulette judges a child by its unsplit throughput. Under EARS q < 1 is itself roulette, which the throughput
+  // keeps: judged without it, survival would shrink like the product of past survivals (infinite variance).
+  float splitWeight = path.throughput.w * max(q, 1.0);
   continues = continues && maxComponent(beta) > 0.0;
   // pbrt-v4's etaScale: radiance entering a denser medium is scaled by 1 / eta^2 (bsdf_gltf.h); roulette judges
   // the throughput without that factor, so paths are not killed for being inside glass.
   float etaScale = path.origin.w;
   if (kHasTransmission != 0u && bs.wi.z < 0.0 && !gm.thinWalled) etaScale *= gm.eta * gm.eta;
 
-  if (continues && rouletteApplies(depth, kRouletteDepth) && kRouletteMode != kRouletteNone) {
+  // EARS decides at the vertex (ears_shade.glsl), before its copies: q arrives here as the split factor.
+  if (continues && rouletteApplies(depth, kRouletteDepth) && kRouletteMode != kRouletteNone && kRouletteMode != kRouletteEars) {
     float r = sampleU(stream, bounceDim(depth, kDimRoulette));
     float scale = kRouletteMode == kRouletteEfficiency ? rouletteScale[min(depth, kRouletteTableDepths - 1u)] : 1.0;
     RouletteStep rr = rouletteStep(kRouletteMode, maxComponent(beta) * splitWeight * etaScale, scale, kRouletteQ, r);

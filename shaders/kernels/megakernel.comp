@@ -35,7 +35,7 @@ void main() {
     bool anyHit = tracingLightSample;
     vec3 origin = anyHit ? ray.origin.xyz : path.origin.xyz;
     vec3 dir = anyHit ? ray.direction.xyz : path.direction.xyz;
-    float tMax = anyHit ? ray.origin.w : 3.0e38;
+    float tMax = anyHit ? kShadowRayTMax : 3.0e38;
     bool complete;
     walkRayKey = anyHit ? floatBitsToUint(ray.contribution.w) : alphaKey(streamHash(pathStream(path)), bounceDim(path.depth, 0u));
     vec4 hit = traceRay(origin, dir, tMax, anyHit, complete);
@@ -72,7 +72,7 @@ void main() {
     // The vertex's next light sample, if any is left; else the vertex is done and the path continues.
     tracingLightSample = false;
     for (; j < samples; ++j) {
-      if (prepareLightSample(path, s, gm, wo, j, samples, ray)) {
+      if (prepareLightSample(path, id, s, gm, wo, j, samples, ray)) {
         ++shadow;
         tracingLightSample = true;
         break;

@@ -13,6 +13,7 @@ void main() {
   else control.extensionRays += n;
   control.rayQueueCount[(pc.bounce + 1u) & 1u] = 0u;
   control.shadowQueueCount = 0u;
+  control.copyQueueCount = 0u;
   control.deepArgs = uvec4(0u, 1u, 1u, 0u);  // intersect's deferred walks start empty
   uint accumulateGroups = (pc.pixelCount + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x;
   control.accumulateArgs = uvec4(n == 0u ? accumulateGroups : 0u, 1u, 1u, 0u);

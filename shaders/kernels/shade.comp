@@ -11,23 +11,8 @@
 #include "common.glsl"
 #include "shading.glsl"
 
-// Radiance of a sample accumulates in its root path. A non-finite value is counted here by kind and still
-// added: the whole sample is then excluded (and counted) by accumulate, never written to the image. Without BSDF
-// splitting a path is its own root and is alone in its slot during this dispatch; with splitting, siblings add
-// concurrently, hence the atomics.
-void addToSample(uint id, uint root, vec3 value) {
-  if (!allFinite(value)) atomicAdd(control.nonfiniteEmission, 1u);
-  else if (!(maxComponent(abs(value)) > 0.0)) return;
-#ifdef VKMC_FLOAT_ATOMICS
-  if (kBsdfSamples > 1.0) {
-    atomicAdd(paths[root].radiance.r, value.r);
-    atomicAdd(paths[root].radiance.g, value.g);
-    atomicAdd(paths[root].radiance.b, value.b);
-    return;
-  }
-#endif
-  paths[id].radiance.rgb += value;
-}
+#include "shade_output.glsl"
+#include "ears_shade.glsl"
 
 void main() {
   uint slot = invocationIndex();
@@ -52,11 +37,16 @@ void main() {
   GltfMaterial gm = shadeSurface(m, s, wo);
   vec3 gathered = emissionAt(path, s, m, tri, hit, wo);
   vec3 woLocal = wo * s.frame;
+  if (kRouletteMode == kRouletteEars) {
+    addToSample(id, root, gathered);  // the hit's emission: the previous vertex's copy gathered it
+    shadeEarsVertex(path, id, hit, s, gm, wo, woLocal);
+    return;
+  }
   if (belowDepthCap(depth) && kHasLights != 0u && kNee != 0u) {
     uint samples = lightSamplesAt(depth);
     for (uint j = 0u; j < samples; ++j) {
       ShadowRay ray;
-      if (prepareLightSample(path, s, gm, wo, j, samples, ray)) shadowRays[atomicAdd(control.shadowQueueCount, 1u)] = ray;
+      if (prepareLightSample(path, id, s, gm, wo, j, samples, ray)) shadowRays[atomicAdd(control.shadowQueueCount, 1u)] = ray;
     }
   }
 
@@ -77,16 +67,7 @@ void main() {
   for (uint c = 0u; c < children; ++c) {
     PathState next;
     if (!continuePath(path, id, s, gm, woLocal, c, q, gathered, next)) continue;
-    uint target = c == 0u ? id : firstChild + c - 1u;
-    paths[target].origin = next.origin;
-    paths[target].direction = next.direction;
-    paths[target].throughput = next.throughput;
-    paths[target].pixel = next.pixel;
-    paths[target].rngKey = next.rngKey;
-    paths[target].depth = next.depth;
-    paths[target].rootPath = next.rootPath;
-    if (c > 0u) paths[target].radiance = vec4(0.0);
-    rayQueues[outQueueBase() + atomicAdd(control.rayQueueCount[(pc.bounce + 1u) & 1u], 1u)] = target;
+    queueContinuation(c == 0u ? id : firstChild + c - 1u, next, c > 0u);
   }
   addToSample(id, root, gathered);
 }

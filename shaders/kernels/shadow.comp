@@ -17,7 +17,7 @@ void main() {
   vec4 h;
   bool complete;
   walkRayKey = floatBitsToUint(s.contribution.w);
-  if (!traceItem(slot, s.origin.xyz, s.direction.xyz, s.origin.w, true, h, complete)) return;
+  if (!traceItem(slot, s.origin.xyz, s.direction.xyz, kShadowRayTMax, true, h, complete)) return;
   if (!complete) {  // as in intersect: counted, and the sample poisoned
     atomicAdd(control.walksCut, 1u);
     s.contribution.rgb = vec3(uintBitsToFloat(0x7fc00000u));
@@ -26,6 +26,13 @@ void main() {
   }
   uint id = floatBitsToUint(s.direction.w);  // the root path of the sample
 #ifdef VKMC_FLOAT_ATOMICS
+  // EARS trains on what each path copy gathered: the slot that sampled the light (origin.w) sums it.
+  if (kRouletteMode == kRouletteEars && earsTrains(id) && allFinite(s.contribution.rgb)) {
+    uint vertexSlot = floatBitsToUint(s.origin.w);
+    atomicAdd(earsSlots[vertexSlot].gathered.r, s.contribution.r);
+    atomicAdd(earsSlots[vertexSlot].gathered.g, s.contribution.g);
+    atomicAdd(earsSlots[vertexSlot].gathered.b, s.contribution.b);
+  }
   atomicAdd(paths[id].radiance.r, s.contribution.r);
   atomicAdd(paths[id].radiance.g, s.contribution.g);
   atomicAdd(paths[id].radiance.b, s.contribution.b);

@@ -40,11 +40,12 @@ void echoStructs() {
   for (uint r = 0u; r + 1u < kSampleReplicates; ++r) put4(f.replicate[r]);
   put(control.rayQueueCount[0]); put(control.rayQueueCount[1]); put(control.shadowQueueCount); put(control.splitChildren);
   put4u(control.rayArgs); put4u(control.shadowArgs); put4u(control.accumulateArgs);
-  put(control.cameraRays); put(control.extensionRays); put(control.shadowRays); put(control.unusedTotal);
+  put(control.cameraRays); put(control.extensionRays); put(control.shadowRays); put(control.copyQueueCount);
   put(control.nonfiniteEmission); put(control.nonfiniteLightSamples); put(control.nonfiniteThroughput); put(control.walksCut);
   put4u(control.deepArgs);
   put(control.deepWalksDeferred); put(control.deepWalksTraced); put(control.unusedDeep0); put(control.unusedDeep1);
   put(control.walkIterations); put(control.walkNodeSteps); put(control.walkTriangleTests); put(control.walkSlowestLaneIterations);
+  put4u(control.copyArgs);
   put(pc.pathCount); put(pc.firstPixel); put(pc.sampleIndex); put(pc.bounce);
   put(pc.width); put(pc.height); put(pc.seed); put(pc.queueCapacity);
   put4(pc.cameraOrigin); put4(pc.cameraForward); put4(pc.cameraRight); put4(pc.cameraUp); put4(pc.background);

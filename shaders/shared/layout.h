@@ -2,6 +2,7 @@
 #ifndef VKMC_LAYOUT_H
 #define VKMC_LAYOUT_H
 #include "glsl_cpp.h"
+#include "ears.h"
 #include "roulette.h"  // the roulette modes
 
 // Descriptor bindings of the single set used by every kernel.
@@ -12,13 +13,15 @@
 #define BINDING_MATERIALS 4                  // Material[]
 #define BINDING_PATHS 5                      // PathState[]
 #define BINDING_HITS 6                       // vec4[] (t, b1, b2, triangle bits)
-#define BINDING_RAY_QUEUES 7                 // uint[2 * capacity]: path ids, ping-pong by bounce parity
+#define BINDING_RAY_QUEUES 7                 // uint[2 * capacity]: path ids, ping-pong by bounce parity (EARS:
+                                             // 3 * capacity, the third EARS's copy queue)
 #define BINDING_SHADOW_QUEUE 8               // ShadowRay[]
 #define BINDING_CONTROL 9                    // Control
 #define BINDING_FILM 10                      // FilmPixel[]
 #define BINDING_TEST_RAYS 11                 // TestRay[] (trace_rays kernel only)
 #define BINDING_TEST_HITS 12                 // vec4[] (trace_rays kernel only)
-#define BINDING_PIXEL_ESTIMATE 13            // float[]: running luminance estimate per pixel (shadow-ray roulette)
+#define BINDING_PIXEL_ESTIMATE 13            // vec4[]: running estimate per pixel, rgb and w its luminance (shadow
+                                             // roulette, EARS)
 #define BINDING_ROULETTE_TABLE 14            // float[kRouletteTableDepths]: efficiency roulette scale per depth
 #define BINDING_DEPTH_STATS 15               // vec2[pool * kRouletteTableDepths]: pilot (beta, gathered) per path and depth
 #define BINDING_QUEUE_STATS 16               // uvec2[kQueueStatsBounces]: per bounce, paths queued (x) and shadow rays (y)
@@ -33,7 +36,11 @@
 #define BINDING_PIXEL_FILTER 24              // PixelFilterHeader + float[]: the pixel filter's table (pixel_filter.h)
 #define BINDING_LAYER_ALBEDO 25              // uimageBuffer: the clearcoat and sheen albedo table as float bits (layer_albedo.h)
 #define BINDING_TEXTURE_PAGES 26           // sampler2DArray[kTexturePageViews]: every texture in one array image (texture_layout.h)
-#define BINDING_COUNT 27
+#define BINDING_EARS_HEADER 27             // EarsHeader (ears.h): the cache's parameters and the factor histogram
+#define BINDING_EARS_CELLS 28              // EarsCell[]: the learned cache
+#define BINDING_EARS_RECORDS 29            // EarsRecord[pool * kEarsDepths]: each slot's training vertices
+#define BINDING_EARS_SLOTS 30              // EarsSlot[pool]
+#define BINDING_COUNT 31
 
 // Texel formats of the scene bindings as GLSL image-format qualifiers (common.glsl declares the bindings with
 // them); the host derives each VkFormat from the same token (sceneTexelFormat in host/render/gpu_scene.cpp).
@@ -88,6 +95,7 @@
 VKMC_BEGIN_NAMESPACE
 
 VKMC_CONST uint kMissPrimitive = 0xffffffffu;
+VKMC_CONST float kShadowRayTMax = 1.0f - 1e-4f;  // a shadow ray's end, in units of its direction (short of the light)
 VKMC_CONST uint kWorkgroupSize = 64u;
 VKMC_CONST uint kMaterialDoubleSided = 1u;  // Material.flags bits
 VKMC_CONST uint kMaterialAlphaMask = 2u;    // alpha below alphaCutoff: the surface is not there
@@ -120,8 +128,8 @@ struct PathState {
 };
 
 struct ShadowRay {
-  vec4 origin;        // xyz, w: tmax in units of |direction|
-  vec4 direction;     // xyz: unnormalized (to the light point), w: path id as float bits
+  vec4 origin;        // xyz, w: the slot of the path copy that sampled it, as float bits (EARS training)
+  vec4 direction;     // xyz: unnormalized (to the light point, tmax kShadowRayTMax), w: root path id as float bits
   vec4 contribution;  // rgb added to the path if unoccluded, w: its stochastic-alpha key (rng.h alphaKey) as float bits
 };
 
@@ -212,7 +220,8 @@ struct Control {
   uvec4 rayArgs;         // dispatch of intersect and shade (x, y, z)
   uvec4 shadowArgs;      // dispatch of shadow
   uvec4 accumulateArgs;  // dispatch of accumulate: non-zero only once no path is alive
-  uint cameraRays, extensionRays, shadowRays, unusedTotal;
+  uint cameraRays, extensionRays, shadowRays;
+  uint copyQueueCount;  // EARS: vertex copies queued for the copy stage this bounce (ears_shade.glsl)
   // Non-finite values by the stage that produced them (the sample is then excluded by accumulate):
   uint nonfiniteEmission;      // emission and other gathered radiance
   uint nonfiniteLightSamples;  // light-sample contributions
@@ -225,6 +234,7 @@ struct Control {
   // SPEC_WALK_STATS, summed over rays: loop iterations, node steps, triangle tests, and the iterations of each
   // subgroup's slowest lane (summed over subgroups, times the subgroup size).
   uint walkIterations, walkNodeSteps, walkTriangleTests, walkSlowestLaneIterations;
+  uvec4 copyArgs;  // dispatch of EARS's copy stage
 };
 
 struct TestRay {
@@ -290,7 +300,7 @@ static_assert(sizeof(EnvironmentHeader) == 48 && offsetof(EnvironmentHeader, sce
 static_assert(offsetof(EnvironmentHeader, selectionPmf) == 32);
 static_assert(sizeof(PixelFilterHeader) == 32 && offsetof(PixelFilterHeader, params) == 16);
 static_assert(sizeof(FilmPixel) == 112 && offsetof(FilmPixel, replicate) == 64);
-static_assert(sizeof(Control) == 144);
+static_assert(sizeof(Control) == 160 && offsetof(Control, copyArgs) == 144);
 static_assert(offsetof(Control, deepArgs) == 96);
 static_assert(offsetof(Control, rayArgs) == 16 && offsetof(Control, accumulateArgs) == 48);
 static_assert(offsetof(Control, cameraRays) == 64 && offsetof(Control, walksCut) == 92);

@@ -12,8 +12,10 @@ VKMC_BEGIN_NAMESPACE
 // variance above albedo 0.975. 0.999 keeps the variance finite up to albedo 0.9995 and still ends paths.
 VKMC_CONST float kRouletteMaxSurvival = 0.999f;
 
-// Roulette modes (SPEC_RR_MODE): none, fixed q, throughput (the sqrt rule below), efficiency (scaled max beta).
-VKMC_CONST uint kRouletteNone = 0u, kRouletteFixed = 1u, kRouletteThroughput = 2u, kRouletteEfficiency = 3u;
+// Roulette modes (SPEC_RR_MODE): none, fixed q, throughput (the sqrt rule below), efficiency (scaled max beta),
+// ears (roulette and splitting by a learned cache, ears.h).
+VKMC_CONST uint kRouletteNone = 0u, kRouletteFixed = 1u, kRouletteThroughput = 2u, kRouletteEfficiency = 3u,
+                kRouletteEars = 4u;
 
 // One roulette decision: whether the path survives, and the probability a survivor's throughput is divided by.
 struct RouletteStep {

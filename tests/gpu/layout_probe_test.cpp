@@ -66,11 +66,12 @@ Words echoedByName(const gpu::PathState& p, const gpu::ShadowRay& r, const gpu::
   for (const glm::vec4& r : f.replicate) e.put4(r);
   e.put(c.rayQueueCount[0]), e.put(c.rayQueueCount[1]), e.put(c.shadowQueueCount), e.put(c.splitChildren);
   e.put4u(c.rayArgs), e.put4u(c.shadowArgs), e.put4u(c.accumulateArgs);
-  e.put(c.cameraRays), e.put(c.extensionRays), e.put(c.shadowRays), e.put(c.unusedTotal);
+  e.put(c.cameraRays), e.put(c.extensionRays), e.put(c.shadowRays), e.put(c.copyQueueCount);
   e.put(c.nonfiniteEmission), e.put(c.nonfiniteLightSamples), e.put(c.nonfiniteThroughput), e.put(c.walksCut);
   e.put4u(c.deepArgs);
   e.put(c.deepWalksDeferred), e.put(c.deepWalksTraced), e.put(c.unusedDeep0), e.put(c.unusedDeep1);
   e.put(c.walkIterations), e.put(c.walkNodeSteps), e.put(c.walkTriangleTests), e.put(c.walkSlowestLaneIterations);
+  e.put4u(c.copyArgs);
   e.put(pc.pathCount), e.put(pc.firstPixel), e.put(pc.sampleIndex), e.put(pc.bounce);
   e.put(pc.width), e.put(pc.height), e.put(pc.seed), e.put(pc.queueCapacity);
   e.put4(pc.cameraOrigin), e.put4(pc.cameraForward), e.put4(pc.cameraRight), e.put4(pc.cameraUp), e.put4(pc.background);

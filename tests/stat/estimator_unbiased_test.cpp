@@ -39,6 +39,7 @@ std::vector<Variant> variants() {
   });
   add("rr throughput from 1", [](EstimatorConfig& c) { c.rrDepth = 1; });
   add("rr efficiency", [](EstimatorConfig& c) { c.rr = RouletteMode::Efficiency; });
+  add("rr ears", [](EstimatorConfig& c) { c.rr = RouletteMode::Ears; });
   add("light samples 4", [](EstimatorConfig& c) { c.lightSamples = 4; });
   add("light samples 3, split depth 3", [](EstimatorConfig& c) {
     c.lightSamples = 3;
@@ -144,6 +145,20 @@ TEST_P(GlossyTechnique, VeachSceneMatchesTheBaselineOnEachPlate) {
 
 INSTANTIATE_TEST_SUITE_P(Unbiased, EstimatorVariant, ::testing::ValuesIn(variants()), variantName);
 INSTANTIATE_TEST_SUITE_P(Unbiased, GlossyTechnique, ::testing::ValuesIn(glossyTechniques()), variantName);
+
+// EARS on the stiff furnace: a vertex whose copies each reflect 99% of L is split wherever the cache says so; the
+// pool bounds the splits (a full pool leaves a vertex as it is) and the mean stays L.
+TEST(EstimatorUnbiased, StiffFurnaceWithEars) {
+  EstimatorConfig e;
+  e.rr = RouletteMode::Ears;
+  RenderOutcome r = renderWith("furnace_stiff.gltf", e, 16, 16, 192);
+  ASSERT_EQ(r.film.totalNonfinite(), 0u);
+  RegionStats s = whole(r.film);
+  EXPECT_TRUE(regionMatches(s, glm::dvec3(100.0), 5.0));
+  EXPECT_LT(std::sqrt(s.variance.x), 0.5) << "the test must resolve a 2.5% bias";
+  ASSERT_TRUE(r.ears);
+  EXPECT_GT(r.ears->learningPasses, 0u);
+}
 
 // Efficiency roulette on this furnace (8x8, 64 spp, no cap) is stiff_furnace_test's full render, at 5 sigma there.
 TEST(EstimatorUnbiased, StiffFurnaceWithThroughputRoulette) {

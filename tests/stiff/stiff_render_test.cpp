@@ -68,6 +68,29 @@ TEST(StiffRender, TinyIntenseLightMatchesTheAnalyticRadiance) {
                b.film.totalNonfinite() == 0);
 }
 
+// The same light under rr ears: a pixel's few bright vertices get split, the rest rouletted; the image mean and
+// the pixels stay the analytic radiance.
+TEST(StiffRender, TinyIntenseLightWithEars) {
+  const uint32_t n = 16;
+  EstimatorConfig e;
+  e.sampler = Sampler::Independent;
+  e.rr = RouletteMode::Ears;
+  RenderOutcome r = renderWith("stiff/tiny_light.gltf", e, n, n, 256);
+  ASSERT_EQ(r.film.totalNonfinite(), 0u);
+  double expectedMean = 0;
+  for (uint32_t j = 0; j < n; ++j)
+    for (uint32_t i = 0; i < n; ++i) expectedMean += tinyLightPixel(i, j, n) / (n * n);
+  RegionStats s = whole(r.film);
+  EXPECT_TRUE(belowSigmas(zTest(s.mean.x, expectedMean, std::sqrt(s.variance.x)), 4.0)) << "image mean";
+  for (auto [i, j] : {std::pair{8u, 8u}, std::pair{3u, 12u}, std::pair{0u, 0u}}) {
+    size_t p = size_t(j) * n + i;
+    ZTest pixel = zTest(r.film.mean(p, 0), tinyLightPixel(i, j, n), std::sqrt(r.film.varianceOfMean(p, 0)));
+    EXPECT_TRUE(belowSigmas(pixel, 4.0)) << "pixel " << i << "," << j;
+  }
+  ASSERT_TRUE(r.ears);
+  EXPECT_GT(r.ears->trustedCells, 0u);
+}
+
 TEST(StiffRender, RouletteAndSplittingAtTheEdges) {
   // Case 9 on the white furnace (L = 2). One roulette decision (at the first continuation, depth cap 1, so
   // L = Le (1 + a) = 1.5) with termination probability 0.999: survivors weigh 1000; the mean is unchanged and

@@ -1,0 +1,64 @@
+// EARS's learned cache on the device (shaders/shared/ears.h): its cells, each path slot's training records, the
+// header the kernels read, and, between passes, the image statistics every factor is scaled by. Without EARS the
+// bindings get 16-byte placeholders.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "../shaders/shared/layout.h"
+#include "render/film.h"
+#include "render/gpu_scene.h"
+#include "vk/buffer.h"
+#include "vk/context.h"
+#include "vk/kernel.h"
+
+namespace vkmc {
+
+// The image statistics of the passes so far that the factors need.
+struct EarsImageStatistics {
+  std::vector<glm::vec4> pixelEstimate;  // each pixel's mean, w its luminance (0 without samples)
+  double relativeVariance = 0.0;         // per sample: mean over pixels and channels of variance / (I^2 + epsilon)
+};
+// From the folded film and the device's unfolded batch (null: none).
+EarsImageStatistics earsImageStatistics(const Film& film, const gpu::FilmPixel* batch, double epsilon);
+
+// What a render's cache learned, for the report.
+struct EarsSummary {
+  uint32_t cells = 0;           // in the hash table
+  uint32_t occupiedCells = 0;   // with any training sample
+  uint32_t trustedCells = 0;    // with enough to decide (kEarsMinCellSamples)
+  uint64_t deviceBytes = 0;     // cells, records, slots and header
+  uint32_t learningPasses = 0;  // passes whose factors came from the cache
+  double imageFactor = 0.0;     // sqrt(C_img / V_img) of the last pass
+  // Over every cell: the training copies, and their mean Lr, Lr^2 (per channel) and rays.
+  double copies = 0.0, meanRays = 0.0;
+  glm::dvec3 meanLr{0.0}, meanLrSquared{0.0};
+  std::array<std::array<uint64_t, gpu::kEarsBins>, gpu::kEarsHistogramDepths> factors{};  // vertices by depth and bin
+};
+
+class EarsCache {
+ public:
+  // enabled false: placeholders only. pathSlots: the path pool (kEarsDepths records each).
+  EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathSlots, bool enabled);
+  bool enabled() const { return enabled_; }
+  void bindTo(vk::KernelLayout& layout) const;
+  // Between passes: the factors' image statistics (C_img: rays per sample of the pass just done).
+  void setImageStatistics(double raysPerSample, double relativeVariance);
+  // At a pass's start: counts the passes whose factors come from the cache.
+  void beginPass();
+  EarsSummary summary();
+  uint64_t deviceBytes() const { return deviceBytes_; }
+  uint32_t cellCount() const { return cells_; }
+  std::vector<gpu::EarsCell> downloadCells();  // for tests
+
+ private:
+  gpu::EarsHeader& header() const { return *static_cast<gpu::EarsHeader*>(header_.mapped()); }
+  bool enabled_;
+  uint32_t cells_ = 0;
+  uint32_t learningPasses_ = 0;
+  uint64_t deviceBytes_ = 0;
+  vk::Buffer header_, cellBuffer_, records_, slots_;
+};
+
+}  // namespace vkmc

@@ -1,0 +1,97 @@
+// EARS at one vertex of the wavefront (shared/ears.h): the factor q from the vertex's cache cell, then
+// floor(q + u) copies of the vertex's estimate, its light samples and its BSDF continuation, each weighted 1/q.
+// Copy 0 runs in the vertex's own invocation; the others take pool slots and run one per invocation in a second
+// dispatch over the copy queue (kernels/ears_copies.comp), so a lane that splits 20 ways does not hold its SIMD
+// group for 20 iterations. Each copy at a training depth leaves a record (EarsRecord) that the pass's end fills
+// with what its subtree gathered (kernels/ears_*.comp). Needs shade_output.glsl.
+
+// The copy queue: the third region of BINDING_RAY_QUEUES. A queued slot holds the vertex's path (before its
+// factor) and hit; its radiance field, unused by a split child, carries (q, copy index bits, parent slot bits, 0).
+uint copyQueueBase() { return 2u * pc.queueCapacity; }
+
+// The factor at a vertex and whether the cache knew its cell; throughput roulette (the sqrt rule, judged by the
+// throughput that reaches the vertex) where it does not.
+float earsVertexFactor(PathState path, uint cell, out bool trained) {
+  vec4 moment = earsCells[cell].momentPerCost;
+  trained = earsHeader.imageFactor > 0.0 && moment.w >= kEarsMinCellSamples;
+  float q = 1.0;
+  if (trained) {
+    vec3 estimate = pixelEstimate[path.pixel].rgb;
+    vec3 t = path.throughput.rgb / sqrt(estimate * estimate + earsHeader.epsilon);
+    q = earsFactor(t, moment.rgb, earsCells[cell].variancePerCost.rgb, earsHeader.imageFactor);
+  } else if (rouletteApplies(path.depth, kRouletteDepth)) {
+    q = rouletteSurvival(sqrt(maxComponent(path.throughput.rgb) * path.throughput.w * path.origin.w), 1.0, kRouletteMaxSurvival);
+  }
+  return path.depth >= kEarsNoSplitDepth ? min(q, kRouletteMaxSurvival) : q;
+}
+
+// The factor histogram by depth: one atomic per subgroup and bin (a bounce's paths all have the same depth).
+void countEarsFactor(uint depth, uint bin) {
+  uint row = min(depth, kEarsHistogramDepths - 1u) * kEarsBins;
+  for (uint b = 0u; b < kEarsBins; ++b) {
+    uint n = subgroupAdd(bin == b ? 1u : 0u);
+    if (subgroupElect() && n > 0u) atomicAdd(earsHeader.factors[row + b], n);
+  }
+}
+
+// Copy c of the vertex of `path` (its throughput before the factor) in slot `target`, split off from `parent`'s:
+// its record, its light samples and its BSDF continuation, each weighted 1/q.
+void shadeEarsCopy(PathState path, uint target, uint parent, SurfacePoint s, GltfMaterial gm, vec3 wo, vec3 woLocal,
+                   float q, uint c, uint cell) {
+  uint depth = path.depth;
+  bool trains = earsTrains(path.rootPath);
+  if (c > 0u && trains) earsSlots[target] = EarsSlot(vec4(0.0), parent + 1u, depth, 0u, 0u);
+  vec3 beta = path.throughput.rgb;
+  if (trains && depth < kEarsDepths && maxComponent(beta) > 0.0) {
+    vec3 scale = vec3(beta.r > 0.0 ? q / beta.r : 0.0, beta.g > 0.0 ? q / beta.g : 0.0, beta.b > 0.0 ? q / beta.b : 0.0);
+    earsRecords[target * kEarsDepths + depth] = EarsRecord(-earsSlots[target].gathered, vec4(scale, uintBitsToFloat(cell + 1u)));
+  }
+  PathState copy = path;
+  copy.rngKey = childKey(path.rngKey, depth, c);
+  copy.throughput.rgb /= q;
+  uint rays = 0u;
+  uint samples = kHasLights != 0u && kNee != 0u ? lightSamplesAt(depth) : 0u;
+  for (uint j = 0u; j < samples; ++j) {
+    ShadowRay ray;
+    if (prepareLightSample(copy, target, s, gm, wo, j, samples, ray)) {
+      shadowRays[atomicAdd(control.shadowQueueCount, 1u)] = ray;
+      ++rays;
+    }
+  }
+  vec3 poisoned = vec3(0.0);  // a non-finite throughput, counted by continuePath
+  PathState next;
+  if (continuationIsUseful(depth) && continuePath(path, target, s, gm, woLocal, c, q, poisoned, next)) {
+    queueContinuation(target, next, c > 0u);
+    ++rays;
+  }
+  if (trains) earsSlots[target].gathered.w += float(rays);
+  addToSample(target, path.rootPath, poisoned);
+}
+
+// The vertex of `path` (slot id) at hit `hit`: its factor, its copies queued, copy 0 shaded here.
+void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMaterial gm, vec3 wo, vec3 woLocal) {
+  uint depth = path.depth;
+  if (!belowDepthCap(depth)) return;
+  uint cell = earsCell(s.p, s.ng, earsHeader.grid, earsHeader.cellMask);
+  bool trained;
+  float q = earsVertexFactor(path, cell, trained);
+  // Slots for every copy but the first are taken before the copies are drawn, so whether the pool was full
+  // (then q = 1: the vertex as it is) never depends on the draw: unbiased.
+  uint spare = uint(ceil(q)) - 1u, firstChild = 0u;
+  if (spare > 0u) {
+    uint base = atomicAdd(control.splitChildren, spare);
+    if (pc.pathCount + base + spare > pc.queueCapacity) q = 1.0;
+    else firstChild = pc.pathCount + base;
+  }
+  uint copies = splitCount(q, sampleU(pathStream(path), bounceDim(depth, kDimSplit)));
+  countEarsFactor(depth, earsBin(trained, q));
+  for (uint c = 1u; c < copies; ++c) {
+    uint target = firstChild + c - 1u;
+    PathState child = path;
+    child.radiance = vec4(q, uintBitsToFloat(c), uintBitsToFloat(id), 0.0);
+    paths[target] = child;
+    hits[target] = hit;
+    rayQueues[copyQueueBase() + atomicAdd(control.copyQueueCount, 1u)] = target;
+  }
+  if (copies > 0u) shadeEarsCopy(path, id, id, s, gm, wo, woLocal, q, 0u, cell);
+}

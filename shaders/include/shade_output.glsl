@@ -1,0 +1,36 @@
+// Where a shaded vertex's results go in the wavefront (shade.comp, ears_copies.comp): radiance into its sample,
+// continuations into the next bounce's queue.
+
+// Radiance of a sample accumulates in its root path. A non-finite value is counted here by kind and still
+// added: the whole sample is then excluded (and counted) by accumulate, never written to the image. Without BSDF
+// splitting a path is its own root and is alone in its slot during this dispatch; with splitting, siblings add
+// concurrently, hence the atomics.
+// Under EARS a training path's slot also sums what it gathered (finite values only), for the cache.
+void addToSample(uint id, uint root, vec3 value) {
+  if (!allFinite(value)) atomicAdd(control.nonfiniteEmission, 1u);
+  else if (!(maxComponent(abs(value)) > 0.0)) return;
+  else if (kRouletteMode == kRouletteEars && earsTrains(root)) earsSlots[id].gathered.rgb += value;
+#ifdef VKMC_FLOAT_ATOMICS
+  if (kBsdfSamples > 1.0 || kRouletteMode == kRouletteEars) {
+    atomicAdd(paths[root].radiance.r, value.r);
+    atomicAdd(paths[root].radiance.g, value.g);
+    atomicAdd(paths[root].radiance.b, value.b);
+    return;
+  }
+#endif
+  paths[id].radiance.rgb += value;
+}
+
+// Path `target`'s next ray, queued for the next bounce; a fresh split child starts with no radiance.
+void queueContinuation(uint target, PathState next, bool fresh) {
+  paths[target].origin = next.origin;
+  paths[target].direction = next.direction;
+  paths[target].throughput = next.throughput;
+  paths[target].pixel = next.pixel;
+  paths[target].rngKey = next.rngKey;
+  paths[target].depth = next.depth;
+  paths[target].rootPath = next.rootPath;
+  if (fresh) paths[target].radiance = vec4(0.0);
+  rayQueues[outQueueBase() + atomicAdd(control.rayQueueCount[(pc.bounce + 1u) & 1u], 1u)] = target;
+}
+

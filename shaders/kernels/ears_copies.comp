@@ -1,0 +1,23 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_atomic_float : require
+// Stage 3b under EARS: the copies a bounce's vertices split off (ears_shade.glsl), one per invocation: the
+// surface and material at the stored hit again, then the copy's light samples and BSDF continuation.
+#include "common.glsl"
+#include "shading.glsl"
+#include "shade_output.glsl"
+#include "ears_shade.glsl"
+
+void main() {
+  uint i = invocationIndex();
+  if (i >= control.copyQueueCount) return;
+  uint target = rayQueues[copyQueueBase() + i];
+  PathState path = paths[target];
+  vec4 hit = hits[target];
+  vec3 wo = -path.direction.xyz;
+  SurfacePoint s = surfaceAt(floatBitsToUint(hit.w), hit.yz, wo);
+  GltfMaterial gm = shadeSurface(materials[s.material], s, wo);
+  uint cell = earsCell(s.p, s.ng, earsHeader.grid, earsHeader.cellMask);
+  shadeEarsCopy(path, target, floatBitsToUint(path.radiance.z), s, gm, wo, wo * s.frame, path.radiance.x,
+                floatBitsToUint(path.radiance.y), cell);
+}

@@ -1,0 +1,116 @@
+// Efficiency-aware Russian roulette and splitting (EARS: Rath, Grittmann, Herholz, Weier, Slusallek 2022), on the
+// device: the cache's encodings and its pure functions, shared by the kernels (ears_shade.glsl, kernels/ears_*.comp)
+// and the host's tests.
+//
+// At a vertex of throughput beta in a pixel whose estimate is I, per channel t = beta / sqrt(I^2 + eps) (eps:
+// relMSE's), the factor q = sqrt(mean over channels of t^2 E[Lr^2] / C) sqrt(C_img / V_img) maximizes the
+// efficiency 1 / (V T) of the image's relMSE: Lr is what one copy of the vertex's estimate (its light samples and
+// its BSDF continuation) gathers per unit throughput and C the rays it costs, both learned per cache cell;
+// C_img / V_img is the image's rays per sample over its relative variance per sample. The vertex is then taken
+// floor(q + u) times, each copy weighted 1/q: q < 1 is roulette, q > 1 splitting (roulette.h splitCount), unbiased
+// for any q chosen before the copies are drawn. Every pass learns from the passes before it, never from itself.
+#ifndef VKMC_EARS_H
+#define VKMC_EARS_H
+#include "glsl_cpp.h"
+VKMC_BEGIN_NAMESPACE
+
+VKMC_CONST uint kEarsDepths = 4u;                 // vertices of a path that train the cache (deeper ones read it)
+VKMC_CONST float kEarsFactorMin = 0.05f;          // EARS's clamp of q
+VKMC_CONST float kEarsFactorMax = 20.0f;
+VKMC_CONST float kEarsMinCellSamples = 16.0f;     // a cell with fewer copies falls back to throughput roulette
+VKMC_CONST uint kEarsNoSplitDepth = 64u;          // from this depth on q <= kRouletteMaxSurvival: every path ends
+VKMC_CONST uint kEarsGridResolution = 64u;        // cells along the scene's longest side
+VKMC_CONST uint kEarsBins = 4u;                   // factor histogram: untrained (fallback), q < 1, q = 1, q > 1
+VKMC_CONST uint kEarsBinFallback = 0u, kEarsBinRoulette = 1u, kEarsBinOne = 2u, kEarsBinSplit = 3u;
+VKMC_CONST uint kEarsTrainingPaths = 65536u;      // samples of a pass that train the cache (common.glsl earsTrains)
+VKMC_CONST uint kEarsHistogramDepths = 8u;        // histogram rows (the last counts every deeper vertex)
+
+// The cache's parameters, written by the host between passes, and the factor histogram the kernels count.
+struct EarsHeader {
+  vec4 grid;          // xyz: the grid's origin, w: cells per unit length
+  uint cellMask;      // cells - 1 (a power of two)
+  float imageFactor;  // sqrt(C_img / V_img) of the passes so far; 0: nothing learned yet (throughput roulette)
+  float epsilon;      // t = beta / sqrt(I^2 + epsilon)
+  uint unused;
+  uint factors[kEarsHistogramDepths * kEarsBins];  // vertices by depth and factor bin
+};
+
+// One cell: the sums its training copies added over every pass so far, and what the last fold made of them.
+struct EarsCell {
+  vec4 sum;              // rgb: sum of Lr, w: copies
+  vec4 sumSquares;       // rgb: sum of Lr^2, w: sum of rays
+  vec4 momentPerCost;    // rgb: E[Lr^2] / E[C], w: copies (what the factors read)
+  vec4 variancePerCost;  // rgb: Var[Lr] / E[C], w: E[C]
+};
+
+// One copy of a training vertex (slot * kEarsDepths + depth): where what its subtree gathers goes.
+struct EarsRecord {
+  vec4 gathered;  // rgb: minus the slot's gathered at the copy's start, plus what the slot and its children
+                  // gathered; w: the same for rays
+  vec4 scale;     // rgb: q / beta per channel (0 where beta is): the subtree's radiance into Lr; w: cell + 1 as
+                  // float bits (0: no record)
+};
+
+// A path slot's own sums for training, and where it was split off.
+struct EarsSlot {
+  vec4 gathered;    // rgb: radiance its paths added (their light samples included), w: rays they traced
+  uint parent;      // slot + 1 of the path it was split from; 0: a camera path
+  uint splitDepth;  // depth of the vertex that split it off (its records start there)
+  uint unused0, unused1;
+};
+
+// Cell of a point with geometric normal n: the grid cell and the normal's dominant signed axis, hashed.
+VKMC_FN uint earsCell(vec3 p, vec3 n, vec4 grid, uint cellMask) {
+  vec3 g = floor((p - vec3(grid)) * grid.w);
+  vec3 a = abs(n);
+  uint axis = a.x >= a.y && a.x >= a.z ? 0u : (a.y >= a.z ? 1u : 2u);
+  float side = axis == 0u ? n.x : (axis == 1u ? n.y : n.z);
+  uint bin = axis * 2u + (side < 0.0f ? 1u : 0u);
+  uint h = uint(int(g.x)) * 0x8da6b343u ^ uint(int(g.y)) * 0xd8163841u ^ uint(int(g.z)) * 0xcb1ab31fu ^ bin * 0x9e3779b9u;
+  h ^= h >> 16u;
+  h *= 0x7feb352du;
+  h ^= h >> 15u;
+  h *= 0x846ca68bu;
+  h ^= h >> 16u;
+  return h & cellMask;
+}
+
+// EARS's factor (its recursive_path.cpp), t per channel: the second moment decides roulette, the variance
+// splitting; where they disagree (the second moment says split, the variance roulette) the vertex stays as it is.
+VKMC_FN float earsFactor(vec3 relativeThroughput, vec3 momentPerCost, vec3 variancePerCost, float imageFactor) {
+  vec3 t2 = relativeThroughput * relativeThroughput;
+  float byMoment = sqrt(dot(t2, momentPerCost) / 3.0f) * imageFactor;
+  float byVariance = sqrt(dot(t2, variancePerCost) / 3.0f) * imageFactor;
+  float q = byMoment > 1.0f ? max(byVariance, 1.0f) : byMoment;
+  return clamp(q, kEarsFactorMin, kEarsFactorMax);
+}
+
+// A cell's sampling statistics from its training sums (the fold between passes): momentPerCost, variancePerCost.
+VKMC_FN void earsSampling(vec4 sum, vec4 sumSquares, INOUT(vec4) momentPerCost, INOUT(vec4) variancePerCost) {
+  float n = sum.w;
+  momentPerCost = vec4(0.0f);
+  variancePerCost = vec4(0.0f);
+  if (!(n > 0.0f)) return;
+  vec3 mean = vec3(sum) / n, second = vec3(sumSquares) / n;
+  float cost = sumSquares.w / n;
+  momentPerCost.w = n;
+  variancePerCost.w = cost;
+  if (!(cost > 0.0f)) return;
+  momentPerCost = vec4(second / cost, n);
+  variancePerCost = vec4(max(second - mean * mean, vec3(0.0f)) / cost, cost);
+}
+
+// The histogram bin of a vertex's decision.
+VKMC_FN uint earsBin(bool trained, float q) {
+  return !trained ? kEarsBinFallback : (q < 1.0f ? kEarsBinRoulette : (q > 1.0f ? kEarsBinSplit : kEarsBinOne));
+}
+
+VKMC_END_NAMESPACE
+
+#ifdef __cplusplus
+namespace vkmc::gpu {
+static_assert(sizeof(EarsHeader) == 32 + 4 * kEarsHistogramDepths * kEarsBins);
+static_assert(sizeof(EarsCell) == 64 && sizeof(EarsRecord) == 32 && sizeof(EarsSlot) == 32);
+}  // namespace vkmc::gpu
+#endif
+#endif

@@ -1,0 +1,93 @@
+// rr ears on the device: what the cache learns against the analytic answer, its factor histogram, its memory
+// bound, determinism and its refusals. Its unbiasedness is in stat/estimator_unbiased_test (furnace, Cornell box,
+// stiff furnace) and stiff/stiff_render_test (tiny light).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "error.h"
+#include "support/render_helpers.h"
+
+using namespace vkmc;
+using namespace vkmc::test;
+
+namespace {
+EstimatorConfig ears() {
+  EstimatorConfig e;
+  e.rr = RouletteMode::Ears;
+  return e;
+}
+}  // namespace
+
+TEST(Ears, FurnaceCacheLearnsTheReflectedRadiance) {
+  // Albedo 0.5, Le 1: L = 2 everywhere and the radiance a vertex reflects, per unit throughput, is a L = 1 in
+  // every channel. A path's records are correlated (one path's copies at depths 0-3 share what follows), so the
+  // standard error counts kEarsDepths records as one.
+  RenderOutcome r = renderWith("furnace.gltf", ears(), 32, 32, 64);
+  ASSERT_TRUE(r.ears);
+  const EarsSummary& e = *r.ears;
+  ASSERT_GT(e.copies, 1e4);
+  EXPECT_GT(e.learningPasses, 0u);
+  EXPECT_GT(e.trustedCells, 0u);
+  for (int c = 0; c < 3; ++c) {
+    const double variance = e.meanLrSquared[c] - e.meanLr[c] * e.meanLr[c];
+    const double se = std::sqrt(variance / (e.copies / gpu::kEarsDepths));
+    EXPECT_TRUE(withinSigmas(zTest(e.meanLr[c], 1.0, se), 5.0)) << "channel " << c << ": " << e.meanLr[c] << " +- " << se;
+  }
+  // Each copy costs at least its continuation ray or light sample when it gathers anything.
+  EXPECT_GT(e.meanRays, 1.0);
+  // Every camera ray hits the sphere: the first row of the histogram counts each sample's first vertex once.
+  uint64_t first = 0;
+  for (uint64_t n : e.factors[0]) first += n;
+  EXPECT_EQ(first, 32u * 32u * 64u);
+  EXPECT_GT(e.factors[0][gpu::kEarsBinSplit] + e.factors[0][gpu::kEarsBinRoulette] + e.factors[0][gpu::kEarsBinOne], 0u)
+      << "learned factors must decide some first vertices";
+}
+
+TEST(Ears, SameSeedSameImage) {
+  RenderOutcome a = renderWith("cornell_box.gltf", ears(), 24, 24, 8, 7);
+  RenderOutcome b = renderWith("cornell_box.gltf", ears(), 24, 24, 8, 7);
+  ASSERT_EQ(a.film.sum.size(), b.film.sum.size());
+  for (size_t i = 0; i < a.film.sum.size(); ++i) ASSERT_EQ(a.film.sum[i], b.film.sum[i]) << "value " << i;
+  EXPECT_EQ(a.stats.rays(), b.stats.rays());
+}
+
+TEST(Ears, MemoryIsBoundedOnAMillionTriangles) {
+  const std::filesystem::path model =
+      std::filesystem::path(VKMC_SHARED_SCENES) / "MetalRoughSpheresNoTextures" / "MetalRoughSpheresNoTextures.gltf";
+  if (!std::filesystem::exists(model)) GTEST_SKIP() << "no " << model;
+  RenderOptions o;
+  o.scenePath = model.string();
+  o.width = o.height = 32;
+  o.spp = 2;
+  o.estimator = ears();
+  o.progress = false;
+  RenderOutcome r = runRender(sharedContext(), o);
+  ASSERT_TRUE(r.ears);
+  EXPECT_GT(r.sceneInfo.triangles, 500000u);
+  // The cache does not grow with the scene: at most 2^19 cells of 64 bytes, and each path slot's records.
+  const uint64_t slots = uint64_t(32 * 32 * 2) * kEarsPoolFactor;
+  EXPECT_LE(r.ears->deviceBytes, (uint64_t(1) << 19) * sizeof(gpu::EarsCell) +
+                                     slots * (gpu::kEarsDepths * sizeof(gpu::EarsRecord) + sizeof(gpu::EarsSlot)) +
+                                     sizeof(gpu::EarsHeader));
+  EXPECT_LE(r.ears->occupiedCells, r.ears->cells);
+  EXPECT_EQ(r.film.totalNonfinite(), 0u);
+}
+
+TEST(Ears, RefusedWhereItCannotSplit) {
+  RenderOptions o;
+  o.scenePath = scenePath("cornell_box.gltf");
+  o.width = o.height = 8;
+  o.spp = 1;
+  o.estimator = ears();
+  o.integrator = Integrator::Megakernel;
+  try {
+    runRender(sharedContext(), o);
+    FAIL() << "the megakernel cannot split paths";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("rr ears"), std::string::npos) << e.what();
+  }
+  EstimatorConfig both = ears();
+  both.bsdfSamples = 2.0f;
+  EXPECT_THROW(both.validate(), Error);
+}
