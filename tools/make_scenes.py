@@ -305,6 +305,28 @@ def tiny_light(path):
     b.ortho_camera_down("camera", [0.0, 0.5, 0.0], 1.0)
     b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
 
+def two_rooms(path):
+    """Where splitting should pay (EARS): the camera's room (x in [-1, 1]) is lit only through a 0.1-wide slit in
+    the wall x = 1 from a second room (x in [1, 3]) whose lamp faces away from the slit, towards that room's far
+    wall: every light path into the first room crosses the slit after at least one bounce. Lambertian white walls
+    (double-sided), y in [0, 2], z in [-1, 1]."""
+    b = Builder()
+    white = b.material("white", (0.8, 0.8, 0.8), double_sided=True)
+    lamp = b.material("lamp", (0.0, 0.0, 0.0), emission=(1.0, 0.9, 0.75), strength=60.0)
+    b.mesh("floor", quad([-1, 0, -1], [-1, 0, 1], [3, 0, 1], [3, 0, -1]), white)
+    b.mesh("ceiling", quad([-1, 2, -1], [3, 2, -1], [3, 2, 1], [-1, 2, 1]), white)
+    b.mesh("back", quad([-1, 0, -1], [3, 0, -1], [3, 2, -1], [-1, 2, -1]), white)
+    b.mesh("front", quad([-1, 0, 1], [-1, 2, 1], [3, 2, 1], [3, 0, 1]), white)
+    b.mesh("left", quad([-1, 0, -1], [-1, 2, -1], [-1, 2, 1], [-1, 0, 1]), white)
+    b.mesh("right", quad([3, 0, -1], [3, 0, 1], [3, 2, 1], [3, 2, -1]), white)
+    slit = 0.05
+    b.mesh("divider_back", quad([1, 0, -1], [1, 0, -slit], [1, 2, -slit], [1, 2, -1]), white)
+    b.mesh("divider_front", quad([1, 0, slit], [1, 0, 1], [1, 2, 1], [1, 2, slit]), white)
+    # Facing +x (away from the slit): its front face is where u x v points.
+    b.mesh("lamp", quad([2.2, 0.75, -0.25], [2.2, 1.25, -0.25], [2.2, 1.25, 0.25], [2.2, 0.75, 0.25]), lamp)
+    b.camera("camera", [-0.85, 1.2, 0.85], [1.0, 0.8, -0.2], 70.0)
+    b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
+
 def png_rgba(width, height, pixel):
     """An 8-bit RGBA PNG; pixel(x, y) -> (r, g, b, a) in 0-255, y = 0 the top row."""
     rows = b"".join(b"\0" + bytes(c for x in range(width) for c in pixel(x, y)) for y in range(height))
@@ -351,6 +373,7 @@ if __name__ == "__main__":
     furnace("scenes/furnace_stiff.gltf", 0.99, 1.0, "furnace_albedo_0.99")
     veach_mis("scenes/veach_mis.gltf")
     many_lights("scenes/many_lights.gltf")
+    two_rooms("scenes/two_rooms.gltf")
     os.makedirs("scenes/stiff", exist_ok=True)
     tiny_light("scenes/stiff/tiny_light.gltf")
     furnace("scenes/stiff/furnace_albedo_0999.gltf", 0.999, 1.0, "furnace_albedo_0.999")

@@ -6,7 +6,6 @@
 #include <cstring>
 
 #include "../shaders/shared/sampling.h"
-#include "analysis/error_metrics.h"
 
 namespace vkmc {
 
@@ -70,7 +69,7 @@ EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathS
   h.grid = glm::vec4(scene.boundsMin - glm::vec3(1.0f / cellsPerUnit), cellsPerUnit);
   h.cellMask = cells_ - 1;
   h.imageFactor = 0.0f;
-  h.epsilon = static_cast<float>(kRelMseEpsilon);
+  h.epsilon = gpu::kEarsEpsilon;
 }
 
 void EarsCache::bindTo(vk::KernelLayout& layout) const {

@@ -14,7 +14,6 @@
 #include "../shaders/shared/layout.h"
 #include "../shaders/shared/sampling.h"
 #include "error.h"
-#include "analysis/error_metrics.h"
 #include "render/path_pool.h"
 #include "render/pixel_filter_table.h"
 
@@ -314,7 +313,7 @@ void PathRenderer::updateEarsStatistics(const Film& film, double raysPerSample) 
     film_.download(copy.data(), pixels * sizeof(gpu::FilmPixel));
     batch = copy.data();
   }
-  EarsImageStatistics s = earsImageStatistics(film, batch, kRelMseEpsilon);
+  EarsImageStatistics s = earsImageStatistics(film, batch, gpu::kEarsEpsilon);
   setPixelEstimate(s.pixelEstimate);
   ears_->setImageStatistics(raysPerSample, s.relativeVariance);
 }

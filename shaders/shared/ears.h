@@ -22,6 +22,7 @@ VKMC_CONST uint kEarsNoSplitDepth = 64u;          // from this depth on q <= kRo
 VKMC_CONST uint kEarsGridResolution = 64u;        // cells along the scene's longest side
 VKMC_CONST uint kEarsBins = 4u;                   // factor histogram: untrained (fallback), q < 1, q = 1, q > 1
 VKMC_CONST uint kEarsBinFallback = 0u, kEarsBinRoulette = 1u, kEarsBinOne = 2u, kEarsBinSplit = 3u;
+VKMC_CONST float kEarsEpsilon = 0.01f;             // relMSE's epsilon (analysis/error_metrics.h; ears_test checks)
 VKMC_CONST uint kEarsTrainingPaths = 65536u;      // samples of a pass that train the cache (common.glsl earsTrains)
 VKMC_CONST uint kEarsHistogramDepths = 8u;        // histogram rows (the last counts every deeper vertex)
 

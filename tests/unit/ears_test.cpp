@@ -50,6 +50,8 @@ TEST(EarsSampling, MomentsPerCostFromTheSums) {
   EXPECT_FLOAT_EQ(moment.w, 2.0f);
 }
 
+TEST(EarsFactor, RelativeThroughputUsesRelMsesEpsilon) { EXPECT_NEAR(double(kEarsEpsilon), kRelMseEpsilon, 1e-9); }
+
 TEST(EarsCell, GridCellsAndNormalBins) {
   const vec4 grid(0.0f, 0.0f, 0.0f, 4.0f);  // cells of 1/4
   const uint mask = (1u << 16) - 1u;
