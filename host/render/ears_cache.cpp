@@ -10,15 +10,15 @@
 namespace vkmc {
 
 namespace {
-constexpr uint32_t kMaxCells = 1u << 19;  // 32 MiB of cells: far more than a scene's surfaces fill at 64 per side
+constexpr uint32_t kMaxCells = 1u << 19;  // 32 MiB: far more cells than a scene's surfaces fill at 64 per side
 }
 
 EarsImageStatistics earsImageStatistics(const Film& film, const gpu::FilmPixel* batch, double epsilon) {
   EarsImageStatistics s;
   const size_t pixels = film.pixels();
   s.pixelEstimate.assign(pixels, glm::vec4(0.0f));
-  double sum = 0.0;
-  size_t counted = 0;
+  std::vector<double> relative;  // per pixel: the channels' mean of variance / (I^2 + epsilon)
+  relative.reserve(pixels);
   for (size_t p = 0; p < pixels; ++p) {
     double n = double(film.count[p]) + (batch ? batch[p].sum.w : 0.0);
     if (n < 1.0) continue;
@@ -31,10 +31,20 @@ EarsImageStatistics earsImageStatistics(const Film& film, const gpu::FilmPixel* 
     }
     s.pixelEstimate[p] = glm::vec4(glm::vec3(mean), gpu::luminance(glm::vec3(mean)));
     if (n < 2.0) continue;
-    for (int c = 0; c < 3; ++c) sum += variance[c] / (mean[c] * mean[c] + epsilon);
-    counted += 3;
+    double r = 0.0;
+    for (int c = 0; c < 3; ++c) r += variance[c] / (mean[c] * mean[c] + epsilon) / 3.0;
+    relative.push_back(r);
   }
-  s.relativeVariance = counted > 0 ? sum / double(counted) : 0.0;
+  // The noisiest pixels left out (EARS's outlier rejection): a few fireflies would otherwise raise V_img, so
+  // lower every factor, so roulette harder, which makes more fireflies.
+  const size_t dropped = std::min(relative.size(), size_t(std::ceil(double(relative.size()) * gpu::kEarsOutlierShare)));
+  const size_t kept = relative.size() - dropped;
+  if (kept > 0) {
+    std::nth_element(relative.begin(), relative.begin() + (kept - 1), relative.end());
+    double sum = 0.0;
+    for (size_t i = 0; i < kept; ++i) sum += relative[i];
+    s.relativeVariance = sum / double(kept);
+  }
   return s;
 }
 
@@ -46,7 +56,15 @@ EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathS
   };
   header_ = storage(sizeof(gpu::EarsHeader), vk::MemoryKind::HostVisible);
   std::memset(header_.mapped(), 0, sizeof(gpu::EarsHeader));
+  auto texels = [&](VkDeviceSize bytes) {
+    deviceBytes_ += bytes;
+    vk::Buffer b(ctx, bytes, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT,
+                 vk::MemoryKind::DeviceLocal);
+    b.createView(sceneTexelFormat(BINDING_EARS_SAMPLING));
+    return b;
+  };
   if (!enabled) {
+    sampling_ = texels(16);
     cellBuffer_ = storage(16, vk::MemoryKind::DeviceLocal);
     records_ = storage(16, vk::MemoryKind::DeviceLocal);
     slots_ = storage(16, vk::MemoryKind::DeviceLocal);
@@ -54,8 +72,11 @@ EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathS
     return;
   }
   cells_ = kMaxCells;
-  while (uint64_t(cells_) * sizeof(gpu::EarsCell) > range) cells_ /= 2;
+  const uint64_t texelLimit = ctx.properties().limits.maxTexelBufferElements / gpu::kEarsSamplingTexels;
+  while (uint64_t(cells_) * sizeof(gpu::EarsCell) > range || cells_ > texelLimit) cells_ /= 2;
   cellBuffer_ = storage(uint64_t(cells_) * sizeof(gpu::EarsCell), vk::MemoryKind::DeviceLocal);
+  sampling_ = texels(uint64_t(cells_) * gpu::kEarsSamplingTexels * sizeof(glm::vec4));
+  sampling_.zero();
   records_ = storage(uint64_t(pathSlots) * gpu::kEarsDepths * sizeof(gpu::EarsRecord), vk::MemoryKind::DeviceLocal);
   slots_ = storage(uint64_t(pathSlots) * sizeof(gpu::EarsSlot), vk::MemoryKind::DeviceLocal);
   cellBuffer_.zero();
@@ -75,6 +96,7 @@ EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathS
 void EarsCache::bindTo(vk::KernelLayout& layout) const {
   layout.bindStorage(BINDING_EARS_HEADER, header_);
   layout.bindStorage(BINDING_EARS_CELLS, cellBuffer_);
+  layout.bindTexel(BINDING_EARS_SAMPLING, sampling_);
   layout.bindStorage(BINDING_EARS_RECORDS, records_);
   layout.bindStorage(BINDING_EARS_SLOTS, slots_);
 }
@@ -95,6 +117,12 @@ std::vector<gpu::EarsCell> EarsCache::downloadCells() {
   return cells;
 }
 
+std::vector<glm::vec4> EarsCache::downloadSampling() {
+  std::vector<glm::vec4> texels(size_t(cells_) * gpu::kEarsSamplingTexels);
+  if (cells_ > 0) sampling_.download(texels.data(), texels.size() * sizeof(glm::vec4));
+  return texels;
+}
+
 EarsSummary EarsCache::summary() {
   EarsSummary s;
   if (!enabled_) return s;
@@ -105,10 +133,11 @@ EarsSummary EarsCache::summary() {
   glm::dvec4 sum(0.0), squares(0.0);
   for (const gpu::EarsCell& c : downloadCells()) {
     s.occupiedCells += c.sum.w > 0.0f;
-    s.trustedCells += c.momentPerCost.w >= gpu::kEarsMinCellSamples;
     sum += glm::dvec4(c.sum);
     squares += glm::dvec4(c.sumSquares);
   }
+  const std::vector<glm::vec4> sampling = downloadSampling();
+  for (size_t i = 0; i < cells_; ++i) s.trustedCells += sampling[gpu::kEarsSamplingTexels * i].w >= gpu::kEarsMinCellCopies;
   s.copies = sum.w;
   if (sum.w > 0.0) {
     s.meanLr = glm::dvec3(sum) / sum.w;

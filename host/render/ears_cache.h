@@ -18,7 +18,9 @@ namespace vkmc {
 // The image statistics of the passes so far that the factors need.
 struct EarsImageStatistics {
   std::vector<glm::vec4> pixelEstimate;  // each pixel's mean, w its luminance (0 without samples)
-  double relativeVariance = 0.0;         // per sample: mean over pixels and channels of variance / (I^2 + epsilon)
+  // Per sample: mean over pixels and channels of variance / (I^2 + epsilon), the noisiest kEarsOutlierShare of
+  // pixels left out.
+  double relativeVariance = 0.0;
 };
 // From the folded film and the device's unfolded batch (null: none).
 EarsImageStatistics earsImageStatistics(const Film& film, const gpu::FilmPixel* batch, double epsilon);
@@ -27,7 +29,7 @@ EarsImageStatistics earsImageStatistics(const Film& film, const gpu::FilmPixel* 
 struct EarsSummary {
   uint32_t cells = 0;           // in the hash table
   uint32_t occupiedCells = 0;   // with any training sample
-  uint32_t trustedCells = 0;    // with enough to decide (kEarsMinCellSamples)
+  uint32_t trustedCells = 0;    // with enough to decide (kEarsMinCellCopies), at any level
   uint64_t deviceBytes = 0;     // cells, records, slots and header
   uint32_t learningPasses = 0;  // passes whose factors came from the cache
   double imageFactor = 0.0;     // sqrt(C_img / V_img) of the last pass
@@ -50,7 +52,8 @@ class EarsCache {
   EarsSummary summary();
   uint64_t deviceBytes() const { return deviceBytes_; }
   uint32_t cellCount() const { return cells_; }
-  std::vector<gpu::EarsCell> downloadCells();  // for tests
+  std::vector<gpu::EarsCell> downloadCells();
+  std::vector<glm::vec4> downloadSampling();  // kEarsSamplingTexels per cell
 
  private:
   gpu::EarsHeader& header() const { return *static_cast<gpu::EarsHeader*>(header_.mapped()); }
@@ -58,7 +61,7 @@ class EarsCache {
   uint32_t cells_ = 0;
   uint32_t learningPasses_ = 0;
   uint64_t deviceBytes_ = 0;
-  vk::Buffer header_, cellBuffer_, records_, slots_;
+  vk::Buffer header_, cellBuffer_, sampling_, records_, slots_;
 };
 
 }  // namespace vkmc

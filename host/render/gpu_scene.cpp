@@ -252,6 +252,7 @@ VkFormat sceneTexelFormat(uint32_t binding) {
     case BINDING_TEXTURES: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_TEXTURES));
     case BINDING_TRIANGLE_ATTRIBUTES: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_TRIANGLE_ATTRIBUTES));
     case BINDING_LAYER_ALBEDO: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_LAYER_ALBEDO));
+    case BINDING_EARS_SAMPLING: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_EARS_SAMPLING));
   }
   throw Error("internal error: binding " + std::to_string(binding) + " is not a scene texel binding");
 }

@@ -5,20 +5,29 @@
 // group for 20 iterations. Each copy at a training depth leaves a record (EarsRecord) that the pass's end fills
 // with what its subtree gathered (kernels/ears_*.comp). Needs shade_output.glsl.
 
+layout(binding = BINDING_EARS_SAMPLING, TEXEL_FORMAT_EARS_SAMPLING) uniform readonly imageBuffer earsLearned;
+
 // The copy queue: the third region of BINDING_RAY_QUEUES. A queued slot holds the vertex's path (before its
 // factor) and hit; its radiance field, unused by a split child, carries (q, copy index bits, parent slot bits, 0).
 uint copyQueueBase() { return 2u * pc.queueCapacity; }
 
-// The factor at a vertex and whether the cache knew its cell; throughput roulette (the sqrt rule, judged by the
-// throughput that reaches the vertex) where it does not.
-float earsVertexFactor(PathState path, uint cell, out bool trained) {
-  vec4 moment = earsCells[cell].momentPerCost;
-  trained = earsHeader.imageFactor > 0.0 && moment.w >= kEarsMinCellSamples;
+// The factor at a vertex (cell key `key`) from the finest level that has learned enough, and whether one had;
+// throughput roulette (the sqrt rule, judged by the throughput that reaches the vertex) where none has.
+float earsVertexFactor(PathState path, uint key, out bool trained) {
+  trained = false;
+  uint cell = 0u;
+  vec4 moment = vec4(0.0);
+  for (uint level = 0u; level < kEarsLevels && !trained && earsHeader.imageFactor > 0.0; ++level) {
+    cell = earsCellIndex(key, level, earsHeader.cellMask);
+    moment = imageLoad(earsLearned, int(kEarsSamplingTexels * cell));
+    trained = moment.w >= kEarsMinCellCopies;
+  }
   float q = 1.0;
   if (trained) {
     vec3 estimate = pixelEstimate[path.pixel].rgb;
     vec3 t = path.throughput.rgb / sqrt(estimate * estimate + earsHeader.epsilon);
-    q = earsFactor(t, moment.rgb, earsCells[cell].variancePerCost.rgb, earsHeader.imageFactor);
+    vec3 variance = imageLoad(earsLearned, int(kEarsSamplingTexels * cell + 1u)).rgb;
+    q = earsFactor(t, moment.rgb, variance, earsHeader.imageFactor);
   } else if (rouletteApplies(path.depth, kRouletteDepth)) {
     q = rouletteSurvival(sqrt(maxComponent(path.throughput.rgb) * path.throughput.w * path.origin.w), 1.0, kRouletteMaxSurvival);
   }
@@ -37,14 +46,14 @@ void countEarsFactor(uint depth, uint bin) {
 // Copy c of the vertex of `path` (its throughput before the factor) in slot `target`, split off from `parent`'s:
 // its record, its light samples and its BSDF continuation, each weighted 1/q.
 void shadeEarsCopy(PathState path, uint target, uint parent, SurfacePoint s, GltfMaterial gm, vec3 wo, vec3 woLocal,
-                   float q, uint c, uint cell) {
+                   float q, uint c, uint key) {
   uint depth = path.depth;
   bool trains = earsTrains(path.rootPath);
   if (c > 0u && trains) earsSlots[target] = EarsSlot(vec4(0.0), parent + 1u, depth, 0u, 0u);
   vec3 beta = path.throughput.rgb;
   if (trains && depth < kEarsDepths && maxComponent(beta) > 0.0) {
     vec3 scale = vec3(beta.r > 0.0 ? q / beta.r : 0.0, beta.g > 0.0 ? q / beta.g : 0.0, beta.b > 0.0 ? q / beta.b : 0.0);
-    earsRecords[target * kEarsDepths + depth] = EarsRecord(-earsSlots[target].gathered, vec4(scale, uintBitsToFloat(cell + 1u)));
+    earsRecords[target * kEarsDepths + depth] = EarsRecord(-earsSlots[target].gathered, vec4(scale, uintBitsToFloat(key + 1u)));
   }
   PathState copy = path;
   copy.rngKey = childKey(path.rngKey, depth, c);
@@ -72,9 +81,9 @@ void shadeEarsCopy(PathState path, uint target, uint parent, SurfacePoint s, Glt
 void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMaterial gm, vec3 wo, vec3 woLocal) {
   uint depth = path.depth;
   if (!belowDepthCap(depth)) return;
-  uint cell = earsCell(s.p, s.ng, earsHeader.grid, earsHeader.cellMask);
+  uint key = earsCellKey(s.p, s.ng, earsHeader.grid);
   bool trained;
-  float q = earsVertexFactor(path, cell, trained);
+  float q = earsVertexFactor(path, key, trained);
   // Slots for every copy but the first are taken before the copies are drawn, so whether the pool was full
   // (then q = 1: the vertex as it is) never depends on the draw: unbiased.
   uint spare = uint(ceil(q)) - 1u, firstChild = 0u;
@@ -93,5 +102,5 @@ void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMate
     hits[target] = hit;
     rayQueues[copyQueueBase() + atomicAdd(control.copyQueueCount, 1u)] = target;
   }
-  if (copies > 0u) shadeEarsCopy(path, id, id, s, gm, wo, woLocal, q, 0u, cell);
+  if (copies > 0u) shadeEarsCopy(path, id, id, s, gm, wo, woLocal, q, 0u, key);
 }

@@ -17,7 +17,6 @@ void main() {
   vec3 wo = -path.direction.xyz;
   SurfacePoint s = surfaceAt(floatBitsToUint(hit.w), hit.yz, wo);
   GltfMaterial gm = shadeSurface(materials[s.material], s, wo);
-  uint cell = earsCell(s.p, s.ng, earsHeader.grid, earsHeader.cellMask);
   shadeEarsCopy(path, target, floatBitsToUint(path.radiance.z), s, gm, wo, wo * s.frame, path.radiance.x,
-                floatBitsToUint(path.radiance.y), cell);
+                floatBitsToUint(path.radiance.y), earsCellKey(s.p, s.ng, earsHeader.grid));
 }

@@ -4,12 +4,15 @@
 // the next pass's factors (ears.h earsSampling). pc.pathCount: the cells.
 #include "common.glsl"
 
+layout(binding = BINDING_EARS_SAMPLING, TEXEL_FORMAT_EARS_SAMPLING) uniform writeonly imageBuffer earsLearned;
+
 void main() {
   uint i = invocationIndex();
   if (i >= pc.pathCount) return;
   EarsCell c = earsCells[i];
   if (!(c.sum.w > 0.0)) return;
-  earsSampling(c.sum, c.sumSquares, c.momentPerCost, c.variancePerCost);
-  earsCells[i].momentPerCost = c.momentPerCost;
-  earsCells[i].variancePerCost = c.variancePerCost;
+  vec4 moment, variance;
+  earsSampling(c.sum, c.sumSquares, moment, variance);
+  imageStore(earsLearned, int(kEarsSamplingTexels * i), moment);
+  imageStore(earsLearned, int(kEarsSamplingTexels * i + 1u), variance);
 }

@@ -17,7 +17,10 @@ VKMC_BEGIN_NAMESPACE
 VKMC_CONST uint kEarsDepths = 4u;                 // vertices of a path that train the cache (deeper ones read it)
 VKMC_CONST float kEarsFactorMin = 0.05f;          // EARS's clamp of q
 VKMC_CONST float kEarsFactorMax = 20.0f;
-VKMC_CONST float kEarsMinCellSamples = 16.0f;     // a cell with fewer copies falls back to throughput roulette
+VKMC_CONST float kEarsOutlierShare = 0.001f;      // V_img leaves out this share of its noisiest pixels (EARS: 10 samples)
+VKMC_CONST float kEarsMinCellCopies = 256.0f;     // a cell decides once it has learned from this many copies
+VKMC_CONST uint kEarsLevels = 3u;                 // grids of 64, 16 and 4 cells along the longest side
+VKMC_CONST uint kEarsLevelShift = 2u;
 VKMC_CONST uint kEarsNoSplitDepth = 64u;          // from this depth on q <= kRouletteMaxSurvival: every path ends
 VKMC_CONST uint kEarsGridResolution = 64u;        // cells along the scene's longest side
 VKMC_CONST uint kEarsBins = 4u;                   // factor histogram: untrained (fallback), q < 1, q = 1, q > 1
@@ -36,20 +39,22 @@ struct EarsHeader {
   uint factors[kEarsHistogramDepths * kEarsBins];  // vertices by depth and factor bin
 };
 
-// One cell: the sums its training copies added over every pass so far, and what the last fold made of them.
+// One cell: the sums its training copies added over every pass so far.
 struct EarsCell {
-  vec4 sum;              // rgb: sum of Lr, w: copies
-  vec4 sumSquares;       // rgb: sum of Lr^2, w: sum of rays
-  vec4 momentPerCost;    // rgb: E[Lr^2] / E[C], w: copies (what the factors read)
-  vec4 variancePerCost;  // rgb: Var[Lr] / E[C], w: E[C]
+  vec4 sum;         // rgb: sum of Lr, w: copies
+  vec4 sumSquares;  // rgb: sum of Lr^2, w: sum of rays
 };
+// What the last fold made of a cell, as texels 2 cell and 2 cell + 1 of BINDING_EARS_SAMPLING (read with
+// imageLoad: on lavapipe an inline gather, where a storage-buffer load loops over the lanes).
+VKMC_CONST uint kEarsSamplingTexels = 2u;  // momentPerCost (rgb: E[Lr^2] / E[C], w: copies), variancePerCost
+                                           // (rgb: Var[Lr] / E[C], w: E[C])
 
 // One copy of a training vertex (slot * kEarsDepths + depth): where what its subtree gathers goes.
 struct EarsRecord {
   vec4 gathered;  // rgb: minus the slot's gathered at the copy's start, plus what the slot and its children
                   // gathered; w: the same for rays
-  vec4 scale;     // rgb: q / beta per channel (0 where beta is): the subtree's radiance into Lr; w: cell + 1 as
-                  // float bits (0: no record)
+  vec4 scale;     // rgb: q / beta per channel (0 where beta is): the subtree's radiance into Lr; w: cell key + 1
+                  // as float bits (earsCellKey; 0: no record)
 };
 
 // A path slot's own sums for training, and where it was split off.
@@ -60,14 +65,25 @@ struct EarsSlot {
   uint unused0, unused1;
 };
 
-// Cell of a point with geometric normal n: the grid cell and the normal's dominant signed axis, hashed.
-VKMC_FN uint earsCell(vec3 p, vec3 n, vec4 grid, uint cellMask) {
-  vec3 g = floor((p - vec3(grid)) * grid.w);
+// A vertex's place in the cache: its cell of the finest grid (kEarsGridResolution along the scene's longest side,
+// coordinates clamped to 7 bits) and its geometric normal's dominant signed axis, packed as x | y << 7 | z << 14 |
+// bin << 21. The cache holds kEarsLevels grids, each kEarsLevelShift bits coarser than the one before: a vertex
+// reads the finest whose cell has learned enough (kEarsMinCellCopies), as EARS's octree refines only cells with
+// enough samples.
+VKMC_FN uint earsCellKey(vec3 p, vec3 n, vec4 grid) {
+  vec3 g = clamp(floor((p - vec3(grid)) * grid.w), vec3(0.0f), vec3(127.0f));
   vec3 a = abs(n);
   uint axis = a.x >= a.y && a.x >= a.z ? 0u : (a.y >= a.z ? 1u : 2u);
   float side = axis == 0u ? n.x : (axis == 1u ? n.y : n.z);
   uint bin = axis * 2u + (side < 0.0f ? 1u : 0u);
-  uint h = uint(int(g.x)) * 0x8da6b343u ^ uint(int(g.y)) * 0xd8163841u ^ uint(int(g.z)) * 0xcb1ab31fu ^ bin * 0x9e3779b9u;
+  return uint(g.x) | uint(g.y) << 7u | uint(g.z) << 14u | bin << 21u;
+}
+
+// The hash-table slot of a key's cell at `level` (0: the finest).
+VKMC_FN uint earsCellIndex(uint key, uint level, uint cellMask) {
+  uint shift = level * kEarsLevelShift;
+  uint x = (key & 127u) >> shift, y = ((key >> 7u) & 127u) >> shift, z = ((key >> 14u) & 127u) >> shift;
+  uint h = x * 0x8da6b343u ^ y * 0xd8163841u ^ z * 0xcb1ab31fu ^ (key >> 21u) * 0x9e3779b9u ^ level * 0x632be5abu;
   h ^= h >> 16u;
   h *= 0x7feb352du;
   h ^= h >> 15u;
@@ -111,7 +127,7 @@ VKMC_END_NAMESPACE
 #ifdef __cplusplus
 namespace vkmc::gpu {
 static_assert(sizeof(EarsHeader) == 32 + 4 * kEarsHistogramDepths * kEarsBins);
-static_assert(sizeof(EarsCell) == 64 && sizeof(EarsRecord) == 32 && sizeof(EarsSlot) == 32);
+static_assert(sizeof(EarsCell) == 32 && sizeof(EarsRecord) == 32 && sizeof(EarsSlot) == 32);
 }  // namespace vkmc::gpu
 #endif
 #endif

@@ -40,7 +40,8 @@
 #define BINDING_EARS_CELLS 28              // EarsCell[]: the learned cache
 #define BINDING_EARS_RECORDS 29            // EarsRecord[pool * kEarsDepths]: each slot's training vertices
 #define BINDING_EARS_SLOTS 30              // EarsSlot[pool]
-#define BINDING_COUNT 31
+#define BINDING_EARS_SAMPLING 31           // imageBuffer: per cell, what the factors read (ears.h kEarsSamplingTexels)
+#define BINDING_COUNT 32
 
 // Texel formats of the scene bindings as GLSL image-format qualifiers (common.glsl declares the bindings with
 // them); the host derives each VkFormat from the same token (sceneTexelFormat in host/render/gpu_scene.cpp).
@@ -52,6 +53,7 @@
 #define TEXEL_FORMAT_TEXTURES rgba32ui
 #define TEXEL_FORMAT_TRIANGLE_ATTRIBUTES rgba32ui
 #define TEXEL_FORMAT_LAYER_ALBEDO r32ui
+#define TEXEL_FORMAT_EARS_SAMPLING rgba32f
 
 // Specialization constant ids.
 #define SPEC_WORKGROUP_SIZE 0
@@ -287,7 +289,8 @@ namespace vkmc::gpu {
 // The bindings read as storage texel buffers (the others are storage buffers).
 inline constexpr uint32_t kTexelBindings[] = {
     BINDING_TRIANGLES,      BINDING_TRIANGLE_INFO, BINDING_BVH_NODES,          BINDING_LIGHTS,
-    BINDING_TEXTURE_TEXELS, BINDING_TEXTURES,      BINDING_TRIANGLE_ATTRIBUTES, BINDING_LAYER_ALBEDO};
+    BINDING_TEXTURE_TEXELS, BINDING_TEXTURES,      BINDING_TRIANGLE_ATTRIBUTES, BINDING_LAYER_ALBEDO,
+    BINDING_EARS_SAMPLING};
 static_assert(sizeof(PathState) == 80);
 static_assert(offsetof(PathState, pixel) == 64 && offsetof(PathState, rootPath) == 76);
 static_assert(sizeof(ShadowRay) == 48);

@@ -65,9 +65,10 @@ TEST(Ears, MemoryIsBoundedOnAMillionTriangles) {
   RenderOutcome r = runRender(sharedContext(), o);
   ASSERT_TRUE(r.ears);
   EXPECT_GT(r.sceneInfo.triangles, 500000u);
-  // The cache does not grow with the scene: at most 2^19 cells of 64 bytes, and each path slot's records.
+  // The cache does not grow with the scene: at most 2^19 cells (sums and learned texels), and each path slot's
+  // records.
   const uint64_t slots = uint64_t(32 * 32 * 2) * kEarsPoolFactor;
-  EXPECT_LE(r.ears->deviceBytes, (uint64_t(1) << 19) * sizeof(gpu::EarsCell) +
+  EXPECT_LE(r.ears->deviceBytes, (uint64_t(1) << 19) * (sizeof(gpu::EarsCell) + gpu::kEarsSamplingTexels * 16) +
                                      slots * (gpu::kEarsDepths * sizeof(gpu::EarsRecord) + sizeof(gpu::EarsSlot)) +
                                      sizeof(gpu::EarsHeader));
   EXPECT_LE(r.ears->occupiedCells, r.ears->cells);

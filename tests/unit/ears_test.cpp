@@ -52,18 +52,28 @@ TEST(EarsSampling, MomentsPerCostFromTheSums) {
 
 TEST(EarsFactor, RelativeThroughputUsesRelMsesEpsilon) { EXPECT_NEAR(double(kEarsEpsilon), kRelMseEpsilon, 1e-9); }
 
-TEST(EarsCell, GridCellsAndNormalBins) {
-  const vec4 grid(0.0f, 0.0f, 0.0f, 4.0f);  // cells of 1/4
+TEST(EarsCell, GridCellsLevelsAndNormalBins) {
+  const vec4 grid(0.0f, 0.0f, 0.0f, 4.0f);  // finest cells of 1/4
   const uint mask = (1u << 16) - 1u;
   const vec3 up(0.0f, 1.0f, 0.0f);
+  auto cell = [&](vec3 p, vec3 n, uint level) { return earsCellIndex(earsCellKey(p, n, grid), level, mask); };
   // Points in one cell with one normal share it; the next cell, the opposite side or another axis does not.
-  EXPECT_EQ(earsCell(vec3(0.30f, 0.30f, 0.30f), up, grid, mask), earsCell(vec3(0.26f, 0.49f, 0.45f), up, grid, mask));
-  EXPECT_NE(earsCell(vec3(0.30f, 0.30f, 0.30f), up, grid, mask), earsCell(vec3(0.55f, 0.30f, 0.30f), up, grid, mask));
-  EXPECT_NE(earsCell(vec3(0.30f, 0.30f, 0.30f), up, grid, mask), earsCell(vec3(0.30f, 0.30f, 0.30f), -up, grid, mask));
-  EXPECT_NE(earsCell(vec3(0.30f, 0.30f, 0.30f), up, grid, mask),
-            earsCell(vec3(0.30f, 0.30f, 0.30f), vec3(0.9f, 0.3f, 0.0f), grid, mask));
-  // Always within the table, even below the grid's origin.
-  for (float x : {-100.0f, -0.1f, 0.0f, 7.3f, 1e6f}) EXPECT_LE(earsCell(vec3(x, -x, x), up, grid, mask), mask);
+  EXPECT_EQ(cell(vec3(0.30f, 0.30f, 0.30f), up, 0), cell(vec3(0.26f, 0.49f, 0.45f), up, 0));
+  EXPECT_NE(cell(vec3(0.30f, 0.30f, 0.30f), up, 0), cell(vec3(0.55f, 0.30f, 0.30f), up, 0));
+  EXPECT_NE(cell(vec3(0.30f, 0.30f, 0.30f), up, 0), cell(vec3(0.30f, 0.30f, 0.30f), -up, 0));
+  EXPECT_NE(cell(vec3(0.30f, 0.30f, 0.30f), up, 0), cell(vec3(0.30f, 0.30f, 0.30f), vec3(0.9f, 0.3f, 0.0f), 0));
+  // A coarser level joins 4 cells per axis (1 unit here): the next fine cell shares its level-1 cell, the next
+  // unit does not; levels do not share cells.
+  EXPECT_EQ(cell(vec3(0.30f, 0.30f, 0.30f), up, 1), cell(vec3(0.55f, 0.80f, 0.99f), up, 1));
+  EXPECT_NE(cell(vec3(0.30f, 0.30f, 0.30f), up, 1), cell(vec3(1.30f, 0.30f, 0.30f), up, 1));
+  EXPECT_EQ(cell(vec3(0.30f, 0.30f, 0.30f), up, 2), cell(vec3(3.9f, 3.9f, 3.9f), up, 2));
+  EXPECT_NE(cell(vec3(0.30f, 0.30f, 0.30f), up, 1), cell(vec3(0.30f, 0.30f, 0.30f), up, 2));
+  // Keys stay in their 7-bit fields, even outside the grid, and indices within the table.
+  for (float x : {-100.0f, -0.1f, 0.0f, 7.3f, 1e6f}) {
+    uint key = earsCellKey(vec3(x, -x, x), up, grid);
+    EXPECT_LT(key, 6u << 21);
+    for (uint level = 0; level < kEarsLevels; ++level) EXPECT_LE(earsCellIndex(key, level, mask), mask);
+  }
 }
 
 TEST(EarsImageStatistics, RelativeVarianceAndEstimateFromFilmAndBatch) {
@@ -78,12 +88,25 @@ TEST(EarsImageStatistics, RelativeVarianceAndEstimateFromFilmAndBatch) {
   EXPECT_FLOAT_EQ(s.pixelEstimate[0].x, 2.0f);
   EXPECT_NEAR(s.pixelEstimate[0].w, 2.0f, 1e-5f);  // luminance of grey
   EXPECT_FLOAT_EQ(s.pixelEstimate[1].x, 0.0f);
-  // Per sample, over pixels and channels: (2 / (4 + eps) + 0) / 2.
-  EXPECT_NEAR(s.relativeVariance, 0.5 * 2.0 / (4.0 + eps), 1e-12);
+  // The noisier pixel is the share left out (at least one): the other's 0 remains.
+  EXPECT_EQ(s.relativeVariance, 0.0);
   // The batch adds to the folded sums: a third sample 2 leaves the mean at 2 and makes the variance 1.
   batch[0].sum = vec4(2.0f, 2.0f, 2.0f, 1.0f);
   batch[0].sumSq = vec4(4.0f, 4.0f, 4.0f, 0.0f);
   s = earsImageStatistics(film, batch, eps);
   EXPECT_FLOAT_EQ(s.pixelEstimate[0].x, 2.0f);
-  EXPECT_NEAR(s.relativeVariance, 0.5 * 1.0 / (4.0 + eps), 1e-12);
+}
+
+TEST(EarsImageStatistics, MeanOverPixelsLeavesOutTheNoisiest) {
+  // 2000 pixels of two samples each: 1998 with samples 0 and 2 (relative variance 2 / (1 + eps)), two with 0 and
+  // 2000 (a firefly). A 0.1% share drops two pixels: the fireflies.
+  Film film(2000, 1);
+  for (size_t p = 0; p < 2000; ++p) {
+    const double hi = p < 2 ? 2000.0 : 2.0;
+    for (int c = 0; c < 3; ++c) film.sum[3 * p + c] = hi, film.sumSq[3 * p + c] = hi * hi;
+    film.count[p] = 2;
+  }
+  const double eps = kRelMseEpsilon;
+  EarsImageStatistics s = earsImageStatistics(film, nullptr, eps);
+  EXPECT_NEAR(s.relativeVariance, 2.0 / (1.0 + eps), 1e-9);
 }
