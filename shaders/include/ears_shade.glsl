@@ -89,10 +89,14 @@ void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMate
   uint spare = uint(ceil(q)) - 1u, firstChild = 0u;
   if (spare > 0u) {
     uint base = atomicAdd(control.splitChildren, spare);
-    if (pc.pathCount + base + spare > pc.queueCapacity) q = 1.0;
-    else firstChild = pc.pathCount + base;
+    if (pc.pathCount + base + spare > pc.queueCapacity) {
+      q = 1.0;
+      spare = 0u;
+    } else {
+      firstChild = pc.pathCount + base;
+    }
   }
-  uint copies = splitCount(q, sampleU(pathStream(path), bounceDim(depth, kDimSplit)));
+  uint copies = min(splitCount(q, sampleU(pathStream(path), bounceDim(depth, kDimSplit))), spare + 1u);
   countEarsFactor(depth, earsBin(trained, q));
   for (uint c = 1u; c < copies; ++c) {
     uint target = firstChild + c - 1u;

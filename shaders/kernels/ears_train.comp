@@ -16,7 +16,7 @@ void main() {
   earsRecords[i].scale.w = 0.0;
   vec3 lr = r.gathered.rgb * r.scale.rgb;
   float rays = max(r.gathered.w, 0.0);
-  if (!allFinite(lr) || isnan(rays) || isinf(rays)) return;
+  if (!allFinite(lr * lr) || isnan(rays) || isinf(rays)) return;  // lr^2 finite: lr is too
   for (uint level = 0u; level < kEarsLevels; ++level) {
     uint cell = earsCellIndex(keyCode - 1u, level, earsHeader.cellMask);
     atomicAdd(earsCells[cell].sum.r, lr.r);

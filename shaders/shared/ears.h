@@ -99,6 +99,7 @@ VKMC_FN float earsFactor(vec3 relativeThroughput, vec3 momentPerCost, vec3 varia
   float byMoment = sqrt(dot(t2, momentPerCost) / 3.0f) * imageFactor;
   float byVariance = sqrt(dot(t2, variancePerCost) / 3.0f) * imageFactor;
   float q = byMoment > 1.0f ? max(byVariance, 1.0f) : byMoment;
+  if (!(q >= 0.0f)) q = 1.0f;  // a cell whose sums overflowed (NaN): the vertex as it is
   return clamp(q, kEarsFactorMin, kEarsFactorMax);
 }
 

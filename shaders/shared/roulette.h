@@ -39,8 +39,13 @@ VKMC_FN float fixedRouletteCompensation(float q) { return q / (1.0f - q); }
 VKMC_FN float rouletteSurvival(float unsplitThroughput, float scale, float cap) { return min(scale * unsplitThroughput, cap); }
 
 // Splitting and Russian roulette as one mechanism (as in EARS): a factor q yields floor(q + u) children,
-// each weighted 1 / q, so the expected total weight is one. q < 1 is roulette, q > 1 splitting.
-VKMC_FN uint splitCount(float q, float u) { return uint(floor(q + u)); }
+// each weighted 1 / q, so the expected total weight is one. q < 1 is roulette, q > 1 splitting. Written without
+// the sum q + u, which float rounding lifts to the next integer (2 + (1 - 2^-24) rounds to 3): never more than
+// ceil(q) children, which is what the kernels reserve pool slots for.
+VKMC_FN uint splitCount(float q, float u) {
+  float whole = floor(q);
+  return uint(whole) + (u >= 1.0f - (q - whole) ? 1u : 0u);
+}
 
 VKMC_FN RouletteStep throughputRoulette(float unsplitThroughput, float scale, float r) {
   RouletteStep s;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "../shaders/shared/ears.h"
+#include "../shaders/shared/roulette.h"
 #include "analysis/error_metrics.h"
 #include "render/ears_cache.h"
 
@@ -30,6 +31,25 @@ TEST(EarsFactor, ClampedToEarsRange) {
   EXPECT_FLOAT_EQ(earsFactor(vec3(1e-6f), vec3(1.0f), vec3(1.0f), 1.0f), kEarsFactorMin);
   EXPECT_FLOAT_EQ(earsFactor(vec3(1e6f), vec3(1.0f), vec3(1.0f), 1.0f), kEarsFactorMax);
   EXPECT_FLOAT_EQ(earsFactor(vec3(0.0f), vec3(0.0f), vec3(0.0f), 0.0f), kEarsFactorMin);  // nothing to gain: roulette
+}
+
+TEST(EarsFactor, NanCellsLeaveTheVertexAsItIs) {
+  const float nan = std::nanf("");
+  EXPECT_FLOAT_EQ(earsFactor(vec3(1.0f), vec3(nan), vec3(nan), 1.0f), 1.0f);
+}
+
+TEST(SplitCount, NeverMoreThanCeilQAndMeanQ) {
+  // The largest u the samplers return is 1 - 2^-24; floor(q + u) in float would give q + 1 for a whole q
+  // (the pool reserves ceil(q) - 1 slots beside the path's own).
+  const float uMax = 1.0f - 1.0f / 16777216.0f;
+  for (float q : {0.05f, 0.5f, 1.0f, 2.0f, 2.5f, 19.99f, 20.0f}) {
+    EXPECT_LE(splitCount(q, uMax), uint(std::ceil(q))) << q;
+    EXPECT_GE(splitCount(q, 0.0f), uint(std::floor(q))) << q;
+    double mean = 0.0;
+    const int n = 1 << 16;
+    for (int i = 0; i < n; ++i) mean += splitCount(q, (i + 0.5f) / n);
+    EXPECT_NEAR(mean / n, q, 1e-4) << q;
+  }
 }
 
 TEST(EarsSampling, MomentsPerCostFromTheSums) {
