@@ -80,6 +80,7 @@ nlohmann::json earsJson(const EarsSummary& e) {
           {"trusted_cells", e.trustedCells},
           {"device_bytes", e.deviceBytes},
           {"learning_passes", e.learningPasses},
+          {"training_spp", e.trainingSamples},
           {"image_factor", e.imageFactor},
           {"training_copies", e.copies},
           {"mean_lr", {e.meanLr.x, e.meanLr.y, e.meanLr.z}},
@@ -96,9 +97,9 @@ std::string earsLine(const EarsSummary& e) {
   const double n = double(r[0] + r[1] + r[2] + r[3]);
   auto pct = [&](uint64_t v) { return n > 0 ? 100.0 * double(v) / n : 0.0; };
   std::snprintf(buf, sizeof(buf),
-                "ears        %u learning passes; cells %u of %u used (%u trusted), %.1f MiB; first hits: %.0f%% untrained, "
-                "%.0f%% rouletted, %.0f%% kept, %.0f%% split\n",
-                e.learningPasses, e.occupiedCells, e.cells, e.trustedCells, double(e.deviceBytes) / (1 << 20),
+                "ears        %u spp of training passes (not in the image), %u learning passes; cells %u of %u used "
+                "(%u trusted), %.1f MiB; first hits: %.0f%% untrained, %.0f%% rouletted, %.0f%% kept, %.0f%% split\n",
+                e.trainingSamples, e.learningPasses, e.occupiedCells, e.cells, e.trustedCells, double(e.deviceBytes) / (1 << 20),
                 pct(r[gpu::kEarsBinFallback]), pct(r[gpu::kEarsBinRoulette]), pct(r[gpu::kEarsBinOne]),
                 pct(r[gpu::kEarsBinSplit]));
   return buf;

@@ -129,6 +129,7 @@ EarsSummary EarsCache::summary() {
   s.cells = cells_;
   s.deviceBytes = deviceBytes_;
   s.learningPasses = learningPasses_;
+  s.trainingSamples = trainingSamples_;
   s.imageFactor = header().imageFactor;
   glm::dvec4 sum(0.0), squares(0.0);
   for (const gpu::EarsCell& c : downloadCells()) {

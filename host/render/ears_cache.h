@@ -32,6 +32,7 @@ struct EarsSummary {
   uint32_t trustedCells = 0;    // with enough to decide (kEarsMinCellCopies), at any level
   uint64_t deviceBytes = 0;     // cells, records, slots and header
   uint32_t learningPasses = 0;  // passes whose factors came from the cache
+  uint32_t trainingSamples = 0; // per pixel, in the training passes (not in the image)
   double imageFactor = 0.0;     // sqrt(C_img / V_img) of the last pass
   // Over every cell: the training copies, and their mean Lr, Lr^2 (per channel) and rays.
   double copies = 0.0, meanRays = 0.0;
@@ -49,6 +50,7 @@ class EarsCache {
   void setImageStatistics(double raysPerSample, double relativeVariance);
   // At a pass's start: counts the passes whose factors come from the cache.
   void beginPass();
+  void noteTrainingSamples(uint32_t samplesPerPixel) { trainingSamples_ += samplesPerPixel; }
   EarsSummary summary();
   uint64_t deviceBytes() const { return deviceBytes_; }
   uint32_t cellCount() const { return cells_; }
@@ -60,6 +62,7 @@ class EarsCache {
   bool enabled_;
   uint32_t cells_ = 0;
   uint32_t learningPasses_ = 0;
+  uint32_t trainingSamples_ = 0;
   uint64_t deviceBytes_ = 0;
   vk::Buffer header_, cellBuffer_, sampling_, records_, slots_;
 };

@@ -25,6 +25,8 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 constexpr uint32_t kFirstChunkBounces = 24;
 constexpr uint32_t kLaterChunkBounces = 16;
 constexpr uint32_t kSamplesPerBatch = 64;  // samples in a float batch sum before it is folded into double
+constexpr uint32_t kEarsTrainingPasses = 3;        // EARS's passes that only train (1, 2 and 4 spp)
+constexpr uint32_t kEarsTrainingSeed = 0x5bd1e995;  // their seeds: the render's, xor this
 }  // namespace
 
 const char* toString(Integrator i) {
@@ -173,7 +175,7 @@ gpu::PushConstants PathRenderer::passConstants(uint32_t firstPixel, uint32_t pix
   pc.sampleIndex = sampleIndex;
   pc.width = settings_.width;
   pc.height = settings_.height;
-  pc.seed = settings_.seed;
+  pc.seed = earsTraining_ ? settings_.seed ^ kEarsTrainingSeed : settings_.seed;
   pc.queueCapacity = pool_;
   const CameraRig& cam = settings_.camera;
   pc.cameraOrigin = glm::vec4(cam.origin, cam.orthographic ? float(gpu::kCameraOrthographic) : float(gpu::kCameraPerspective));
@@ -288,6 +290,27 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
   if (settings_.recordDepthStats) collectPilot(count);
   if (ears_->enabled()) trainEars(count + std::min(controlView().splitChildren, pool_ - count), stats);
   return bounce;
+}
+
+// EARS's training passes (kEarsTrainingPasses of 1, 2, 4... spp): they fill the cache and the pixel estimate and
+// are then dropped, so the image holds only samples whose decisions were learned, not the first passes'
+// outliers. Dropping passes chosen in advance is unbiased; their own seed keeps every image sample's random
+// numbers apart from those that trained its decisions. Their rays and time are the render's cost. Returns the
+// next pass's size.
+uint32_t PathRenderer::trainEarsPasses(const Film& film, RenderStats& stats) {
+  const uint32_t pixels = settings_.width * settings_.height;
+  uint32_t samples = 1;
+  earsTraining_ = true;
+  for (uint32_t pass = 0; pass < kEarsTrainingPasses; ++pass) {
+    const uint64_t raysBefore = stats.rays();
+    renderSamples(0, samples, stats);
+    updateEarsStatistics(film, double(stats.rays() - raysBefore) / (double(pixels) * samples));
+    ears_->noteTrainingSamples(samples);
+    samples = std::min(2 * samples, samplesPerPass());
+  }
+  earsTraining_ = false;
+  film_.zero();
+  return samples;
 }
 
 void PathRenderer::trainEars(uint32_t slotsUsed, RenderStats& stats) {
@@ -441,6 +464,10 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   const uint32_t firstSample = state.nextSample;
   uint32_t earsPassSamples = 1;
   auto stopRequested = [&] { return control.stop && control.stop->load() != 0; };
+  if (ears_->enabled() && state.nextSample < settings_.spp && !stopRequested()) {
+    if (inBatch > 0) foldFilm(state.film), inBatch = 0;  // the training passes' samples are dropped from the batch
+    earsPassSamples = trainEarsPasses(state.film, stats);
+  }
   for (uint32_t s = state.nextSample; s < settings_.spp;) {
     if (budget > 0.0 && s > firstSample && since(start) >= budget) break;
     if (stopRequested()) {

@@ -76,6 +76,8 @@ class PathRenderer {
   // EARS after a pass: its records into the cache (slotsUsed: the pass's path slots), then the image statistics
   // of the film so far (raysPerSample: the pass's) for the next pass's factors.
   void trainEars(uint32_t slotsUsed, RenderStats& stats);
+  uint32_t trainEarsPasses(const Film& film, RenderStats& stats);
+  bool earsTraining_ = false;  // a training pass: its own seed, its samples dropped
   void updateEarsStatistics(const Film& film, double raysPerSample);
   // The state as of the last pass: seconds, queue occupancy, and the device's unfolded batch.
   void snapshot(RenderState& state, uint32_t inBatch, double seconds, const RenderStats& before);

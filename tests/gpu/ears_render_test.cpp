@@ -36,10 +36,13 @@ TEST(Ears, FurnaceCacheLearnsTheReflectedRadiance) {
   }
   // Each copy costs at least its continuation ray or light sample when it gathers anything.
   EXPECT_GT(e.meanRays, 1.0);
-  // Every camera ray hits the sphere: the first row of the histogram counts each sample's first vertex once.
+  // Every camera ray hits the sphere: the first row of the histogram counts each sample's first vertex once,
+  // the training passes' (1 + 2 + 4 spp, not in the image) too.
+  EXPECT_EQ(e.trainingSamples, 7u);
+  EXPECT_EQ(r.film.totalSamples(), 32u * 32u * 64u);
   uint64_t first = 0;
   for (uint64_t n : e.factors[0]) first += n;
-  EXPECT_EQ(first, 32u * 32u * 64u);
+  EXPECT_EQ(first, 32u * 32u * (64u + e.trainingSamples));
   EXPECT_GT(e.factors[0][gpu::kEarsBinSplit] + e.factors[0][gpu::kEarsBinRoulette] + e.factors[0][gpu::kEarsBinOne], 0u)
       << "learned factors must decide some first vertices";
 }

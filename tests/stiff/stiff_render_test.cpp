@@ -25,6 +25,12 @@ double tinyLightPixel(uint32_t i, uint32_t j, uint32_t n) {
     }
   return sum / (sub * sub);
 }
+double tinyLightImageMean(uint32_t n) {
+  double mean = 0;
+  for (uint32_t j = 0; j < n; ++j)
+    for (uint32_t i = 0; i < n; ++i) mean += tinyLightPixel(i, j, n) / (n * n);
+  return mean;
+}
 }  // namespace
 
 TEST(StiffRender, TinyIntenseLightMatchesTheAnalyticRadiance) {
@@ -35,9 +41,7 @@ TEST(StiffRender, TinyIntenseLightMatchesTheAnalyticRadiance) {
   independent.sampler = Sampler::Independent;
   RenderOutcome r = renderWith("stiff/tiny_light.gltf", independent, n, n, 256);
   ASSERT_EQ(r.film.totalNonfinite(), 0u);
-  double expectedMean = 0;
-  for (uint32_t j = 0; j < n; ++j)
-    for (uint32_t i = 0; i < n; ++i) expectedMean += tinyLightPixel(i, j, n) / (n * n);
+  const double expectedMean = tinyLightImageMean(n);
   RegionStats s = whole(r.film);
   ZTest image = zTest(s.mean.x, expectedMean, std::sqrt(s.variance.x));
   EXPECT_TRUE(belowSigmas(image, 3.0)) << "image mean";
@@ -77,9 +81,7 @@ TEST(StiffRender, TinyIntenseLightWithEars) {
   e.rr = RouletteMode::Ears;
   RenderOutcome r = renderWith("stiff/tiny_light.gltf", e, n, n, 256);
   ASSERT_EQ(r.film.totalNonfinite(), 0u);
-  double expectedMean = 0;
-  for (uint32_t j = 0; j < n; ++j)
-    for (uint32_t i = 0; i < n; ++i) expectedMean += tinyLightPixel(i, j, n) / (n * n);
+  const double expectedMean = tinyLightImageMean(n);
   RegionStats s = whole(r.film);
   EXPECT_TRUE(belowSigmas(zTest(s.mean.x, expectedMean, std::sqrt(s.variance.x)), 4.0)) << "image mean";
   for (auto [i, j] : {std::pair{8u, 8u}, std::pair{3u, 12u}, std::pair{0u, 0u}}) {
