@@ -12,6 +12,7 @@
 #ifndef VKMC_EARS_H
 #define VKMC_EARS_H
 #include "glsl_cpp.h"
+#include "rng.h"  // hashU32
 VKMC_BEGIN_NAMESPACE
 
 VKMC_CONST uint kEarsDepths = 4u;                 // vertices of a path that train the cache (deeper ones read it)
@@ -83,13 +84,8 @@ VKMC_FN uint earsCellKey(vec3 p, vec3 n, vec4 grid) {
 VKMC_FN uint earsCellIndex(uint key, uint level, uint cellMask) {
   uint shift = level * kEarsLevelShift;
   uint x = (key & 127u) >> shift, y = ((key >> 7u) & 127u) >> shift, z = ((key >> 14u) & 127u) >> shift;
-  uint h = x * 0x8da6b343u ^ y * 0xd8163841u ^ z * 0xcb1ab31fu ^ (key >> 21u) * 0x9e3779b9u ^ level * 0x632be5abu;
-  h ^= h >> 16u;
-  h *= 0x7feb352du;
-  h ^= h >> 15u;
-  h *= 0x846ca68bu;
-  h ^= h >> 16u;
-  return h & cellMask;
+  return hashU32(x * 0x8da6b343u ^ y * 0xd8163841u ^ z * 0xcb1ab31fu ^ (key >> 21u) * 0x9e3779b9u ^ level * 0x632be5abu) &
+         cellMask;
 }
 
 // EARS's factor (its recursive_path.cpp), t per channel: the second moment decides roulette, the variance
