@@ -1,4 +1,5 @@
-// Binned SAH build (Wald 2007): centroid bins on all three axes, in-place partition, explicit work stack.
+// The GPU layouts of the binary SAH tree (binary_build.h): flattened depth first, collapsed to quantized 4-wide
+// nodes; and the host reference traversals of both.
 #include "bvh/bvh.h"
 
 #include <algorithm>
@@ -10,181 +11,15 @@
 #include <limits>
 
 #include "../shaders/shared/geometry.h"
+#include "bvh/binary_build.h"
+#include "bvh/parallel_chunks.h"
 #include "error.h"
 
 namespace vkmc {
 namespace {
 
-constexpr uint32_t kMaxDepth = 60;  // the GPU traversal stack holds 64 entries
-
-struct BuildNode {
-  Aabb bounds;
-  uint32_t first = 0, count = 0;  // leaf range, count > 0
-  uint32_t child[2] = {0, 0};     // inner node
-};
-
-// The centroid's bin: clamped in double before the conversion (a float-to-int cast of inf or NaN is UB).
-uint32_t binOf(float centroid, float min, double scale, uint32_t bins) {
-  double b = (double(centroid) - double(min)) * scale;
-  return b >= double(bins - 1) ? bins - 1 : b > 0.0 ? static_cast<uint32_t>(b) : 0u;
-}
-
 float asFloat(uint32_t u) { return std::bit_cast<float>(u); }
 uint32_t asUint(float f) { return std::bit_cast<uint32_t>(f); }
-
-class Builder {
- public:
-  Builder(std::span<const Aabb> bounds, const BvhOptions& options) : bounds_(bounds), options_(options) {
-    centroids_.resize(bounds.size());
-    for (size_t i = 0; i < bounds.size(); ++i) centroids_[i] = bounds[i].center();
-    order_.resize(bounds.size());
-    for (uint32_t i = 0; i < order_.size(); ++i) order_[i] = i;
-  }
-
-  std::vector<BuildNode> nodes;
-  std::vector<uint32_t> order_;
-  uint32_t maxDepth = 0;
-
-  void build() {
-    nodes.reserve(2 * bounds_.size() / std::max(1u, options_.maxLeafSize / 2) + 1);
-    nodes.push_back({});
-    struct Task {
-      uint32_t node, first, count, depth;
-    };
-    std::vector<Task> stack{{0, 0, static_cast<uint32_t>(order_.size()), 0}};
-    while (!stack.empty()) {
-      Task task = stack.back();
-      stack.pop_back();
-      maxDepth = std::max(maxDepth, task.depth);
-      Aabb box, centroidBox;
-      for (uint32_t i = task.first; i < task.first + task.count; ++i) {
-        box.grow(bounds_[order_[i]]);
-        centroidBox.grow(centroids_[order_[i]]);
-      }
-      nodes[task.node].bounds = box;
-      uint32_t mid = split(task.first, task.count, box, centroidBox, task.depth);
-      if (mid == 0) {
-        nodes[task.node].first = task.first;
-        nodes[task.node].count = task.count;
-        continue;
-      }
-      uint32_t left = static_cast<uint32_t>(nodes.size());
-      nodes.push_back({});
-      nodes.push_back({});
-      nodes[task.node].child[0] = left;
-      nodes[task.node].child[1] = left + 1;
-      stack.push_back({left + 1, task.first + mid, task.count - mid, task.depth + 1});
-      stack.push_back({left, task.first, mid, task.depth + 1});
-    }
-  }
-
- private:
-  // Returns the size of the left part, or 0 to make a leaf.
-  uint32_t split(uint32_t first, uint32_t count, const Aabb& box, const Aabb& centroidBox, uint32_t depth) {
-    if (count <= 1) return 0;
-    bool mustSplit = count > options_.maxLeafSize;
-    if (depth >= kMaxDepth) return 0;
-    if (options_.fullSweep) return sweepSplit(first, count, box, mustSplit);
-    const uint32_t bins = options_.bins;
-    // In double: a float extent can overflow (+-3e38) or be denormal, and bins / extent then is inf.
-    glm::dvec3 extent = glm::dvec3(centroidBox.max) - glm::dvec3(centroidBox.min);
-    double bestCost = std::numeric_limits<double>::infinity();
-    int bestAxis = -1;
-    uint32_t bestBin = 0;
-    std::array<Aabb, 64> binBox;
-    std::array<uint32_t, 64> binCount;
-    std::array<double, 64> rightArea;
-    std::array<uint32_t, 64> rightCount;
-    for (int axis = 0; axis < 3; ++axis) {
-      if (!(extent[axis] > 0.0f)) continue;
-      double scale = bins / extent[axis];
-      std::fill_n(binBox.begin(), bins, Aabb{});
-      std::fill_n(binCount.begin(), bins, 0u);
-      for (uint32_t i = first; i < first + count; ++i) {
-        uint32_t tri = order_[i];
-        uint32_t b = binOf(centroids_[tri][axis], centroidBox.min[axis], scale, bins);
-        binBox[b].grow(bounds_[tri]);
-        ++binCount[b];
-      }
-      Aabb acc;
-      uint32_t n = 0;
-      for (uint32_t b = bins - 1; b > 0; --b) {
-        acc.grow(binBox[b]);
-        n += binCount[b];
-        rightArea[b] = acc.halfArea();
-        rightCount[b] = n;
-      }
-      acc = Aabb{};
-      n = 0;
-      for (uint32_t b = 0; b + 1 < bins; ++b) {
-        acc.grow(binBox[b]);
-        n += binCount[b];
-        if (n == 0 || rightCount[b + 1] == 0) continue;
-        double cost = acc.halfArea() * n + rightArea[b + 1] * rightCount[b + 1];
-        if (cost < bestCost) {
-          bestCost = cost;
-          bestAxis = axis;
-          bestBin = b + 1;
-        }
-      }
-    }
-    double parentArea = box.halfArea();
-    double leafCost = double(options_.triangleCost) * count;
-    double splitCost = options_.traversalCost + options_.triangleCost * bestCost / std::max(parentArea, 1e-300);
-    if (bestAxis < 0) {
-      if (!mustSplit) return 0;
-      return count / 2;  // all centroids coincide: split by index
-    }
-    if (!mustSplit && splitCost >= leafCost) return 0;
-    double scale = bins / extent[bestAxis];
-    auto mid = std::partition(order_.begin() + first, order_.begin() + first + count, [&](uint32_t tri) {
-      return binOf(centroids_[tri][bestAxis], centroidBox.min[bestAxis], scale, bins) < bestBin;
-    });
-    uint32_t left = static_cast<uint32_t>(mid - (order_.begin() + first));
-    return (left == 0 || left == count) ? count / 2 : left;
-  }
-
-  // Every split between centroid-sorted neighbours along every axis (ties broken by index: deterministic).
-  uint32_t sweepSplit(uint32_t first, uint32_t count, const Aabb& box, bool mustSplit) {
-    double bestCost = std::numeric_limits<double>::infinity();
-    uint32_t bestLeft = 0;
-    std::vector<uint32_t> sorted(count), best;
-    std::vector<double> rightArea(count);
-    for (int axis = 0; axis < 3; ++axis) {
-      std::copy(order_.begin() + first, order_.begin() + first + count, sorted.begin());
-      std::sort(sorted.begin(), sorted.end(), [&](uint32_t a, uint32_t b) {
-        float ca = centroids_[a][axis], cb = centroids_[b][axis];
-        return ca < cb || (ca == cb && a < b);
-      });
-      Aabb acc;
-      for (uint32_t i = count; i-- > 0;) {
-        acc.grow(bounds_[sorted[i]]);
-        rightArea[i] = acc.halfArea();
-      }
-      acc = Aabb{};
-      bool improved = false;
-      for (uint32_t i = 1; i < count; ++i) {
-        acc.grow(bounds_[sorted[i - 1]]);
-        double cost = acc.halfArea() * i + rightArea[i] * (count - i);
-        if (cost < bestCost) {
-          bestCost = cost;
-          bestLeft = i;
-          improved = true;
-        }
-      }
-      if (improved) best = sorted;
-    }
-    double leafCost = double(options_.triangleCost) * count;
-    double splitCost = options_.traversalCost + options_.triangleCost * bestCost / std::max(box.halfArea(), 1e-300);
-    if (!mustSplit && splitCost >= leafCost) return 0;
-    std::copy(best.begin(), best.end(), order_.begin() + first);
-    return bestLeft;
-  }
-
-  std::span<const Aabb> bounds_;
-  BvhOptions options_;
-  std::vector<glm::vec3> centroids_;
-};
 
 void writeChild(BvhGpuNode& gpu, int c, const Aabb& box, uint32_t ref, uint32_t count) {
   gpu.texels[2 * c] = glm::vec4(box.min, asFloat(ref));
@@ -193,14 +28,16 @@ void writeChild(BvhGpuNode& gpu, int c, const Aabb& box, uint32_t ref, uint32_t 
 
 // The binary layout's boxes one float outwards (after the wide collapse has read them tight): strictly beyond
 // their triangles, as the quantized wide boxes are (see quantizeBoxes for why).
-void widenByOneFloat(std::vector<BvhGpuNode>& nodes) {
+void widenByOneFloat(std::vector<BvhGpuNode>& nodes, unsigned threads) {
   const float inf = std::numeric_limits<float>::infinity();
-  for (BvhGpuNode& node : nodes)
-    for (int c = 0; c < 2; ++c) {
-      glm::vec4 &lo = node.texels[2 * c], &hi = node.texels[2 * c + 1];
-      if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z)) continue;  // the empty half of a root leaf
-      for (int a = 0; a < 3; ++a) lo[a] = std::nextafter(lo[a], -inf), hi[a] = std::nextafter(hi[a], inf);
-    }
+  parallelChunks(nodes.size(), 16384, threads, [&](size_t begin, size_t end) {
+    for (size_t n = begin; n < end; ++n)
+      for (int c = 0; c < 2; ++c) {
+        glm::vec4 &lo = nodes[n].texels[2 * c], &hi = nodes[n].texels[2 * c + 1];
+        if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z)) continue;  // the empty half of a root leaf
+        for (int a = 0; a < 3; ++a) lo[a] = std::nextafter(lo[a], -inf), hi[a] = std::nextafter(hi[a], inf);
+      }
+  });
 }
 
 // x - origin as d + e exactly (Knuth's TwoSum): a float's difference from the grid origin is not always a double
@@ -223,7 +60,7 @@ bool planeAbove(double qs, ExactOffset o) { return qs > o.d || (qs == o.d && o.e
 // which it can touch on an edge, lie strictly inside the quantized box, so such a ray cannot touch them.
 // Entries are left empty.
 template <typename Child>
-BvhWideNode quantizeBoxes(const std::vector<Child>& children) {
+BvhWideNode quantizeBoxes(std::span<const Child> children) {
   BvhWideNode out{};
   Aabb all;
   for (const Child& c : children) all.grow(c.box);
@@ -280,54 +117,77 @@ BvhWideNode quantizeBoxes(const std::vector<Child>& children) {
 }
 
 // Collapses the binary GPU layout into 4-wide nodes: a node's children are its binary children, the inner one
-// with the largest surface opened in turn until there are four (Wald et al. 2008's collapse).
-std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary) {
-  struct Child {
-    Aabb box;
-    uint32_t ref = 0, count = 0;  // count 0: binary inner node `ref`
+// with the largest surface opened in turn until there are four (Wald et al. 2008's collapse). The shape is planned
+// in one pass; the boxes, the costly part, are quantized on every thread.
+std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary, unsigned threads) {
+  // A child is a slot of a binary node: 2 * node + side. The plan keeps slots, not boxes (it is as many
+  // entries as wide nodes, and its memory is most of this pass's time).
+  auto count = [&](uint32_t slot) { return asUint(binary[slot / 2].texels[2 * (slot % 2) + 1].w); };
+  auto ref = [&](uint32_t slot) { return asUint(binary[slot / 2].texels[2 * (slot % 2)].w); };
+  auto box = [&](uint32_t slot) {
+    const glm::vec4* t = &binary[slot / 2].texels[2 * (slot % 2)];
+    return Aabb{glm::vec3(t[0]), glm::vec3(t[1])};
   };
-  auto childrenOf = [&](uint32_t node, std::vector<Child>& out) {
-    for (int c = 0; c < 2; ++c) {
-      const glm::vec4 lo = binary[node].texels[2 * c], hi = binary[node].texels[2 * c + 1];
-      uint32_t count = asUint(hi.w);
-      if (count == 0xffffffffu) continue;  // the empty half of a root leaf
-      out.push_back({Aabb{glm::vec3(lo), glm::vec3(hi)}, asUint(lo.w), count});
-    }
+  struct Plan {
+    std::array<uint32_t, 4> slot, entry;  // entry: the wide node of an inner child
+    uint32_t size = 0;
   };
-  std::vector<BvhWideNode> wide(1);
+  std::vector<Plan> plans(1);
+  plans.reserve(binary.size());  // a wide node per binary inner node at most
   std::vector<std::pair<uint32_t, uint32_t>> tasks{{0u, 0u}};  // (binary node, wide node)
   while (!tasks.empty()) {
     auto [node, w] = tasks.back();
     tasks.pop_back();
-    std::vector<Child> children;
-    childrenOf(node, children);
-    while (children.size() < 4) {
-      int open = -1;
-      for (int i = 0; i < int(children.size()); ++i)
-        if (children[i].count == 0 && (open < 0 || children[i].box.halfArea() > children[open].box.halfArea())) open = i;
-      if (open < 0) break;
-      uint32_t inner = children[open].ref;
-      children.erase(children.begin() + open);
-      childrenOf(inner, children);
-    }
-    BvhWideNode out = quantizeBoxes(children);
-    for (size_t i = 0; i < children.size(); ++i) {
-      const Child& c = children[i];
-      uint32_t entry;
-      if (c.count > 0) {
-        if (c.count > gpu::kBvhMaxLeafSize || c.ref >= gpu::kBvhLeafFirstLimit)
-          throw Error("BVH leaf of " + std::to_string(c.count) + " triangles at " + std::to_string(c.ref) +
-                      " does not fit the 4-wide node layout");
-        entry = gpu::bvhLeafEntry(c.ref, c.count);
-      } else {
-        entry = static_cast<uint32_t>(wide.size());
-        wide.emplace_back();
-        tasks.push_back({c.ref, entry});
+    Plan plan;
+    std::array<double, 4> area{};
+    auto addChildrenOf = [&](uint32_t n) {
+      for (uint32_t slot = 2 * n; slot < 2 * n + 2; ++slot) {
+        if (count(slot) == 0xffffffffu) continue;  // the empty half of a root leaf
+        area[plan.size] = count(slot) ? 0.0 : box(slot).halfArea();
+        plan.slot[plan.size++] = slot;
       }
-      out.texels[gpu::kBvhWideChildTexel][i] = entry;
+    };
+    addChildrenOf(node);
+    while (plan.size < 4) {
+      int open = -1;
+      for (int i = 0; i < int(plan.size); ++i)
+        if (count(plan.slot[i]) == 0 && (open < 0 || area[i] > area[open])) open = i;
+      if (open < 0) break;
+      uint32_t inner = ref(plan.slot[open]);
+      for (uint32_t i = open; i + 1 < plan.size; ++i) plan.slot[i] = plan.slot[i + 1], area[i] = area[i + 1];
+      --plan.size;
+      addChildrenOf(inner);
     }
-    wide[w] = out;
+    for (uint32_t i = 0; i < plan.size; ++i) {
+      const uint32_t slot = plan.slot[i];
+      if (count(slot) > 0) {
+        if (count(slot) > gpu::kBvhMaxLeafSize || ref(slot) >= gpu::kBvhLeafFirstLimit)
+          throw Error("BVH leaf of " + std::to_string(count(slot)) + " triangles at " + std::to_string(ref(slot)) +
+                      " does not fit the 4-wide node layout");
+        continue;
+      }
+      plan.entry[i] = static_cast<uint32_t>(plans.size());
+      plans.emplace_back();
+      tasks.push_back({ref(slot), plan.entry[i]});
+    }
+    plans[w] = plan;
   }
+  struct Child {
+    Aabb box;
+  };
+  std::vector<BvhWideNode> wide(plans.size());
+  parallelChunks(plans.size(), 4096, threads, [&](size_t begin, size_t end) {
+    for (size_t w = begin; w < end; ++w) {
+      const Plan& plan = plans[w];
+      std::array<Child, 4> children;
+      for (uint32_t i = 0; i < plan.size; ++i) children[i].box = box(plan.slot[i]);
+      wide[w] = quantizeBoxes(std::span<const Child>(children.data(), plan.size));
+      for (uint32_t i = 0; i < plan.size; ++i) {
+        const uint32_t slot = plan.slot[i];
+        wide[w].texels[gpu::kBvhWideChildTexel][i] = count(slot) > 0 ? gpu::bvhLeafEntry(ref(slot), count(slot)) : plan.entry[i];
+      }
+    }
+  });
   return wide;
 }
 
@@ -335,12 +195,11 @@ std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary) {
 
 Bvh buildBvh(std::span<const Aabb> bounds, const BvhOptions& options) {
   auto start = std::chrono::steady_clock::now();
-  Builder builder(bounds, options);
-  builder.build();
-  const std::vector<BuildNode>& nodes = builder.nodes;
+  BinaryTree tree = buildBinaryTree(bounds, options);
+  const std::vector<BuildNode>& nodes = tree.nodes;
 
   Bvh bvh;
-  bvh.triangleOrder = std::move(builder.order_);
+  bvh.triangleOrder = std::move(tree.order);
   // Inner build nodes become GPU nodes in depth-first order; a root leaf gets a node with one empty child.
   std::vector<uint32_t> gpuIndex(nodes.size(), 0);
   std::vector<uint32_t> stack{0};
@@ -384,10 +243,11 @@ Bvh buildBvh(std::span<const Aabb> bounds, const BvhOptions& options) {
       }
     }
   }
-  s.maxDepth = builder.maxDepth;
+  s.maxDepth = tree.maxDepth;
+  s.buildThreads = tree.threads;
   s.averageLeafSize = s.leaves ? static_cast<double>(bounds.size()) / s.leaves : 0.0;
-  bvh.wideNodes = collapseToWide(bvh.nodes);
-  widenByOneFloat(bvh.nodes);
+  bvh.wideNodes = collapseToWide(bvh.nodes, tree.threads);
+  widenByOneFloat(bvh.nodes, tree.threads);
   s.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return bvh;
 }

@@ -34,6 +34,7 @@ struct BvhStats {
   double averageLeafSize = 0.0;
   double sahCost = 0.0;  // expected cost per ray, inner traversal cost 1, triangle test cost 1
   double buildSeconds = 0.0;
+  uint32_t buildThreads = 1;
 };
 
 struct BvhOptions {
@@ -44,6 +45,7 @@ struct BvhOptions {
   // Full sweep SAH: every split position along every axis (centroid-sorted), O(n log^2 n); the reference the
   // binned build's quality is measured against, not the production build.
   bool fullSweep = false;
+  uint32_t threads = 0;  // 0: every hardware thread; the tree is the same for any count
 };
 
 struct Bvh {
@@ -53,7 +55,7 @@ struct Bvh {
   BvhStats stats;
 };
 
-// bounds: one box per triangle. Deterministic; single-threaded.
+// bounds: one box per triangle. Deterministic, whatever options.threads is.
 Bvh buildBvh(std::span<const Aabb> bounds, const BvhOptions& options = {});
 
 // Host reference traversal over the GPU layout (tests, tools). Returns t < 0 on a miss.

@@ -143,6 +143,37 @@ TEST(Bvh, BuildStatisticsAreConsistent) {
   EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](bool b) { return b; }));
 }
 
+// The build divides its work by fixed rules (parallel_chunks.h, the subtree limit), so the thread count changes
+// nothing: the same nodes, the same triangle order. 120k boxes: the top nodes bin on several threads and the
+// subtrees build in parallel; a block of coincident centroids takes the split by index.
+TEST(Bvh, TheTreeIsTheSameOnAnyNumberOfThreads) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  std::vector<Aabb> bounds;
+  for (int i = 0; i < 120000; ++i) {
+    vec3 c(u(rng) * 50, u(rng) * 5, u(rng) * 5);
+    if (i % 4 == 0) c = vec3(7.0f, 1.0f, -2.0f);  // coincident centroids, boxes of different sizes
+    float size = 0.01f + 0.2f * std::abs(u(rng));
+    bounds.push_back(Aabb{c - size, c + size});
+  }
+  auto bytesOf = [](const auto& v) {
+    return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v[0]));
+  };
+  BvhOptions options;
+  options.threads = 1;
+  Bvh one = buildBvh(bounds, options);
+  EXPECT_EQ(one.stats.buildThreads, 1u);
+  for (uint32_t threads : {2u, 3u, 8u}) {
+    options.threads = threads;
+    Bvh many = buildBvh(bounds, options);
+    EXPECT_EQ(many.stats.buildThreads, threads);
+    EXPECT_EQ(many.triangleOrder, one.triangleOrder) << threads << " threads";
+    EXPECT_EQ(bytesOf(many.nodes), bytesOf(one.nodes)) << threads << " threads";
+    EXPECT_EQ(bytesOf(many.wideNodes), bytesOf(one.wideNodes)) << threads << " threads";
+    EXPECT_EQ(many.stats.sahCost, one.stats.sahCost) << threads << " threads";
+  }
+}
+
 TEST(Geometry, WatertightOnSharedEdgesAndVertices) {
   // A 16x16 grid of quads (512 triangles): rays aimed exactly at grid vertices and edge midpoints must hit.
   std::vector<glm::vec3> pos;
