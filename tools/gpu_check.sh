@@ -52,6 +52,16 @@ run_checks() {
   echo "== bench-kernels 1024x1024, 16 spp"
   $t 240 $vkmc bench-kernels --runs $runs --spp $bigspp --width $big --height $big --integrator wavefront megakernel \
     --json "$out/reports/bench_1024.json" scenes/cornell_box.gltf "${models[@]}"
+  echo "== bench-kernels: workgroup and wavefront sizes (device_tuning.h's rules, unmeasured on a GPU), Cornell box ${big}x${big}"
+  local wg wf
+  for wg in 32 64 128 256; do
+    $t 60 $vkmc bench-kernels --runs $runs --spp $bigspp --width $big --height $big --integrator wavefront megakernel \
+      --workgroup $wg --json "$out/reports/bench_wg$wg.json" scenes/cornell_box.gltf | grep -E "^device|cornell"
+  done
+  for wf in 262144 1048576 4194304; do
+    $t 60 $vkmc bench-kernels --runs $runs --spp $bigspp --width $big --height $big --integrator wavefront megakernel \
+      --wavefront $wf --json "$out/reports/bench_wf$wf.json" scenes/cornell_box.gltf | grep -E "^device|cornell"
+  done
   echo "== bench-kernels: specialized against general pipelines"
   $t 120 $vkmc bench-kernels --runs $runs --specialization --json "$out/reports/bench_spec.json" scenes/cornell_box.gltf "${models[0]}"
   echo "== bench-textures: sampled texture pages against a texel buffer"
@@ -64,7 +74,7 @@ run_checks() {
     $t 120 $vkmc render "$s" --spp 64 -q -o "$out/reports/$name.exr" --report "$out/reports/$name.json" ||
       echo "render of $name failed (exit $?)"
     [[ -f $out/reports/$name.json ]] && python3 -c "import json,sys; r=json.load(open(sys.argv[1])); \
-print({k: r.get(k) for k in ('device','seconds','gpu_seconds','rays','mrays_per_second','mean','nonfinite_samples')})" \
+print({k: r.get(k) for k in ('device','integrator','device_tuning','seconds','gpu_seconds','rays','mrays_per_second','mean','nonfinite_samples')})" \
       "$out/reports/$name.json" 2>/dev/null
   done
   tar -C "$out" -czf "$out/reports.tar.gz" reports && rm -rf "$out/reports"

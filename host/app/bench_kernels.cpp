@@ -286,6 +286,7 @@ int runBenchKernels(const BenchOptions& o) {
   // Round 0 warms caches (Mesa's shader cache, the page cache, the allocator) and is not counted, except that
   // its pipeline time is reported as the first-use figure.
   std::vector<double> firstPipelines(cases.size(), 0.0);
+  RenderOutcome::Tuning tuning;  // as the last run resolved it (the same for every scene)
   for (int run = -1; run < o.runs; ++run) {
     for (size_t i = 0; i < cases.size(); ++i) {
       RenderOptions ro;
@@ -296,8 +297,10 @@ int runBenchKernels(const BenchOptions& o) {
       ro.progress = false;
       ro.background = glm::vec3(1.0f);  // so scenes without emitters still bounce rays
       ro.workgroupSize = o.workgroupSize;
+      ro.wavefrontPaths = o.wavefrontPaths;
       ro.integrator = cases[i].integrator;
       RenderOutcome r = runRender(ctx, ro);
+      tuning = r.tuning;
       if (run < 0) {
         firstPipelines[i] = r.setup.pipelines;
         continue;
@@ -321,8 +324,10 @@ int runBenchKernels(const BenchOptions& o) {
       s.traceDiffuseBinary.insert(s.traceDiffuseBinary.end(), t.diffuseBinary.begin(), t.diffuseBinary.end());
     }
   }
-  std::printf("device: %s; %dx%d, %d spp per run, %d runs, workgroup %u, medians [min-max]\n", ctx.deviceName().c_str(), o.width,
-              o.height, o.spp, o.runs, o.workgroupSize);
+  std::printf("device: %s (subgroup %u); %dx%d, %d spp per run, %d runs, workgroup %u%s, wavefront %u paths%s, medians "
+              "[min-max]\n",
+              ctx.deviceName().c_str(), tuning.subgroupSize, o.width, o.height, o.spp, o.runs, tuning.workgroupSize,
+              tuning.workgroupAuto ? " (device's)" : "", tuning.wavefrontPaths, tuning.wavefrontAuto ? " (device's)" : "");
   std::printf("%-34s %-10s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s %9s\n", "scene", "integrator", "triangles", "load s",
               "bvh s", "upload s", "pipes s", "samples/s", "primary", "bounces", "total", "trace 1st", "trace dif", "dif bvh2");
   std::printf("%-34s %-10s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s %9s\n", "", "", "", "", "", "", "", "", "Mrays/s",
@@ -357,7 +362,8 @@ int runBenchKernels(const BenchOptions& o) {
                    {"trace_diffuse_binary_bvh_mrays_per_second", median(s.traceDiffuseBinary)},
                    {"trace_diffuse_rays", s.diffuseRays},
                    {"pipeline_seconds_first_use", firstPipelines[i]},
-                   {"workgroup_size", o.workgroupSize}});
+                   {"workgroup_size", tuning.workgroupSize},
+                   {"wavefront_paths", tuning.wavefrontPaths}});
   }
   std::printf(
       "primary/bounces: wavefront intersection stages (GPU time; none in the megakernel); total: all rays over\n"

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include <memory>
+#include <string>
 
 #include "app/bench_kernels.h"
 #include "app/commands.h"
@@ -18,13 +19,20 @@ Command addBenchKernelsCommand(CLI::App& app) {
   bench->add_option("--height", o->height, "image height")->capture_default_str();
   bench->add_option("--json", o->jsonPath, "write the results as JSON");
   bench->add_flag("--specialization", o->specialization, "compare specialized with general (all-features) pipelines");
-  bench->add_option("--workgroup", o->workgroupSize, "invocations per workgroup of every kernel: 32, 64, 128, 256")
+  auto workgroup = std::make_shared<std::string>("auto"), wavefront = std::make_shared<std::string>("auto");
+  bench->add_option("--workgroup", *workgroup, "invocations per workgroup of every kernel: 32, 64, 128, 256, or auto")
+      ->capture_default_str();
+  bench->add_option("--wavefront", *wavefront, "paths in flight per pass at most (1024 to 16777216), or auto")
       ->capture_default_str();
   bench->add_flag("--sah", o->sah, "BVH quality: SAH cost of the binned build against a full sweep build");
   bench->add_option("--integrator", o->integrators, "wavefront, megakernel or both (interleaved, side by side)")
       ->check(CLI::IsMember({"wavefront", "megakernel"}))
       ->expected(1, 2);
-  return {bench, [o] { return runBenchKernels(*o); }};
+  return {bench, [o, workgroup, wavefront] {
+            o->workgroupSize = parseCountOrAuto(*workgroup, "--workgroup");
+            o->wavefrontPaths = parseCountOrAuto(*wavefront, "--wavefront");
+            return runBenchKernels(*o);
+          }};
 }
 
 }  // namespace vkmc

@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
+#include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -37,7 +39,7 @@ struct RenderArgs {
   int spp = 64;
   long long seed = 1;
   int width = -1, height = -1, cameraIndex = -1;
-  std::string integrator = "auto";
+  std::string integrator = "auto", workgroup = "auto", wavefront = "auto";
   std::string checkpoint, resume;
   double checkpointEvery = 120.0;
 };
@@ -74,6 +76,20 @@ glm::vec3 parseVec3(const std::string& text, const char* flag) {
     throw Error(std::string(flag) + " expects three finite numbers x,y,z, got '" + text + "'");
   return v;
 }
+
+}  // namespace
+
+uint32_t parseCountOrAuto(const std::string& text, const char* flag) {
+  if (text == "auto") return 0;
+  char* end = nullptr;
+  errno = 0;
+  unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+  if (text.empty() || text[0] == '-' || *end != '\0' || errno == ERANGE || v == 0 || v > 0xffffffffull)
+    throw Error(std::string(flag) + " expects auto or a positive whole number, got '" + text + "'");
+  return static_cast<uint32_t>(v);
+}
+
+namespace {
 
 // --filter-radius as typed: a finite number (the range is the filter's check).
 double parseRadius(const std::string& text) {
@@ -137,6 +153,8 @@ void fillOptions(RenderArgs& a, const CLI::App& cmd) {
   ro.progress = !a.quiet;
   ro.specialize = !a.noSpecialize;
   ro.integrator = integratorFromString(a.integrator);
+  ro.workgroupSize = parseCountOrAuto(a.workgroup, "--workgroup");
+  ro.wavefrontPaths = parseCountOrAuto(a.wavefront, "--wavefront");
   if (!std::isfinite(a.exposure) || std::abs(a.exposure) > 100.0f)
     throw Error("--exposure must be a finite number of stops in [-100, 100]");
 }
@@ -267,7 +285,9 @@ Command addRenderCommand(CLI::App& app) {
   render->add_option("--time-budget", ro.timeBudget, "render whole sample passes until this many seconds are spent (--spp caps)");
   render->add_option("--reference", ro.referencePath, "reference EXR: the report gains mse, relmse, efficiency");
   render->add_flag("--no-specialize", a->noSpecialize, "build general pipelines (every scene feature on), for comparison");
-  render->add_option("--workgroup", ro.workgroupSize, "invocations per workgroup of every kernel: 32, 64, 128, 256")
+  render->add_option("--workgroup", a->workgroup, "invocations per workgroup of every kernel: 32, 64, 128, 256, or auto (the device's)")
+      ->capture_default_str();
+  render->add_option("--wavefront", a->wavefront, "paths in flight per pass at most (1024 to 16777216), or auto (the device's)")
       ->capture_default_str();
   render->add_option("--checkpoint", a->checkpoint,
                      "write the render's state here every --checkpoint-every seconds and on SIGINT/SIGTERM (with the "

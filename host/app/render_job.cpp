@@ -18,6 +18,7 @@
 #include "io/checkpoint.h"
 #include "io/environment_image.h"
 #include "io/output_files.h"
+#include "render/device_tuning.h"
 #include "render/gpu_scene.h"
 #include "scene/camera_rig.h"
 #include "scene/gltf_loader.h"
@@ -247,17 +248,31 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   settings.camera = makeCameraRig(camera, width, height);
   settings.progress = options.progress;
   settings.timeBudget = options.timeBudget;
-  settings.workgroupSize = options.workgroupSize;
-  // auto becomes the device's integrator here, so the report and a checkpoint name the one that ran: a resume
-  // continues with its checkpoint's, and BSDF splitting keeps the wavefront (it needs the path pool).
+  // auto (the integrator, workgroup and wavefront sizes) becomes the device's choice here, so the report and a
+  // checkpoint name what ran: a resume continues with its checkpoint's, and BSDF splitting keeps the wavefront
+  // (it needs the path pool).
   RenderOptions resolved = options;
-  if (resolved.integrator == Integrator::Auto && run.resumeConfig)
-    resolved.integrator = integratorFromString(run.resumeConfig->at("options").at("integrator").get<std::string>());
+  if (run.resumeConfig) {
+    const nlohmann::json& was = run.resumeConfig->at("options");
+    if (resolved.integrator == Integrator::Auto) resolved.integrator = integratorFromString(was.at("integrator").get<std::string>());
+    if (resolved.workgroupSize == 0) resolved.workgroupSize = was.value("workgroup", 0u);
+    if (resolved.wavefrontPaths == 0) resolved.wavefrontPaths = was.value("wavefront_paths", 0u);
+  }
+  const DeviceTuning tuning = deviceTuning(ctx.deviceType(), ctx.subgroupSize());
   if (resolved.integrator == Integrator::Auto)
-    resolved.integrator = ctx.prefersMegakernel() && !options.estimator.splitsPaths() ? Integrator::Megakernel
-                                                                                          : Integrator::Wavefront;
+    resolved.integrator = options.estimator.splitsPaths() ? Integrator::Wavefront : tuning.integrator;
+  if (resolved.workgroupSize == 0) resolved.workgroupSize = tuning.workgroupSize;
+  if (resolved.wavefrontPaths == 0) resolved.wavefrontPaths = tuning.wavefrontPaths;
   settings.integrator = resolved.integrator;
+  settings.workgroupSize = resolved.workgroupSize;
+  settings.maxPathsPerPass = resolved.wavefrontPaths;
   out.integrator = resolved.integrator;
+  out.tuning.subgroupSize = ctx.subgroupSize();
+  out.tuning.workgroupSize = resolved.workgroupSize;
+  out.tuning.wavefrontPaths = resolved.wavefrontPaths;
+  out.tuning.integratorAuto = options.integrator == Integrator::Auto;
+  out.tuning.workgroupAuto = options.workgroupSize == 0;
+  out.tuning.wavefrontAuto = options.wavefrontPaths == 0;
   std::optional<RouletteTable> roulette;
   double pilotSeconds = 0.0;
   // What a checkpoint of this render records; a resumed render's must match it, and its learned state (the
@@ -309,6 +324,8 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   PathRenderer renderer(ctx, gpuScene, settings);
   if (roulette) renderer.setRouletteScales(roulette->scale);
   out.setup.pipelines += renderer.pipelineSeconds();
+  out.tuning.pathsPerPass = renderer.pathsPerPass();
+  out.tuning.pathSlots = renderer.pathSlots();
   RenderControl control;
   control.stop = run.stop;
   if (!run.checkpointPath.empty() && group.isRoot()) {
@@ -410,6 +427,13 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["mean_variance"] = {var.x, var.y, var.z};
   j["device"] = r.device;
   j["integrator"] = toString(r.integrator);
+  const RenderOutcome::Tuning& t = r.tuning;
+  j["device_tuning"] = {{"subgroup_size", t.subgroupSize},
+                        {"workgroup_size", t.workgroupSize},
+                        {"wavefront_paths", t.wavefrontPaths},
+                        {"paths_per_pass", t.pathsPerPass},
+                        {"path_slots", t.pathSlots},
+                        {"chosen_by_device", {{"integrator", t.integratorAuto}, {"workgroup", t.workgroupAuto}, {"wavefront", t.wavefrontAuto}}}};
   j["spp_reached"] = s.samplesPerPixel;
   if (r.roulette) {
     nlohmann::json scales = nlohmann::json::array();

@@ -44,7 +44,8 @@ struct RenderOptions {
   std::string referencePath;     // EXR to compare with: mse, relmse, efficiency in the report
   bool specialize = true;        // false: pipelines with every feature on (for comparison)
   bool withoutTextures = false;  // textures, vertex colours and alpha compiled out: their cost, by comparison
-  uint32_t workgroupSize = 64;   // invocations per workgroup of every kernel (32, 64, 128, 256)
+  uint32_t workgroupSize = 0;    // invocations per workgroup of every kernel (32, 64, 128, 256); 0: the device's
+  uint32_t wavefrontPaths = 0;   // paths in flight per pass at most; 0: the device's (device_tuning.h)
   Integrator integrator = Integrator::Auto;
 };
 
@@ -77,6 +78,12 @@ struct RenderOutcome {
   std::string cameraName;
   std::string device;
   Integrator integrator = Integrator::Wavefront;  // the one that ran (auto resolved)
+  // How the kernels ran on this device: chosen by device_tuning.h where the options said auto.
+  struct Tuning {
+    uint32_t subgroupSize = 0, workgroupSize = 0, wavefrontPaths = 0;
+    uint32_t pathsPerPass = 0, pathSlots = 0;  // the path pool as sized (path_pool.h): camera paths, all slots
+    bool integratorAuto = false, workgroupAuto = false, wavefrontAuto = false;
+  } tuning;
   uint32_t width = 0, height = 0;
   std::optional<ErrorMetrics> error;  // against the reference, when one was given
   double pilotSeconds = 0.0;          // efficiency roulette's pilot, included in stats.seconds

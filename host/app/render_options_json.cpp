@@ -57,6 +57,7 @@ nlohmann::json renderOptionsJson(const RenderOptions& o) {
           {"specialize", o.specialize},
           {"without_textures", o.withoutTextures},
           {"workgroup", o.workgroupSize},
+          {"wavefront_paths", o.wavefrontPaths},
           {"integrator", toString(o.integrator)}};
 }
 
@@ -83,6 +84,7 @@ RenderOptions renderOptionsFromJson(const nlohmann::json& j) {
     o.specialize = j.at("specialize");
     o.withoutTextures = j.at("without_textures");
     o.workgroupSize = j.at("workgroup");
+    o.wavefrontPaths = j.value("wavefront_paths", 0u);  // absent in checkpoints before it existed: the device's
     o.integrator = integratorFromString(j.at("integrator"));
   } catch (const nlohmann::json::exception& e) {
     throw Error(std::string("malformed render options: ") + e.what());

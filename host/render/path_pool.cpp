@@ -17,6 +17,8 @@ void checkDeviceLimits(const RenderSettings& settings, const VkPhysicalDeviceLim
   if (ws > limits.maxComputeWorkGroupSize[0] || ws > limits.maxComputeWorkGroupInvocations)
     throw Error("--workgroup " + std::to_string(ws) + " exceeds this device's limit of " +
                 std::to_string(std::min(limits.maxComputeWorkGroupSize[0], limits.maxComputeWorkGroupInvocations)));
+  if (settings.maxPathsPerPass < 1024 || settings.maxPathsPerPass > (1u << 24))
+    throw Error("--wavefront must be 1024 to 16777216 paths per pass (got " + std::to_string(settings.maxPathsPerPass) + ")");
   uint64_t filmBytes = uint64_t(settings.width) * settings.height * sizeof(gpu::FilmPixel);
   if (filmBytes > limits.maxStorageBufferRange)
     throw Error("image " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +

@@ -35,6 +35,8 @@ class PathRenderer {
   // place; stops early, with state.interrupted, when control.stop is raised.
   void render(RenderState& state, const RenderControl& control);
   double pipelineSeconds() const { return pipelineSeconds_; }
+  uint32_t pathsPerPass() const { return capacity_; }  // camera paths per pass (path_pool.h)
+  uint32_t pathSlots() const { return pool_; }         // with room for split children
 
   // The pieces render() is made of, for a caller that schedules samples itself (dist/distributed_render.h):
   // sample passes of samplesPerPass() samples a pixel, summed in float on the device until a batch of

@@ -15,7 +15,7 @@
 
 namespace vkmc {
 
-// Auto: the measured faster one for the device (vk::Context::prefersMegakernel), resolved before a render.
+// Auto: the measured faster one for the device (device_tuning.h), resolved before a render.
 enum class Integrator { Wavefront, Megakernel, Auto };
 const char* toString(Integrator i);
 Integrator integratorFromString(const std::string& name);  // throws Error on an unknown name

@@ -55,7 +55,9 @@ Context::Context(const ContextOptions& options) {
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
   if (properties_.apiVersion < VK_API_VERSION_1_2)
     throw Error(std::string("device ") + properties_.deviceName + " lacks Vulkan 1.2");
-  std::vector<std::string> missing = missingRequirements(queryCapabilities(physical_));
+  const DeviceCapabilities caps = queryCapabilities(physical_);
+  subgroupSize_ = caps.subgroupSize;
+  std::vector<std::string> missing = missingRequirements(caps);
   if (!missing.empty()) {
     std::string list;
     for (const std::string& m : missing) list += (list.empty() ? "" : "; ") + m;

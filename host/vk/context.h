@@ -32,10 +32,8 @@ class Context {
   bool hasFloatAtomics() const { return floatAtomics_; }  // shaderBufferFloat32AtomicAdd enabled
   // CPU devices (lavapipe) and integrated GPUs: device memory is host memory, so buffers the host reads or writes
   // each pass are mapped in place; a discrete GPU keeps them device-local and copies (PathRenderer).
-  // The integrator measured faster here (docs/performance.md): on lavapipe the wavefront (its SIMD programs idle
-  // less with one stage per dispatch), on a discrete GPU the megakernel (1.3-2.3x on an H200: no host round
-  // trips between stages). Integrated GPUs are unmeasured and keep the wavefront.
-  bool prefersMegakernel() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU; }
+  VkPhysicalDeviceType deviceType() const { return properties_.deviceType; }
+  uint32_t subgroupSize() const { return subgroupSize_; }
   bool unifiedMemory() const {
     return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU || properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU;
   }
@@ -64,6 +62,7 @@ class Context {
   uint32_t queueFamily_ = 0;
   uint32_t timestampBits_ = 0;
   bool floatAtomics_ = false;
+  uint32_t subgroupSize_ = 0;
   uint64_t maxAllocationBytes_ = 0;
   VkCommandPool pool_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;

@@ -46,6 +46,7 @@ DeviceCapabilities queryCapabilities(VkPhysicalDevice device) {
   const VkPhysicalDeviceLimits& l = p2.properties.limits;
   DeviceCapabilities caps;
   caps.subgroupStages = subgroup.supportedStages;
+  caps.subgroupSize = subgroup.subgroupSize;
   caps.subgroupOperations = subgroup.supportedOperations;
   for (VkFormat f : requiredTexelFormats()) {
     VkFormatProperties fp;

@@ -12,6 +12,7 @@ namespace vkmc::vk {
 
 struct DeviceCapabilities {
   VkShaderStageFlags subgroupStages = 0;
+  uint32_t subgroupSize = 0;
   VkSubgroupFeatureFlags subgroupOperations = 0;
   std::vector<std::pair<VkFormat, VkFormatFeatureFlags>> texelFormats;  // each format the kernels read, its buffer features
   uint32_t maxWorkgroupSizeX = 0, maxWorkgroupInvocations = 0;

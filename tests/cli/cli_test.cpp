@@ -198,6 +198,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"sampler_unknown", "", "--sampler halton", "is not one of independent|sobol|zsobol", 1},
                       BadInput{"zsobol_index_too_long", "", "--sampler zsobol --width 1024 --height 1024 --spp 20000",
                                "Morton index of 33 bits", 1},
+                      BadInput{"workgroup_48", "", "--workgroup 48", "--workgroup must be 32, 64, 128 or 256", 1},
+                      BadInput{"workgroup_negative", "", "--workgroup -64", "--workgroup expects auto or", 1},
+                      BadInput{"wavefront_too_small", "", "--wavefront 100", "--wavefront must be 1024 to", 1},
+                      BadInput{"wavefront_huge", "", "--wavefront 1e9", "--wavefront expects auto or", 1},
                       BadInput{"spp_not_a_number", "", "--spp abc", "spp", 2},
                       BadInput{"unknown_flag", "", "--no-such-flag", "no-such-flag", 2}),
     [](const auto& info) { return std::string(info.param.name); });
@@ -237,6 +241,33 @@ TEST(Cli, IntegratorAutoIsTheDefaultAndNamesTheOneThatRan) {
   RunResult bogus = runVkmc(common + " --integrator fastest -o " + (workDir() / "integrator_bogus.exr").string());
   EXPECT_NE(bogus.code, 0);
   EXPECT_FALSE(fs::exists(workDir() / "integrator_bogus.exr"));
+}
+
+// --workgroup and --wavefront default to the device's choice (device_tuning.h); the report names what ran and the
+// path pool it sized. Naming the choice renders exactly what auto renders.
+TEST(Cli, WorkgroupAndWavefrontAreTheDevicesUnlessGivenAndAreReported) {
+  fs::path report = workDir() / "tuning.json";
+  std::string common = "render " + cornell() + " --width 40 --height 30 --spp 4 -q --report " + report.string();
+  ASSERT_EQ(runVkmc(common + " -o " + (workDir() / "tuning_auto.exr").string()).code, 0);
+  const nlohmann::json t = nlohmann::json::parse(slurp(report))["device_tuning"];
+  EXPECT_GE(t["subgroup_size"].get<int>(), 1);
+  EXPECT_TRUE(t["chosen_by_device"]["workgroup"].get<bool>());
+  EXPECT_TRUE(t["chosen_by_device"]["wavefront"].get<bool>());
+  EXPECT_EQ(t["paths_per_pass"].get<uint32_t>(), 40u * 30u * 4u) << "the whole render fits one pass of the default wavefront";
+  const std::string named = " --workgroup " + std::to_string(t["workgroup_size"].get<int>()) + " --wavefront " +
+                            std::to_string(t["wavefront_paths"].get<int>());
+  RunResult same = runVkmc(common + named + " -o " + (workDir() / "tuning_named.exr").string());
+  ASSERT_EQ(same.code, 0) << same.err;
+  EXPECT_EQ(slurp(workDir() / "tuning_named.exr"), slurp(workDir() / "tuning_auto.exr"));
+  EXPECT_FALSE(nlohmann::json::parse(slurp(report))["device_tuning"]["chosen_by_device"]["workgroup"].get<bool>());
+  // A smaller wavefront (more passes of 1024 paths) and another workgroup size: the same image, bit for bit (a
+  // sample's random numbers depend on its pixel and index, never on its pass or lane).
+  RunResult small = runVkmc(common + " --wavefront 1024 --workgroup 256 -o " + (workDir() / "tuning_small.exr").string());
+  ASSERT_EQ(small.code, 0) << small.err;
+  const nlohmann::json j = nlohmann::json::parse(slurp(report));
+  EXPECT_EQ(j["device_tuning"]["paths_per_pass"], 1024);
+  EXPECT_EQ(j["device_tuning"]["workgroup_size"], 256);
+  EXPECT_EQ(slurp(workDir() / "tuning_small.exr"), slurp(workDir() / "tuning_auto.exr"));
 }
 
 TEST(Cli, MissingOutputFolderFailsBeforeRendering) {
