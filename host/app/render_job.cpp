@@ -506,7 +506,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                      {"materials", r.sceneInfo.materials},
                      {"degenerate_triangles_skipped", r.degenerateTriangles}};
   j["bvh"] = {{"inner_nodes", r.bvh.innerNodes},    {"leaves", r.bvh.leaves},    {"max_depth", r.bvh.maxDepth},
-              {"max_leaf_size", r.bvh.maxLeafSize}, {"sah_cost", r.bvh.sahCost}, {"build_seconds", r.bvh.buildSeconds},
+              {"max_leaf_size", r.bvh.maxLeafSize}, {"sah_cost", r.bvh.sahCost}, {"wide_sah_cost", r.bvh.wideSahCost}, {"build_seconds", r.bvh.buildSeconds},
               {"build_threads", r.bvh.buildThreads}};
   j["max_bounces"] = s.maxBounces;
   j["specialized_for"] = {{"emitters", r.features.emitters()},

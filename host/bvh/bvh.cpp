@@ -119,7 +119,8 @@ BvhWideNode quantizeBoxes(std::span<const Child> children) {
 // Collapses the binary GPU layout into 4-wide nodes: a node's children are its binary children, the inner one
 // with the largest surface opened in turn until there are four (Wald et al. 2008's collapse). The shape is planned
 // in one pass; the boxes, the costly part, are quantized on every thread.
-std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary, unsigned threads) {
+// wideSahCost: the 4-wide tree's expected wide node steps plus triangle tests per ray (cost 1 each).
+std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary, unsigned threads, double& wideSahCost) {
   // A child is a slot of a binary node: 2 * node + side. The plan keeps slots, not boxes (it is as many
   // entries as wide nodes, and its memory is most of this pass's time).
   auto count = [&](uint32_t slot) { return asUint(binary[slot / 2].texels[2 * (slot % 2) + 1].w); };
@@ -135,6 +136,8 @@ std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary, u
   std::vector<Plan> plans(1);
   plans.reserve(binary.size());  // a wide node per binary inner node at most
   std::vector<std::pair<uint32_t, uint32_t>> tasks{{0u, 0u}};  // (binary node, wide node)
+  wideSahCost = 0.0;
+  double rootArea = 1.0;
   while (!tasks.empty()) {
     auto [node, w] = tasks.back();
     tasks.pop_back();
@@ -171,10 +174,18 @@ std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary, u
       tasks.push_back({ref(slot), plan.entry[i]});
     }
     plans[w] = plan;
+    Aabb nodeBox;
+    for (uint32_t i = 0; i < plan.size; ++i) {
+      nodeBox.grow(box(plan.slot[i]));
+      if (count(plan.slot[i]) > 0) wideSahCost += box(plan.slot[i]).halfArea() * count(plan.slot[i]);
+    }
+    wideSahCost += nodeBox.halfArea();
+    if (w == 0) rootArea = std::max(nodeBox.halfArea(), 1e-300);
   }
   struct Child {
     Aabb box;
   };
+  wideSahCost /= rootArea;
   std::vector<BvhWideNode> wide(plans.size());
   parallelChunks(plans.size(), 4096, threads, [&](size_t begin, size_t end) {
     for (size_t w = begin; w < end; ++w) {
@@ -246,7 +257,7 @@ Bvh buildBvh(std::span<const Aabb> bounds, const BvhOptions& options) {
   s.maxDepth = tree.maxDepth;
   s.buildThreads = tree.threads;
   s.averageLeafSize = s.leaves ? static_cast<double>(bounds.size()) / s.leaves : 0.0;
-  bvh.wideNodes = collapseToWide(bvh.nodes, tree.threads);
+  bvh.wideNodes = collapseToWide(bvh.nodes, tree.threads, s.wideSahCost);
   widenByOneFloat(bvh.nodes, tree.threads);
   s.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return bvh;

@@ -33,6 +33,7 @@ struct BvhStats {
   uint32_t maxLeafSize = 0;
   double averageLeafSize = 0.0;
   double sahCost = 0.0;  // expected cost per ray, inner traversal cost 1, triangle test cost 1
+  double wideSahCost = 0.0;  // the same for the 4-wide tree the kernels walk: wide node steps plus triangle tests
   double buildSeconds = 0.0;
   uint32_t buildThreads = 1;
 };
