@@ -40,7 +40,7 @@ std::string bytesOf(const std::vector<gpu::FilmPixel>& batch) {
 void sharePixelEstimate(PathRenderer& renderer, const RankGroup& group, const Film& rootFilm) {
   std::string bytes;
   if (group.isRoot()) {
-    std::vector<glm::vec4> estimate = PathRenderer::pixelEstimateOf(rootFilm);
+    std::vector<glm::vec4> estimate = runningPixelEstimate(rootFilm);
     bytes.assign(reinterpret_cast<const char*>(estimate.data()), estimate.size() * sizeof(glm::vec4));
   }
   group.broadcast(bytes);

@@ -16,21 +16,20 @@ constexpr uint32_t kMaxCells = 1u << 19;  // 32 MiB: far more cells than a scene
 EarsImageStatistics earsImageStatistics(const Film& film, const gpu::FilmPixel* batch, double epsilon) {
   EarsImageStatistics s;
   const size_t pixels = film.pixels();
-  s.pixelEstimate.assign(pixels, glm::vec4(0.0f));
+  s.pixelEstimate = runningPixelEstimate(film, batch);
   std::vector<double> relative;  // per pixel: the channels' mean of variance / (I^2 + epsilon)
   relative.reserve(pixels);
   for (size_t p = 0; p < pixels; ++p) {
     double n = double(film.count[p]) + (batch ? batch[p].sum.w : 0.0);
     if (n < 1.0) continue;
+    if (n < 2.0) continue;
     glm::dvec3 mean, variance(0.0);
     for (int c = 0; c < 3; ++c) {
       double total = film.sum[3 * p + c] + (batch ? batch[p].sum[c] : 0.0);
       double squares = film.sumSq[3 * p + c] + (batch ? batch[p].sumSq[c] : 0.0);
       mean[c] = total / n;
-      variance[c] = n > 1.0 ? std::max(0.0, (squares - n * mean[c] * mean[c]) / (n - 1.0)) : 0.0;
+      variance[c] = std::max(0.0, (squares - n * mean[c] * mean[c]) / (n - 1.0));
     }
-    s.pixelEstimate[p] = glm::vec4(glm::vec3(mean), gpu::luminance(glm::vec3(mean)));
-    if (n < 2.0) continue;
     double r = 0.0;
     for (int c = 0; c < 3; ++c) r += variance[c] / (mean[c] * mean[c] + epsilon) / 3.0;
     relative.push_back(r);

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "../shaders/shared/sampling.h"
+
 namespace vkmc {
 
 Film::Film(uint32_t w, uint32_t h)
@@ -43,6 +45,18 @@ void Film::addBatch(const gpu::FilmPixel* px) {
     for (int c = 0; c < 3; ++c) replicateSum[(p * gpu::kSampleReplicates + last) * 3 + c] += rest[c];
     replicateCount[p * gpu::kSampleReplicates + last] += restCount;
   }
+}
+
+std::vector<glm::vec4> runningPixelEstimate(const Film& film, const gpu::FilmPixel* batch) {
+  std::vector<glm::vec4> estimate(film.pixels(), glm::vec4(0.0f));
+  for (size_t p = 0; p < estimate.size(); ++p) {
+    double n = double(film.count[p]) + (batch ? batch[p].sum.w : 0.0);
+    if (n < 1.0) continue;
+    glm::dvec3 mean;
+    for (int c = 0; c < 3; ++c) mean[c] = (film.sum[3 * p + c] + (batch ? batch[p].sum[c] : 0.0)) / n;
+    estimate[p] = glm::vec4(glm::vec3(mean), gpu::luminance(glm::vec3(mean)));
+  }
+  return estimate;
 }
 
 double Film::mean(size_t p, int c) const { return count[p] ? sum[3 * p + c] / static_cast<double>(count[p]) : 0.0; }

@@ -48,4 +48,9 @@ struct Film {
   uint64_t totalHighRange() const;
 };
 
+// The running pixel estimate that shadow-ray roulette and EARS compare contributions against: per pixel the mean
+// of the folded film and, when given, the device's unfolded batch (rgb), and its luminance (w); 0 where no
+// sample is yet.
+std::vector<glm::vec4> runningPixelEstimate(const Film& film, const gpu::FilmPixel* batch = nullptr);
+
 }  // namespace vkmc

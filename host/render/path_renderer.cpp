@@ -327,18 +327,25 @@ void PathRenderer::trainEars(uint32_t slotsUsed, RenderStats& stats) {
   timer_->collect(stats.stageSeconds);
 }
 
-void PathRenderer::updateEarsStatistics(const Film& film, double raysPerSample) {
-  const size_t pixels = film.pixels();
-  std::vector<gpu::FilmPixel> copy;
+// The device's unfolded batch: in place where the film is mapped (lavapipe), else downloaded into `copy`.
+const gpu::FilmPixel* PathRenderer::currentBatch(std::vector<gpu::FilmPixel>& copy) {
   const auto* batch = static_cast<const gpu::FilmPixel*>(film_.mapped());
-  if (!batch) {
-    copy.resize(pixels);
-    film_.download(copy.data(), pixels * sizeof(gpu::FilmPixel));
-    batch = copy.data();
-  }
-  EarsImageStatistics s = earsImageStatistics(film, batch, gpu::kEarsEpsilon);
+  if (batch) return batch;
+  copy.resize(size_t(settings_.width) * settings_.height);
+  film_.download(copy.data(), copy.size() * sizeof(gpu::FilmPixel));
+  return copy.data();
+}
+
+void PathRenderer::updateEarsStatistics(const Film& film, double raysPerSample) {
+  std::vector<gpu::FilmPixel> copy;
+  EarsImageStatistics s = earsImageStatistics(film, currentBatch(copy), gpu::kEarsEpsilon);
   setPixelEstimate(s.pixelEstimate);
   ears_->setImageStatistics(raysPerSample, s.relativeVariance);
+}
+
+void PathRenderer::refreshPixelEstimate(const Film& film) {
+  std::vector<gpu::FilmPixel> copy;
+  setPixelEstimate(runningPixelEstimate(film, currentBatch(copy)));
 }
 
 void PathRenderer::foldFilm(Film& film) {
@@ -352,17 +359,6 @@ void PathRenderer::foldFilm(Film& film) {
   }
   uploadPixelEstimate(film);
   film_.zero();
-}
-
-// The running pixel estimate that shadow-ray roulette and EARS compare contributions against: the folded film's
-// means and their luminance.
-std::vector<glm::vec4> PathRenderer::pixelEstimateOf(const Film& film) {
-  std::vector<glm::vec4> estimate(film.pixels());
-  for (size_t p = 0; p < estimate.size(); ++p) {
-    glm::vec3 mean(film.mean(p, 0), film.mean(p, 1), film.mean(p, 2));
-    estimate[p] = glm::vec4(mean, gpu::luminance(mean));
-  }
-  return estimate;
 }
 
 void PathRenderer::setPixelEstimate(const std::vector<glm::vec4>& estimate) {
@@ -449,7 +445,10 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   // A resumed render continues the device's float batch where it stopped, with the estimate of the folded film.
   uint32_t inBatch = state.batchSamples;
   if (inBatch > 0) film_.upload(state.batch.data(), size_t(pixels) * sizeof(gpu::FilmPixel));
-  if (state.film.totalSamples() + state.film.totalNonfinite() > 0) uploadPixelEstimate(state.film);
+  // Shadow-ray roulette refreshes its estimate after every pass, from the batch too: a resume does the same.
+  const bool shadowRoulette = settings_.estimator.shadowRrThreshold > 0.0f;
+  if (shadowRoulette) refreshPixelEstimate(state.film);
+  else if (state.film.totalSamples() + state.film.totalNonfinite() > 0) uploadPixelEstimate(state.film);
   state.batch.clear();
   state.batchSamples = 0;
   auto start = Clock::now();
@@ -462,11 +461,15 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   uint32_t perPass = settings_.timeBudget > 0.0 ? 1u : maxPerPass;
   const double budget = settings_.timeBudget;
   const uint32_t firstSample = state.nextSample;
-  uint32_t earsPassSamples = 1;
+  // EARS and shadow-ray roulette learn between passes (the cache and image statistics; the pixel estimate), so
+  // their passes start small and double: what they compare against is known early. Shadow roulette's pass from
+  // sample s takes s + 1 samples (1, 2, 4, ...), a function of s alone, so a resumed render passes where the
+  // uninterrupted one did; EARS's passes double from where its training passes left off.
+  uint32_t earsSamples = 1;
   auto stopRequested = [&] { return control.stop && control.stop->load() != 0; };
   if (ears_->enabled() && state.nextSample < settings_.spp && !stopRequested()) {
     if (inBatch > 0) foldFilm(state.film), inBatch = 0;  // the training passes' samples are dropped from the batch
-    earsPassSamples = trainEarsPasses(state.film, stats);
+    earsSamples = trainEarsPasses(state.film, stats);
   }
   for (uint32_t s = state.nextSample; s < settings_.spp;) {
     if (budget > 0.0 && s > firstSample && since(start) >= budget) break;
@@ -474,16 +477,14 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
       state.interrupted = true;
       break;
     }
-    // EARS learns between passes: they start at one sample a pixel and double, so the cache and the image
-    // statistics are known early.
-    uint32_t samples = std::min(ears_->enabled() ? std::min(perPass, earsPassSamples) : perPass, settings_.spp - s);
+    uint32_t samples = ears_->enabled() ? std::min(perPass, earsSamples) : shadowRoulette ? std::min(perPass, s + 1) : perPass;
+    samples = std::min(samples, settings_.spp - s);
     double passStart = since(start);
     const uint64_t raysBefore = stats.rays();
     renderSamples(s, samples, stats);
-    if (ears_->enabled()) {
-      updateEarsStatistics(state.film, double(stats.rays() - raysBefore) / (double(pixels) * samples));
-      earsPassSamples = std::min(2 * earsPassSamples, maxPerPass);
-    }
+    if (ears_->enabled()) updateEarsStatistics(state.film, double(stats.rays() - raysBefore) / (double(pixels) * samples));
+    else if (shadowRoulette) refreshPixelEstimate(state.film);
+    earsSamples = std::min(2 * earsSamples, maxPerPass);
     s += samples;
     state.nextSample = s;
     inBatch += samples;

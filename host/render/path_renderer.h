@@ -46,9 +46,8 @@ class PathRenderer {
   void renderSamples(uint32_t firstSample, uint32_t samples, RenderStats& stats);  // one sample pass
   std::vector<gpu::FilmPixel> takeBatch();                                       // the device's batch, then zeroed
   void restoreBatch(const std::vector<gpu::FilmPixel>& batch);
-  void uploadPixelEstimate(const Film& film) { setPixelEstimate(pixelEstimateOf(film)); }
+  void uploadPixelEstimate(const Film& film) { setPixelEstimate(runningPixelEstimate(film)); }
   // The running per-pixel estimate (shadow roulette, EARS): the film's means, w their luminance.
-  static std::vector<glm::vec4> pixelEstimateOf(const Film& film);
   void setPixelEstimate(const std::vector<glm::vec4>& estimate);
   // Derived stats (GPU seconds, queue occupancy) once the passes are done; the queue counters add to `before`.
   void finishStats(RenderStats& stats, const RenderStats& before);
@@ -81,6 +80,9 @@ class PathRenderer {
   uint32_t trainEarsPasses(const Film& film, RenderStats& stats);
   bool earsTraining_ = false;  // a training pass: its own seed, its samples dropped
   void updateEarsStatistics(const Film& film, double raysPerSample);
+  // Shadow-ray roulette's pixel estimate from every sample so far (the unfolded batch's too), after each pass.
+  void refreshPixelEstimate(const Film& film);
+  const gpu::FilmPixel* currentBatch(std::vector<gpu::FilmPixel>& copy);
   // The state as of the last pass: seconds, queue occupancy, and the device's unfolded batch.
   void snapshot(RenderState& state, uint32_t inBatch, double seconds, const RenderStats& before);
   uint32_t groupsFor(uint32_t invocations) const;

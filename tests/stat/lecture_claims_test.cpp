@@ -72,6 +72,22 @@ TEST(LectureClaims, CameraRayRouletteKeepsTheMeanButMultipliesVariance) {
   EXPECT_LT(rr.stats.cameraRays, base.stats.cameraRays / 50) << "99% of camera rays are never traced";
 }
 
+// Shadow-ray roulette compares each light sample with its pixel's estimate, refreshed after every pass, and its
+// passes start at one sample a pixel: a 16-spp render (one pass of 16 before) already skips shadow rays, and its
+// mean stays the baseline's.
+TEST(LectureClaims, ShadowRayRouletteSkipsRaysInA16SppRenderAndKeepsTheMean) {
+  EstimatorConfig shadowRr;
+  shadowRr.shadowRrThreshold = 0.5f;
+  shadowRr.shadowRrQ = 0.5f;
+  auto base = renderWith("cornell_box.gltf", EstimatorConfig{}, 32, 32, 16);
+  auto rr = renderWith("cornell_box.gltf", shadowRr, 32, 32, 16, 77);
+  EXPECT_LT(double(rr.stats.shadowRays), 0.95 * double(base.stats.shadowRays));
+  EXPECT_GE(rr.stats.passes, 5u) << "1, 2, 4, 8 and 1 samples a pixel";
+  auto ref = renderWith("cornell_box.gltf", EstimatorConfig{}, 32, 32, 512, 999);
+  EXPECT_TRUE(regionsAgree(whole(rr.film), whole(ref.film), 5.0));
+  EXPECT_TRUE(regionsAgree(whole(base.film), whole(ref.film), 5.0));
+}
+
 TEST(LectureClaims, FiveByTwentySplittingUses105RaysAndMatchesTheSoftShadowError) {
   // Direct lighting by light sampling only (depth cap 1, no MIS): N image samples x M light samples. The
   // lecture's claim is about independent samples: under sobol, 100 stratified image samples also stratify the
