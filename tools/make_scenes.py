@@ -327,6 +327,27 @@ def two_rooms(path):
     b.camera("camera", [-0.85, 1.2, 0.85], [1.0, 0.8, -0.2], 70.0)
     b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
 
+def glossy_room(path):
+    """Glossy-diffuse interreflection (EARS's other case): a white room (x, z in [-1, 1], y in [0, 2]) whose floor is
+    a glossy metal (GGX roughness 0.1) and whose only lamp, a 0.3-wide quad on the ceiling, faces down onto it. The
+    ceiling and the upper walls see the lamp only through the floor: their light comes along diffuse -> glossy ->
+    lamp paths, which light sampling at the diffuse vertex cannot reach and BSDF sampling finds rarely."""
+    b = Builder()
+    white = b.material("white", (0.8, 0.8, 0.8), double_sided=True)
+    floor = b.material("glossy_floor", (0.9, 0.9, 0.9), metallic=1.0, roughness=0.1, specular=1.0)
+    lamp = b.material("lamp", (0.0, 0.0, 0.0), emission=(1.0, 0.95, 0.85), strength=10.0)
+    b.mesh("floor", quad([-1, 0, -1], [-1, 0, 1], [1, 0, 1], [1, 0, -1]), floor)
+    b.mesh("ceiling", quad([-1, 2, -1], [1, 2, -1], [1, 2, 1], [-1, 2, 1]), white)
+    b.mesh("back", quad([-1, 0, -1], [1, 0, -1], [1, 2, -1], [-1, 2, -1]), white)
+    b.mesh("front", quad([-1, 0, 1], [-1, 2, 1], [1, 2, 1], [1, 0, 1]), white)
+    b.mesh("left", quad([-1, 0, -1], [-1, 2, -1], [-1, 2, 1], [-1, 0, 1]), white)
+    b.mesh("right", quad([1, 0, -1], [1, 0, 1], [1, 2, 1], [1, 2, -1]), white)
+    s = 0.15
+    # Facing -y (down, onto the floor): its front face is where u x v points.
+    b.mesh("lamp", quad([-s, 1.98, -s], [s, 1.98, -s], [s, 1.98, s], [-s, 1.98, s]), lamp)
+    b.camera("camera", [-0.85, 1.1, 0.9], [0.5, 0.9, -0.9], 80.0)
+    b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
+
 def png_rgba(width, height, pixel):
     """An 8-bit RGBA PNG; pixel(x, y) -> (r, g, b, a) in 0-255, y = 0 the top row."""
     rows = b"".join(b"\0" + bytes(c for x in range(width) for c in pixel(x, y)) for y in range(height))
@@ -374,6 +395,7 @@ if __name__ == "__main__":
     veach_mis("scenes/veach_mis.gltf")
     many_lights("scenes/many_lights.gltf")
     two_rooms("scenes/two_rooms.gltf")
+    glossy_room("scenes/glossy_room.gltf")
     os.makedirs("scenes/stiff", exist_ok=True)
     tiny_light("scenes/stiff/tiny_light.gltf")
     furnace("scenes/stiff/furnace_albedo_0999.gltf", 0.999, 1.0, "furnace_albedo_0.999")

@@ -49,6 +49,7 @@ struct EstimatorConfig {
   float shadowRrThreshold{};
   float shadowRrQ{};
   float cameraRrQ{};
+  float earsMax{};  // rr ears: the largest factor (splitting up to it; 1: learned roulette alone)
   uint32_t lightSamples{};
   uint32_t splitDepth{};
   float bsdfSamples{};  // q: floor(q + u) continuations, each weighted 1/q

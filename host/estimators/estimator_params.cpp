@@ -8,6 +8,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "../shaders/shared/ears.h"
 #include "error.h"
 
 namespace vkmc {
@@ -103,6 +104,8 @@ constexpr EstimatorParam kParams[] = {
     real<&C::shadowRrQ>("shadow_rr_q", 0.5f, halfOpen(0, 1), SPEC_SHADOW_RR_Q, "termination probability of tiny shadow rays"),
     real<&C::cameraRrQ>("camera_rr", 0.0f, halfOpen(0, 1), SPEC_CAMERA_RR_Q,
                         "camera-ray roulette termination probability; 0 = off"),
+    real<&C::earsMax>("ears_max", gpu::kEarsFactorMax, closed(1, gpu::kEarsFactorMax), SPEC_EARS_MAX,
+                      "rr ears: the largest factor q, so at most this many copies of a vertex; 1 = learned roulette alone"),
     count<&C::lightSamples>("light_samples", 1, 1, 4096, SPEC_LIGHT_SAMPLES, "light samples per hit below --split-depth"),
     count<&C::splitDepth>("split_depth", 1, 0, 100000, SPEC_SPLIT_DEPTH,
                           "splitting applies at depths below this; 1: the first hit"),

@@ -29,6 +29,7 @@ layout(constant_id = SPEC_SPLIT_DEPTH) const uint kSplitDepth = 1u;
 layout(constant_id = SPEC_SHADOW_RR_THRESHOLD) const float kShadowRouletteThreshold = 0.0;
 layout(constant_id = SPEC_SHADOW_RR_Q) const float kShadowRouletteQ = 0.5;
 layout(constant_id = SPEC_CAMERA_RR_Q) const float kCameraRouletteQ = 0.0;
+layout(constant_id = SPEC_EARS_MAX) const float kEarsMaxFactor = 20.0;
 layout(constant_id = SPEC_BSDF_SAMPLES) const float kBsdfSamples = 1.0;
 layout(constant_id = SPEC_RECORD_DEPTH_STATS) const uint kRecordDepthStats = 0u;
 layout(constant_id = SPEC_WALK_STATS) const uint kWalkStats = 0u;

@@ -27,7 +27,7 @@ float earsVertexFactor(PathState path, uint key, out bool trained) {
     vec3 estimate = pixelEstimate[path.pixel].rgb;
     vec3 t = path.throughput.rgb / sqrt(estimate * estimate + earsHeader.epsilon);
     vec3 variance = imageLoad(earsLearned, int(kEarsSamplingTexels * cell + 1u)).rgb;
-    q = earsFactor(t, moment.rgb, variance, earsHeader.imageFactor);
+    q = min(earsFactor(t, moment.rgb, variance, earsHeader.imageFactor), kEarsMaxFactor);
   } else if (rouletteApplies(path.depth, kRouletteDepth)) {
     q = rouletteSurvival(sqrt(maxComponent(path.throughput.rgb) * path.throughput.w * path.origin.w), 1.0, kRouletteMaxSurvival);
   }

@@ -93,6 +93,7 @@
 #define SPEC_HAS_CLEARCOAT 32     // 0: no KHR_materials_clearcoat
 #define SPEC_HAS_SHEEN 33         // 0: no KHR_materials_sheen
 #define SPEC_HAS_DELTA 34         // 0: no lobe can be smooth (delta): every BSDF sample is MIS-weighted
+#define SPEC_EARS_MAX 35          // float: rr ears's largest factor q, at most kEarsFactorMax (1: learned roulette alone)
 
 VKMC_BEGIN_NAMESPACE
 

@@ -47,6 +47,27 @@ TEST(Ears, FurnaceCacheLearnsTheReflectedRadiance) {
       << "learned factors must decide some first vertices";
 }
 
+// ears_max bounds the factor: at 1 the cache decides roulette alone and no vertex splits, where the default (20)
+// splits on the room lit through a slit.
+TEST(Ears, AMaximumOfOneLearnsRouletteAloneAndNeverSplits) {
+  auto splits = [](const EarsSummary& e) {
+    uint64_t n = 0;
+    for (const auto& depth : e.factors) n += depth[gpu::kEarsBinSplit];
+    return n;
+  };
+  RenderOutcome free = renderWith("two_rooms.gltf", ears(), 24, 24, 16);
+  EstimatorConfig rouletteOnly = ears();
+  rouletteOnly.earsMax = 1.0f;
+  RenderOutcome bounded = renderWith("two_rooms.gltf", rouletteOnly, 24, 24, 16);
+  ASSERT_TRUE(free.ears && bounded.ears);
+  EXPECT_GT(splits(*free.ears), 0u);
+  EXPECT_EQ(splits(*bounded.ears), 0u);
+  uint64_t rouletted = 0;
+  for (const auto& depth : bounded.ears->factors) rouletted += depth[gpu::kEarsBinRoulette];
+  EXPECT_GT(rouletted, 0u) << "the learned factors still decide roulette";
+  EXPECT_LT(bounded.stats.rays(), free.stats.rays());
+}
+
 TEST(Ears, SameSeedSameImage) {
   RenderOutcome a = renderWith("cornell_box.gltf", ears(), 24, 24, 8, 7);
   RenderOutcome b = renderWith("cornell_box.gltf", ears(), 24, 24, 8, 7);

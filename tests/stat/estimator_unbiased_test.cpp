@@ -40,6 +40,10 @@ std::vector<Variant> variants() {
   add("rr throughput from 1", [](EstimatorConfig& c) { c.rrDepth = 1; });
   add("rr efficiency", [](EstimatorConfig& c) { c.rr = RouletteMode::Efficiency; });
   add("rr ears", [](EstimatorConfig& c) { c.rr = RouletteMode::Ears; });
+  add("rr ears, learned roulette alone", [](EstimatorConfig& c) {
+    c.rr = RouletteMode::Ears;
+    c.earsMax = 1.0f;
+  });
   add("light samples 4", [](EstimatorConfig& c) { c.lightSamples = 4; });
   add("light samples 3, split depth 3", [](EstimatorConfig& c) {
     c.lightSamples = 3;
