@@ -12,11 +12,12 @@ std::vector<VkFormat> requiredTexelFormats() {
 
 std::vector<std::string> missingRequirements(const DeviceCapabilities& caps) {
   std::vector<std::string> missing;
-  // The walk's step counters (SPEC_WALK_STATS) use subgroupMax and subgroupElect; they are in every kernel that
-  // walks, so the SPIR-V of all of them declares the capabilities.
-  const VkSubgroupFeatureFlags ops = VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+  // The walk's step counters (SPEC_WALK_STATS), EARS's histogram and the queue appends use subgroup arithmetic,
+  // elect and broadcast; every kernel includes common.glsl, so the SPIR-V of all of them declares the capabilities.
+  const VkSubgroupFeatureFlags ops =
+      VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT;
   if (!(caps.subgroupStages & VK_SHADER_STAGE_COMPUTE_BIT) || (caps.subgroupOperations & ops) != ops)
-    missing.push_back("subgroup basic and arithmetic operations in compute shaders");
+    missing.push_back("subgroup basic, arithmetic and ballot operations in compute shaders");
   for (const auto& [format, features] : caps.texelFormats)
     if (!(features & VK_FORMAT_FEATURE_STORAGE_TEXEL_BUFFER_BIT))
       missing.push_back("storage texel buffers of format " + std::to_string(int(format)));

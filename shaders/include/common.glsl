@@ -1,5 +1,7 @@
-// Subgroup arithmetic: only SPEC_WALK_STATS walks use it (traversal.glsl); an #extension must come before any code.
+// Subgroup arithmetic and ballot: the walk's step counters (SPEC_WALK_STATS), EARS's histogram and the queue
+// appends (shade_output.glsl); an #extension must come before any code.
 #extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_ballot : require
 // Declarations every kernel shares: version, spec constants, push constants, scene and queue bindings.
 #include "layout.h"
 #include "scene_layout.h"

@@ -63,7 +63,7 @@ void shadeEarsCopy(PathState path, uint target, uint parent, SurfacePoint s, Glt
   for (uint j = 0u; j < samples; ++j) {
     ShadowRay ray;
     if (prepareLightSample(copy, target, s, gm, wo, j, samples, ray)) {
-      shadowRays[atomicAdd(control.shadowQueueCount, 1u)] = ray;
+      shadowRays[shadowQueueSlot()] = ray;
       ++rays;
     }
   }

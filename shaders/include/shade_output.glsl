@@ -21,6 +21,23 @@ void addToSample(uint id, uint root, vec3 value) {
   paths[id].radiance.rgb += value;
 }
 
+// Queue appends take one atomic per subgroup: an active lane's slot is the subgroup's base plus its rank among
+// the active lanes. (llvmpipe runs a subgroup's atomics one lane after another, on counters its threads share.)
+// Call where the appending lanes are exactly the active ones.
+uint appendSlot(uint subgroupBase) { return subgroupBroadcastFirst(subgroupBase) + subgroupExclusiveAdd(1u); }
+
+uint shadowQueueSlot() {
+  uint n = subgroupAdd(1u), base = 0u;
+  if (subgroupElect()) base = atomicAdd(control.shadowQueueCount, n);
+  return appendSlot(base);
+}
+
+uint nextBounceQueueSlot() {
+  uint n = subgroupAdd(1u), base = 0u;
+  if (subgroupElect()) base = atomicAdd(control.rayQueueCount[(pc.bounce + 1u) & 1u], n);
+  return appendSlot(base);
+}
+
 // Path `target`'s next ray, queued for the next bounce; a fresh split child starts with no radiance.
 void queueContinuation(uint target, PathState next, bool fresh) {
   paths[target].origin = next.origin;
@@ -31,6 +48,6 @@ void queueContinuation(uint target, PathState next, bool fresh) {
   paths[target].depth = next.depth;
   paths[target].rootPath = next.rootPath;
   if (fresh) paths[target].radiance = vec4(0.0);
-  rayQueues[outQueueBase() + atomicAdd(control.rayQueueCount[(pc.bounce + 1u) & 1u], 1u)] = target;
+  rayQueues[outQueueBase() + nextBounceQueueSlot()] = target;
 }
 

@@ -14,7 +14,7 @@ namespace {
 vk::DeviceCapabilities capable() {
   vk::DeviceCapabilities c;
   c.subgroupStages = VK_SHADER_STAGE_COMPUTE_BIT;
-  c.subgroupOperations = VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+  c.subgroupOperations = VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT;
   for (VkFormat f : vk::requiredTexelFormats()) c.texelFormats.emplace_back(f, VK_FORMAT_FEATURE_STORAGE_TEXEL_BUFFER_BIT);
   c.maxWorkgroupSizeX = c.maxWorkgroupInvocations = 1024;
   c.maxPushConstantsSize = 128;
@@ -34,8 +34,8 @@ TEST(DeviceRequirements, ACapableDeviceLacksNothing) { EXPECT_TRUE(vk::missingRe
 
 TEST(DeviceRequirements, EachShortfallIsNamed) {
   vk::DeviceCapabilities c = capable();
-  c.subgroupOperations = VK_SUBGROUP_FEATURE_BASIC_BIT;
-  EXPECT_TRUE(names(vk::missingRequirements(c), "subgroup basic and arithmetic"));
+  c.subgroupOperations = VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+  EXPECT_TRUE(names(vk::missingRequirements(c), "subgroup basic, arithmetic and ballot"));
   c = capable();
   c.subgroupStages = VK_SHADER_STAGE_FRAGMENT_BIT;
   EXPECT_TRUE(names(vk::missingRequirements(c), "in compute shaders"));
