@@ -104,8 +104,9 @@ std::string differingRenderOptions(const nlohmann::json& a, const nlohmann::json
     }
     keys += (keys.empty() ? "" : ", ") + key;
   }
+  // wavefront_paths came later than some checkpoints: one without it ran the device's choice, as `b` does.
   for (const auto& [key, value] : b.items())
-    if (!a.contains(key)) keys += (keys.empty() ? "" : ", ") + key;
+    if (!a.contains(key) && key != "wavefront_paths") keys += (keys.empty() ? "" : ", ") + key;
   return keys;
 }
 

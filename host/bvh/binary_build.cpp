@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -15,6 +14,7 @@
 #include <numeric>
 #include <thread>
 
+#include "bvh/parallel_chunks.h"
 #include "error.h"
 
 namespace vkmc {
@@ -195,18 +195,16 @@ class Splitter {
     return kBoundsKnown;
   }
 
+  // Bins of a large node in parallel chunks, merged (min, max and sums: the same bins in any order).
   void binInParallel(const Task& t, const BinGrid& grid, uint32_t bins, unsigned threads, AxisBins& out) const {
     const PrimRef* refs = refs_.data() + t.first;
     if (threads <= 1 || t.count < kParallelBinningMin) return binRange(refs, t.count, grid, bins, out);
     const uint32_t chunk = (t.count + threads - 1) / threads;
-    std::vector<AxisBins> partial(threads - 1);
-    std::vector<std::thread> workers;
-    for (unsigned w = 1; w < threads; ++w) {
-      uint32_t first = std::min(t.count, w * chunk), last = std::min(t.count, first + chunk);
-      workers.emplace_back([&, w, first, last] { binRange(refs + first, last - first, grid, bins, partial[w - 1]); });
-    }
-    binRange(refs, std::min(chunk, t.count), grid, bins, out);
-    for (std::thread& w : workers) w.join();
+    std::vector<AxisBins> partial(threads);
+    parallelChunks(t.count, chunk, threads, [&](size_t begin, size_t end) {
+      binRange(refs + begin, uint32_t(end - begin), grid, bins, partial[begin / chunk]);
+    });
+    binRange(refs, 0, grid, bins, out);  // empty bins to merge into
     for (const AxisBins& p : partial)
       for (int a = 0; a < 3; ++a)
         for (uint32_t b = 0; b < bins; ++b) {
@@ -319,18 +317,11 @@ BinaryTree buildBinaryTree(std::span<const Aabb> bounds, const BvhOptions& optio
   std::vector<size_t> byCount(subtrees.size());  // largest first: the last task to start is a small one
   std::iota(byCount.begin(), byCount.end(), 0);
   std::stable_sort(byCount.begin(), byCount.end(), [&](size_t a, size_t b) { return subtrees[a].count > subtrees[b].count; });
-  std::atomic<size_t> next{0};
-  auto work = [&] {
-    for (size_t k; (k = next.fetch_add(1)) < byCount.size();) {
-      size_t s = byCount[k];
-      built[s].reserve(2 * size_t(subtrees[s].count));
-      depths[s] = buildTop(splitter, subtrees[s], 0, 1, built[s], nullptr);
-    }
-  };
-  std::vector<std::thread> workers;
-  for (unsigned w = 1; w < std::min<size_t>(threads, subtrees.size()); ++w) workers.emplace_back(work);
-  work();
-  for (std::thread& w : workers) w.join();
+  parallelChunks(byCount.size(), 1, threads, [&](size_t k, size_t) {
+    size_t s = byCount[k];
+    built[s].reserve(2 * size_t(subtrees[s].count));
+    depths[s] = buildTop(splitter, subtrees[s], 0, 1, built[s], nullptr);
+  });
 
   // Stitch: a subtree's root takes its reserved node; its other nodes follow the nodes so far.
   for (size_t s = 0; s < subtrees.size(); ++s) {

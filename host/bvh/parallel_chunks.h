@@ -31,7 +31,10 @@ void parallelChunks(size_t n, size_t chunk, unsigned threads, Fn&& fn) {
     }
   };
   std::vector<std::thread> workers;
-  for (size_t w = 1; w < std::min<size_t>(threads, chunks); ++w) workers.emplace_back(work);
+  try {
+    for (size_t w = 1; w < std::min<size_t>(threads, chunks); ++w) workers.emplace_back(work);
+  } catch (...) {  // no thread to be had: the threads started and this one do the work
+  }
   work();
   for (std::thread& w : workers) w.join();
   if (failure) std::rethrow_exception(failure);

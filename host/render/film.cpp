@@ -53,7 +53,10 @@ std::vector<glm::vec4> runningPixelEstimate(const Film& film, const gpu::FilmPix
     double n = double(film.count[p]) + (batch ? batch[p].sum.w : 0.0);
     if (n < 1.0) continue;
     glm::dvec3 mean;
-    for (int c = 0; c < 3; ++c) mean[c] = (film.sum[3 * p + c] + (batch ? batch[p].sum[c] : 0.0)) / n;
+    for (int c = 0; c < 3; ++c) {
+      double batchSum = batch ? batch[p].sum[c] + double(batch[p].sumHigh[c]) / double(gpu::kFilmHighScale) : 0.0;
+      mean[c] = (film.sum[3 * p + c] + batchSum) / n;
+    }
     estimate[p] = glm::vec4(glm::vec3(mean), gpu::luminance(glm::vec3(mean)));
   }
   return estimate;

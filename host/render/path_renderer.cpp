@@ -445,8 +445,9 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   // A resumed render continues the device's float batch where it stopped, with the estimate of the folded film.
   uint32_t inBatch = state.batchSamples;
   if (inBatch > 0) film_.upload(state.batch.data(), size_t(pixels) * sizeof(gpu::FilmPixel));
-  // Shadow-ray roulette refreshes its estimate after every pass, from the batch too: a resume does the same.
-  const bool shadowRoulette = settings_.estimator.shadowRrThreshold > 0.0f;
+  // Shadow-ray roulette refreshes its estimate after every pass, from the batch too, where the film is mapped
+  // (a discrete GPU would download the film each pass: there, at each fold, as before). A resume does the same.
+  const bool shadowRoulette = settings_.estimator.shadowRrThreshold > 0.0f && ctx_.unifiedMemory();
   if (shadowRoulette) refreshPixelEstimate(state.film);
   else if (state.film.totalSamples() + state.film.totalNonfinite() > 0) uploadPixelEstimate(state.film);
   state.batch.clear();
