@@ -253,6 +253,11 @@ VkFormat sceneTexelFormat(uint32_t binding) {
     case BINDING_TRIANGLE_ATTRIBUTES: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_TRIANGLE_ATTRIBUTES));
     case BINDING_LAYER_ALBEDO: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_LAYER_ALBEDO));
     case BINDING_EARS_SAMPLING: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_EARS_SAMPLING));
+    case BINDING_MATERIALS: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_MATERIALS));
+    case BINDING_PATH_TEXELS: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_PATH_TEXELS));
+    case BINDING_HIT_TEXELS: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_HIT_TEXELS));
+    case BINDING_QUEUE_TEXELS: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_QUEUE_TEXELS));
+    case BINDING_SHADOW_TEXELS: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_SHADOW_TEXELS));
   }
   throw Error("internal error: binding " + std::to_string(binding) + " is not a scene texel binding");
 }
@@ -356,9 +361,7 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   layerAlbedo_ = makeTexelBuffer(ctx, gpu::kLayerAlbedo, sizeof(gpu::kLayerAlbedo), BINDING_LAYER_ALBEDO, "layer albedo", 4);
   triangleAttributes_ =
       makeTexelBuffer(ctx, attributes.data(), attributes.size() * 16, BINDING_TRIANGLE_ATTRIBUTES, "triangle attributes");
-  materials_ =
-      vk::Buffer(ctx, mats.size() * sizeof(gpu::Material), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
-  materials_.upload(mats.data(), mats.size() * sizeof(gpu::Material));
+  materials_ = makeTexelBuffer(ctx, mats.data(), mats.size() * sizeof(gpu::Material), BINDING_MATERIALS, "materials");
   punctualLights_ = makeStorageBuffer(ctx, lights.punctual.data(), lights.punctual.size() * sizeof(gpu::PunctualLight));
   environment_ = makeStorageBuffer(ctx, lights.environment.data(), lights.environment.size() * sizeof(glm::vec4));
   environmentDistribution_ =
@@ -386,7 +389,7 @@ void GpuScene::bindTo(vk::KernelLayout& layout, bool binaryBvh) const {
   layout.bindTexel(BINDING_TRIANGLE_INFO, triangleInfo_);
   layout.bindTexel(BINDING_BVH_NODES, binaryBvh ? binaryBvhNodes_ : bvhNodes_);
   layout.bindTexel(BINDING_LIGHTS, lights_);
-  layout.bindStorage(BINDING_MATERIALS, materials_);
+  layout.bindTexel(BINDING_MATERIALS, materials_);
   layout.bindTexel(BINDING_LAYER_ALBEDO, layerAlbedo_);
   bindTexturePages(layout, *texturePages_, *bilinear_);
   layout.bindTexel(BINDING_TEXTURES, textures_);

@@ -74,11 +74,19 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
     deviceBytes_ += bytes;
     return vk::Buffer(ctx_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | extra, kind);
   };
-  paths_ = storage(uint64_t(pool_) * sizeof(gpu::PathState));
-  hits_ = storage(megakernel ? 16 : uint64_t(pool_) * 16);
+  // Path state, hits, queues and shadow rays are also read through texel views (common.glsl). 48 bytes more where
+  // a size could be a power of two: llvmpipe keys compiled kernels on whether a texel buffer's is, and the warm-up
+  // compiles them for sizes that are not (background_warm_up.cpp).
+  auto readAsTexels = [&](VkDeviceSize bytes, uint32_t texelBinding) {
+    vk::Buffer b = storage(bytes, vk::MemoryKind::DeviceLocal, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT);
+    b.createView(sceneTexelFormat(texelBinding));
+    return b;
+  };
+  paths_ = readAsTexels(uint64_t(pool_) * sizeof(gpu::PathState), BINDING_PATH_TEXELS);
+  hits_ = readAsTexels((megakernel ? 16 : uint64_t(pool_) * 16) + 48, BINDING_HIT_TEXELS);
   const bool ears = settings_.estimator.rr == RouletteMode::Ears;
-  queues_ = storage(megakernel ? 16 : uint64_t(pool_) * 4 * (ears ? 3 : 2));  // EARS: a copy queue too
-  shadowQueue_ = storage(hasShadowStage_ ? size.shadowSlots * sizeof(gpu::ShadowRay) : 16);
+  queues_ = readAsTexels((megakernel ? 16 : uint64_t(pool_) * 4 * (ears ? 3 : 2)) + 48, BINDING_QUEUE_TEXELS);  // EARS: a copy queue too
+  shadowQueue_ = readAsTexels(hasShadowStage_ ? size.shadowSlots * sizeof(gpu::ShadowRay) : 48, BINDING_SHADOW_TEXELS);
   // Room for every item of the larger trace stage, so a deferred walk is never turned away in practice.
   deepWalks_ = storage(megakernel ? 16 : std::max<uint64_t>(pool_, size.shadowSlots) * sizeof(uint32_t));
   // What the host reads or writes every pass: mapped in place on unified memory; on a discrete GPU device-local
@@ -127,6 +135,10 @@ void PathRenderer::bindBuffers() {
   layout_ = std::make_unique<vk::KernelLayout>(ctx_);
   scene_.bindTo(*layout_);
   layout_->bindStorage(BINDING_PATHS, paths_);
+  layout_->bindTexel(BINDING_PATH_TEXELS, paths_);
+  layout_->bindTexel(BINDING_HIT_TEXELS, hits_);
+  layout_->bindTexel(BINDING_QUEUE_TEXELS, queues_);
+  layout_->bindTexel(BINDING_SHADOW_TEXELS, shadowQueue_);
   layout_->bindStorage(BINDING_HITS, hits_);
   layout_->bindStorage(BINDING_RAY_QUEUES, queues_);
   layout_->bindStorage(BINDING_SHADOW_QUEUE, shadowQueue_);

@@ -61,8 +61,15 @@ layout(binding = BINDING_LIGHTS, TEXEL_FORMAT_LIGHTS) uniform readonly uimageBuf
 layout(binding = BINDING_TEXTURES, TEXEL_FORMAT_TEXTURES) uniform readonly uimageBuffer textureInfos;
 layout(binding = BINDING_TRIANGLE_ATTRIBUTES, TEXEL_FORMAT_TRIANGLE_ATTRIBUTES) uniform readonly uimageBuffer triangleAttributes;
 layout(binding = BINDING_LAYER_ALBEDO, TEXEL_FORMAT_LAYER_ALBEDO) uniform readonly uimageBuffer layerAlbedoTable;
-layout(binding = BINDING_MATERIALS, std430) readonly buffer Materials { Material materials[]; };
+layout(binding = BINDING_MATERIALS, TEXEL_FORMAT_MATERIALS) uniform readonly uimageBuffer materialTexels;
 layout(binding = BINDING_PATHS, std430) buffer Paths { PathState paths[]; };
+// The path state, hits, ray queues and shadow rays are written through their storage buffers and read through
+// texel views of the same memory: on lavapipe a texel load is a gather where a storage-buffer load loops over
+// the lanes, and a texel store loops once per channel where a storage-buffer store loops once.
+layout(binding = BINDING_PATH_TEXELS, TEXEL_FORMAT_PATH_TEXELS) uniform readonly uimageBuffer pathTexels;
+layout(binding = BINDING_HIT_TEXELS, TEXEL_FORMAT_HIT_TEXELS) uniform readonly imageBuffer hitTexels;
+layout(binding = BINDING_QUEUE_TEXELS, TEXEL_FORMAT_QUEUE_TEXELS) uniform readonly uimageBuffer queueTexels;
+layout(binding = BINDING_SHADOW_TEXELS, TEXEL_FORMAT_SHADOW_TEXELS) uniform readonly uimageBuffer shadowTexels;
 layout(binding = BINDING_HITS, std430) buffer Hits { vec4 hits[]; };
 layout(binding = BINDING_RAY_QUEUES, std430) buffer RayQueues { uint rayQueues[]; };
 layout(binding = BINDING_SHADOW_QUEUE, std430) buffer ShadowQueue { ShadowRay shadowRays[]; };
@@ -118,6 +125,64 @@ void triangleVertices(uint tri, out vec3 v0, out vec3 v1, out vec3 v2, out bool 
   v1 = imageLoad(triangles, int(kTriangleTexels * tri + 1u)).xyz;
   v2 = imageLoad(triangles, int(kTriangleTexels * tri + 2u)).xyz;
   cullBack = kCullsBackFaces != 0u && triangleSingleSided(t0);  // t0: texel kTriangleSidesTexel
+}
+
+// A path's state read through its texel view: five gathers where the storage buffer's load is eight lane loops.
+PathState loadPath(uint id) {
+  int t = int(id * kPathTexels);
+  uvec4 info = imageLoad(pathTexels, t + 4);
+  return PathState(uintBitsToFloat(imageLoad(pathTexels, t)), uintBitsToFloat(imageLoad(pathTexels, t + 1)),
+                   uintBitsToFloat(imageLoad(pathTexels, t + 2)), uintBitsToFloat(imageLoad(pathTexels, t + 3)), info.x,
+                   info.y, info.z, info.w);
+}
+
+// A material from its texels (layout.h asserts the offsets): the loads of fields a kernel never reads are dropped.
+vec4 materialTexel(int t) { return uintBitsToFloat(imageLoad(materialTexels, t)); }
+TextureSlot materialSlot(int t) {
+  uvec4 w = imageLoad(materialTexels, t + 2);
+  return TextureSlot(materialTexel(t), materialTexel(t + 1), w.x, w.y, w.z, w.w);
+}
+Material loadMaterial(uint index) {
+  int t = int(index * kMaterialTexels);
+  Material m;
+  m.baseColor = materialTexel(t);
+  vec4 e = materialTexel(t + 1);
+  m.emission = e.xyz;
+  m.flags = floatBitsToUint(e.w);
+  vec4 f = materialTexel(t + 2);
+  m.metallic = f.x;
+  m.roughness = f.y;
+  m.specular = f.z;
+  m.alphaCutoff = f.w;
+  m.baseColorTexture = materialSlot(t + 3);
+  m.metallicRoughnessTexture = materialSlot(t + 6);
+  m.normalTexture = materialSlot(t + 9);
+  m.emissiveTexture = materialSlot(t + 12);
+  m.specularColor = materialTexel(t + 15);
+  m.attenuation = materialTexel(t + 16);
+  m.sheen = materialTexel(t + 17);
+  uvec4 c = imageLoad(materialTexels, t + 18);
+  m.clearcoat = uintBitsToFloat(c.x);
+  m.clearcoatRoughness = uintBitsToFloat(c.y);
+  m.volumetric = c.z;
+  m.unusedMaterial0 = c.w;
+  m.transmissionTexture = materialSlot(t + 19);
+  m.clearcoatTexture = materialSlot(t + 22);
+  m.clearcoatRoughnessTexture = materialSlot(t + 25);
+  m.clearcoatNormalTexture = materialSlot(t + 28);
+  m.sheenColorTexture = materialSlot(t + 31);
+  m.sheenRoughnessTexture = materialSlot(t + 34);
+  m.specularTexture = materialSlot(t + 37);
+  m.specularColorTexture = materialSlot(t + 40);
+  return m;
+}
+
+vec4 loadHit(uint id) { return imageLoad(hitTexels, int(id)); }
+uint loadQueued(uint index) { return imageLoad(queueTexels, int(index)).x; }
+ShadowRay loadShadowRay(uint slot) {
+  int t = int(slot * kShadowRayTexels);
+  return ShadowRay(uintBitsToFloat(imageLoad(shadowTexels, t)), uintBitsToFloat(imageLoad(shadowTexels, t + 1)),
+                   uintBitsToFloat(imageLoad(shadowTexels, t + 2)));
 }
 
 bool allFinite(vec3 v) { return !any(isnan(v)) && !any(isinf(v)); }

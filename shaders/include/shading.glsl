@@ -267,7 +267,7 @@ bool sampleEmissiveTriangle(uint tri, float pmf, SurfacePoint s, vec2 u, out Lig
   if (!(dist2 > 0.0)) return false;
   ls.wi = toLight * inversesqrt(dist2);
   float cosLight = dot(nl, -ls.wi);
-  Material lm = materials[triangleInfoMaterial(imageLoad(triangleInfo, int(tri)))];
+  Material lm = loadMaterial(triangleInfoMaterial(imageLoad(triangleInfo, int(tri))));
   if (!emitsToward(lm, cosLight > 0.0)) return false;
   cosLight = abs(cosLight);
   if (cosLight <= 0.0) return false;

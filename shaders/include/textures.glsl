@@ -74,7 +74,7 @@ vec4 baseColorAt(Material m, SurfaceAttributes a) {
 bool surfacePresent(uint tri, vec2 b12, uint rayKey) {
   uvec4 info = imageLoad(triangleInfo, int(tri));
   if (!triangleInfoAlphaTested(info)) return true;
-  Material m = materials[triangleInfoMaterial(info)];
+  Material m = loadMaterial(triangleInfoMaterial(info));
   float alpha = kHasTextures != 0u ? baseColorAt(m, attributesAt(tri, vec3(1.0 - b12.x - b12.y, b12))).a : m.baseColor.a;
   if ((m.flags & kMaterialAlphaMask) != 0u) return alpha >= m.alphaCutoff;
   return randomUnit(rayKey, tri) < alpha;

@@ -11,12 +11,12 @@
 void main() {
   uint i = invocationIndex();
   if (i >= control.copyQueueCount) return;
-  uint target = rayQueues[copyQueueBase() + i];
-  PathState path = paths[target];
-  vec4 hit = hits[target];
+  uint target = loadQueued(copyQueueBase() + i);
+  PathState path = loadPath(target);
+  vec4 hit = loadHit(target);
   vec3 wo = -path.direction.xyz;
   SurfacePoint s = surfaceAt(floatBitsToUint(hit.w), hit.yz, wo);
-  GltfMaterial gm = shadeSurface(materials[s.material], s, wo);
+  GltfMaterial gm = shadeSurface(loadMaterial(s.material), s, wo);
   shadeEarsCopy(path, target, floatBitsToUint(path.radiance.z), s, gm, wo, wo * s.frame, path.radiance.x,
                 floatBitsToUint(path.radiance.y), earsCellKey(s.p, s.ng, earsHeader.grid));
 }

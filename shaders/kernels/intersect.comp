@@ -9,8 +9,8 @@
 void main() {
   uint slot;
   if (!walkItem(inQueueCount(), slot)) return;
-  uint id = rayQueues[inQueueBase() + slot];
-  PathState p = paths[id];
+  uint id = loadQueued(inQueueBase() + slot);
+  PathState p = loadPath(id);
   vec4 hit;
   bool complete;
   walkRayKey = alphaKey(streamHash(pathStream(p)), bounceDim(p.depth, 0u));

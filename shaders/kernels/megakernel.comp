@@ -60,7 +60,7 @@ void main() {
         break;
       }
       s = surfaceAt(tri, hit.yz, wo);
-      Material m = materials[s.material];
+      Material m = loadMaterial(s.material);
       path.throughput.rgb *= volumeTransmittance(m, s, hit.x);
       uint depth = path.depth;
       gm = shadeSurface(m, s, wo);

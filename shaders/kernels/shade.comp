@@ -17,9 +17,9 @@
 void main() {
   uint slot = invocationIndex();
   if (slot >= inQueueCount()) return;
-  uint id = rayQueues[inQueueBase() + slot];
-  PathState path = paths[id];
-  vec4 hit = hits[id];
+  uint id = loadQueued(inQueueBase() + slot);
+  PathState path = loadPath(id);
+  vec4 hit = loadHit(id);
   uint tri = floatBitsToUint(hit.w);
   uint root = path.rootPath;
   vec3 wo = -path.direction.xyz;
@@ -31,7 +31,7 @@ void main() {
     return;
   }
   SurfacePoint s = surfaceAt(tri, hit.yz, wo);
-  Material m = materials[s.material];
+  Material m = loadMaterial(s.material);
   path.throughput.rgb *= volumeTransmittance(m, s, hit.x);
   uint depth = path.depth;
   GltfMaterial gm = shadeSurface(m, s, wo);

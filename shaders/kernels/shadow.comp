@@ -13,7 +13,7 @@
 void main() {
   uint slot;
   if (!walkItem(control.shadowQueueCount, slot)) return;
-  ShadowRay s = shadowRays[slot];
+  ShadowRay s = loadShadowRay(slot);
   vec4 h;
   bool complete;
   walkRayKey = floatBitsToUint(s.contribution.w);

@@ -21,12 +21,12 @@ void put4u(uvec4 v) { put(v.x); put(v.y); put(v.z); put(v.w); }
 void putSlot(TextureSlot t) { put4(t.uvRow0); put4(t.uvRow1); put(t.texture); put(t.texCoord); put(t.unusedSlot0); put(t.unusedSlot1); }
 
 void echoStructs() {
-  PathState p = paths[0];
+  PathState p = loadPath(0u);
   put4(p.origin); put4(p.direction); put4(p.throughput); put4(p.radiance);
   put(p.pixel); put(p.rngKey); put(p.depth); put(p.rootPath);
-  ShadowRay r = shadowRays[0];
+  ShadowRay r = loadShadowRay(0u);
   put4(r.origin); put4(r.direction); put4(r.contribution);
-  Material m = materials[0];
+  Material m = loadMaterial(0u);
   put4(m.baseColor); put3(m.emission); put(m.flags);
   putf(m.metallic); putf(m.roughness); putf(m.specular); putf(m.alphaCutoff);
   putSlot(m.baseColorTexture); putSlot(m.metallicRoughnessTexture); putSlot(m.normalTexture); putSlot(m.emissiveTexture);

@@ -13,7 +13,7 @@ void main() {
   uint i = invocationIndex();
   if (i >= pc.pathCount) return;
   TestRay r = lookups[i];
-  Material m = materials[floatBitsToUint(r.direction.x)];
+  Material m = loadMaterial(floatBitsToUint(r.direction.x));
   uint slot = floatBitsToUint(r.direction.y);
   TextureSlot t = slot == 0u ? m.baseColorTexture
                              : (slot == 1u ? m.metallicRoughnessTexture : (slot == 2u ? m.normalTexture : m.emissiveTexture));

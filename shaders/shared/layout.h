@@ -10,7 +10,7 @@
 #define BINDING_TRIANGLE_INFO 1              // uimageBuffer: per-triangle normals and material (scene_layout.h)
 #define BINDING_BVH_NODES 2                  // uimageBuffer: BVH nodes (bvh_layout.h)
 #define BINDING_LIGHTS 3                     // uimageBuffer: light alias table (scene_layout.h)
-#define BINDING_MATERIALS 4                  // Material[]
+#define BINDING_MATERIALS 4                  // uimageBuffer: Material[] as texels (kMaterialTexels each)
 #define BINDING_PATHS 5                      // PathState[]
 #define BINDING_HITS 6                       // vec4[] (t, b1, b2, triangle bits)
 #define BINDING_RAY_QUEUES 7                 // uint[2 * capacity]: path ids, ping-pong by bounce parity (EARS:
@@ -41,7 +41,12 @@
 #define BINDING_EARS_RECORDS 29            // EarsRecord[pool * kEarsDepths]: each slot's training vertices
 #define BINDING_EARS_SLOTS 30              // EarsSlot[pool]
 #define BINDING_EARS_SAMPLING 31           // imageBuffer: per cell, what the factors read (ears.h kEarsSamplingTexels)
-#define BINDING_COUNT 32
+#define BINDING_PATH_TEXELS 32             // uimageBuffer: BINDING_PATHS's PathState[] as texels (kPathTexels a path),
+                                           // read with imageLoad: on lavapipe a gather, not a loop over the lanes
+#define BINDING_HIT_TEXELS 33              // imageBuffer: BINDING_HITS as texels, for reading
+#define BINDING_QUEUE_TEXELS 34            // uimageBuffer: BINDING_RAY_QUEUES as texels, for reading
+#define BINDING_SHADOW_TEXELS 35           // uimageBuffer: BINDING_SHADOW_QUEUE's ShadowRay[] as texels (3 a ray)
+#define BINDING_COUNT 36
 
 // Texel formats of the scene bindings as GLSL image-format qualifiers (common.glsl declares the bindings with
 // them); the host derives each VkFormat from the same token (sceneTexelFormat in host/render/gpu_scene.cpp).
@@ -54,6 +59,11 @@
 #define TEXEL_FORMAT_TRIANGLE_ATTRIBUTES rgba32ui
 #define TEXEL_FORMAT_LAYER_ALBEDO r32ui
 #define TEXEL_FORMAT_EARS_SAMPLING rgba32f
+#define TEXEL_FORMAT_MATERIALS rgba32ui
+#define TEXEL_FORMAT_PATH_TEXELS rgba32ui
+#define TEXEL_FORMAT_HIT_TEXELS rgba32f
+#define TEXEL_FORMAT_QUEUE_TEXELS r32ui
+#define TEXEL_FORMAT_SHADOW_TEXELS rgba32ui
 
 // Specialization constant ids.
 #define SPEC_WORKGROUP_SIZE 0
@@ -130,6 +140,9 @@ struct PathState {
   uint rootPath;  // the slot of the path's sample, where its radiance accumulates
 };
 
+VKMC_CONST uint kPathTexels = 5u;       // 16-byte texels of a PathState (BINDING_PATH_TEXELS)
+VKMC_CONST uint kShadowRayTexels = 3u;  // and of a ShadowRay (BINDING_SHADOW_TEXELS)
+
 struct ShadowRay {
   vec4 origin;        // xyz, w: the slot of the path copy that sampled it, as float bits (EARS training)
   vec4 direction;     // xyz: unnormalized (to the light point, tmax kShadowRayTMax), w: root path id as float bits
@@ -164,6 +177,8 @@ struct Material {
   TextureSlot transmissionTexture, clearcoatTexture, clearcoatRoughnessTexture, clearcoatNormalTexture, sheenColorTexture,
       sheenRoughnessTexture, specularTexture, specularColorTexture;
 };
+
+VKMC_CONST uint kMaterialTexels = 43u;  // 16-byte texels of a Material (BINDING_MATERIALS)
 
 // A KHR_lights_punctual light instance in world space (punctual_light.h samples it).
 struct PunctualLight {
@@ -291,13 +306,19 @@ namespace vkmc::gpu {
 inline constexpr uint32_t kTexelBindings[] = {
     BINDING_TRIANGLES,      BINDING_TRIANGLE_INFO, BINDING_BVH_NODES,          BINDING_LIGHTS,
     BINDING_TEXTURE_TEXELS, BINDING_TEXTURES,      BINDING_TRIANGLE_ATTRIBUTES, BINDING_LAYER_ALBEDO,
-    BINDING_EARS_SAMPLING};
+    BINDING_EARS_SAMPLING,  BINDING_MATERIALS,     BINDING_PATH_TEXELS,   BINDING_HIT_TEXELS,         BINDING_QUEUE_TEXELS,
+    BINDING_SHADOW_TEXELS};
 static_assert(sizeof(PathState) == 80);
 static_assert(offsetof(PathState, pixel) == 64 && offsetof(PathState, rootPath) == 76);
 static_assert(sizeof(ShadowRay) == 48);
 static_assert(sizeof(TextureSlot) == 48);
 static_assert(sizeof(Material) == 688 && offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32);
 static_assert(offsetof(Material, baseColorTexture) == 48 && offsetof(Material, emissiveTexture) == 192);
+// loadMaterial (common.glsl) reads these texels.
+static_assert(sizeof(Material) == 16 * kMaterialTexels && offsetof(Material, specularColor) == 16 * 15 &&
+              offsetof(Material, clearcoat) == 16 * 18 && offsetof(Material, transmissionTexture) == 16 * 19 &&
+              offsetof(Material, specularColorTexture) == 16 * 40 && sizeof(TextureSlot) == 16 * 3);
+static_assert(sizeof(PathState) == 16 * kPathTexels && sizeof(ShadowRay) == 16 * kShadowRayTexels);
 static_assert(offsetof(Material, specularColor) == 240 && offsetof(Material, transmissionTexture) == 304);
 static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, kind) == 48 && offsetof(PunctualLight, cosInner) == 56);
 static_assert(sizeof(EnvironmentHeader) == 48 && offsetof(EnvironmentHeader, sceneSphere) == 16);

@@ -127,9 +127,11 @@ struct Probe {
 };
 
 template <typename T>
-vk::Buffer bufferHolding(vk::Context& ctx, const T& value) {
-  vk::Buffer b(ctx, sizeof(T), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
+vk::Buffer bufferHolding(vk::Context& ctx, const T& value, uint32_t texelBinding = 0) {
+  vk::Buffer b(ctx, sizeof(T), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | (texelBinding ? VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT : 0),
+               vk::MemoryKind::HostVisible);
   std::memcpy(b.mapped(), &value, sizeof(T));
+  if (texelBinding) b.createView(sceneTexelFormat(texelBinding));
   return b;
 }
 
@@ -150,12 +152,13 @@ TEST(LayoutProbe, GlslReadsEveryStructFieldAtItsCppOffset) {
   auto pixel = patterned<gpu::FilmPixel>(4000.0f);
   auto control = patterned<gpu::Control>(5000.0f);
   auto pc = patterned<gpu::PushConstants>(6000.0f);
-  vk::Buffer paths = bufferHolding(probe.ctx, path), rays = bufferHolding(probe.ctx, ray),
-             materials = bufferHolding(probe.ctx, material), film = bufferHolding(probe.ctx, pixel),
+  // Paths, shadow rays and materials are read through their texel views (common.glsl loadPath ...).
+  vk::Buffer paths = bufferHolding(probe.ctx, path, BINDING_PATH_TEXELS), rays = bufferHolding(probe.ctx, ray, BINDING_SHADOW_TEXELS),
+             materials = bufferHolding(probe.ctx, material, BINDING_MATERIALS), film = bufferHolding(probe.ctx, pixel),
              controlBuffer = bufferHolding(probe.ctx, control);
-  probe.layout.bindStorage(BINDING_PATHS, paths);
-  probe.layout.bindStorage(BINDING_SHADOW_QUEUE, rays);
-  probe.layout.bindStorage(BINDING_MATERIALS, materials);
+  probe.layout.bindTexel(BINDING_PATH_TEXELS, paths);
+  probe.layout.bindTexel(BINDING_SHADOW_TEXELS, rays);
+  probe.layout.bindTexel(BINDING_MATERIALS, materials);
   probe.layout.bindStorage(BINDING_FILM, film);
   probe.layout.bindStorage(BINDING_CONTROL, controlBuffer);
   Words expected = echoedByName(path, ray, material, pixel, control, pc);
