@@ -63,6 +63,8 @@ layout(binding = BINDING_TRIANGLE_ATTRIBUTES, TEXEL_FORMAT_TRIANGLE_ATTRIBUTES) 
 layout(binding = BINDING_LAYER_ALBEDO, TEXEL_FORMAT_LAYER_ALBEDO) uniform readonly uimageBuffer layerAlbedoTable;
 layout(binding = BINDING_MATERIALS, TEXEL_FORMAT_MATERIALS) uniform readonly uimageBuffer materialTexels;
 layout(binding = BINDING_PATHS, std430) buffer Paths { PathState paths[]; };
+// The same memory as 16-byte words: a path's four uint fields stored in one lane loop, not four.
+layout(binding = BINDING_PATHS, std430) buffer PathWords { uvec4 pathWords[]; };
 // The path state, hits, ray queues and shadow rays are written through their storage buffers and read through
 // texel views of the same memory: on lavapipe a texel load is a gather where a storage-buffer load loops over
 // the lanes, and a texel store loops once per channel where a storage-buffer store loops once.
@@ -176,6 +178,21 @@ Material loadMaterial(uint index) {
   m.specularColorTexture = materialSlot(t + 40);
   return m;
 }
+
+// A path's ray, throughput and bookkeeping (the whole state but its radiance) in four stores.
+void storePathRay(uint id, PathState p) {
+  uint t = id * kPathTexels;
+  pathWords[t] = floatBitsToUint(p.origin);
+  pathWords[t + 1u] = floatBitsToUint(p.direction);
+  pathWords[t + 2u] = floatBitsToUint(p.throughput);
+  pathWords[t + 4u] = uvec4(p.pixel, p.rngKey, p.depth, p.rootPath);
+}
+void storePath(uint id, PathState p) {
+  storePathRay(id, p);
+  pathWords[id * kPathTexels + 3u] = floatBitsToUint(p.radiance);
+}
+// The radiance a path has gathered so far, read through the texel view (shadow rays add to it).
+vec4 loadRadiance(uint id) { return uintBitsToFloat(imageLoad(pathTexels, int(id * kPathTexels + 3u))); }
 
 vec4 loadHit(uint id) { return imageLoad(hitTexels, int(id)); }
 uint loadQueued(uint index) { return imageLoad(queueTexels, int(index)).x; }

@@ -102,7 +102,7 @@ void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMate
     uint target = firstChild + c - 1u;
     PathState child = path;
     child.radiance = vec4(q, uintBitsToFloat(c), uintBitsToFloat(id), 0.0);
-    paths[target] = child;
+    storePath(target, child);
     hits[target] = hit;
     rayQueues[copyQueueBase() + atomicAdd(control.copyQueueCount, 1u)] = target;
   }

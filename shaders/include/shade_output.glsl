@@ -18,7 +18,7 @@ void addToSample(uint id, uint root, vec3 value) {
     return;
   }
 #endif
-  paths[id].radiance.rgb += value;
+  paths[id].radiance.rgb = loadRadiance(id).rgb + value;
 }
 
 // Queue appends take one atomic per subgroup: an active lane's slot is the subgroup's base plus its rank among
@@ -40,13 +40,7 @@ uint nextBounceQueueSlot() {
 
 // Path `target`'s next ray, queued for the next bounce; a fresh split child starts with no radiance.
 void queueContinuation(uint target, PathState next, bool fresh) {
-  paths[target].origin = next.origin;
-  paths[target].direction = next.direction;
-  paths[target].throughput = next.throughput;
-  paths[target].pixel = next.pixel;
-  paths[target].rngKey = next.rngKey;
-  paths[target].depth = next.depth;
-  paths[target].rootPath = next.rootPath;
+  storePathRay(target, next);
   if (fresh) paths[target].radiance = vec4(0.0);
   rayQueues[outQueueBase() + nextBounceQueueSlot()] = target;
 }

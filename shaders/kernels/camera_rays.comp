@@ -10,7 +10,7 @@ void main() {
   if (kCameraRouletteQ == 0.0 && id == 0u) control.rayQueueCount[0] = pc.pathCount;
   if (id >= pc.pathCount) return;
   PathState p = cameraPath(id);
-  paths[id] = p;
+  storePath(id, p);
   if (kCameraRouletteQ == 0.0) rayQueues[id] = id;
   else if (p.throughput.x > 0.0) rayQueues[atomicAdd(control.rayQueueCount[0], 1u)] = id;
 }

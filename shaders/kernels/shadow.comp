@@ -37,6 +37,6 @@ void main() {
   atomicAdd(paths[id].radiance.g, s.contribution.g);
   atomicAdd(paths[id].radiance.b, s.contribution.b);
 #else
-  paths[id].radiance.rgb += s.contribution.rgb;
+  paths[id].radiance.rgb = loadRadiance(id).rgb + s.contribution.rgb;
 #endif
 }
