@@ -1,4 +1,4 @@
-// Path-pool sizing: the wavefront's size bounded by every buffer's storage range.
+// Path-pool sizing: the wavefront's size bounded by every buffer's storage range and texel count.
 #include "render/path_pool.h"
 
 #include <algorithm>
@@ -37,6 +37,10 @@ PathPoolSize sizePathPool(const RenderSettings& settings, const VkPhysicalDevice
   capacity = std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::PathState) * poolFactor));
   capacity =
       std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::ShadowRay) * est.lightSamples * poolFactor));
+  // The kernels read path states and shadow rays through texel views (common.glsl): their texels must fit too.
+  const uint64_t texels = limits.maxTexelBufferElements;
+  capacity = std::min<uint64_t>(capacity, texels / (gpu::kPathTexels * poolFactor));
+  capacity = std::min<uint64_t>(capacity, texels / (uint64_t(gpu::kShadowRayTexels) * est.lightSamples * poolFactor));
   if (est.rr == RouletteMode::Ears)  // each slot's training records
     capacity = std::min<uint32_t>(
         capacity, limits.maxStorageBufferRange / (sizeof(gpu::EarsRecord) * gpu::kEarsDepths * poolFactor));
