@@ -69,7 +69,7 @@ layout(binding = BINDING_PATHS, std430) buffer PathWords { uvec4 pathWords[]; };
 // texel views of the same memory: on lavapipe a texel load is a gather where a storage-buffer load loops over
 // the lanes, and a texel store loops once per channel where a storage-buffer store loops once.
 layout(binding = BINDING_PATH_TEXELS, TEXEL_FORMAT_PATH_TEXELS) uniform readonly uimageBuffer pathTexels;
-layout(binding = BINDING_HIT_TEXELS, TEXEL_FORMAT_HIT_TEXELS) uniform readonly imageBuffer hitTexels;
+layout(binding = BINDING_HIT_TEXELS, TEXEL_FORMAT_HIT_TEXELS) uniform readonly uimageBuffer hitTexels;
 layout(binding = BINDING_QUEUE_TEXELS, TEXEL_FORMAT_QUEUE_TEXELS) uniform readonly uimageBuffer queueTexels;
 layout(binding = BINDING_SHADOW_TEXELS, TEXEL_FORMAT_SHADOW_TEXELS) uniform readonly uimageBuffer shadowTexels;
 layout(binding = BINDING_HITS, std430) buffer Hits { vec4 hits[]; };
@@ -194,7 +194,7 @@ void storePath(uint id, PathState p) {
 // The radiance a path has gathered so far, read through the texel view (shadow rays add to it).
 vec4 loadRadiance(uint id) { return uintBitsToFloat(imageLoad(pathTexels, int(id * kPathTexels + 3u))); }
 
-vec4 loadHit(uint id) { return imageLoad(hitTexels, int(id)); }
+vec4 loadHit(uint id) { return uintBitsToFloat(imageLoad(hitTexels, int(id))); }
 uint loadQueued(uint index) { return imageLoad(queueTexels, int(index)).x; }
 ShadowRay loadShadowRay(uint slot) {
   int t = int(slot * kShadowRayTexels);

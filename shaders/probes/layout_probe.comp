@@ -3,7 +3,7 @@
 // The GLSL side of every host <-> GPU encoding, for tests/layout_probe_test.cpp: one invocation reads what the
 // host wrote and writes it back word by word, by field name, so the test compares the two languages' views.
 // kEchoStructs = 1: the fields of PathState, ShadowRay, Material, FilmPixel, Control and PushConstants, each
-// read from a buffer the host filled with a pattern. kEchoStructs = 0: the scene texels decoded with the shared
+// read from a buffer the host filled with a pattern, then two hits. kEchoStructs = 0: the scene texels decoded with the shared
 // functions (scene_layout.h, bvh_layout.h): pc.pathCount triangles, pc.pixelCount light picks, pc.width wide
 // nodes and pc.height leaf entries.
 #include "common.glsl"
@@ -50,6 +50,8 @@ void echoStructs() {
   put(pc.width); put(pc.height); put(pc.seed); put(pc.queueCapacity);
   put4(pc.cameraOrigin); put4(pc.cameraForward); put4(pc.cameraRight); put4(pc.cameraUp); put4(pc.background);
   put(pc.pixelCount); put(pc.samplesPerPass); put(pc.unused0); put(pc.unused1);
+  // Hits: a triangle index in w (a denormal as a float) and a miss (kMissPrimitive, a NaN) must keep their bits.
+  put4(loadHit(0u)); put4(loadHit(1u));
 }
 
 void decodeScene() {

@@ -61,7 +61,7 @@
 #define TEXEL_FORMAT_EARS_SAMPLING rgba32f
 #define TEXEL_FORMAT_MATERIALS rgba32ui
 #define TEXEL_FORMAT_PATH_TEXELS rgba32ui
-#define TEXEL_FORMAT_HIT_TEXELS rgba32f
+#define TEXEL_FORMAT_HIT_TEXELS rgba32ui  // w carries the triangle index as float bits: a typed float load could flush them
 #define TEXEL_FORMAT_QUEUE_TEXELS r32ui
 #define TEXEL_FORMAT_SHADOW_TEXELS rgba32ui
 

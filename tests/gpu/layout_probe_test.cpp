@@ -4,6 +4,7 @@
 // languages compile differently fails here.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <bit>
 #include <cstring>
 #include <random>
@@ -110,6 +111,7 @@ struct Probe {
   vk::KernelLayout layout{ctx};
   vk::Buffer out{ctx, 1u << 20, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible};
   vk::Buffer placeholder{ctx, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal};
+  test::RendererTexelPlaceholders texelPlaceholders{ctx, layout};  // a test rebinds the ones it reads
   Probe() {
     test::bindPlaceholders(layout, placeholder, {});
     gpuScene.bindTo(layout);
@@ -161,9 +163,18 @@ TEST(LayoutProbe, GlslReadsEveryStructFieldAtItsCppOffset) {
   probe.layout.bindTexel(BINDING_MATERIALS, materials);
   probe.layout.bindStorage(BINDING_FILM, film);
   probe.layout.bindStorage(BINDING_CONTROL, controlBuffer);
+  // Hit w words are a triangle index's bits (a denormal float) or kMissPrimitive (a NaN): read through the texel
+  // view, they must come back bit for bit.
+  const std::array<glm::uvec4, 2> hitWords{glm::uvec4(std::bit_cast<uint32_t>(0.25f), std::bit_cast<uint32_t>(0.5f),
+                                                      std::bit_cast<uint32_t>(0.125f), 5u),
+                                           glm::uvec4(0u, 0u, 0u, gpu::kMissPrimitive)};
+  vk::Buffer hits = bufferHolding(probe.ctx, hitWords, BINDING_HIT_TEXELS);
+  probe.layout.bindTexel(BINDING_HIT_TEXELS, hits);
   Words expected = echoedByName(path, ray, material, pixel, control, pc);
+  for (const glm::uvec4& h : hitWords) expected.put4u(h);
   // Every word of every struct is echoed once: no field is left out of the comparison.
-  ASSERT_EQ(expected.w.size() * 4, sizeof(path) + sizeof(ray) + sizeof(material) + sizeof(pixel) + sizeof(control) + sizeof(pc));
+  ASSERT_EQ(expected.w.size() * 4, sizeof(path) + sizeof(ray) + sizeof(material) + sizeof(pixel) + sizeof(control) +
+                                       sizeof(pc) + sizeof(hitWords));
   std::vector<uint32_t> got = probe.run(true, pc, expected.w.size());
   for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], expected.w[i]) << "echoed word " << i;
 }

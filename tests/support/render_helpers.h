@@ -12,6 +12,7 @@
 #include "../shaders/shared/layout.h"
 #include "analysis/student_t.h"
 #include "app/render_job.h"
+#include "render/gpu_scene.h"
 #include "vk/kernel.h"
 #include "z_test.h"
 
@@ -38,6 +39,20 @@ inline void bindPlaceholders(vk::KernelLayout& layout, const vk::Buffer& placeho
   for (uint32_t b = 0; b < BINDING_COUNT; ++b)
     if (!vk::isTexelBinding(b) && !vk::isImageBinding(b) && std::find(except.begin(), except.end(), b) == except.end()) layout.bindStorage(b, placeholder);
 }
+
+// Viewed placeholder buffers on the renderer's texel bindings (path state, hits, queues, shadow rays), for a
+// standalone kernel that reads some of them only behind a specialization constant: every descriptor a kernel
+// uses statically must be written (Vulkan's rule), whether or not the branch runs.
+struct RendererTexelPlaceholders {
+  std::vector<vk::Buffer> buffers;
+  RendererTexelPlaceholders(vk::Context& ctx, vk::KernelLayout& layout) {
+    for (uint32_t b : {BINDING_PATH_TEXELS, BINDING_HIT_TEXELS, BINDING_QUEUE_TEXELS, BINDING_SHADOW_TEXELS}) {
+      buffers.emplace_back(ctx, 256, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+      buffers.back().createView(sceneTexelFormat(b));
+      layout.bindTexel(b, buffers.back());
+    }
+  }
+};
 
 inline std::string scenePath(const std::string& name) { return std::string(VKMC_SOURCE_DIR) + "/scenes/" + name; }
 
