@@ -9,7 +9,7 @@ PathState cameraPath(uint id) {
   uint pixel = pc.firstPixel + id % pc.pixelCount;
   uint sampleIndex = pc.sampleIndex + id / pc.pixelCount;
   SampleStream stream = SampleStream(streamKey(kSampler, pc.seed, pixel, sampleIndex), sampleIndex, pixel);
-  vec2 u = vec2(sampleU(stream, 0u), sampleU(stream, 1u));
+  vec2 u = sampleU2(stream, 0u);
   FilterSample fs = samplePixelFilter(u);
   vec2 jitter = fs.point;
   vec2 ndc = vec2(float(pixel % pc.width) + jitter.x, float(pixel / pc.width) + jitter.y) /

@@ -208,3 +208,4 @@ bool allFinite(vec3 v) { return !any(isnan(v)) && !any(isinf(v)); }
 // path's sample slot), its pixel; and dimension `dim` of it from the sampler the kernels are specialized for.
 SampleStream pathStream(PathState p) { return SampleStream(p.rngKey, pc.sampleIndex + p.rootPath / pc.pixelCount, p.pixel); }
 float sampleU(SampleStream s, uint dim) { return sampleDimension(kSampler, s, dim, pc.width, kSamplerLog2Spp, kSamplerDigits); }
+vec2 sampleU2(SampleStream s, uint dim) { return samplePair(kSampler, s, dim, pc.width, kSamplerLog2Spp, kSamplerDigits); }  // dim even

@@ -316,7 +316,7 @@ bool prepareLightSample(PathState path, uint slot, SurfacePoint s, GltfMaterial 
   uvec4 light = selectLight(sampleU(stream, lightDim(depth, j, 0u)));
   uint kind = lightEntryKind(light);
   float pmf = lightEntryPmf(light);
-  vec2 u = vec2(sampleU(stream, lightDim(depth, j, 1u)), sampleU(stream, lightDim(depth, j, 2u)));
+  vec2 u = sampleU2(stream, lightDim(depth, j, 1u));  // 2u is its second dimension
   LightSample ls;
   bool sampled = false;
   if (kind == kLightKindTriangle) sampled = sampleEmissiveTriangle(lightEntryIndex(light), pmf, s, u, ls);
@@ -396,8 +396,7 @@ bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3
   uint depth = path.depth;
   SampleStream stream = pathStream(path);
   stream.key = childKey(path.rngKey, depth, c);
-  vec3 u = vec3(sampleU(stream, bounceDim(depth, kDimBsdfLobe)), sampleU(stream, bounceDim(depth, kDimBsdf)),
-                sampleU(stream, bounceDim(depth, kDimBsdf + 1u)));
+  vec3 u = vec3(sampleU(stream, bounceDim(depth, kDimBsdfLobe)), sampleU2(stream, bounceDim(depth, kDimBsdf)));
   BsdfSample bs = sampleTechnique(gm, woLocal, u);
   vec3 wi = s.frame * bs.wi;
   bool continues = onConsistentSide(s, gm, wi, bs.wi);

@@ -52,17 +52,20 @@ VKMC_FN uint owenScramble(uint v, uint seed) { return reverseBits32(laineKarras(
 // indices (common high bits), whose Sobol points are a digitally shifted (0,k,2)-net.
 VKMC_FN uint shuffleIndex(uint index, uint seed) { return owenScramble(index, seed); }
 
-// Dimension 0 of the Sobol sequence (van der Corput) and dimension 1 (generator V_k = V_{k-1} ^ V_{k-1} >> 1),
-// as 32-bit fractions.
+// Dimension 0 of the Sobol sequence (van der Corput) and dimension 1, as 32-bit fractions. Dimension 1's
+// generators are the Pascal matrix mod 2: bit r of the fraction (r = 0 the most significant) is the XOR of the
+// index bits k with binom(k, r) odd, i.e. (Lucas) with k a bitwise superset of r. That superset sum over the 5-bit
+// positions is five shift-and-XOR steps, where the generator loop took one step per index bit
+// (tests/unit/sampler_test.cpp checks the two agree).
 VKMC_FN uint sobolBits(uint index, uint dimension) {
   if (dimension == 0u) return reverseBits32(index);
-  uint result = 0u;
-  uint v = 0x80000000u;
-  for (uint i = index; i != 0u; i >>= 1u) {
-    if ((i & 1u) != 0u) result ^= v;
-    v ^= v >> 1u;
-  }
-  return result;
+  uint x = index;  // bit k: index bit k; after the steps, bit r: output bit r
+  x ^= (x >> 1u) & 0x55555555u;
+  x ^= (x >> 2u) & 0x33333333u;
+  x ^= (x >> 4u) & 0x0f0f0f0fu;
+  x ^= (x >> 8u) & 0x00ff00ffu;
+  x ^= (x >> 16u) & 0x0000ffffu;
+  return reverseBits32(x);
 }
 
 VKMC_FN float bitsToUnit(uint bits) { return min(float(bits >> 8u) * (1.0f / 16777216.0f), kOneMinusEpsilon); }
@@ -127,21 +130,35 @@ VKMC_FN uint streamKey(uint samplerKind, uint seed, uint pixel, uint sampleIndex
 // A per-sample hash key of the stream (stochastic alpha and other decisions that need no stratification).
 VKMC_FN uint streamHash(SampleStream s) { return hashU32(s.key ^ hashU32(s.sampleIndex * 0x9e3779b9u + 0x7f4a7c15u)); }
 
+// The Sobol index of a pair's point for stream s (before the dimension's own scrambling).
+VKMC_FN uint pairIndex(uint samplerKind, SampleStream s, uint pair, uint pairSeed, uint width, uint log2Spp, uint digits) {
+  uint point = s.sampleIndex / kSampleReplicates;
+  if (samplerKind == kSamplerSobol) return shuffleIndex(point, pairSeed);
+  uint morton = (mortonCode(s.pixel % width, s.pixel / width) << log2Spp) | point;
+  return zsobolIndex(morton, pair, s.key, digits, (log2Spp & 1u) != 0u);
+}
+VKMC_FN uint pairSeedOf(SampleStream s, uint pair) { return hashU32(s.key ^ hashU32(pair * 0x68bc21ebu + 0x02e5be93u)); }
+VKMC_FN float scrambledComponent(uint index, uint component, uint pairSeed) {
+  return bitsToUnit(owenScramble(sobolBits(index, component), hashU32(pairSeed ^ (component + 0x1b873593u))));
+}
+
 // Uniform in [0, 1) for dimension `dim`. ZSobol: `log2Spp` bounds the replicate's point numbers (< 2^log2Spp),
 // `digits` is the Morton index's length in base-4 digits (pixel bits + log2Spp, rounded up), `width` the image's.
 VKMC_FN float sampleDimension(uint samplerKind, SampleStream s, uint dim, uint width, uint log2Spp, uint digits) {
   if (samplerKind == kSamplerIndependent) return randomUnit(s.key, dim);
-  uint pair = dim >> 1u, component = dim & 1u;
-  uint point = s.sampleIndex / kSampleReplicates;
-  uint pairSeed = hashU32(s.key ^ hashU32(pair * 0x68bc21ebu + 0x02e5be93u));
-  uint index;
-  if (samplerKind == kSamplerSobol) {
-    index = shuffleIndex(point, pairSeed);
-  } else {
-    uint morton = (mortonCode(s.pixel % width, s.pixel / width) << log2Spp) | point;
-    index = zsobolIndex(morton, pair, s.key, digits, (log2Spp & 1u) != 0u);
-  }
-  return bitsToUnit(owenScramble(sobolBits(index, component), hashU32(pairSeed ^ (component + 0x1b873593u))));
+  uint pair = dim >> 1u;
+  uint pairSeed = pairSeedOf(s, pair);
+  return scrambledComponent(pairIndex(samplerKind, s, pair, pairSeed, width, log2Spp, digits), dim & 1u, pairSeed);
+}
+
+// Dimensions dim and dim + 1 (dim even: one pair), the same values as two sampleDimension calls, with the pair's
+// seed and index computed once.
+VKMC_FN vec2 samplePair(uint samplerKind, SampleStream s, uint dim, uint width, uint log2Spp, uint digits) {
+  if (samplerKind == kSamplerIndependent) return vec2(randomUnit(s.key, dim), randomUnit(s.key, dim + 1u));
+  uint pair = dim >> 1u;
+  uint pairSeed = pairSeedOf(s, pair);
+  uint index = pairIndex(samplerKind, s, pair, pairSeed, width, log2Spp, digits);
+  return vec2(scrambledComponent(index, 0u, pairSeed), scrambledComponent(index, 1u, pairSeed));
 }
 
 VKMC_END_NAMESPACE

@@ -37,6 +37,42 @@ TEST(SobolSequence, FirstTwoDimensionsAreAZeroTwoSequence) {
   }
 }
 
+// Dimension 1 from its generator matrix, one generator per index bit (V_k = V_{k-1} ^ V_{k-1} >> 1): what
+// sobolBits' loop-free form must equal for every index.
+uint32_t sobolDimension1ByGenerators(uint32_t index) {
+  uint32_t result = 0, v = 0x80000000u;
+  for (uint32_t i = index; i != 0; i >>= 1, v ^= v >> 1)
+    if (i & 1) result ^= v;
+  return result;
+}
+
+TEST(SobolSequence, DimensionOneEqualsItsGeneratorMatrix) {
+  for (uint32_t i = 0; i < 4096; ++i) ASSERT_EQ(sobolBits(i, 1), sobolDimension1ByGenerators(i)) << "index " << i;
+  uint32_t x = 12345;
+  for (int n = 0; n < 100000; ++n) {
+    x = hashU32(x);
+    ASSERT_EQ(sobolBits(x, 1), sobolDimension1ByGenerators(x)) << "index " << x;
+  }
+  for (uint32_t bit = 0; bit < 32; ++bit) EXPECT_EQ(sobolBits(1u << bit, 1), sobolDimension1ByGenerators(1u << bit));
+  EXPECT_EQ(sobolBits(0xffffffffu, 1), sobolDimension1ByGenerators(0xffffffffu));
+}
+
+TEST(Samplers, APairIsItsTwoDimensions) {
+  for (uint32_t sampler : {kSamplerIndependent, kSamplerSobol, kSamplerZSobol})
+    for (uint32_t sample = 0; sample < 40; ++sample)
+      for (uint32_t dim : {0u, 2u, 6u, 14u, lightDim(3u, 2u, 1u)}) {
+        SampleStream s{streamKey(sampler, 9u, 77u, sample), sample, 77u};
+        vec2 pair = samplePair(sampler, s, dim, 16u, 4u, 6u);
+        EXPECT_EQ(pair.x, sampleDimension(sampler, s, dim, 16u, 4u, 6u)) << sampler << " " << dim;
+        EXPECT_EQ(pair.y, sampleDimension(sampler, s, dim + 1u, 16u, 4u, 6u)) << sampler << " " << dim;
+      }
+  // The kernels' 2D samples start at even dimensions (one pair each).
+  for (uint32_t depth = 0; depth < 8; ++depth) {
+    EXPECT_EQ(bounceDim(depth, kDimBsdf) % 2u, 0u);
+    for (uint32_t j = 0; j < 5; ++j) EXPECT_EQ(lightDim(depth, j, 1u) % 2u, 0u);
+  }
+}
+
 TEST(SobolSequence, OwenScramblingKeepsTheNet) {
   for (uint32_t seed : {1u, 77u, 0xdeadbeefu}) {
     std::vector<uvec2> pts;
