@@ -108,6 +108,9 @@ Context::Context(const ContextOptions& options) {
   VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   dci.queueCreateInfoCount = 1;
   dci.pQueueCreateInfos = &qci;
+  VkPhysicalDeviceFeatures enabled{};
+  enabled.shaderInt64 = VK_TRUE;  // checked above (missingRequirements)
+  dci.pEnabledFeatures = &enabled;
   if (floatAtomics_) {
     dci.enabledExtensionCount = 1;
     dci.ppEnabledExtensionNames = &atomicExtName;

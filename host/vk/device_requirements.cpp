@@ -37,6 +37,7 @@ std::vector<std::string> missingRequirements(const DeviceCapabilities& caps) {
   if ((caps.unormImageFeatures & (sampled | VK_FORMAT_FEATURE_TRANSFER_DST_BIT)) != (sampled | VK_FORMAT_FEATURE_TRANSFER_DST_BIT) ||
       (caps.srgbImageFeatures & sampled) != sampled)
     missing.push_back("linearly filtered R8G8B8A8 UNORM and SRGB sampled images");
+  if (!caps.shaderInt64) missing.push_back("64-bit integers in shaders (shaderInt64)");
   return missing;
 }
 
@@ -66,6 +67,9 @@ DeviceCapabilities queryCapabilities(VkPhysicalDevice device) {
   caps.unormImageFeatures = fp.optimalTilingFeatures;
   vkGetPhysicalDeviceFormatProperties(device, VK_FORMAT_R8G8B8A8_SRGB, &fp);
   caps.srgbImageFeatures = fp.optimalTilingFeatures;
+  VkPhysicalDeviceFeatures features;
+  vkGetPhysicalDeviceFeatures(device, &features);
+  caps.shaderInt64 = features.shaderInt64 == VK_TRUE;
   return caps;
 }
 

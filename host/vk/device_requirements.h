@@ -1,6 +1,6 @@
 // What vkmc's kernels need of a Vulkan device, checked once when the device is opened so that a device lacking
 // one stops with a line naming it (not a driver error at the first pipeline): subgroup operations, the storage
-// texel buffer formats, the texture pages' image formats, workgroup size, push constants and descriptors per stage.
+// texel buffer formats, the texture pages' image formats, 64-bit integers, workgroup size, push constants and descriptors per stage.
 #pragma once
 #include <vulkan/vulkan.h>
 
@@ -20,6 +20,7 @@ struct DeviceCapabilities {
   uint32_t maxStorageBuffersPerStage = 0, maxStorageImagesPerStage = 0;  // texel buffers count as storage images
   uint32_t maxSampledImagesPerStage = 0, maxSamplersPerStage = 0;
   VkFormatFeatureFlags unormImageFeatures = 0, srgbImageFeatures = 0;  // optimal tiling, R8G8B8A8 UNORM / SRGB
+  bool shaderInt64 = false;  // the kernels store 16-byte words as two 64-bit halves (common.glsl wordPairs)
 };
 
 // The formats of the scene's storage texel buffers (gpu_scene.cpp's qualifiers: rgba32f, rgba32ui, r32ui).

@@ -63,7 +63,7 @@ void shadeEarsCopy(PathState path, uint target, uint parent, SurfacePoint s, Glt
   for (uint j = 0u; j < samples; ++j) {
     ShadowRay ray;
     if (prepareLightSample(copy, target, s, gm, wo, j, samples, ray)) {
-      shadowRays[shadowQueueSlot()] = ray;
+      storeShadowRay(shadowQueueSlot(), ray);
       ++rays;
     }
   }
@@ -103,7 +103,7 @@ void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMate
     PathState child = path;
     child.radiance = vec4(q, uintBitsToFloat(c), uintBitsToFloat(id), 0.0);
     storePath(target, child);
-    hits[target] = hit;
+    storeHit(target, hit);
     rayQueues[copyQueueBase() + atomicAdd(control.copyQueueCount, 1u)] = target;
   }
   if (copies > 0u) shadeEarsCopy(path, id, id, s, gm, wo, woLocal, q, 0u, key);

@@ -18,7 +18,8 @@ void addToSample(uint id, uint root, vec3 value) {
     return;
   }
 #endif
-  paths[id].radiance.rgb = loadRadiance(id).rgb + value;
+  vec4 radiance = loadRadiance(id);
+  storeRadiance(id, vec4(radiance.rgb + value, radiance.w));
 }
 
 // Queue appends take one atomic per subgroup: an active lane's slot is the subgroup's base plus its rank among
@@ -41,7 +42,7 @@ uint nextBounceQueueSlot() {
 // Path `target`'s next ray, queued for the next bounce; a fresh split child starts with no radiance.
 void queueContinuation(uint target, PathState next, bool fresh) {
   storePathRay(target, next);
-  if (fresh) paths[target].radiance = vec4(0.0);
+  if (fresh) storeRadiance(target, vec4(0.0));
   rayQueues[outQueueBase() + nextBounceQueueSlot()] = target;
 }
 

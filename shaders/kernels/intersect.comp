@@ -15,7 +15,7 @@ void main() {
   bool complete;
   walkRayKey = alphaKey(streamHash(pathStream(p)), bounceDim(p.depth, 0u));
   if (!traceItem(slot, p.origin.xyz, p.direction.xyz, 3.0e38, false, hit, complete)) return;
-  hits[id] = hit;
+  storeHit(id, hit);
   if (!complete) {  // counted, and the sample poisoned so accumulate excludes it: never a silently wrong hit
     atomicAdd(control.walksCut, 1u);
     paths[p.rootPath].radiance.r = uintBitsToFloat(0x7fc00000u);

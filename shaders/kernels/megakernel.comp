@@ -89,7 +89,7 @@ void main() {
       }
     }
   }
-  paths[id].radiance = vec4(radiance, path.radiance.w);  // w: the pixel-filter weight
+  storeRadiance(id, vec4(radiance, path.radiance.w));  // w: the pixel-filter weight
   // Ray counts, one atomic per path and counter (llvmpipe runs atomics lane by lane).
   if (camera > 0u) atomicAdd(control.cameraRays, camera);
   if (extension > 0u) atomicAdd(control.extensionRays, extension);

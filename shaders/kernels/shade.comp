@@ -46,7 +46,7 @@ void main() {
     uint samples = lightSamplesAt(depth);
     for (uint j = 0u; j < samples; ++j) {
       ShadowRay ray;
-      if (prepareLightSample(path, id, s, gm, wo, j, samples, ray)) shadowRays[shadowQueueSlot()] = ray;
+      if (prepareLightSample(path, id, s, gm, wo, j, samples, ray)) storeShadowRay(shadowQueueSlot(), ray);
     }
   }
 

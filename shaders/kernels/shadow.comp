@@ -37,6 +37,7 @@ void main() {
   atomicAdd(paths[id].radiance.g, s.contribution.g);
   atomicAdd(paths[id].radiance.b, s.contribution.b);
 #else
-  paths[id].radiance.rgb = loadRadiance(id).rgb + s.contribution.rgb;
+  vec4 radiance = loadRadiance(id);
+  storeRadiance(id, vec4(radiance.rgb + s.contribution.rgb, radiance.w));
 #endif
 }

@@ -3,7 +3,8 @@
 // The GLSL side of every host <-> GPU encoding, for tests/layout_probe_test.cpp: one invocation reads what the
 // host wrote and writes it back word by word, by field name, so the test compares the two languages' views.
 // kEchoStructs = 1: the fields of PathState, ShadowRay, Material, FilmPixel, Control and PushConstants, each
-// read from a buffer the host filled with a pattern, then two hits. kEchoStructs = 0: the scene texels decoded with the shared
+// read from a buffer the host filled with a pattern, then two hits; the path, shadow ray and hits are also
+// stored back into the next slots. kEchoStructs = 0: the scene texels decoded with the shared
 // functions (scene_layout.h, bvh_layout.h): pc.pathCount triangles, pc.pixelCount light picks, pc.width wide
 // nodes and pc.height leaf entries.
 #include "common.glsl"
@@ -52,6 +53,11 @@ void echoStructs() {
   put(pc.pixelCount); put(pc.samplesPerPass); put(pc.unused0); put(pc.unused1);
   // Hits: a triangle index in w (a denormal as a float) and a miss (kMissPrimitive, a NaN) must keep their bits.
   put4(loadHit(0u)); put4(loadHit(1u));
+  // The stores (64-bit halves, common.glsl): slot 1 gets what slot 0 holds; the host compares the bytes.
+  storePath(1u, p);
+  storeShadowRay(1u, r);
+  storeHit(2u, loadHit(0u));
+  storeHit(3u, loadHit(1u));
 }
 
 void decodeScene() {

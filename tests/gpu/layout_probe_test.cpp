@@ -155,7 +155,9 @@ TEST(LayoutProbe, GlslReadsEveryStructFieldAtItsCppOffset) {
   auto control = patterned<gpu::Control>(5000.0f);
   auto pc = patterned<gpu::PushConstants>(6000.0f);
   // Paths, shadow rays and materials are read through their texel views (common.glsl loadPath ...).
-  vk::Buffer paths = bufferHolding(probe.ctx, path, BINDING_PATH_TEXELS), rays = bufferHolding(probe.ctx, ray, BINDING_SHADOW_TEXELS),
+  // Two slots each: the probe stores slot 0's path and shadow ray into slot 1 (and the hits into slots 2, 3).
+  vk::Buffer paths = bufferHolding(probe.ctx, std::array<gpu::PathState, 2>{path, {}}, BINDING_PATH_TEXELS),
+             rays = bufferHolding(probe.ctx, std::array<gpu::ShadowRay, 2>{ray, {}}, BINDING_SHADOW_TEXELS),
              materials = bufferHolding(probe.ctx, material, BINDING_MATERIALS), film = bufferHolding(probe.ctx, pixel),
              controlBuffer = bufferHolding(probe.ctx, control);
   probe.layout.bindTexel(BINDING_PATH_TEXELS, paths);
@@ -168,8 +170,11 @@ TEST(LayoutProbe, GlslReadsEveryStructFieldAtItsCppOffset) {
   const std::array<glm::uvec4, 2> hitWords{glm::uvec4(std::bit_cast<uint32_t>(0.25f), std::bit_cast<uint32_t>(0.5f),
                                                       std::bit_cast<uint32_t>(0.125f), 5u),
                                            glm::uvec4(0u, 0u, 0u, gpu::kMissPrimitive)};
-  vk::Buffer hits = bufferHolding(probe.ctx, hitWords, BINDING_HIT_TEXELS);
+  vk::Buffer hits = bufferHolding(probe.ctx, std::array<glm::uvec4, 4>{hitWords[0], hitWords[1], {}, {}}, BINDING_HIT_TEXELS);
   probe.layout.bindTexel(BINDING_HIT_TEXELS, hits);
+  probe.layout.bindStorage(BINDING_PATHS, paths);  // the stores go through the storage views of the same buffers
+  probe.layout.bindStorage(BINDING_SHADOW_QUEUE, rays);
+  probe.layout.bindStorage(BINDING_HITS, hits);
   Words expected = echoedByName(path, ray, material, pixel, control, pc);
   for (const glm::uvec4& h : hitWords) expected.put4u(h);
   // Every word of every struct is echoed once: no field is left out of the comparison.
@@ -177,6 +182,14 @@ TEST(LayoutProbe, GlslReadsEveryStructFieldAtItsCppOffset) {
                                        sizeof(pc) + sizeof(hitWords));
   std::vector<uint32_t> got = probe.run(true, pc, expected.w.size());
   for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], expected.w[i]) << "echoed word " << i;
+  // The stores wrote the same bytes the C++ structs hold (every field's bits, NaN and denormal hit words too).
+  auto storedPaths = downloaded<gpu::PathState>(paths);
+  auto storedRays = downloaded<gpu::ShadowRay>(rays);
+  auto storedHits = downloaded<glm::uvec4>(hits);
+  EXPECT_EQ(std::memcmp(&storedPaths[1], &path, sizeof(path)), 0) << "storePath";
+  EXPECT_EQ(std::memcmp(&storedRays[1], &ray, sizeof(ray)), 0) << "storeShadowRay";
+  EXPECT_EQ(storedHits[2], hitWords[0]) << "storeHit";
+  EXPECT_EQ(storedHits[3], hitWords[1]) << "storeHit of a miss";
 }
 
 TEST(LayoutProbe, GlslDecodesTheSceneTexelsAsTheHostEncodedThem) {

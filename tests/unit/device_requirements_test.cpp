@@ -22,6 +22,7 @@ vk::DeviceCapabilities capable() {
   c.maxSampledImagesPerStage = c.maxSamplersPerStage = 16;
   c.unormImageFeatures = c.srgbImageFeatures = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
                                               VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+  c.shaderInt64 = true;
   return c;
 }
 
@@ -60,6 +61,9 @@ TEST(DeviceRequirements, EachShortfallIsNamed) {
   c = capable();
   c.srgbImageFeatures = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
   EXPECT_TRUE(names(vk::missingRequirements(c), "R8G8B8A8 UNORM and SRGB sampled images"));
+  c = capable();
+  c.shaderInt64 = false;
+  EXPECT_TRUE(names(vk::missingRequirements(c), "shaderInt64"));
 }
 
 TEST(DeviceRequirements, TheCheckedFormatsAreTheSceneBuffersFormats) {
