@@ -19,6 +19,11 @@ RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh, bo
   for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_FILM, BINDING_PIXEL_ESTIMATE,
                      BINDING_ROULETTE_TABLE, BINDING_DEPTH_STATS, BINDING_QUEUE_STATS})
     layout_->bindStorage(b, dummy_);
+  for (uint32_t b : {BINDING_PATH_TEXELS, BINDING_HIT_TEXELS, BINDING_QUEUE_TEXELS, BINDING_SHADOW_TEXELS}) {
+    texelDummies_.emplace_back(ctx, 256, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+    texelDummies_.back().createView(sceneTexelFormat(b));
+    layout_->bindTexel(b, texelDummies_.back());
+  }
   // The deep pass's dispatch arguments and counters (the trace kernels use nothing else of Control).
   control_ = vk::Buffer(ctx, sizeof(gpu::Control), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                         vk::MemoryKind::HostVisible);
@@ -46,11 +51,17 @@ RayTracer::~RayTracer() = default;
 
 std::vector<glm::vec4> RayTracer::trace(std::span<const gpu::TestRay> rays, bool anyHit, double* gpuSeconds) {
   size_t n = rays.size();
-  vk::Buffer in(ctx_, std::max<size_t>(n, 1) * sizeof(gpu::TestRay), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                vk::MemoryKind::HostVisible);
+  // Read through a texel view (trace_rays.comp), two rgba32ui texels a ray.
+  if (2 * n > ctx_.properties().limits.maxTexelBufferElements)
+    throw Error("too many rays for one dispatch: " + std::to_string(n) + " need " + std::to_string(2 * n) +
+                " texels, the device allows " + std::to_string(ctx_.properties().limits.maxTexelBufferElements));
+  vk::Buffer in(ctx_, std::max<size_t>(n, 1) * sizeof(gpu::TestRay),
+                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::HostVisible);
+  in.createView(sceneTexelFormat(BINDING_PATH_TEXELS));
   vk::Buffer out(ctx_, std::max<size_t>(n, 1) * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
   if (n) std::memcpy(in.mapped(), rays.data(), n * sizeof(gpu::TestRay));
   layout_->bindStorage(BINDING_TEST_RAYS, in);
+  layout_->bindTexel(BINDING_PATH_TEXELS, in);
   layout_->bindStorage(BINDING_TEST_HITS, out);
   vk::Buffer deep(ctx_, std::max<size_t>(n, 1) * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                   vk::MemoryKind::DeviceLocal);

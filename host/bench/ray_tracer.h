@@ -36,6 +36,7 @@ class RayTracer {
   std::unique_ptr<vk::KernelLayout> layout_;
   std::unique_ptr<vk::Kernel> closest_, any_, closestDeep_, anyDeep_;
   vk::Buffer dummy_, control_;
+  std::vector<vk::Buffer> texelDummies_;  // viewed placeholders on the renderer's texel bindings
   uint32_t deepWalks_ = 0;
   WalkStats walkStats_;
 };

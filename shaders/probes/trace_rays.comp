@@ -6,16 +6,22 @@
 #include "traversal.glsl"
 #include "deferred_walk.glsl"
 
-layout(binding = BINDING_TEST_RAYS, std430) readonly buffer TestRays { TestRay testRays[]; };
-layout(binding = BINDING_TEST_HITS, std430) writeonly buffer TestHits { vec4 testHits[]; };
+// As the renderer's intersect reads its paths and stores its hits (common.glsl): the rays through a texel view of
+// their buffer (bound at BINDING_PATH_TEXELS, two texels a ray), the hits in 64-bit halves.
+layout(binding = BINDING_TEST_HITS, std430) writeonly buffer TestHits { u64vec2 testHits[]; };
+
+TestRay loadTestRay(uint id) {
+  int t = int(2u * id);
+  return TestRay(uintBitsToFloat(imageLoad(pathTexels, t)), uintBitsToFloat(imageLoad(pathTexels, t + 1)));
+}
 
 void main() {
   uint id;
   if (!walkItem(pc.pathCount, id)) return;
-  TestRay r = testRays[id];
+  TestRay r = loadTestRay(id);
   vec4 h;
   bool complete;
   if (!traceItem(id, r.origin.xyz, r.direction.xyz, r.origin.w, kAnyHit != 0u, h, complete)) return;
   if (!complete) h.x = uintBitsToFloat(0x7fc00000u);  // a walk cut short reads as t = NaN
-  testHits[id] = h;
+  testHits[id] = wordPairs(h);
 }
