@@ -82,6 +82,7 @@ layout(binding = BINDING_SHADOW_QUEUE, std430) buffer ShadowQueue { ShadowRay sh
 layout(binding = BINDING_PATHS, std430) buffer PathPairs { u64vec2 pathPairs[]; };
 layout(binding = BINDING_HITS, std430) buffer HitPairs { u64vec2 hitPairs[]; };
 layout(binding = BINDING_SHADOW_QUEUE, std430) buffer ShadowPairs { u64vec2 shadowPairs[]; };
+layout(binding = BINDING_FILM, std430) buffer FilmPairs { u64vec2 filmPairs[]; };
 u64vec2 wordPairs(uvec4 v) { return u64vec2(packUint2x32(v.xy), packUint2x32(v.zw)); }
 u64vec2 wordPairs(vec4 v) { return wordPairs(floatBitsToUint(v)); }
 layout(binding = BINDING_CONTROL, std430) buffer ControlBuffer { Control control; };
@@ -190,6 +191,14 @@ Material loadMaterial(uint index) {
 
 void storeRadiance(uint id, vec4 radiance) { pathPairs[id * kPathTexels + 3u] = wordPairs(radiance); }
 void storeHit(uint id, vec4 hit) { hitPairs[id] = wordPairs(hit); }
+void storeFilmPixel(uint pixel, FilmPixel f) {
+  uint t = pixel * kFilmPixelWords;
+  filmPairs[t] = wordPairs(f.sum);
+  filmPairs[t + 1u] = wordPairs(f.sumSq);
+  filmPairs[t + 2u] = wordPairs(f.sumHigh);
+  filmPairs[t + 3u] = wordPairs(f.sumSqHigh);
+  for (uint r = 0u; r + 1u < kSampleReplicates; ++r) filmPairs[t + 4u + r] = wordPairs(f.replicate[r]);
+}
 void storeShadowRay(uint slot, ShadowRay r) {
   uint t = slot * kShadowRayTexels;
   shadowPairs[t] = wordPairs(r.origin);

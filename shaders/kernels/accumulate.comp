@@ -13,7 +13,7 @@ void main() {
   uint pixel = pc.firstPixel + i;
   FilmPixel f = film[pixel];
   for (uint s = 0u; s < pc.samplesPerPass; ++s) {
-    vec4 estimate = paths[s * pc.pixelCount + i].radiance;
+    vec4 estimate = loadRadiance(s * pc.pixelCount + i);
     vec3 L = kPixelFilterSampling == kPixelFilterSamplingUniform ? estimate.rgb : estimate.rgb * estimate.w;
     if (allFinite(L)) {
       bvec3 high = greaterThanEqual(abs(L), vec3(kFilmHighThreshold));
@@ -28,5 +28,5 @@ void main() {
       f.sumSq.w += 1.0;
     }
   }
-  film[pixel] = f;
+  storeFilmPixel(pixel, f);
 }

@@ -3,8 +3,8 @@
 // The GLSL side of every host <-> GPU encoding, for tests/layout_probe_test.cpp: one invocation reads what the
 // host wrote and writes it back word by word, by field name, so the test compares the two languages' views.
 // kEchoStructs = 1: the fields of PathState, ShadowRay, Material, FilmPixel, Control and PushConstants, each
-// read from a buffer the host filled with a pattern, then two hits; the path, shadow ray and hits are also
-// stored back into the next slots. kEchoStructs = 0: the scene texels decoded with the shared
+// read from a buffer the host filled with a pattern, then two hits; the path, shadow ray, film pixel and hits are
+// also stored back into the next slots. kEchoStructs = 0: the scene texels decoded with the shared
 // functions (scene_layout.h, bvh_layout.h): pc.pathCount triangles, pc.pixelCount light picks, pc.width wide
 // nodes and pc.height leaf entries.
 #include "common.glsl"
@@ -58,6 +58,7 @@ void echoStructs() {
   storeShadowRay(1u, r);
   storeHit(2u, loadHit(0u));
   storeHit(3u, loadHit(1u));
+  storeFilmPixel(1u, f);
 }
 
 void decodeScene() {

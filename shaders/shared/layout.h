@@ -220,6 +220,7 @@ struct PixelFilterHeader {
 // replicate's sums are the rest of `sum` (the host subtracts), which keeps the film at 112 bytes a pixel
 // (1024x1024 fits lavapipe's 128 MiB storage-buffer limit).
 VKMC_CONST uint kSampleReplicates = 4u;
+VKMC_CONST uint kFilmPixelWords = 3u + kSampleReplicates;  // 16-byte words of a FilmPixel
 struct FilmPixel {
   vec4 sum;        // rgb: sum of estimate channels below the threshold, w: finite samples
   vec4 sumSq;      // rgb: sum of their squares, w: non-finite samples (counted, excluded)
@@ -324,7 +325,7 @@ static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, kind) == 48
 static_assert(sizeof(EnvironmentHeader) == 48 && offsetof(EnvironmentHeader, sceneSphere) == 16);
 static_assert(offsetof(EnvironmentHeader, selectionPmf) == 32);
 static_assert(sizeof(PixelFilterHeader) == 32 && offsetof(PixelFilterHeader, params) == 16);
-static_assert(sizeof(FilmPixel) == 112 && offsetof(FilmPixel, replicate) == 64);
+static_assert(sizeof(FilmPixel) == 112 && offsetof(FilmPixel, replicate) == 64 && sizeof(FilmPixel) == 16 * kFilmPixelWords);
 static_assert(sizeof(Control) == 160 && offsetof(Control, copyArgs) == 144);
 static_assert(offsetof(Control, deepArgs) == 96);
 static_assert(offsetof(Control, rayArgs) == 16 && offsetof(Control, accumulateArgs) == 48);

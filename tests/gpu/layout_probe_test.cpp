@@ -155,10 +155,11 @@ TEST(LayoutProbe, GlslReadsEveryStructFieldAtItsCppOffset) {
   auto control = patterned<gpu::Control>(5000.0f);
   auto pc = patterned<gpu::PushConstants>(6000.0f);
   // Paths, shadow rays and materials are read through their texel views (common.glsl loadPath ...).
-  // Two slots each: the probe stores slot 0's path and shadow ray into slot 1 (and the hits into slots 2, 3).
+  // Two slots each: the probe stores slot 0's path, shadow ray and film pixel into slot 1 (and the hits into slots 2, 3).
   vk::Buffer paths = bufferHolding(probe.ctx, std::array<gpu::PathState, 2>{path, {}}, BINDING_PATH_TEXELS),
              rays = bufferHolding(probe.ctx, std::array<gpu::ShadowRay, 2>{ray, {}}, BINDING_SHADOW_TEXELS),
-             materials = bufferHolding(probe.ctx, material, BINDING_MATERIALS), film = bufferHolding(probe.ctx, pixel),
+             materials = bufferHolding(probe.ctx, material, BINDING_MATERIALS),
+             film = bufferHolding(probe.ctx, std::array<gpu::FilmPixel, 2>{pixel, {}}),
              controlBuffer = bufferHolding(probe.ctx, control);
   probe.layout.bindTexel(BINDING_PATH_TEXELS, paths);
   probe.layout.bindTexel(BINDING_SHADOW_TEXELS, rays);
@@ -188,6 +189,8 @@ TEST(LayoutProbe, GlslReadsEveryStructFieldAtItsCppOffset) {
   auto storedHits = downloaded<glm::uvec4>(hits);
   EXPECT_EQ(std::memcmp(&storedPaths[1], &path, sizeof(path)), 0) << "storePath";
   EXPECT_EQ(std::memcmp(&storedRays[1], &ray, sizeof(ray)), 0) << "storeShadowRay";
+  auto storedFilm = downloaded<gpu::FilmPixel>(film);
+  EXPECT_EQ(std::memcmp(&storedFilm[1], &pixel, sizeof(pixel)), 0) << "storeFilmPixel";
   EXPECT_EQ(storedHits[2], hitWords[0]) << "storeHit";
   EXPECT_EQ(storedHits[3], hitWords[1]) << "storeHit of a miss";
 }
