@@ -16,10 +16,10 @@ RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh, bo
   scene.bindTo(*layout_, binaryBvh);
   // The kernel declares every binding of the shared set; those it never touches still need a buffer.
   dummy_ = vk::Buffer(ctx, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
-  for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_FILM, BINDING_PIXEL_ESTIMATE,
+  for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_FILM,
                      BINDING_ROULETTE_TABLE, BINDING_DEPTH_STATS, BINDING_QUEUE_STATS})
     layout_->bindStorage(b, dummy_);
-  for (uint32_t b : {BINDING_PATH_TEXELS, BINDING_HIT_TEXELS, BINDING_QUEUE_TEXELS, BINDING_SHADOW_TEXELS}) {
+  for (uint32_t b : {BINDING_PATH_TEXELS, BINDING_HIT_TEXELS, BINDING_QUEUE_TEXELS, BINDING_SHADOW_TEXELS, BINDING_PIXEL_ESTIMATE}) {
     texelDummies_.emplace_back(ctx, 256, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
     texelDummies_.back().createView(sceneTexelFormat(b));
     layout_->bindTexel(b, texelDummies_.back());

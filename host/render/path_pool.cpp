@@ -24,6 +24,11 @@ void checkDeviceLimits(const RenderSettings& settings, const VkPhysicalDeviceLim
     throw Error("image " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
                 " is too large: its film needs " + std::to_string(filmBytes >> 20) +
                 " MiB, the device's storage-buffer limit is " + std::to_string(limits.maxStorageBufferRange >> 20) + " MiB");
+  // The pixel estimates are read as texels, one a pixel (common.glsl loadPixelEstimate).
+  if (uint64_t(settings.width) * settings.height > limits.maxTexelBufferElements)
+    throw Error("image " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                " is too large: its pixel estimates need one texel a pixel, the device allows " +
+                std::to_string(limits.maxTexelBufferElements) + " texels");
 }
 
 PathPoolSize sizePathPool(const RenderSettings& settings, const VkPhysicalDeviceLimits& limits, bool hasShadowStage) {

@@ -96,7 +96,8 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
   if (!control_.mapped()) controlMirror_ = vk::Buffer(ctx_, sizeof(gpu::Control), 0, vk::MemoryKind::HostVisible);
   film_ = storage(pixels * sizeof(gpu::FilmPixel), exchange);
   film_.zero();
-  pixelEstimate_ = storage(pixels * sizeof(glm::vec4), exchange);
+  pixelEstimate_ = storage(pixels * sizeof(glm::vec4), exchange, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT);
+  pixelEstimate_.createView(sceneTexelFormat(BINDING_PIXEL_ESTIMATE));
   pixelEstimate_.zero();
   rouletteTable_ = storage(gpu::kRouletteTableDepths * sizeof(float), vk::MemoryKind::HostVisible);
   std::array<float, kRouletteTableDepths> noRoulette;
@@ -145,7 +146,7 @@ void PathRenderer::bindBuffers() {
   layout_->bindStorage(BINDING_DEEP_WALKS, deepWalks_);
   layout_->bindStorage(BINDING_CONTROL, control_);
   layout_->bindStorage(BINDING_FILM, film_);
-  layout_->bindStorage(BINDING_PIXEL_ESTIMATE, pixelEstimate_);
+  layout_->bindTexel(BINDING_PIXEL_ESTIMATE, pixelEstimate_);
   layout_->bindStorage(BINDING_ROULETTE_TABLE, rouletteTable_);
   layout_->bindStorage(BINDING_DEPTH_STATS, depthStats_);
   layout_->bindStorage(BINDING_QUEUE_STATS, queueStats_);

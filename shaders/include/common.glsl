@@ -87,7 +87,9 @@ u64vec2 wordPairs(uvec4 v) { return u64vec2(packUint2x32(v.xy), packUint2x32(v.z
 u64vec2 wordPairs(vec4 v) { return wordPairs(floatBitsToUint(v)); }
 layout(binding = BINDING_CONTROL, std430) buffer ControlBuffer { Control control; };
 layout(binding = BINDING_FILM, std430) buffer Film { FilmPixel film[]; };
-layout(binding = BINDING_PIXEL_ESTIMATE, std430) readonly buffer PixelEstimate { vec4 pixelEstimate[]; };
+// Read per vertex (EARS) or per light sample (shadow roulette): a texel load, not a storage-buffer lane loop.
+layout(binding = BINDING_PIXEL_ESTIMATE, TEXEL_FORMAT_PIXEL_ESTIMATE) uniform readonly imageBuffer pixelEstimates;
+vec4 loadPixelEstimate(uint pixel) { return imageLoad(pixelEstimates, int(pixel)); }
 layout(binding = BINDING_ROULETTE_TABLE, std430) readonly buffer RouletteTable { float rouletteScale[]; };
 layout(binding = BINDING_DEPTH_STATS, std430) buffer DepthStats { vec2 depthStats[]; };
 layout(binding = BINDING_QUEUE_STATS, std430) buffer QueueStats { uvec2 queueStats[]; };

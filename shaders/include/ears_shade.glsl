@@ -24,7 +24,7 @@ float earsVertexFactor(PathState path, uint key, out bool trained) {
   }
   float q = 1.0;
   if (trained) {
-    vec3 estimate = pixelEstimate[path.pixel].rgb;
+    vec3 estimate = loadPixelEstimate(path.pixel).rgb;
     vec3 t = path.throughput.rgb / sqrt(estimate * estimate + earsHeader.epsilon);
     vec3 variance = imageLoad(earsLearned, int(kEarsSamplingTexels * cell + 1u)).rgb;
     q = min(earsFactor(t, moment.rgb, variance, earsHeader.imageFactor), kEarsMaxFactor);

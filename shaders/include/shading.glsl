@@ -332,7 +332,7 @@ bool prepareLightSample(PathState path, uint slot, SurfacePoint s, GltfMaterial 
   vec3 contribution = path.throughput.rgb * f * ls.arriving * (abs(wiLocal.z) * weight / (ls.pdf * float(samples)));
   if (!allFinite(contribution)) atomicAdd(control.nonfiniteLightSamples, 1u);  // still queued: it poisons the sample
   else if (!(maxComponent(contribution) > 0.0)) return false;
-  if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * pixelEstimate[path.pixel].w) {
+  if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * loadPixelEstimate(path.pixel).w) {
     RouletteStep rr = fixedRoulette(kShadowRouletteQ, sampleU(stream, lightDim(depth, j, 3u)));
     if (!rr.survives) return false;
     contribution /= rr.survival;

@@ -20,8 +20,8 @@
 #define BINDING_FILM 10                      // FilmPixel[]
 #define BINDING_TEST_RAYS 11                 // TestRay[] (trace_rays kernel only)
 #define BINDING_TEST_HITS 12                 // vec4[] (trace_rays kernel only)
-#define BINDING_PIXEL_ESTIMATE 13            // vec4[]: running estimate per pixel, rgb and w its luminance (shadow
-                                             // roulette, EARS)
+#define BINDING_PIXEL_ESTIMATE 13            // imageBuffer: running estimate per pixel, rgb and w its luminance
+                                             // (shadow roulette, EARS)
 #define BINDING_ROULETTE_TABLE 14            // float[kRouletteTableDepths]: efficiency roulette scale per depth
 #define BINDING_DEPTH_STATS 15               // vec2[pool * kRouletteTableDepths]: pilot (beta, gathered) per path and depth
 #define BINDING_QUEUE_STATS 16               // uvec2[kQueueStatsBounces]: per bounce, paths queued (x) and shadow rays (y)
@@ -64,6 +64,7 @@
 #define TEXEL_FORMAT_HIT_TEXELS rgba32ui  // w carries the triangle index as float bits: a typed float load could flush them
 #define TEXEL_FORMAT_QUEUE_TEXELS r32ui
 #define TEXEL_FORMAT_SHADOW_TEXELS rgba32ui
+#define TEXEL_FORMAT_PIXEL_ESTIMATE rgba32f
 
 // Specialization constant ids.
 #define SPEC_WORKGROUP_SIZE 0
@@ -308,7 +309,7 @@ inline constexpr uint32_t kTexelBindings[] = {
     BINDING_TRIANGLES,      BINDING_TRIANGLE_INFO, BINDING_BVH_NODES,          BINDING_LIGHTS,
     BINDING_TEXTURE_TEXELS, BINDING_TEXTURES,      BINDING_TRIANGLE_ATTRIBUTES, BINDING_LAYER_ALBEDO,
     BINDING_EARS_SAMPLING,  BINDING_MATERIALS,     BINDING_PATH_TEXELS,   BINDING_HIT_TEXELS,         BINDING_QUEUE_TEXELS,
-    BINDING_SHADOW_TEXELS};
+    BINDING_SHADOW_TEXELS,  BINDING_PIXEL_ESTIMATE};
 static_assert(sizeof(PathState) == 80);
 static_assert(offsetof(PathState, pixel) == 64 && offsetof(PathState, rootPath) == 76);
 static_assert(sizeof(ShadowRay) == 48);

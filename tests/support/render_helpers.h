@@ -40,13 +40,13 @@ inline void bindPlaceholders(vk::KernelLayout& layout, const vk::Buffer& placeho
     if (!vk::isTexelBinding(b) && !vk::isImageBinding(b) && std::find(except.begin(), except.end(), b) == except.end()) layout.bindStorage(b, placeholder);
 }
 
-// Viewed placeholder buffers on the renderer's texel bindings (path state, hits, queues, shadow rays), for a
-// standalone kernel that reads some of them only behind a specialization constant: every descriptor a kernel
-// uses statically must be written (Vulkan's rule), whether or not the branch runs.
+// Viewed placeholder buffers on the renderer's texel bindings (path state, hits, queues, shadow rays, pixel
+// estimates), for a standalone kernel that reads some of them only behind a specialization constant: every
+// descriptor a kernel uses statically must be written (Vulkan's rule), whether or not the branch runs.
 struct RendererTexelPlaceholders {
   std::vector<vk::Buffer> buffers;
   RendererTexelPlaceholders(vk::Context& ctx, vk::KernelLayout& layout) {
-    for (uint32_t b : {BINDING_PATH_TEXELS, BINDING_HIT_TEXELS, BINDING_QUEUE_TEXELS, BINDING_SHADOW_TEXELS}) {
+    for (uint32_t b : {BINDING_PATH_TEXELS, BINDING_HIT_TEXELS, BINDING_QUEUE_TEXELS, BINDING_SHADOW_TEXELS, BINDING_PIXEL_ESTIMATE}) {
       buffers.emplace_back(ctx, 256, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
       buffers.back().createView(sceneTexelFormat(b));
       layout.bindTexel(b, buffers.back());

@@ -1,7 +1,10 @@
 // Path-pool sizing (render/path_pool.h): the pool stays within every buffer limit the device reports.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "../shaders/shared/layout.h"
+#include "error.h"
 #include "render/path_pool.h"
 
 using namespace vkmc;
@@ -39,4 +42,19 @@ TEST(PathPool, TheWavefrontIsTheBoundWhereTheDeviceHasRoom) {
   PathPoolSize size = sizePathPool(settingsFor(1u << 18, 1), roomyLimits(), true);
   EXPECT_EQ(size.cameraPaths, 1u << 18);
   EXPECT_EQ(size.shadowSlots, uint64_t(size.slots));
+}
+
+TEST(PathPool, AnImageWithMorePixelsThanTexelsIsRefusedWithOneLine) {
+  VkPhysicalDeviceLimits limits = roomyLimits();
+  limits.maxComputeWorkGroupSize[0] = limits.maxComputeWorkGroupInvocations = 1024;
+  RenderSettings s = settingsFor(1u << 18, 1);
+  s.workgroupSize = 64;
+  EXPECT_NO_THROW(checkDeviceLimits(s, limits));
+  limits.maxTexelBufferElements = 4096u * 4096u - 1u;  // the pixel estimates are one texel a pixel
+  try {
+    checkDeviceLimits(s, limits);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("pixel estimates need one texel a pixel"), std::string::npos) << e.what();
+  }
 }
