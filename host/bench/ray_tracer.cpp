@@ -19,7 +19,7 @@ RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh, bo
   for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_FILM,
                      BINDING_ROULETTE_TABLE, BINDING_DEPTH_STATS, BINDING_QUEUE_STATS})
     layout_->bindStorage(b, dummy_);
-  for (uint32_t b : {BINDING_PATH_TEXELS, BINDING_HIT_TEXELS, BINDING_QUEUE_TEXELS, BINDING_SHADOW_TEXELS, BINDING_PIXEL_ESTIMATE}) {
+  for (uint32_t b : gpu::kRendererTexelBindings) {
     texelDummies_.emplace_back(ctx, 256, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
     texelDummies_.back().createView(sceneTexelFormat(b));
     layout_->bindTexel(b, texelDummies_.back());

@@ -63,9 +63,7 @@ layout(binding = BINDING_TEXTURES, TEXEL_FORMAT_TEXTURES) uniform readonly uimag
 layout(binding = BINDING_TRIANGLE_ATTRIBUTES, TEXEL_FORMAT_TRIANGLE_ATTRIBUTES) uniform readonly uimageBuffer triangleAttributes;
 layout(binding = BINDING_LAYER_ALBEDO, TEXEL_FORMAT_LAYER_ALBEDO) uniform readonly uimageBuffer layerAlbedoTable;
 layout(binding = BINDING_MATERIALS, TEXEL_FORMAT_MATERIALS) uniform readonly uimageBuffer materialTexels;
-layout(binding = BINDING_PATHS, std430) buffer Paths { PathState paths[]; };
-// The same memory as 16-byte words: a path's four uint fields stored in one lane loop, not four.
-layout(binding = BINDING_PATHS, std430) buffer PathWords { uvec4 pathWords[]; };
+layout(binding = BINDING_PATHS, std430) buffer Paths { PathState paths[]; };  // the radiance atomics
 // The path state, hits, ray queues and shadow rays are written through their storage buffers and read through
 // texel views of the same memory: on lavapipe a texel load is a gather where a storage-buffer load loops over
 // the lanes, and a texel store loops once per channel where a storage-buffer store loops once.
@@ -73,9 +71,7 @@ layout(binding = BINDING_PATH_TEXELS, TEXEL_FORMAT_PATH_TEXELS) uniform readonly
 layout(binding = BINDING_HIT_TEXELS, TEXEL_FORMAT_HIT_TEXELS) uniform readonly uimageBuffer hitTexels;
 layout(binding = BINDING_QUEUE_TEXELS, TEXEL_FORMAT_QUEUE_TEXELS) uniform readonly uimageBuffer queueTexels;
 layout(binding = BINDING_SHADOW_TEXELS, TEXEL_FORMAT_SHADOW_TEXELS) uniform readonly uimageBuffer shadowTexels;
-layout(binding = BINDING_HITS, std430) buffer Hits { vec4 hits[]; };
 layout(binding = BINDING_RAY_QUEUES, std430) buffer RayQueues { uint rayQueues[]; };
-layout(binding = BINDING_SHADOW_QUEUE, std430) buffer ShadowQueue { ShadowRay shadowRays[]; };
 // The same memory as 64-bit pairs, for stores: llvmpipe stores a vector one lane at a time, each component
 // behind its own bounds check, so 16 bytes stored as two 64-bit components cost a third less than as four
 // 32-bit ones (docs/performance.md).

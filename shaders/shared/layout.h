@@ -18,7 +18,7 @@
 #define BINDING_SHADOW_QUEUE 8               // ShadowRay[]
 #define BINDING_CONTROL 9                    // Control
 #define BINDING_FILM 10                      // FilmPixel[]
-#define BINDING_TEST_RAYS 11                 // TestRay[] (trace_rays kernel only)
+#define BINDING_TEST_RAYS 11                 // TestRay[] (texture probes; trace_rays reads its rays at BINDING_PATH_TEXELS)
 #define BINDING_TEST_HITS 12                 // vec4[] (trace_rays kernel only)
 #define BINDING_PIXEL_ESTIMATE 13            // imageBuffer: running estimate per pixel, rgb and w its luminance
                                              // (shadow roulette, EARS)
@@ -310,6 +310,9 @@ inline constexpr uint32_t kTexelBindings[] = {
     BINDING_TEXTURE_TEXELS, BINDING_TEXTURES,      BINDING_TRIANGLE_ATTRIBUTES, BINDING_LAYER_ALBEDO,
     BINDING_EARS_SAMPLING,  BINDING_MATERIALS,     BINDING_PATH_TEXELS,   BINDING_HIT_TEXELS,         BINDING_QUEUE_TEXELS,
     BINDING_SHADOW_TEXELS,  BINDING_PIXEL_ESTIMATE};
+// The texel bindings that hold the renderer's own state (not the scene's): standalone kernels bind placeholders.
+inline constexpr uint32_t kRendererTexelBindings[] = {BINDING_PATH_TEXELS, BINDING_HIT_TEXELS, BINDING_QUEUE_TEXELS,
+                                                      BINDING_SHADOW_TEXELS, BINDING_PIXEL_ESTIMATE};
 static_assert(sizeof(PathState) == 80);
 static_assert(offsetof(PathState, pixel) == 64 && offsetof(PathState, rootPath) == 76);
 static_assert(sizeof(ShadowRay) == 48);

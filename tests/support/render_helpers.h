@@ -46,7 +46,7 @@ inline void bindPlaceholders(vk::KernelLayout& layout, const vk::Buffer& placeho
 struct RendererTexelPlaceholders {
   std::vector<vk::Buffer> buffers;
   RendererTexelPlaceholders(vk::Context& ctx, vk::KernelLayout& layout) {
-    for (uint32_t b : {BINDING_PATH_TEXELS, BINDING_HIT_TEXELS, BINDING_QUEUE_TEXELS, BINDING_SHADOW_TEXELS, BINDING_PIXEL_ESTIMATE}) {
+    for (uint32_t b : gpu::kRendererTexelBindings) {
       buffers.emplace_back(ctx, 256, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
       buffers.back().createView(sceneTexelFormat(b));
       layout.bindTexel(b, buffers.back());
