@@ -11,23 +11,28 @@ layout(binding = BINDING_EARS_SAMPLING, TEXEL_FORMAT_EARS_SAMPLING) uniform read
 // factor) and hit; its radiance field, unused by a split child, carries (q, copy index bits, parent slot bits, 0).
 uint copyQueueBase() { return 2u * pc.queueCapacity; }
 
-// The factor at a vertex (cell key `key`) from the finest level that has learned enough, and whether one had;
-// throughput roulette (the sqrt rule, judged by the throughput that reaches the vertex) where none has.
+// The factor at a vertex (cell key `key`) from its cells' moments, each level shrunk toward the coarser ones
+// (earsShrunk), once one of them has learned enough, and whether one had; throughput roulette (the sqrt rule,
+// judged by the throughput that reaches the vertex) where none has.
 float earsVertexFactor(PathState path, uint key, out bool trained) {
-  trained = false;
-  uint cell = 0u;
-  vec4 moment = vec4(0.0);
-  for (uint level = 0u; level < kEarsLevels && !trained && earsHeader.imageFactor > 0.0; ++level) {
-    cell = earsCellIndex(key, level, earsHeader.cellMask);
-    moment = imageLoad(earsLearned, int(kEarsSamplingTexels * cell));
-    trained = moment.w >= kEarsMinCellCopies;
+  vec3 moment = vec3(0.0), variance = vec3(0.0);
+  float copies = 0.0;
+  for (int level = int(kEarsLevels) - 1; level >= 0; --level) {
+    uint cell = earsCellIndex(key, uint(level), earsHeader.cellMask);
+    vec4 m = imageLoad(earsLearned, int(kEarsSamplingTexels * cell));
+    vec3 v = imageLoad(earsLearned, int(kEarsSamplingTexels * cell + 1u)).rgb;
+    if (m.w > 0.0) {
+      moment = earsShrunk(moment, copies, m.rgb, m.w);
+      variance = earsShrunk(variance, copies, v, m.w);
+      copies = max(copies, m.w);
+    }
   }
+  trained = copies >= kEarsMinCellCopies && earsHeader.imageFactor > 0.0;
   float q = 1.0;
   if (trained) {
     vec3 estimate = loadPixelEstimate(path.pixel).rgb;
     vec3 t = path.throughput.rgb / sqrt(estimate * estimate + earsHeader.epsilon);
-    vec3 variance = imageLoad(earsLearned, int(kEarsSamplingTexels * cell + 1u)).rgb;
-    q = min(earsFactor(t, moment.rgb, variance, earsHeader.imageFactor), kEarsMaxFactor);
+    q = min(earsFactor(t, moment, variance, earsHeader.imageFactor), kEarsMaxFactor);
   } else if (rouletteApplies(path.depth, kRouletteDepth)) {
     q = rouletteSurvival(sqrt(maxComponent(path.throughput.rgb) * path.throughput.w * path.origin.w), 1.0, kRouletteMaxSurvival);
   }

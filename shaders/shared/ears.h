@@ -19,7 +19,8 @@ VKMC_CONST uint kEarsDepths = 4u;                 // vertices of a path that tra
 VKMC_CONST float kEarsFactorMin = 0.05f;          // EARS's clamp of q
 VKMC_CONST float kEarsFactorMax = 20.0f;
 VKMC_CONST float kEarsOutlierShare = 0.001f;      // V_img leaves out this share of its noisiest pixels (EARS: 10 samples)
-VKMC_CONST float kEarsMinCellCopies = 256.0f;     // a cell decides once it has learned from this many copies
+VKMC_CONST float kEarsMinCellCopies = 256.0f;     // a vertex decides once one of its cells has learned from this many
+VKMC_CONST float kEarsShrinkCopies = 1024.0f;     // a level's moments count half against the coarser ones' at this many
 VKMC_CONST uint kEarsLevels = 3u;                 // grids of 64, 16 and 4 cells along the longest side
 VKMC_CONST uint kEarsLevelShift = 2u;
 VKMC_CONST uint kEarsNoSplitDepth = 64u;          // from this depth on q <= kRouletteMaxSurvival: every path ends
@@ -68,9 +69,8 @@ struct EarsSlot {
 
 // A vertex's place in the cache: its cell of the finest grid (kEarsGridResolution along the scene's longest side,
 // coordinates clamped to 7 bits) and its geometric normal's dominant signed axis, packed as x | y << 7 | z << 14 |
-// bin << 21. The cache holds kEarsLevels grids, each kEarsLevelShift bits coarser than the one before: a vertex
-// reads the finest whose cell has learned enough (kEarsMinCellCopies), as EARS's octree refines only cells with
-// enough samples.
+// bin << 21. The cache holds kEarsLevels grids, each kEarsLevelShift bits coarser than the one before; a vertex
+// reads its cell at every level (earsShrunk), as EARS's octree refines only cells with enough samples.
 VKMC_FN uint earsCellKey(vec3 p, vec3 n, vec4 grid) {
   vec3 g = clamp(floor((p - vec3(grid)) * grid.w), vec3(0.0f), vec3(127.0f));
   vec3 a = abs(n);
@@ -112,6 +112,15 @@ VKMC_FN void earsSampling(vec4 sum, vec4 sumSquares, INOUT(vec4) momentPerCost, 
   if (!(cost > 0.0f)) return;
   momentPerCost = vec4(second / cost, n);
   variancePerCost = vec4(max(second - mean * mean, vec3(0.0f)) / cost, cost);
+}
+
+// A level's learned statistic shrunk toward the coarser levels' (taken coarsest first) by how many copies it has
+// learned from: a few hundred copies of a small cell rarely hold the rare bright paths that set its second
+// moment, and a moment too small roulettes them (docs/ears.md, 2026-11-29). The first level with copies is taken
+// as it is.
+VKMC_FN vec3 earsShrunk(vec3 coarser, float coarserCopies, vec3 level, float copies) {
+  if (!(coarserCopies > 0.0f)) return level;
+  return mix(coarser, level, copies / (copies + kEarsShrinkCopies));
 }
 
 // The histogram bin of a vertex's decision.

@@ -27,6 +27,19 @@ TEST(EarsFactor, SecondMomentDecidesRouletteVarianceDecidesSplitting) {
   EXPECT_FLOAT_EQ(earsFactor(vec3(1.0f), vec3(0.25f), vec3(0.2f), 3.0f), 3.0f * std::sqrt(0.2f));
 }
 
+TEST(EarsShrunk, ALevelCountsByItsCopiesAgainstTheCoarserOnes) {
+  const vec3 coarse(4.0f), fine(1.0f);
+  // Nothing coarser learned: the level as it is.
+  EXPECT_EQ(earsShrunk(vec3(0.0f), 0.0f, fine, 3.0f), fine);
+  // No copies at this level: the coarser; kEarsShrinkCopies of them: halfway; many: nearly the level's own.
+  EXPECT_EQ(earsShrunk(coarse, 5000.0f, fine, 0.0f), coarse);
+  EXPECT_FLOAT_EQ(earsShrunk(coarse, 5000.0f, fine, kEarsShrinkCopies).x, 2.5f);
+  EXPECT_NEAR(earsShrunk(coarse, 5000.0f, fine, 1e6f).x, 1.0f, 0.01f);
+  // A fine cell that has not yet met the rare bright paths (moment 1 where its region's is 4) is not taken at
+  // its word after a few hundred copies: the moment that decides roulette stays well above 1.
+  EXPECT_GT(earsShrunk(coarse, 5000.0f, fine, 256.0f).x, 3.0f);
+}
+
 TEST(EarsFactor, ClampedToEarsRange) {
   EXPECT_FLOAT_EQ(earsFactor(vec3(1e-6f), vec3(1.0f), vec3(1.0f), 1.0f), kEarsFactorMin);
   EXPECT_FLOAT_EQ(earsFactor(vec3(1e6f), vec3(1.0f), vec3(1.0f), 1.0f), kEarsFactorMax);
