@@ -1,4 +1,4 @@
-// EARS's cache: buffers sized to the device, the grid laid over the scene, and the image statistics between passes.
+// EARS's cache: buffers sized to the device, the grid laid over the scene, the image factor between passes.
 #include "render/ears_cache.h"
 
 #include <algorithm>
@@ -11,40 +11,6 @@ namespace vkmc {
 
 namespace {
 constexpr uint32_t kMaxCells = 1u << 19;  // 32 MiB: far more cells than a scene's surfaces fill at 64 per side
-}
-
-EarsImageStatistics earsImageStatistics(const Film& film, const gpu::FilmPixel* batch, double epsilon) {
-  EarsImageStatistics s;
-  const size_t pixels = film.pixels();
-  s.pixelEstimate = runningPixelEstimate(film, batch);
-  std::vector<double> relative;  // per pixel: the channels' mean of variance / (I^2 + epsilon)
-  relative.reserve(pixels);
-  for (size_t p = 0; p < pixels; ++p) {
-    double n = double(film.count[p]) + (batch ? batch[p].sum.w : 0.0);
-    if (n < 1.0) continue;
-    if (n < 2.0) continue;
-    glm::dvec3 mean, variance(0.0);
-    for (int c = 0; c < 3; ++c) {
-      double total = film.sum[3 * p + c] + (batch ? batch[p].sum[c] : 0.0);
-      double squares = film.sumSq[3 * p + c] + (batch ? batch[p].sumSq[c] : 0.0);
-      mean[c] = total / n;
-      variance[c] = std::max(0.0, (squares - n * mean[c] * mean[c]) / (n - 1.0));
-    }
-    double r = 0.0;
-    for (int c = 0; c < 3; ++c) r += variance[c] / (mean[c] * mean[c] + epsilon) / 3.0;
-    relative.push_back(r);
-  }
-  // The noisiest pixels left out (EARS's outlier rejection): a few fireflies would otherwise raise V_img, so
-  // lower every factor, so roulette harder, which makes more fireflies.
-  const size_t dropped = std::min(relative.size(), size_t(std::ceil(double(relative.size()) * gpu::kEarsOutlierShare)));
-  const size_t kept = relative.size() - dropped;
-  if (kept > 0) {
-    std::nth_element(relative.begin(), relative.begin() + (kept - 1), relative.end());
-    double sum = 0.0;
-    for (size_t i = 0; i < kept; ++i) sum += relative[i];
-    s.relativeVariance = sum / double(kept);
-  }
-  return s;
 }
 
 EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathSlots, bool enabled) : enabled_(enabled) {

@@ -1,29 +1,18 @@
 // EARS's learned cache on the device (shaders/shared/ears.h): its cells, each path slot's training records, the
-// header the kernels read, and, between passes, the image statistics every factor is scaled by. Without EARS the
-// bindings get 16-byte placeholders.
+// header the kernels read, and, between passes, the image factor every factor is scaled by
+// (ears_image_statistics.h). Without EARS the bindings get 16-byte placeholders.
 #pragma once
 #include <array>
 #include <cstdint>
 #include <vector>
 
 #include "../shaders/shared/layout.h"
-#include "render/film.h"
 #include "render/gpu_scene.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
 #include "vk/kernel.h"
 
 namespace vkmc {
-
-// The image statistics of the passes so far that the factors need.
-struct EarsImageStatistics {
-  std::vector<glm::vec4> pixelEstimate;  // each pixel's mean, w its luminance (0 without samples)
-  // Per sample: mean over pixels and channels of variance / (I^2 + epsilon), the noisiest kEarsOutlierShare of
-  // pixels left out.
-  double relativeVariance = 0.0;
-};
-// From the folded film and the device's unfolded batch (null: none).
-EarsImageStatistics earsImageStatistics(const Film& film, const gpu::FilmPixel* batch, double epsilon);
 
 // What a render's cache learned, for the report.
 struct EarsSummary {

@@ -323,6 +323,7 @@ uint32_t PathRenderer::trainEarsPasses(const Film& film, RenderStats& stats) {
   }
   earsTraining_ = false;
   film_.zero();
+  resetEarsBatchSums();
   return samples;
 }
 
@@ -349,11 +350,20 @@ const gpu::FilmPixel* PathRenderer::currentBatch(std::vector<gpu::FilmPixel>& co
   return copy.data();
 }
 
+// EARS after a pass: V_img of the pass against the estimate it read, then the next pass's estimate. The kernels
+// read the smoothed estimate (EARS reads a denoised one): a pixel's own mean from a few samples is often far below
+// its value, which would make t, and V_img's ratios, huge there.
 void PathRenderer::updateEarsStatistics(const Film& film, double raysPerSample) {
   std::vector<gpu::FilmPixel> copy;
-  EarsImageStatistics s = earsImageStatistics(film, currentBatch(copy), gpu::kEarsEpsilon);
-  setPixelEstimate(s.pixelEstimate);
-  ears_->setImageStatistics(raysPerSample, s.relativeVariance);
+  const gpu::FilmPixel* batch = currentBatch(copy);
+  std::vector<PixelSums> after = batchPixelSums(batch, film.pixels());
+  const std::vector<PixelSums> pass = passPixelSums(after, earsBatchBefore_);
+  ears_->setImageStatistics(raysPerSample, earsHaveEstimate_ ? earsRelativeVariance(pass, earsEstimate_, gpu::kEarsEpsilon)
+                                                             : earsRelativeVariance(pass, gpu::kEarsEpsilon));
+  earsBatchBefore_ = std::move(after);
+  earsEstimate_ = earsPixelEstimate(runningPixelEstimate(film, batch), settings_.width, settings_.height);
+  earsHaveEstimate_ = true;
+  setPixelEstimate(earsEstimate_.smoothed);
 }
 
 void PathRenderer::refreshPixelEstimate(const Film& film) {
@@ -370,8 +380,10 @@ void PathRenderer::foldFilm(Film& film) {
     film_.download(batch.data(), pixels * sizeof(gpu::FilmPixel));
     film.addBatch(batch.data());
   }
-  uploadPixelEstimate(film);
+  if (ears_->enabled() && !earsEstimate_.smoothed.empty()) setPixelEstimate(earsEstimate_.smoothed);  // the same film's
+  else uploadPixelEstimate(film);
   film_.zero();
+  resetEarsBatchSums();
 }
 
 void PathRenderer::setPixelEstimate(const std::vector<glm::vec4>& estimate) {
@@ -483,6 +495,12 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   auto stopRequested = [&] { return control.stop && control.stop->load() != 0; };
   if (ears_->enabled() && state.nextSample < settings_.spp && !stopRequested()) {
     if (inBatch > 0) foldFilm(state.film), inBatch = 0;  // the training passes' samples are dropped from the batch
+    earsBatchBefore_.assign(pixels, PixelSums{});
+    earsHaveEstimate_ = state.film.totalSamples() > 0;  // a resumed render's: the folded film's, smoothed
+    if (earsHaveEstimate_) {
+      earsEstimate_ = earsPixelEstimate(runningPixelEstimate(state.film), settings_.width, settings_.height);
+      setPixelEstimate(earsEstimate_.smoothed);
+    }
     earsSamples = trainEarsPasses(state.film, stats);
   }
   for (uint32_t s = state.nextSample; s < settings_.spp;) {

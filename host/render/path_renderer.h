@@ -17,6 +17,7 @@
 #include "render/render_kernels.h"
 #include "render/render_settings.h"
 #include "render/ears_cache.h"
+#include "render/ears_image_statistics.h"
 #include "render/film.h"
 #include "render/gpu_scene.h"
 #include "scene/camera_rig.h"
@@ -80,6 +81,12 @@ class PathRenderer {
   uint32_t trainEarsPasses(const Film& film, RenderStats& stats);
   bool earsTraining_ = false;  // a training pass: its own seed, its samples dropped
   void updateEarsStatistics(const Film& film, double raysPerSample);
+  // What V_img measures a pass against: the batch's sums before it (zeroed with the batch), and the pixel
+  // estimate the pass read (none before the render's first samples).
+  void resetEarsBatchSums() { earsBatchBefore_.assign(earsBatchBefore_.size(), PixelSums{}); }
+  std::vector<PixelSums> earsBatchBefore_;
+  EarsPixelEstimate earsEstimate_;
+  bool earsHaveEstimate_ = false;
   // Shadow-ray roulette's pixel estimate from every sample so far (the unfolded batch's too), after each pass.
   void refreshPixelEstimate(const Film& film);
   const gpu::FilmPixel* currentBatch(std::vector<gpu::FilmPixel>& copy);

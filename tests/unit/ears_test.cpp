@@ -1,5 +1,5 @@
-// EARS's pure functions (shaders/shared/ears.h) and the image statistics its factors are scaled by
-// (host/render/ears_cache.h).
+// EARS's pure functions (shaders/shared/ears.h) and the image statistic its factors are scaled by
+// (host/render/ears_image_statistics.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +7,7 @@
 #include "../shaders/shared/ears.h"
 #include "../shaders/shared/roulette.h"
 #include "analysis/error_metrics.h"
-#include "render/ears_cache.h"
+#include "render/ears_image_statistics.h"
 
 using namespace vkmc;
 using namespace vkmc::gpu;
@@ -109,37 +109,84 @@ TEST(EarsCell, GridCellsLevelsAndNormalBins) {
   }
 }
 
-TEST(EarsImageStatistics, RelativeVarianceAndEstimateFromFilmAndBatch) {
-  // Two pixels: one with samples 1 and 3 folded (mean 2, variance 2), one with samples 0 and 0 in the batch.
-  Film film(2, 1);
-  for (int c = 0; c < 3; ++c) film.sum[c] = 4.0, film.sumSq[c] = 10.0;
-  film.count[0] = 2;
+TEST(EarsImageStatistics, PassSumsAreTheBatchAfterMinusBefore) {
   FilmPixel batch[2] = {};
-  batch[1].sum.w = 2.0f;
-  const double eps = kRelMseEpsilon;
-  EarsImageStatistics s = earsImageStatistics(film, batch, eps);
-  EXPECT_FLOAT_EQ(s.pixelEstimate[0].x, 2.0f);
-  EXPECT_NEAR(s.pixelEstimate[0].w, 2.0f, 1e-5f);  // luminance of grey
-  EXPECT_FLOAT_EQ(s.pixelEstimate[1].x, 0.0f);
-  // The noisier pixel is the share left out (at least one): the other's 0 remains.
-  EXPECT_EQ(s.relativeVariance, 0.0);
-  // The batch adds to the folded sums: a third sample 2 leaves the mean at 2 and makes the variance 1.
-  batch[0].sum = vec4(2.0f, 2.0f, 2.0f, 1.0f);
-  batch[0].sumSq = vec4(4.0f, 4.0f, 4.0f, 0.0f);
-  s = earsImageStatistics(film, batch, eps);
-  EXPECT_FLOAT_EQ(s.pixelEstimate[0].x, 2.0f);
+  batch[0].sum = vec4(1.0f, 2.0f, 3.0f, 2.0f);
+  batch[0].sumSq = vec4(1.0f, 4.0f, 9.0f, 0.0f);
+  batch[1].sum.w = 1.0f;
+  batch[1].sumHigh = vec4(1.0f, 0.0f, 0.0f, 1.0f);  // one channel in the high range: 2^96 unscaled
+  std::vector<PixelSums> after = batchPixelSums(batch, 2);
+  EXPECT_EQ(after[0].n, 2.0);
+  EXPECT_EQ(after[0].sum, glm::dvec3(1.0, 2.0, 3.0));
+  EXPECT_EQ(after[0].sumSq, glm::dvec3(1.0, 4.0, 9.0));
+  EXPECT_EQ(after[1].sum.x, std::ldexp(1.0, 96));
+  std::vector<PixelSums> before = batchPixelSums(nullptr, 2);
+  before[0].n = 1.0;
+  before[0].sum = glm::dvec3(1.0);
+  before[0].sumSq = glm::dvec3(1.0);
+  std::vector<PixelSums> pass = passPixelSums(after, before);
+  EXPECT_EQ(pass[0].n, 1.0);
+  EXPECT_EQ(pass[0].sum, glm::dvec3(0.0, 1.0, 2.0));
+  EXPECT_EQ(pass[0].sumSq, glm::dvec3(0.0, 3.0, 8.0));
+  EXPECT_EQ(pass[1].n, 1.0);
 }
 
-TEST(EarsImageStatistics, MeanOverPixelsLeavesOutTheNoisiest) {
-  // 2000 pixels of two samples each: 1998 with samples 0 and 2 (relative variance 2 / (1 + eps)), two with 0 and
-  // 2000 (a firefly). A 0.1% share drops two pixels: the fireflies.
-  Film film(2000, 1);
-  for (size_t p = 0; p < 2000; ++p) {
-    const double hi = p < 2 ? 2000.0 : 2.0;
-    for (int c = 0; c < 3; ++c) film.sum[3 * p + c] = hi, film.sumSq[3 * p + c] = hi * hi;
-    film.count[p] = 2;
+TEST(EarsImageStatistics, OwnMeanWithoutAnEarlierEstimate) {
+  // Samples 1 and 3 in every channel: squared deviations 2 over 2 samples, relative to 2^2 + eps. Two such pixels
+  // (the 0.1% share leaves out one, at least one), and one with a single sample, which shows no spread and is
+  // not counted.
+  PixelSums two;
+  two.n = 2.0;
+  two.sum = glm::dvec3(4.0);
+  two.sumSq = glm::dvec3(10.0);
+  PixelSums one;
+  one.n = 1.0;
+  one.sum = glm::dvec3(5.0);
+  one.sumSq = glm::dvec3(25.0);
+  const double eps = kRelMseEpsilon;
+  EXPECT_NEAR(earsRelativeVariance({two, two, one}, eps), 1.0 / (4.0 + eps), 1e-12);
+  EXPECT_EQ(earsRelativeVariance({two, one}, eps), 0.0);  // the one pixel counted is the share left out
+}
+
+TEST(EarsImageStatistics, FirefliesCountAgainstTheEarlierEstimateAndTheLargestAreLeftOut) {
+  // 2000 pixels of one sample each, all estimated at 1 by earlier passes. Three fireflies (101, 51, 11); every
+  // other sample is 1. Against its own mean a single sample shows no error at all; against the estimate each
+  // firefly's is (x - 1)^2 / (1 + eps). The 0.1% share leaves out two pixels, the two largest: 10^2 / (1 + eps)
+  // remains, over the 1998 samples kept.
+  std::vector<PixelSums> pass(2000);
+  EarsPixelEstimate estimate;
+  estimate.mean.assign(2000, glm::vec4(1.0f));
+  estimate.smoothed = estimate.mean;
+  for (size_t p = 0; p < pass.size(); ++p) {
+    const double x = p == 7 ? 101.0 : p == 500 ? 51.0 : p == 1999 ? 11.0 : 1.0;
+    pass[p].n = 1.0;
+    pass[p].sum = glm::dvec3(x);
+    pass[p].sumSq = glm::dvec3(x * x);
   }
   const double eps = kRelMseEpsilon;
-  EarsImageStatistics s = earsImageStatistics(film, nullptr, eps);
-  EXPECT_NEAR(s.relativeVariance, 2.0 / (1.0 + eps), 1e-9);
+  EXPECT_EQ(earsRelativeVariance(pass, eps), 0.0);
+  EXPECT_NEAR(earsRelativeVariance(pass, estimate, eps), 100.0 / (1.0 + eps) / 1998.0, 1e-12);
+  // A pixel whose estimate is off by 1 adds 1 per sample, relative to its smoothed estimate: mean 2, smoothed 3.
+  estimate.mean[3] = glm::vec4(2.0f);
+  estimate.smoothed[3] = glm::vec4(3.0f);
+  EXPECT_NEAR(earsRelativeVariance(pass, estimate, eps), (100.0 / (1.0 + eps) + 1.0 / (9.0 + eps)) / 1998.0, 1e-12);
+}
+
+TEST(EarsImageStatistics, SmoothedEstimateIsTheBoxMeanClippedAtTheEdges) {
+  // 7 x 5 pixels, a single bright pixel at (3, 2): the 5 x 5 box spreads it over 25 pixels, 1/25 each; a corner
+  // box holds 9 pixels.
+  std::vector<glm::vec4> mean(35, glm::vec4(0.0f));
+  mean[2 * 7 + 3] = glm::vec4(25.0f);
+  EarsPixelEstimate e = earsPixelEstimate(mean, 7, 5);
+  EXPECT_EQ(e.mean, mean);
+  for (uint32_t y = 0; y < 5; ++y)
+    for (uint32_t x = 0; x < 7; ++x) {
+      const int dx = std::abs(int(x) - 3), dy = std::abs(int(y) - 2);
+      const int across = std::min(int(x), 2) + std::min(6 - int(x), 2) + 1, down = std::min(int(y), 2) + std::min(4 - int(y), 2) + 1;
+      const float expected = dx <= 2 && dy <= 2 ? 25.0f / float(across * down) : 0.0f;
+      EXPECT_NEAR(e.smoothed[y * 7 + x].x, expected, 1e-6f) << x << "," << y;
+    }
+  EXPECT_NEAR(e.smoothed[0].x, 0.0f, 0.0f);
+  mean.assign(35, glm::vec4(1.0f));  // a constant stays constant, edges included
+  for (const glm::vec4& v : earsPixelEstimate(mean, 7, 5).smoothed) EXPECT_NEAR(v.x, 1.0f, 1e-6f);
 }

@@ -1,0 +1,43 @@
+// The image statistics EARS scales its factors by (shaders/shared/ears.h): the pixel estimate the kernels read,
+// and the image's relative variance per sample, V_img, of the pass just rendered.
+#pragma once
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+#include "../shaders/shared/layout.h"
+
+namespace vkmc {
+
+// One pixel's samples in a span of passes: their count, and per channel their sum and sum of squares.
+struct PixelSums {
+  double n = 0.0;
+  glm::dvec3 sum{0.0}, sumSq{0.0};
+};
+
+// The device batch's sums per pixel, its high-range sums added back (null batch: zeros).
+std::vector<PixelSums> batchPixelSums(const gpu::FilmPixel* batch, size_t pixels);
+// after - before, pixel by pixel: the samples one pass added to the batch.
+std::vector<PixelSums> passPixelSums(const std::vector<PixelSums>& after, const std::vector<PixelSums>& before);
+
+// Each pixel's mean so far (film.h runningPixelEstimate), and that mean averaged over the
+// (2 kEarsSmoothingRadius + 1)^2 pixels around it: the kernels' t = beta / sqrt(I^2 + eps) and V_img's
+// denominators use the smoothed one, as EARS uses a denoised image. A pixel's own mean from a few samples is often
+// far below its value (the light not found yet), which would make both huge there.
+constexpr int kEarsSmoothingRadius = 2;
+struct EarsPixelEstimate {
+  std::vector<glm::vec4> mean, smoothed;
+};
+EarsPixelEstimate earsPixelEstimate(std::vector<glm::vec4> mean, uint32_t width, uint32_t height);
+
+// EARS's V_img (its recursive_path.cpp): every sample's squared error against the pixel estimate the pass read,
+// relative as in relMSE, (x - I)^2 / (I_smoothed^2 + epsilon), averaged over the pass's samples and channels, with
+// the pixels that hold the largest kEarsOutlierShare of it left out. That estimate came from earlier samples, so
+// a firefly counts in full; measured against its own pixel's mean a sample's ratio cannot exceed the pixel's
+// sample count, which made V_img some 80x too small (docs/ears.md).
+double earsRelativeVariance(const std::vector<PixelSums>& pass, const EarsPixelEstimate& used, double epsilon);
+// Before any earlier samples (the first training pass): against each pixel's own mean, pixels of two or more.
+double earsRelativeVariance(const std::vector<PixelSums>& pass, double epsilon);
+
+}  // namespace vkmc
