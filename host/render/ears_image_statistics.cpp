@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "error.h"
+
 namespace vkmc {
 
 std::vector<PixelSums> batchPixelSums(const gpu::FilmPixel* batch, size_t pixels) {
@@ -52,7 +54,8 @@ EarsPixelEstimate earsPixelEstimate(std::vector<glm::vec4> mean, uint32_t width,
       }
     return out;
   };
-  if (e.mean.size() == size_t(width) * height) e.smoothed = blur(blur(e.mean, true), false);
+  if (e.mean.size() != size_t(width) * height) throw Error("internal error: EARS's pixel estimate is not the image's size");
+  e.smoothed = blur(blur(e.mean, true), false);
   return e;
 }
 
@@ -76,7 +79,9 @@ double outlierRejectedMean(const std::vector<double>& error, const std::vector<d
 }
 }  // namespace
 
-double earsRelativeVariance(const std::vector<PixelSums>& pass, const EarsPixelEstimate& used, double epsilon) {
+double earsRelativeVariance(const std::vector<PixelSums>& pass, const EarsPixelEstimate& earlier, double epsilon) {
+  if (earlier.mean.size() != pass.size() || earlier.smoothed.size() != pass.size())
+    throw Error("internal error: EARS's pixel estimate and the pass's sums differ in size");
   std::vector<double> error, samples;
   for (size_t p = 0; p < pass.size(); ++p) {
     const PixelSums& s = pass[p];
@@ -84,24 +89,8 @@ double earsRelativeVariance(const std::vector<PixelSums>& pass, const EarsPixelE
     double e = 0.0;
     for (int c = 0; c < 3; ++c) {
       // Sum over the samples of (x - I)^2 = sum x^2 - 2 I sum x + n I^2.
-      const double i = used.mean[p][c], scale = used.smoothed[p][c];
+      const double i = earlier.mean[p][c], scale = earlier.smoothed[p][c];
       e += std::max(0.0, s.sumSq[c] - 2.0 * i * s.sum[c] + s.n * i * i) / (scale * scale + epsilon);
-    }
-    error.push_back(e / 3.0);
-    samples.push_back(s.n);
-  }
-  return outlierRejectedMean(error, samples);
-}
-
-double earsRelativeVariance(const std::vector<PixelSums>& pass, double epsilon) {
-  std::vector<double> error, samples;
-  for (size_t p = 0; p < pass.size(); ++p) {
-    const PixelSums& s = pass[p];
-    if (!(s.n >= 2.0)) continue;  // one sample shows no spread around its own mean
-    double e = 0.0;
-    for (int c = 0; c < 3; ++c) {
-      const double mean = s.sum[c] / s.n;
-      e += std::max(0.0, s.sumSq[c] - s.sum[c] * mean) / (mean * mean + epsilon);
     }
     error.push_back(e / 3.0);
     samples.push_back(s.n);

@@ -29,15 +29,16 @@ constexpr int kEarsSmoothingRadius = 2;
 struct EarsPixelEstimate {
   std::vector<glm::vec4> mean, smoothed;
 };
+// Throws if mean does not hold width x height pixels.
 EarsPixelEstimate earsPixelEstimate(std::vector<glm::vec4> mean, uint32_t width, uint32_t height);
 
-// EARS's V_img (its recursive_path.cpp): every sample's squared error against the pixel estimate the pass read,
-// relative as in relMSE, (x - I)^2 / (I_smoothed^2 + epsilon), averaged over the pass's samples and channels, with
-// the pixels that hold the largest kEarsOutlierShare of it left out. That estimate came from earlier samples, so
-// a firefly counts in full; measured against its own pixel's mean a sample's ratio cannot exceed the pixel's
-// sample count, which made V_img some 80x too small (docs/ears.md).
-double earsRelativeVariance(const std::vector<PixelSums>& pass, const EarsPixelEstimate& used, double epsilon);
-// Before any earlier samples (the first training pass): against each pixel's own mean, pixels of two or more.
-double earsRelativeVariance(const std::vector<PixelSums>& pass, double epsilon);
+// EARS's V_img (its recursive_path.cpp): every sample's squared error against its pixel's mean over the earlier
+// passes, relative as in relMSE but to the smoothed mean the pass read, (x - I)^2 / (I_smoothed^2 + epsilon),
+// averaged over the pass's samples and channels, with the pixels that hold the largest kEarsOutlierShare of it
+// left out. The earlier passes' mean is independent of the pass's samples, so a firefly counts in full; measured
+// against its own pixel's mean a sample's ratio cannot exceed the pixel's sample count, which made V_img some 80x
+// too small (docs/ears.md). (EARS uses its denoised image for both; the raw mean keeps the numerator free of the
+// box's blur at edges.) Throws on a size mismatch.
+double earsRelativeVariance(const std::vector<PixelSums>& pass, const EarsPixelEstimate& earlier, double epsilon);
 
 }  // namespace vkmc

@@ -350,16 +350,17 @@ const gpu::FilmPixel* PathRenderer::currentBatch(std::vector<gpu::FilmPixel>& co
   return copy.data();
 }
 
-// EARS after a pass: V_img of the pass against the estimate it read, then the next pass's estimate. The kernels
-// read the smoothed estimate (EARS reads a denoised one): a pixel's own mean from a few samples is often far below
-// its value, which would make t, and V_img's ratios, huge there.
+// EARS after a pass: V_img of the pass against the earlier passes' estimate, then the next pass's estimate. The
+// kernels read the smoothed estimate (EARS reads a denoised one): a pixel's own mean from a few samples is often
+// far below its value, which would make t, and V_img's ratios, huge there.
 void PathRenderer::updateEarsStatistics(const Film& film, double raysPerSample) {
   std::vector<gpu::FilmPixel> copy;
   const gpu::FilmPixel* batch = currentBatch(copy);
   std::vector<PixelSums> after = batchPixelSums(batch, film.pixels());
   const std::vector<PixelSums> pass = passPixelSums(after, earsBatchBefore_);
-  ears_->setImageStatistics(raysPerSample, earsHaveEstimate_ ? earsRelativeVariance(pass, earsEstimate_, gpu::kEarsEpsilon)
-                                                             : earsRelativeVariance(pass, gpu::kEarsEpsilon));
+  // Without earlier samples (the first training pass) there is nothing to measure against: V_img 0, no factor,
+  // throughput roulette for the next pass too.
+  ears_->setImageStatistics(raysPerSample, earsHaveEstimate_ ? earsRelativeVariance(pass, earsEstimate_, gpu::kEarsEpsilon) : 0.0);
   earsBatchBefore_ = std::move(after);
   earsEstimate_ = earsPixelEstimate(runningPixelEstimate(film, batch), settings_.width, settings_.height);
   earsHaveEstimate_ = true;
@@ -380,7 +381,8 @@ void PathRenderer::foldFilm(Film& film) {
     film_.download(batch.data(), pixels * sizeof(gpu::FilmPixel));
     film.addBatch(batch.data());
   }
-  if (ears_->enabled() && !earsEstimate_.smoothed.empty()) setPixelEstimate(earsEstimate_.smoothed);  // the same film's
+  // Under EARS the estimate of the passes so far, as updateEarsStatistics computed it from the film this folds.
+  if (ears_->enabled() && earsHaveEstimate_) setPixelEstimate(earsEstimate_.smoothed);
   else uploadPixelEstimate(film);
   film_.zero();
   resetEarsBatchSums();
@@ -472,6 +474,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   if (inBatch > 0) film_.upload(state.batch.data(), size_t(pixels) * sizeof(gpu::FilmPixel));
   // Shadow-ray roulette refreshes its estimate after every pass, from the batch too, where the film is mapped
   // (a discrete GPU would download the film each pass: there, at each fold, as before). A resume does the same.
+  // Under EARS both read EARS's smoothed estimate instead (updateEarsStatistics): as unbiased.
   const bool shadowRoulette = settings_.estimator.shadowRrThreshold > 0.0f && ctx_.unifiedMemory();
   if (shadowRoulette) refreshPixelEstimate(state.film);
   else if (state.film.totalSamples() + state.film.totalNonfinite() > 0) uploadPixelEstimate(state.film);
@@ -494,6 +497,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   uint32_t earsSamples = 1;
   auto stopRequested = [&] { return control.stop && control.stop->load() != 0; };
   if (ears_->enabled() && state.nextSample < settings_.spp && !stopRequested()) {
+    earsHaveEstimate_ = false;  // nothing from an earlier render() on this renderer
     if (inBatch > 0) foldFilm(state.film), inBatch = 0;  // the training passes' samples are dropped from the batch
     earsBatchBefore_.assign(pixels, PixelSums{});
     earsHaveEstimate_ = state.film.totalSamples() > 0;  // a resumed render's: the folded film's, smoothed

@@ -17,11 +17,11 @@ uint copyQueueBase() { return 2u * pc.queueCapacity; }
 float earsVertexFactor(PathState path, uint key, out bool trained) {
   vec3 moment = vec3(0.0), variance = vec3(0.0);
   float copies = 0.0;
-  for (int level = int(kEarsLevels) - 1; level >= 0; --level) {
+  for (int level = int(kEarsLevels) - 1; level >= 0 && earsHeader.imageFactor > 0.0; --level) {
     uint cell = earsCellIndex(key, uint(level), earsHeader.cellMask);
     vec4 m = imageLoad(earsLearned, int(kEarsSamplingTexels * cell));
-    vec3 v = imageLoad(earsLearned, int(kEarsSamplingTexels * cell + 1u)).rgb;
     if (m.w > 0.0) {
+      vec3 v = imageLoad(earsLearned, int(kEarsSamplingTexels * cell + 1u)).rgb;
       moment = earsShrunk(moment, copies, m.rgb, m.w);
       variance = earsShrunk(variance, copies, v, m.w);
       copies = max(copies, m.w);
