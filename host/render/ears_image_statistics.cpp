@@ -24,14 +24,14 @@ std::vector<PixelSums> batchPixelSums(const gpu::FilmPixel* batch, size_t pixels
   return sums;
 }
 
-std::vector<PixelSums> passPixelSums(const std::vector<PixelSums>& after, const std::vector<PixelSums>& before) {
-  std::vector<PixelSums> pass(after);
-  for (size_t p = 0; p < std::min(pass.size(), before.size()); ++p) {
-    pass[p].n -= before[p].n;
-    pass[p].sum -= before[p].sum;
-    pass[p].sumSq -= before[p].sumSq;
+std::vector<PixelSums> passPixelSums(const std::vector<PixelSums>& after, std::vector<PixelSums> before) {
+  before.resize(after.size());  // none before: zeros
+  for (size_t p = 0; p < after.size(); ++p) {
+    before[p].n = after[p].n - before[p].n;
+    before[p].sum = after[p].sum - before[p].sum;
+    before[p].sumSq = after[p].sumSq - before[p].sumSq;
   }
-  return pass;
+  return before;
 }
 
 EarsPixelEstimate earsPixelEstimate(std::vector<glm::vec4> mean, uint32_t width, uint32_t height) {

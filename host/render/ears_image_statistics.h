@@ -18,8 +18,9 @@ struct PixelSums {
 
 // The device batch's sums per pixel, its high-range sums added back (null batch: zeros).
 std::vector<PixelSums> batchPixelSums(const gpu::FilmPixel* batch, size_t pixels);
-// after - before, pixel by pixel: the samples one pass added to the batch.
-std::vector<PixelSums> passPixelSums(const std::vector<PixelSums>& after, const std::vector<PixelSums>& before);
+// after - before, pixel by pixel: the samples one pass added to the batch. before is taken by value, so a caller
+// done with it moves it in and its storage holds the result (a frame's sums are 56 bytes a pixel).
+std::vector<PixelSums> passPixelSums(const std::vector<PixelSums>& after, std::vector<PixelSums> before);
 
 // Each pixel's mean so far (film.h runningPixelEstimate), and that mean averaged over the
 // (2 kEarsSmoothingRadius + 1)^2 pixels around it: the kernels' t = beta / sqrt(I^2 + eps) and V_img's

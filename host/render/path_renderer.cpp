@@ -357,7 +357,7 @@ void PathRenderer::updateEarsStatistics(const Film& film, double raysPerSample) 
   std::vector<gpu::FilmPixel> copy;
   const gpu::FilmPixel* batch = currentBatch(copy);
   std::vector<PixelSums> after = batchPixelSums(batch, film.pixels());
-  const std::vector<PixelSums> pass = passPixelSums(after, earsBatchBefore_);
+  const std::vector<PixelSums> pass = passPixelSums(after, std::move(earsBatchBefore_));
   // Without earlier samples (the first training pass) there is nothing to measure against: V_img 0, no factor,
   // throughput roulette for the next pass too.
   ears_->setImageStatistics(raysPerSample, earsHaveEstimate_ ? earsRelativeVariance(pass, earsEstimate_, gpu::kEarsEpsilon) : 0.0);
