@@ -6,19 +6,18 @@
 #include <numeric>
 
 #include "error.h"
+#include "render/film.h"
 
 namespace vkmc {
 
 std::vector<PixelSums> batchPixelSums(const gpu::FilmPixel* batch, size_t pixels) {
   std::vector<PixelSums> sums(pixels);
   if (!batch) return sums;
-  const double unscale = 1.0 / double(gpu::kFilmHighScale);
   for (size_t p = 0; p < pixels; ++p) {
-    const gpu::FilmPixel& f = batch[p];
-    sums[p].n = f.sum.w;
+    sums[p].n = batch[p].sum.w;
     for (int c = 0; c < 3; ++c) {
-      sums[p].sum[c] = double(f.sum[c]) + double(f.sumHigh[c]) * unscale;
-      sums[p].sumSq[c] = double(f.sumSq[c]) + double(f.sumSqHigh[c]) * unscale * unscale;
+      sums[p].sum[c] = batchChannelSum(batch[p], c);
+      sums[p].sumSq[c] = batchChannelSumSq(batch[p], c);
     }
   }
   return sums;

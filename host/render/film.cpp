@@ -19,12 +19,20 @@ Film::Film(uint32_t w, uint32_t h)
       replicateSum(3 * gpu::kSampleReplicates * pixels(), 0.0),
       replicateCount(gpu::kSampleReplicates * pixels(), 0) {}
 
+namespace {
+constexpr double kFilmHighUnscale = 1.0 / double(gpu::kFilmHighScale);  // 2^96: exact
+}
+
+double batchChannelSum(const gpu::FilmPixel& f, int c) { return f.sum[c] + double(f.sumHigh[c]) * kFilmHighUnscale; }
+double batchChannelSumSq(const gpu::FilmPixel& f, int c) {
+  return f.sumSq[c] + double(f.sumSqHigh[c]) * (kFilmHighUnscale * kFilmHighUnscale);
+}
+
 void Film::addBatch(const gpu::FilmPixel* px) {
-  const double unscale = 1.0 / double(gpu::kFilmHighScale);  // 2^96: exact
   for (size_t p = 0; p < pixels(); ++p) {
     for (int c = 0; c < 3; ++c) {
-      sum[3 * p + c] += px[p].sum[c] + double(px[p].sumHigh[c]) * unscale;
-      sumSq[3 * p + c] += px[p].sumSq[c] + double(px[p].sumSqHigh[c]) * (unscale * unscale);
+      sum[3 * p + c] += batchChannelSum(px[p], c);
+      sumSq[3 * p + c] += batchChannelSumSq(px[p], c);
     }
     count[p] += static_cast<uint64_t>(px[p].sum[3]);
     nonfinite[p] += static_cast<uint64_t>(px[p].sumSq[3]);
@@ -33,7 +41,7 @@ void Film::addBatch(const gpu::FilmPixel* px) {
     const uint32_t last = gpu::kSampleReplicates - 1;
     double rest[3];
     uint64_t restCount = static_cast<uint64_t>(px[p].sum[3]);
-    for (int c = 0; c < 3; ++c) rest[c] = px[p].sum[c] + double(px[p].sumHigh[c]) * unscale;
+    for (int c = 0; c < 3; ++c) rest[c] = batchChannelSum(px[p], c);
     for (uint32_t r = 0; r < last; ++r) {
       for (int c = 0; c < 3; ++c) {
         replicateSum[(p * gpu::kSampleReplicates + r) * 3 + c] += px[p].replicate[r][c];
@@ -54,7 +62,7 @@ std::vector<glm::vec4> runningPixelEstimate(const Film& film, const gpu::FilmPix
     if (n < 1.0) continue;
     glm::dvec3 mean;
     for (int c = 0; c < 3; ++c) {
-      double batchSum = batch ? batch[p].sum[c] + double(batch[p].sumHigh[c]) / double(gpu::kFilmHighScale) : 0.0;
+      double batchSum = batch ? batchChannelSum(batch[p], c) : 0.0;
       mean[c] = (film.sum[3 * p + c] + batchSum) / n;
     }
     estimate[p] = glm::vec4(glm::vec3(mean), gpu::luminance(glm::vec3(mean)));

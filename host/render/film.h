@@ -48,6 +48,11 @@ struct Film {
   uint64_t totalHighRange() const;
 };
 
+// A batch pixel's sum and sum of squares of channel c in double, its high-range sums (times kFilmHighScale)
+// added back.
+double batchChannelSum(const gpu::FilmPixel& f, int c);
+double batchChannelSumSq(const gpu::FilmPixel& f, int c);
+
 // The running pixel estimate that shadow-ray roulette and EARS compare contributions against: per pixel the mean
 // of the folded film and, when given, the device's unfolded batch (rgb), and its luminance (w); 0 where no
 // sample is yet.
