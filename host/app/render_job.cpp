@@ -72,37 +72,58 @@ namespace {
 // What rr ears learned: the cache's size and use, and each depth's vertices by factor (untrained: throughput
 // roulette; q < 1: roulette; q = 1; q > 1: splitting).
 nlohmann::json earsJson(const EarsSummary& e) {
-  nlohmann::json depths = nlohmann::json::array();
-  for (const auto& row : e.factors)
-    depths.push_back({{"untrained", row[gpu::kEarsBinFallback]}, {"roulette", row[gpu::kEarsBinRoulette]},
-                      {"kept", row[gpu::kEarsBinOne]}, {"split", row[gpu::kEarsBinSplit]}});
-  return {{"cells", e.cells},
-          {"occupied_cells", e.occupiedCells},
-          {"trusted_cells", e.trustedCells},
-          {"device_bytes", e.deviceBytes},
-          {"learning_passes", e.learningPasses},
-          {"training_spp", e.trainingSamples},
-          {"image_factor", e.imageFactor},
-          {"training_copies", e.copies},
-          {"mean_lr", {e.meanLr.x, e.meanLr.y, e.meanLr.z}},
-          {"mean_lr_squared", {e.meanLrSquared.x, e.meanLrSquared.y, e.meanLrSquared.z}},
-          {"mean_rays", e.meanRays},
-          {"factors_by_depth", depths},
-          {"note", "the last depth row counts every deeper vertex"}};
+  auto byDepth = [](const auto& rows) {
+    nlohmann::json depths = nlohmann::json::array();
+    for (const auto& row : rows)
+      depths.push_back({{"untrained", row[gpu::kEarsBinFallback]}, {"roulette", row[gpu::kEarsBinRoulette]},
+                        {"kept", row[gpu::kEarsBinOne]}, {"split", row[gpu::kEarsBinSplit]}});
+    return depths;
+  };
+  nlohmann::json j = {{"cells", e.cells},
+                       {"occupied_cells", e.occupiedCells},
+                       {"trusted_cells", e.trustedCells},
+                       {"device_bytes", e.deviceBytes},
+                       {"learning_passes", e.learningPasses},
+                       {"training_spp", e.trainingSamples},
+                       {"image_factor", e.imageFactor},
+                       {"training_copies", e.copies},
+                       {"mean_lr", {e.meanLr.x, e.meanLr.y, e.meanLr.z}},
+                       {"mean_lr_squared", {e.meanLrSquared.x, e.meanLrSquared.y, e.meanLrSquared.z}},
+                       {"mean_rays", e.meanRays},
+                       {"factors_by_depth", byDepth(e.factors)},
+                       {"learns_light_samples", e.learnsLight},
+                       {"note", "the last depth row counts every deeper vertex"}};
+  if (e.learnsLight) {
+    j["light_cells"] = {{"occupied", e.occupiedLightCells}, {"trusted", e.trustedLightCells}};
+    j["training_light_samples"] = e.lightSamples;
+    j["mean_light_v"] = {e.meanV.x, e.meanV.y, e.meanV.z};
+    j["mean_light_v_squared"] = {e.meanVSquared.x, e.meanVSquared.y, e.meanVSquared.z};
+    j["mean_light_rays"] = e.meanLightRays;
+    j["light_factors_by_depth"] = byDepth(e.lightFactors);
+    j["light_note"] = "light factors count copies (untrained: light_samples as without ears; roulette: qL < 1, "
+                      "fewer shadow rays; split: qL > 1)";
+  }
+  return j;
 }
 
 // One line: the cache and the first vertices' decisions.
 std::string earsLine(const EarsSummary& e) {
-  char buf[512];
+  char buf[640];
   const auto& r = e.factors[0];
-  const double n = double(r[0] + r[1] + r[2] + r[3]);
+  const auto& l = e.lightFactors[0];
+  const double n = double(r[0] + r[1] + r[2] + r[3]), nl = double(l[0] + l[1] + l[2] + l[3]);
   auto pct = [&](uint64_t v) { return n > 0 ? 100.0 * double(v) / n : 0.0; };
+  auto lightPct = [&](uint64_t v) { return nl > 0 ? 100.0 * double(v) / nl : 0.0; };
+  char light[160] = "";
+  if (e.learnsLight)
+    std::snprintf(light, sizeof(light), "; their light samples: %.0f%% untrained, %.0f%% rouletted, %.0f%% split",
+                  lightPct(l[gpu::kEarsBinFallback]), lightPct(l[gpu::kEarsBinRoulette]), lightPct(l[gpu::kEarsBinSplit]));
   std::snprintf(buf, sizeof(buf),
                 "ears        %u spp of training passes (not in the image), %u learning passes; cells %u of %u used "
-                "(%u trusted), %.1f MiB; first hits: %.0f%% untrained, %.0f%% rouletted, %.0f%% kept, %.0f%% split\n",
+                "(%u trusted), %.1f MiB; first hits: %.0f%% untrained, %.0f%% rouletted, %.0f%% kept, %.0f%% split%s\n",
                 e.trainingSamples, e.learningPasses, e.occupiedCells, e.cells, e.trustedCells, double(e.deviceBytes) / (1 << 20),
                 pct(r[gpu::kEarsBinFallback]), pct(r[gpu::kEarsBinRoulette]), pct(r[gpu::kEarsBinOne]),
-                pct(r[gpu::kEarsBinSplit]));
+                pct(r[gpu::kEarsBinSplit]), light);
   return buf;
 }
 }  // namespace

@@ -85,9 +85,11 @@ std::string EstimatorConfig::summary() const {
   s << "nee " << nameOf("nee", *this) << ", mis " << nameOf("mis", *this) << ", bsdf " << nameOf("bsdf_sampling", *this)
     << ", lights " << nameOf("light_select", *this) << "/" << nameOf("light_sampling", *this) << ", rr " << nameOf("rr", *this);
   if (rr == RouletteMode::Fixed) s << " (q " << rrQ << ", c " << rrC << ")";
-  if (rr == RouletteMode::Ears) s << " (learned roulette and splitting at every vertex; throughput roulette from depth "
-                                  << rrDepth << " where nothing is learned yet)";
-  else if (rr != RouletteMode::None) s << " from depth " << rrDepth;
+  if (rr == RouletteMode::Ears) {
+    s << " (learned roulette and splitting at every vertex";
+    if (earsLightMax > 0) s << ", and of its light samples up to " << earsLightMax;
+    s << "; throughput roulette from depth " << rrDepth << " where nothing is learned yet)";
+  } else if (rr != RouletteMode::None) s << " from depth " << rrDepth;
   if (lightSamples > 1) s << ", " << lightSamples << " light samples below depth " << splitDepth;
   if (bsdfSamples > 1) s << ", " << bsdfSamples << " BSDF samples below depth " << splitDepth;
   if (shadowRrThreshold > 0) s << ", shadow rr " << shadowRrThreshold << " (q " << shadowRrQ << ")";

@@ -50,6 +50,8 @@ struct EstimatorConfig {
   float shadowRrQ{};
   float cameraRrQ{};
   float earsMax{};  // rr ears: the largest factor (splitting up to it; 1: learned roulette alone)
+  float earsLightMax{};  // rr ears: the largest light factor (0: light samples not learned; 1: their roulette alone)
+  bool earsLearnsLight() const { return rr == RouletteMode::Ears && earsLightMax > 0.0f; }
   uint32_t lightSamples{};
   uint32_t splitDepth{};
   float bsdfSamples{};  // q: floor(q + u) continuations, each weighted 1/q

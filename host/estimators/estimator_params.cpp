@@ -106,6 +106,9 @@ constexpr EstimatorParam kParams[] = {
                         "camera-ray roulette termination probability; 0 = off"),
     real<&C::earsMax>("ears_max", gpu::kEarsFactorMax, closed(1, gpu::kEarsFactorMax), SPEC_EARS_MAX,
                       "rr ears: the largest factor q, so at most this many copies of a vertex; 1 = learned roulette alone"),
+    real<&C::earsLightMax>("ears_light_max", 0.0f, closed(0, gpu::kEarsLightFactorMax), SPEC_EARS_LIGHT_MAX,
+                           "rr ears: the largest light factor qL, so at most this many light samples a copy; 0 = light "
+                           "samples not learned (light_samples, as without ears), 1 = learned shadow-ray roulette alone"),
     count<&C::lightSamples>("light_samples", 1, 1, 4096, SPEC_LIGHT_SAMPLES, "light samples per hit below --split-depth"),
     count<&C::splitDepth>("split_depth", 1, 0, 100000, SPEC_SPLIT_DEPTH,
                           "splitting applies at depths below this; 1: the first hit"),

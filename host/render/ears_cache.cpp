@@ -4,16 +4,20 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <tuple>
 
 #include "../shaders/shared/sampling.h"
 
 namespace vkmc {
 
 namespace {
-constexpr uint32_t kMaxCells = 1u << 19;  // 32 MiB: far more cells than a scene's surfaces fill at 64 per side
+constexpr uint32_t kMaxCells = 1u << 19;  // of each kind: 64 MiB of sums and learned texels, far more cells than a
+                                          // scene's surfaces fill at 64 per side
 }
 
-EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathSlots, bool enabled) : enabled_(enabled) {
+EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathSlots, bool enabled, bool learnsLight,
+                     uint64_t extraShadowSlots)
+    : enabled_(enabled), learnsLight_(enabled && learnsLight) {
   const VkDeviceSize range = ctx.properties().limits.maxStorageBufferRange;
   auto storage = [&](VkDeviceSize bytes, vk::MemoryKind kind) {
     deviceBytes_ += bytes;
@@ -38,11 +42,12 @@ EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathS
   }
   cells_ = kMaxCells;
   const uint64_t texelLimit = ctx.properties().limits.maxTexelBufferElements / gpu::kEarsSamplingTexels;
-  while (uint64_t(cells_) * sizeof(gpu::EarsCell) > range || cells_ > texelLimit) cells_ /= 2;
-  cellBuffer_ = storage(uint64_t(cells_) * sizeof(gpu::EarsCell), vk::MemoryKind::DeviceLocal);
-  sampling_ = texels(uint64_t(cells_) * gpu::kEarsSamplingTexels * sizeof(glm::vec4));
+  while (uint64_t(tableCells()) * sizeof(gpu::EarsCell) > range || tableCells() > texelLimit) cells_ /= 2;
+  cellBuffer_ = storage(uint64_t(tableCells()) * sizeof(gpu::EarsCell), vk::MemoryKind::DeviceLocal);
+  sampling_ = texels(uint64_t(tableCells()) * gpu::kEarsSamplingTexels * sizeof(glm::vec4));
   sampling_.zero();
-  records_ = storage(uint64_t(pathSlots) * gpu::kEarsDepths * sizeof(gpu::EarsRecord), vk::MemoryKind::DeviceLocal);
+  const uint64_t recordBytes = sizeof(gpu::EarsRecord) + (learnsLight_ ? gpu::kEarsLightRecordBytes : 0);
+  records_ = storage(uint64_t(pathSlots) * gpu::kEarsDepths * recordBytes, vk::MemoryKind::DeviceLocal);
   slots_ = storage(uint64_t(pathSlots) * sizeof(gpu::EarsSlot), vk::MemoryKind::DeviceLocal);
   cellBuffer_.zero();
   records_.zero();
@@ -56,6 +61,7 @@ EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathS
   h.cellMask = cells_ - 1;
   h.imageFactor = 0.0f;
   h.epsilon = gpu::kEarsEpsilon;
+  h.extraShadowSlots = static_cast<uint32_t>(std::min<uint64_t>(extraShadowSlots, UINT32_MAX));
 }
 
 void EarsCache::bindTo(vk::KernelLayout& layout) const {
@@ -77,13 +83,13 @@ void EarsCache::beginPass() {
 }
 
 std::vector<gpu::EarsCell> EarsCache::downloadCells() {
-  std::vector<gpu::EarsCell> cells(cells_);
+  std::vector<gpu::EarsCell> cells(tableCells());
   if (cells_ > 0) cellBuffer_.download(cells.data(), cells.size() * sizeof(gpu::EarsCell));
   return cells;
 }
 
 std::vector<glm::vec4> EarsCache::downloadSampling() {
-  std::vector<glm::vec4> texels(size_t(cells_) * gpu::kEarsSamplingTexels);
+  std::vector<glm::vec4> texels(size_t(tableCells()) * gpu::kEarsSamplingTexels);
   if (cells_ > 0) sampling_.download(texels.data(), texels.size() * sizeof(glm::vec4));
   return texels;
 }
@@ -96,22 +102,40 @@ EarsSummary EarsCache::summary() {
   s.learningPasses = learningPasses_;
   s.trainingSamples = trainingSamples_;
   s.imageFactor = header().imageFactor;
-  glm::dvec4 sum(0.0), squares(0.0);
-  for (const gpu::EarsCell& c : downloadCells()) {
-    s.occupiedCells += c.sum.w > 0.0f;
-    sum += glm::dvec4(c.sum);
-    squares += glm::dvec4(c.sumSquares);
-  }
+  const std::vector<gpu::EarsCell> cells = downloadCells();
   const std::vector<glm::vec4> sampling = downloadSampling();
-  for (size_t i = 0; i < cells_; ++i) s.trustedCells += sampling[gpu::kEarsSamplingTexels * i].w >= gpu::kEarsMinCellCopies;
+  // Each kind's occupied and trusted cells and the pooled sums: copies' cells first, then the light cells.
+  auto pool = [&](size_t first, uint32_t& occupied, uint32_t& trusted) {
+    glm::dvec4 sum(0.0), squares(0.0);
+    for (size_t i = first; i < first + cells_; ++i) {
+      occupied += cells[i].sum.w > 0.0f;
+      trusted += sampling[gpu::kEarsSamplingTexels * i].w >= gpu::kEarsMinCellCopies;
+      sum += glm::dvec4(cells[i].sum);
+      squares += glm::dvec4(cells[i].sumSquares);
+    }
+    return std::make_pair(sum, squares);
+  };
+  auto [sum, squares] = pool(0, s.occupiedCells, s.trustedCells);
   s.copies = sum.w;
   if (sum.w > 0.0) {
     s.meanLr = glm::dvec3(sum) / sum.w;
     s.meanLrSquared = glm::dvec3(squares) / sum.w;
     s.meanRays = squares.w / sum.w;
   }
+  s.learnsLight = learnsLight_;
+  glm::dvec4 lightSum(0.0), lightSquares(0.0);
+  if (learnsLight_) std::tie(lightSum, lightSquares) = pool(cells_, s.occupiedLightCells, s.trustedLightCells);
+  s.lightSamples = lightSum.w;
+  if (lightSum.w > 0.0) {
+    s.meanV = glm::dvec3(lightSum) / lightSum.w;
+    s.meanVSquared = glm::dvec3(lightSquares) / lightSum.w;
+    s.meanLightRays = lightSquares.w / lightSum.w;
+  }
   for (uint32_t d = 0; d < gpu::kEarsHistogramDepths; ++d)
-    for (uint32_t b = 0; b < gpu::kEarsBins; ++b) s.factors[d][b] = header().factors[d * gpu::kEarsBins + b];
+    for (uint32_t b = 0; b < gpu::kEarsBins; ++b) {
+      s.factors[d][b] = header().factors[d * gpu::kEarsBins + b];
+      s.lightFactors[d][b] = header().lightFactors[d * gpu::kEarsBins + b];
+    }
   return s;
 }
 

@@ -27,12 +27,20 @@ struct EarsSummary {
   double copies = 0.0, meanRays = 0.0;
   glm::dvec3 meanLr{0.0}, meanLrSquared{0.0};
   std::array<std::array<uint64_t, gpu::kEarsBins>, gpu::kEarsHistogramDepths> factors{};  // vertices by depth and bin
+  // The light cells alike (ears_light_max > 0): the copies' first light samples, their mean v, v^2 and rays.
+  bool learnsLight = false;
+  uint32_t occupiedLightCells = 0, trustedLightCells = 0;
+  double lightSamples = 0.0, meanLightRays = 0.0;
+  glm::dvec3 meanV{0.0}, meanVSquared{0.0};
+  std::array<std::array<uint64_t, gpu::kEarsBins>, gpu::kEarsHistogramDepths> lightFactors{};  // copies by depth, bin
 };
 
 class EarsCache {
  public:
-  // enabled false: placeholders only. pathSlots: the path pool (kEarsDepths records each).
-  EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathSlots, bool enabled);
+  // enabled false: placeholders only. pathSlots: the path pool (kEarsDepths records each); learnsLight: light cells
+  // too (ears_light_max > 0); extraShadowSlots: the shadow queue's room for split light samples (PathPoolSize).
+  EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathSlots, bool enabled, bool learnsLight,
+            uint64_t extraShadowSlots);
   bool enabled() const { return enabled_; }
   void bindTo(vk::KernelLayout& layout) const;
   // Between passes: the factors' image statistics (C_img: rays per sample of the pass just done).
@@ -42,13 +50,14 @@ class EarsCache {
   void noteTrainingSamples(uint32_t samplesPerPixel) { trainingSamples_ += samplesPerPixel; }
   EarsSummary summary();
   uint64_t deviceBytes() const { return deviceBytes_; }
-  uint32_t cellCount() const { return cells_; }
-  std::vector<gpu::EarsCell> downloadCells();
-  std::vector<glm::vec4> downloadSampling();  // kEarsSamplingTexels per cell
+  uint32_t cellCount() const { return cells_; }                // copies' cells (as many light cells follow)
+  uint32_t tableCells() const { return (learnsLight_ ? 2 : 1) * cells_; }  // both kinds
+  std::vector<gpu::EarsCell> downloadCells();                  // tableCells()
+  std::vector<glm::vec4> downloadSampling();  // kEarsSamplingTexels per cell of tableCells()
 
  private:
   gpu::EarsHeader& header() const { return *static_cast<gpu::EarsHeader*>(header_.mapped()); }
-  bool enabled_;
+  bool enabled_, learnsLight_;
   uint32_t cells_ = 0;
   uint32_t learningPasses_ = 0;
   uint32_t trainingSamples_ = 0;

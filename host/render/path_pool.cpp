@@ -37,22 +37,26 @@ PathPoolSize sizePathPool(const RenderSettings& settings, const VkPhysicalDevice
   uint64_t plannedSamples = settings.timeBudget > 0.0 ? std::min<uint64_t>(settings.spp, 64) : settings.spp;
   uint32_t capacity = static_cast<uint32_t>(std::min<uint64_t>(pixels * plannedSamples, settings.maxPathsPerPass));
   capacity = std::min<uint32_t>(capacity, limits.maxStorageBufferRange / sizeof(gpu::PathState));
-  // The pool holds camera paths and split children; each pooled path queues up to M shadow rays per bounce.
+  // The pool holds camera paths and split children; each pooled path queues up to M shadow rays per bounce, and
+  // under EARS the copies' split light samples share one more per slot (ears_shade.glsl earsLightSamples).
   const uint32_t poolFactor = est.pathPoolFactor();
+  const uint32_t shadowPerSlot = est.lightSamples + (est.earsLearnsLight() && est.earsLightMax > 1.0f ? 1u : 0u);
   capacity = std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::PathState) * poolFactor));
   capacity =
-      std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::ShadowRay) * est.lightSamples * poolFactor));
+      std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::ShadowRay) * shadowPerSlot * poolFactor));
   // The kernels read path states and shadow rays through texel views (common.glsl): their texels must fit too.
   const uint64_t texels = limits.maxTexelBufferElements;
   capacity = std::min<uint64_t>(capacity, texels / (gpu::kPathTexels * poolFactor));
-  capacity = std::min<uint64_t>(capacity, texels / (uint64_t(gpu::kShadowRayTexels) * est.lightSamples * poolFactor));
-  if (est.rr == RouletteMode::Ears)  // each slot's training records
-    capacity = std::min<uint32_t>(
-        capacity, limits.maxStorageBufferRange / (sizeof(gpu::EarsRecord) * gpu::kEarsDepths * poolFactor));
+  capacity = std::min<uint64_t>(capacity, texels / (uint64_t(gpu::kShadowRayTexels) * shadowPerSlot * poolFactor));
+  if (est.rr == RouletteMode::Ears) {  // each slot's training records, and their light records
+    const uint64_t recordBytes = sizeof(gpu::EarsRecord) + (est.earsLearnsLight() ? gpu::kEarsLightRecordBytes : 0);
+    capacity = std::min<uint64_t>(capacity, limits.maxStorageBufferRange / (recordBytes * gpu::kEarsDepths * poolFactor));
+  }
   PathPoolSize size;
   size.cameraPaths = std::max(capacity, 1u);
   size.slots = size.cameraPaths * poolFactor;
-  size.shadowSlots = hasShadowStage ? uint64_t(size.slots) * est.lightSamples : 0;
+  size.shadowSlots = hasShadowStage ? uint64_t(size.slots) * shadowPerSlot : 0;
+  size.extraShadowSlots = hasShadowStage ? uint64_t(size.slots) * (shadowPerSlot - est.lightSamples) : 0;
   return size;
 }
 

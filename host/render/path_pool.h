@@ -13,6 +13,7 @@ struct PathPoolSize {
   uint32_t cameraPaths = 0;  // per pass
   uint32_t slots = 0;        // camera paths and room for split children (pathPoolFactor)
   uint64_t shadowSlots = 0;  // shadow rays one bounce may queue (0 without a shadow stage)
+  uint64_t extraShadowSlots = 0;  // of them, those past light_samples per path slot (EARS's split light samples)
 };
 
 // Throws Error when the workgroup size or the image's film does not fit the device.

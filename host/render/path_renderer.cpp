@@ -107,7 +107,8 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
       storage(settings_.recordDepthStats ? uint64_t(pool_) * gpu::kRouletteTableDepths * 8 : 16, vk::MemoryKind::HostVisible);
   queueStats_ = storage(gpu::kQueueStatsBounces * 8, exchange);
   // The pixel filter's header and sampling table (read only by filters other than the pixel's box).
-  ears_ = std::make_unique<EarsCache>(ctx_, scene_.info(), pool_, settings_.estimator.rr == RouletteMode::Ears);
+  ears_ = std::make_unique<EarsCache>(ctx_, scene_.info(), pool_, settings_.estimator.rr == RouletteMode::Ears,
+                                      settings_.estimator.earsLearnsLight(), size.extraShadowSlots);
   deviceBytes_ += ears_->deviceBytes();
   const std::vector<float> filter = pixelFilterBufferData(buildPixelFilterTable(settings_.filter));
   pixelFilter_ = storage(filter.size() * sizeof(float));
@@ -335,7 +336,7 @@ void PathRenderer::trainEars(uint32_t slotsUsed, RenderStats& stats) {
   pc.pathCount = slotsUsed;
   vk::dispatch(cmd, *layout_, *kernels_.earsGather, &pc, sizeof(pc), groupsFor(slotsUsed), timer_.get());
   vk::dispatch(cmd, *layout_, *kernels_.earsTrain, &pc, sizeof(pc), groupsFor(slotsUsed * gpu::kEarsDepths), timer_.get());
-  pc.pathCount = ears_->cellCount();
+  pc.pathCount = ears_->tableCells();
   vk::dispatch(cmd, *layout_, *kernels_.earsFold, &pc, sizeof(pc), groupsFor(pc.pathCount), timer_.get());
   ctx_.submitAndWait(cmd);
   timer_->collect(stats.stageSeconds);

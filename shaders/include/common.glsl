@@ -33,6 +33,7 @@ layout(constant_id = SPEC_SHADOW_RR_THRESHOLD) const float kShadowRouletteThresh
 layout(constant_id = SPEC_SHADOW_RR_Q) const float kShadowRouletteQ = 0.5;
 layout(constant_id = SPEC_CAMERA_RR_Q) const float kCameraRouletteQ = 0.0;
 layout(constant_id = SPEC_EARS_MAX) const float kEarsMaxFactor = 20.0;
+layout(constant_id = SPEC_EARS_LIGHT_MAX) const float kEarsLightMax = 0.0;
 layout(constant_id = SPEC_BSDF_SAMPLES) const float kBsdfSamples = 1.0;
 layout(constant_id = SPEC_RECORD_DEPTH_STATS) const uint kRecordDepthStats = 0u;
 layout(constant_id = SPEC_WALK_STATS) const uint kWalkStats = 0u;
@@ -92,6 +93,9 @@ layout(binding = BINDING_QUEUE_STATS, std430) buffer QueueStats { uvec2 queueSta
 layout(binding = BINDING_EARS_HEADER, std430) buffer EarsHeaderBuffer { EarsHeader earsHeader; };
 layout(binding = BINDING_EARS_CELLS, std430) buffer EarsCells { EarsCell earsCells[]; };
 layout(binding = BINDING_EARS_RECORDS, std430) buffer EarsRecords { EarsRecord earsRecords[]; };
+// The same buffer as vec4s: the light records after the pool's records (ears.h, ears_light_max > 0).
+layout(binding = BINDING_EARS_RECORDS, std430) buffer EarsRecordTexels { vec4 earsRecordVec4s[]; };
+uint earsLightRecord(uint record) { return 2u * kEarsDepths * pc.queueCapacity + record; }
 layout(binding = BINDING_EARS_SLOTS, std430) buffer EarsSlots { EarsSlot earsSlots[]; };
 layout(binding = BINDING_PUNCTUAL_LIGHTS, std430) readonly buffer PunctualLights { PunctualLight punctualLights[]; };
 layout(binding = BINDING_ENVIRONMENT, std430) readonly buffer Environment {

@@ -8,38 +8,69 @@
 layout(binding = BINDING_EARS_SAMPLING, TEXEL_FORMAT_EARS_SAMPLING) uniform readonly imageBuffer earsLearned;
 
 // The copy queue: the third region of BINDING_RAY_QUEUES. A queued slot holds the vertex's path (before its
-// factor) and hit; its radiance field, unused by a split child, carries (q, copy index bits, parent slot bits, 0).
+// factor) and hit; its radiance field, unused by a split child, carries (q, copy index bits, parent slot bits, qL).
 uint copyQueueBase() { return 2u * pc.queueCapacity; }
 
-// The factor at a vertex (cell key `key`) from its cells' moments, each level shrunk toward the coarser ones
-// (earsShrunk), once one of them has learned enough, and whether one had; throughput roulette (the sqrt rule,
-// judged by the throughput that reaches the vertex) where none has.
-float earsVertexFactor(PathState path, uint key, out bool trained) {
-  vec3 moment = vec3(0.0), variance = vec3(0.0);
-  float copies = 0.0;
+// What a vertex's cells learned, each level shrunk toward the coarser ones (earsShrunk): for its copies (moment,
+// variance: per cost) and for their light samples (the light cells beside them).
+struct EarsReading {
+  vec3 moment, variance;
+  float copies;
+  vec3 lightMoment, lightVariance;
+  float lightSamples;
+};
+
+EarsReading earsRead(uint key) {
+  EarsReading r = EarsReading(vec3(0.0), vec3(0.0), 0.0, vec3(0.0), vec3(0.0), 0.0);
   for (int level = int(kEarsLevels) - 1; level >= 0 && earsHeader.imageFactor > 0.0; --level) {
     uint cell = earsCellIndex(key, uint(level), earsHeader.cellMask);
     vec4 m = imageLoad(earsLearned, int(kEarsSamplingTexels * cell));
     if (m.w > 0.0) {
       vec3 v = imageLoad(earsLearned, int(kEarsSamplingTexels * cell + 1u)).rgb;
-      moment = earsShrunk(moment, copies, m.rgb, m.w);
-      variance = earsShrunk(variance, copies, v, m.w);
-      copies = max(copies, m.w);
+      r.moment = earsShrunk(r.moment, r.copies, m.rgb, m.w);
+      r.variance = earsShrunk(r.variance, r.copies, v, m.w);
+      r.copies = max(r.copies, m.w);
+    }
+    if (kEarsLightMax == 0.0) continue;
+    uint light = earsLightCell(cell, earsHeader.cellMask);
+    vec4 lm = imageLoad(earsLearned, int(kEarsSamplingTexels * light));
+    if (lm.w > 0.0) {
+      vec3 lv = imageLoad(earsLearned, int(kEarsSamplingTexels * light + 1u)).rgb;
+      r.lightMoment = earsShrunk(r.lightMoment, r.lightSamples, lm.rgb, lm.w);
+      r.lightVariance = earsShrunk(r.lightVariance, r.lightSamples, lv, lm.w);
+      r.lightSamples = max(r.lightSamples, lm.w);
     }
   }
-  trained = copies >= kEarsMinCellCopies && earsHeader.imageFactor > 0.0;
+  return r;
+}
+
+// The vertex's relative throughput t = beta / sqrt(I^2 + eps) per channel (the pixel's smoothed estimate I).
+vec3 earsRelativeThroughput(PathState path) {
+  vec3 estimate = loadPixelEstimate(path.pixel).rgb;
+  return path.throughput.rgb / sqrt(estimate * estimate + earsHeader.epsilon);
+}
+
+// The factor at a vertex from its cells once one of them has learned enough, and whether one had; throughput
+// roulette (the sqrt rule, judged by the throughput that reaches the vertex) where none has.
+float earsVertexFactor(PathState path, EarsReading r, vec3 t, out bool trained) {
+  trained = r.copies >= kEarsMinCellCopies && earsHeader.imageFactor > 0.0;
   float q = 1.0;
   if (trained) {
-    vec3 estimate = loadPixelEstimate(path.pixel).rgb;
-    vec3 t = path.throughput.rgb / sqrt(estimate * estimate + earsHeader.epsilon);
-    q = min(earsFactor(t, moment, variance, earsHeader.imageFactor), kEarsMaxFactor);
+    q = min(earsFactor(t, r.moment, r.variance, earsHeader.imageFactor), kEarsMaxFactor);
   } else if (rouletteApplies(path.depth, kRouletteDepth)) {
     q = rouletteSurvival(sqrt(maxComponent(path.throughput.rgb) * path.throughput.w * path.origin.w), 1.0, kRouletteMaxSurvival);
   }
   return path.depth >= kEarsNoSplitDepth ? min(q, kRouletteMaxSurvival) : q;
 }
 
-// The factor histogram by depth: one atomic per subgroup and bin (a bounce's paths all have the same depth).
+// The light factor qL of each copy of a vertex whose copies carry throughput beta / q, once its light cells have
+// learned enough; 0 where they have not (the copy then takes light_samples, as without EARS).
+float earsLightFactor(EarsReading r, vec3 t, float q) {
+  if (kEarsLightMax == 0.0 || !(r.lightSamples >= kEarsMinCellCopies && earsHeader.imageFactor > 0.0)) return 0.0;
+  return min(earsFactor(t / q, r.lightMoment, r.lightVariance, earsHeader.imageFactor), kEarsLightMax);
+}
+
+// The factor histograms by depth: one atomic per subgroup and bin (a bounce's paths all have the same depth).
 void countEarsFactor(uint depth, uint bin) {
   uint row = min(depth, kEarsHistogramDepths - 1u) * kEarsBins;
   for (uint b = 0u; b < kEarsBins; ++b) {
@@ -47,30 +78,62 @@ void countEarsFactor(uint depth, uint bin) {
     if (subgroupElect() && n > 0u) atomicAdd(earsHeader.factors[row + b], n);
   }
 }
+void countEarsLightFactor(uint depth, uint bin) {
+  uint row = min(depth, kEarsHistogramDepths - 1u) * kEarsBins;
+  for (uint b = 0u; b < kEarsBins; ++b) {
+    uint n = subgroupAdd(bin == b ? 1u : 0u);
+    if (subgroupElect() && n > 0u) atomicAdd(earsHeader.lightFactors[row + b], n);
+  }
+}
+
+// How many light samples a copy takes, and the weight of each: floor(qL + u) weighted 1/qL where its light
+// cells decided (splitting past light_samples only with shadow-queue slots reserved before the draw), else
+// light_samples weighted 1/light_samples.
+uint earsLightSamples(PathState copy, float qL, out float share) {
+  uint base = lightSamplesAt(copy.depth);
+  if (!(qL > 0.0)) {
+    share = 1.0 / float(base);
+    return base;
+  }
+  uint extra = kEarsLightMax > 1.0 && uint(ceil(qL)) > base ? uint(ceil(qL)) - base : 0u;
+  if (extra > 0u && atomicAdd(control.extraShadowRays, extra) + extra > earsHeader.extraShadowSlots) qL = float(base);
+  share = 1.0 / qL;
+  return splitCount(qL, sampleU(pathStream(copy), bounceDim(copy.depth, kDimLightSplit)));
+}
 
 // Copy c of the vertex of `path` (its throughput before the factor) in slot `target`, split off from `parent`'s:
-// its record, its light samples and its BSDF continuation, each weighted 1/q.
+// its record, its light samples (qL: earsLightFactor) and its BSDF continuation, each weighted 1/q.
 void shadeEarsCopy(PathState path, uint target, uint parent, SurfacePoint s, GltfMaterial gm, vec3 wo, vec3 woLocal,
-                   float q, uint c, uint key) {
+                   float q, float qL, uint c, uint key) {
   uint depth = path.depth;
   bool trains = earsTrains(path.rootPath);
   if (c > 0u && trains) earsSlots[target] = EarsSlot(vec4(0.0), parent + 1u, depth, 0u, 0u);
   vec3 beta = path.throughput.rgb;
-  if (trains && depth < kEarsDepths && maxComponent(beta) > 0.0) {
-    vec3 scale = vec3(beta.r > 0.0 ? q / beta.r : 0.0, beta.g > 0.0 ? q / beta.g : 0.0, beta.b > 0.0 ? q / beta.b : 0.0);
-    earsRecords[target * kEarsDepths + depth] = EarsRecord(-earsSlots[target].gathered, vec4(scale, uintBitsToFloat(key + 1u)));
-  }
+  bool records = trains && depth < kEarsDepths && maxComponent(beta) > 0.0;
   PathState copy = path;
   copy.rngKey = childKey(path.rngKey, depth, c);
   copy.throughput.rgb /= q;
   uint rays = 0u;
-  uint samples = kHasLights != 0u && kNee != 0u ? lightSamplesAt(depth) : 0u;
+  float share = 1.0;
+  uint samples = kHasLights != 0u && kNee != 0u ? earsLightSamples(copy, qL, share) : 0u;
+  if (kEarsLightMax > 0.0 && kHasLights != 0u && kNee != 0u) countEarsLightFactor(depth, earsBin(qL > 0.0, qL));
+  float firstLight = samples > 0u ? kEarsLightNoRay : kEarsLightNone;
   for (uint j = 0u; j < samples; ++j) {
     ShadowRay ray;
-    if (prepareLightSample(copy, target, s, gm, wo, j, samples, ray)) {
+    if (prepareLightSample(copy, target, s, gm, wo, j, lightSamplesAt(depth), share, ray)) {
+      if (kEarsLightMax > 0.0 && j == 0u && records) {
+        ray.origin.w = uintBitsToFloat(earsFirstLightTag(target, depth));
+        firstLight = kEarsLightTraced;
+      }
       storeShadowRay(shadowQueueSlot(), ray);
       ++rays;
     }
+  }
+  if (records) {
+    vec3 scale = vec3(beta.r > 0.0 ? q / beta.r : 0.0, beta.g > 0.0 ? q / beta.g : 0.0, beta.b > 0.0 ? q / beta.b : 0.0);
+    uint record = target * kEarsDepths + depth;
+    earsRecords[record] = EarsRecord(-earsSlots[target].gathered, vec4(scale, uintBitsToFloat(key + 1u)));
+    if (kEarsLightMax > 0.0) earsRecordVec4s[earsLightRecord(record)] = vec4(scale / share, firstLight);
   }
   vec3 poisoned = vec3(0.0);  // a non-finite throughput, counted by continuePath
   PathState next;
@@ -87,8 +150,10 @@ void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMate
   uint depth = path.depth;
   if (!belowDepthCap(depth)) return;
   uint key = earsCellKey(s.p, s.ng, earsHeader.grid);
+  EarsReading reading = earsRead(key);
+  vec3 t = earsRelativeThroughput(path);
   bool trained;
-  float q = earsVertexFactor(path, key, trained);
+  float q = earsVertexFactor(path, reading, t, trained);
   // Slots for every copy but the first are taken before the copies are drawn, so whether the pool was full
   // (then q = 1: the vertex as it is) never depends on the draw: unbiased.
   uint spare = uint(ceil(q)) - 1u, firstChild = 0u;
@@ -103,13 +168,14 @@ void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMate
   }
   uint copies = min(splitCount(q, sampleU(pathStream(path), bounceDim(depth, kDimSplit))), spare + 1u);
   countEarsFactor(depth, earsBin(trained, q));
+  float qL = earsLightFactor(reading, t, q);
   for (uint c = 1u; c < copies; ++c) {
     uint target = firstChild + c - 1u;
     PathState child = path;
-    child.radiance = vec4(q, uintBitsToFloat(c), uintBitsToFloat(id), 0.0);
+    child.radiance = vec4(q, uintBitsToFloat(c), uintBitsToFloat(id), qL);
     storePath(target, child);
     storeHit(target, hit);
     rayQueues[copyQueueBase() + atomicAdd(control.copyQueueCount, 1u)] = target;
   }
-  if (copies > 0u) shadeEarsCopy(path, id, id, s, gm, wo, woLocal, q, 0u, key);
+  if (copies > 0u) shadeEarsCopy(path, id, id, s, gm, wo, woLocal, q, qL, 0u, key);
 }

@@ -307,10 +307,12 @@ bool onConsistentSide(SurfacePoint s, GltfMaterial gm, vec3 wi, vec3 wiLocal) {
   return side < 0.0 && wiLocal.z < 0.0 && kHasTransmission != 0u && gm.transmission > 0.0;
 }
 
-// Light sample j of `samples` at s: the shadow ray to trace, carrying the contribution it adds if unoccluded;
-// false when the sample adds nothing (or was rouletted away). `slot` is the path copy's slot (EARS trains on it).
+// Light sample j of `samples` at s: the shadow ray to trace, carrying the contribution it adds if unoccluded,
+// weighted `share` (1 / samples; under EARS 1 / qL for floor(qL + u) samples, whose mean is still the light
+// technique's: MIS counts `samples` on both sides); false when the sample adds nothing (or was rouletted away).
+// `slot` is the path copy's slot (EARS trains on it).
 bool prepareLightSample(PathState path, uint slot, SurfacePoint s, GltfMaterial gm, vec3 wo, uint j, uint samples,
-                        out ShadowRay ray) {
+                        float share, out ShadowRay ray) {
   uint depth = path.depth;
   SampleStream stream = pathStream(path);
   uvec4 light = selectLight(sampleU(stream, lightDim(depth, j, 0u)));
@@ -329,7 +331,7 @@ bool prepareLightSample(PathState path, uint slot, SurfacePoint s, GltfMaterial 
   vec3 f = bsdfEval(gm, woLocal, wiLocal);
   // MIS over one BSDF sample and `samples` light samples: the light technique's pdf counts samples times.
   float weight = kMis == kMisNone || ls.delta ? 1.0 : misWeight(kMis, float(samples) * ls.pdf, techniquePdf(gm, woLocal, wiLocal));
-  vec3 contribution = path.throughput.rgb * f * ls.arriving * (abs(wiLocal.z) * weight / (ls.pdf * float(samples)));
+  vec3 contribution = path.throughput.rgb * f * ls.arriving * (abs(wiLocal.z) * weight * share / ls.pdf);
   if (!allFinite(contribution)) atomicAdd(control.nonfiniteLightSamples, 1u);  // still queued: it poisons the sample
   else if (!(maxComponent(contribution) > 0.0)) return false;
   if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * loadPixelEstimate(path.pixel).w) {

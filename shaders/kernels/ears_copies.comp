@@ -18,5 +18,5 @@ void main() {
   SurfacePoint s = surfaceAt(floatBitsToUint(hit.w), hit.yz, wo);
   GltfMaterial gm = shadeSurface(loadMaterial(s.material), s, wo);
   shadeEarsCopy(path, target, floatBitsToUint(path.radiance.z), s, gm, wo, wo * s.frame, path.radiance.x,
-                floatBitsToUint(path.radiance.y), earsCellKey(s.p, s.ng, earsHeader.grid));
+                path.radiance.w, floatBitsToUint(path.radiance.y), earsCellKey(s.p, s.ng, earsHeader.grid));
 }

@@ -2,7 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_atomic_float : require
 // EARS training, step 2 of 3: each record (one copy of a training vertex) adds its Lr (what its subtree gathered,
-// per unit throughput at the vertex) and its rays to the training sums of its cell at every level, then is
+// per unit throughput at the vertex) and its rays to the training sums of its cell at every level, and its first
+// light sample's v and ray to the light cell beside each (ears.h earsLightCell), then is
 // cleared, as is its slot, for the next pass. pc.pathCount: the slots the pass used (kEarsDepths records each).
 #include "common.glsl"
 
@@ -16,16 +17,34 @@ void main() {
   earsRecords[i].scale.w = 0.0;
   vec3 lr = r.gathered.rgb * r.scale.rgb;
   float rays = max(r.gathered.w, 0.0);
-  if (!allFinite(lr * lr) || isnan(rays) || isinf(rays)) return;  // lr^2 finite: lr is too
+  bool copyFinite = allFinite(lr * lr) && !isnan(rays) && !isinf(rays);  // lr^2 finite: lr is too
+  // The copy's first light sample: v where its ray was unoccluded, else 0; a ray where one was traced.
+  vec4 light = kEarsLightMax > 0.0 ? earsRecordVec4s[earsLightRecord(i)] : vec4(0.0);
+  vec3 v = light.w == kEarsLightUnoccluded ? light.rgb : vec3(0.0);
+  float lightRays = light.w >= kEarsLightTraced ? 1.0 : 0.0;
+  bool lightSampled = kEarsLightMax > 0.0 && light.w != kEarsLightNone && allFinite(v * v);
   for (uint level = 0u; level < kEarsLevels; ++level) {
     uint cell = earsCellIndex(keyCode - 1u, level, earsHeader.cellMask);
-    atomicAdd(earsCells[cell].sum.r, lr.r);
-    atomicAdd(earsCells[cell].sum.g, lr.g);
-    atomicAdd(earsCells[cell].sum.b, lr.b);
-    atomicAdd(earsCells[cell].sum.w, 1.0);
-    atomicAdd(earsCells[cell].sumSquares.r, lr.r * lr.r);
-    atomicAdd(earsCells[cell].sumSquares.g, lr.g * lr.g);
-    atomicAdd(earsCells[cell].sumSquares.b, lr.b * lr.b);
-    atomicAdd(earsCells[cell].sumSquares.w, rays);
+    if (copyFinite) {
+      atomicAdd(earsCells[cell].sum.r, lr.r);
+      atomicAdd(earsCells[cell].sum.g, lr.g);
+      atomicAdd(earsCells[cell].sum.b, lr.b);
+      atomicAdd(earsCells[cell].sum.w, 1.0);
+      atomicAdd(earsCells[cell].sumSquares.r, lr.r * lr.r);
+      atomicAdd(earsCells[cell].sumSquares.g, lr.g * lr.g);
+      atomicAdd(earsCells[cell].sumSquares.b, lr.b * lr.b);
+      atomicAdd(earsCells[cell].sumSquares.w, rays);
+    }
+    if (lightSampled) {
+      uint light = earsLightCell(cell, earsHeader.cellMask);
+      atomicAdd(earsCells[light].sum.r, v.r);
+      atomicAdd(earsCells[light].sum.g, v.g);
+      atomicAdd(earsCells[light].sum.b, v.b);
+      atomicAdd(earsCells[light].sum.w, 1.0);
+      atomicAdd(earsCells[light].sumSquares.r, v.r * v.r);
+      atomicAdd(earsCells[light].sumSquares.g, v.g * v.g);
+      atomicAdd(earsCells[light].sumSquares.b, v.b * v.b);
+      atomicAdd(earsCells[light].sumSquares.w, lightRays);
+    }
   }
 }

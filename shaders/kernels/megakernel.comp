@@ -72,7 +72,7 @@ void main() {
     // The vertex's next light sample, if any is left; else the vertex is done and the path continues.
     tracingLightSample = false;
     for (; j < samples; ++j) {
-      if (prepareLightSample(path, id, s, gm, wo, j, samples, ray)) {
+      if (prepareLightSample(path, id, s, gm, wo, j, samples, 1.0 / float(samples), ray)) {
         ++shadow;
         tracingLightSample = true;
         break;

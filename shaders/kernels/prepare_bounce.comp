@@ -14,6 +14,7 @@ void main() {
   control.rayQueueCount[(pc.bounce + 1u) & 1u] = 0u;
   control.shadowQueueCount = 0u;
   control.copyQueueCount = 0u;
+  control.extraShadowRays = 0u;
   control.deepArgs = uvec4(0u, 1u, 1u, 0u);  // intersect's deferred walks start empty
   uint accumulateGroups = (pc.pixelCount + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x;
   control.accumulateArgs = uvec4(n == 0u ? accumulateGroups : 0u, 1u, 1u, 0u);

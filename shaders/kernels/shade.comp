@@ -46,7 +46,7 @@ void main() {
     uint samples = lightSamplesAt(depth);
     for (uint j = 0u; j < samples; ++j) {
       ShadowRay ray;
-      if (prepareLightSample(path, id, s, gm, wo, j, samples, ray)) storeShadowRay(shadowQueueSlot(), ray);
+      if (prepareLightSample(path, id, s, gm, wo, j, samples, 1.0 / float(samples), ray)) storeShadowRay(shadowQueueSlot(), ray);
     }
   }
 

@@ -9,6 +9,9 @@
 // C_img / V_img is the image's rays per sample over its relative variance per sample. The vertex is then taken
 // floor(q + u) times, each copy weighted 1/q: q < 1 is roulette, q > 1 splitting (roulette.h splitCount), unbiased
 // for any q chosen before the copies are drawn. Every pass learns from the passes before it, never from itself.
+// The same rule decides each copy's light samples (MARS's per-technique factors, Rath et al. 2024): a second set
+// of cells learns what one light sample gathers per unit throughput (v) and the rays it costs, and the copy takes
+// floor(qL + u) light samples, each weighted 1/qL: qL < 1 is shadow-ray roulette, qL > 1 light-sample splitting.
 #ifndef VKMC_EARS_H
 #define VKMC_EARS_H
 #include "glsl_cpp.h"
@@ -30,6 +33,18 @@ VKMC_CONST uint kEarsBinFallback = 0u, kEarsBinRoulette = 1u, kEarsBinOne = 2u, 
 VKMC_CONST float kEarsEpsilon = 0.01f;             // relMSE's epsilon (analysis/error_metrics.h; ears_test checks)
 VKMC_CONST uint kEarsTrainingPaths = 65536u;      // samples of a pass that train the cache (common.glsl earsTrains)
 VKMC_CONST uint kEarsHistogramDepths = 8u;        // histogram rows (the last counts every deeper vertex)
+VKMC_CONST float kEarsLightFactorMax = 8.0f;      // light samples a copy takes at most (the SIMD group waits for its
+                                                  // lane with the most)
+// The first light sample of a training copy tags its shadow ray (ShadowRay origin.w: the copy's slot, its depth in
+// bits 29-30, this bit) so that the shadow stage can fill the copy's record.light.
+VKMC_CONST uint kEarsFirstLightTag = 0x80000000u;
+VKMC_CONST uint kEarsTagDepthShift = 29u;
+VKMC_CONST uint kEarsSlotMask = (1u << kEarsTagDepthShift) - 1u;
+// EarsRecord light.w: what became of the copy's first light sample.
+VKMC_CONST float kEarsLightNone = 0.0f;        // no light sample: nothing to learn
+VKMC_CONST float kEarsLightNoRay = 1.0f;       // sampled, but nothing to trace (v = 0, no ray)
+VKMC_CONST float kEarsLightTraced = 2.0f;      // traced, occluded unless the shadow stage said otherwise (v = 0, 1 ray)
+VKMC_CONST float kEarsLightUnoccluded = 3.0f;  // traced and unoccluded: rgb is v (1 ray)
 
 // The cache's parameters, written by the host between passes, and the factor histogram the kernels count.
 struct EarsHeader {
@@ -37,11 +52,14 @@ struct EarsHeader {
   uint cellMask;      // cells - 1 (a power of two)
   float imageFactor;  // sqrt(C_img / V_img) of the passes so far; 0: nothing learned yet (throughput roulette)
   float epsilon;      // t = beta / sqrt(I^2 + epsilon)
-  uint unused;
-  uint factors[kEarsHistogramDepths * kEarsBins];  // vertices by depth and factor bin
+  uint extraShadowSlots;  // shadow-queue slots beyond light_samples per path slot, for split light samples
+  uint factors[kEarsHistogramDepths * kEarsBins];       // vertices by depth and factor bin
+  uint lightFactors[kEarsHistogramDepths * kEarsBins];  // copies by depth and light-factor bin
 };
 
-// One cell: the sums its training copies added over every pass so far.
+// One cell: the sums its training copies added over every pass so far. The table holds the copies' cells, then
+// as many light cells (earsLightCell) whose sums are those of the copies' first light samples: rgb v, w samples;
+// v^2, w rays.
 struct EarsCell {
   vec4 sum;         // rgb: sum of Lr, w: copies
   vec4 sumSquares;  // rgb: sum of Lr^2, w: sum of rays
@@ -58,6 +76,10 @@ struct EarsRecord {
   vec4 scale;     // rgb: q / beta per channel (0 where beta is): the subtree's radiance into Lr; w: cell key + 1
                   // as float bits (earsCellKey; 0: no record)
 };
+// With ears_light_max > 0 each record has a light record, a vec4 after all the records in the same buffer
+// (earsLightRecord): the copy's first light sample, rgb its v (kEarsLightUnoccluded), or while its shadow ray is
+// pending the factor from its contribution to v (q qL / beta); w: kEarsLight*.
+VKMC_CONST uint kEarsLightRecordBytes = 16u;
 
 // A path slot's own sums for training, and where it was split off.
 struct EarsSlot {
@@ -86,6 +108,17 @@ VKMC_FN uint earsCellIndex(uint key, uint level, uint cellMask) {
   uint x = (key & 127u) >> shift, y = ((key >> 7u) & 127u) >> shift, z = ((key >> 14u) & 127u) >> shift;
   return hashU32(x * 0x8da6b343u ^ y * 0xd8163841u ^ z * 0xcb1ab31fu ^ (key >> 21u) * 0x9e3779b9u ^ level * 0x632be5abu) &
          cellMask;
+}
+
+// The light cell beside a copies' cell (the table's second half).
+VKMC_FN uint earsLightCell(uint cell, uint cellMask) { return cell + cellMask + 1u; }
+
+// A training copy's first shadow ray carries its slot and depth (EarsRecord index slot * kEarsDepths + depth).
+VKMC_FN uint earsFirstLightTag(uint slot, uint depth) {
+  return kEarsFirstLightTag | depth << kEarsTagDepthShift | slot;
+}
+VKMC_FN uint earsTaggedRecord(uint tag) {
+  return (tag & kEarsSlotMask) * kEarsDepths + ((tag >> kEarsTagDepthShift) & 3u);
 }
 
 // EARS's factor (its recursive_path.cpp), t per channel: the second moment decides roulette, the variance
@@ -132,8 +165,9 @@ VKMC_END_NAMESPACE
 
 #ifdef __cplusplus
 namespace vkmc::gpu {
-static_assert(sizeof(EarsHeader) == 32 + 4 * kEarsHistogramDepths * kEarsBins);
+static_assert(sizeof(EarsHeader) == 32 + 2 * 4 * kEarsHistogramDepths * kEarsBins);
 static_assert(sizeof(EarsCell) == 32 && sizeof(EarsRecord) == 32 && sizeof(EarsSlot) == 32);
+static_assert(kEarsDepths <= 4u, "the first-light tag holds a depth in two bits");
 }  // namespace vkmc::gpu
 #endif
 #endif

@@ -105,6 +105,7 @@
 #define SPEC_HAS_SHEEN 33         // 0: no KHR_materials_sheen
 #define SPEC_HAS_DELTA 34         // 0: no lobe can be smooth (delta): every BSDF sample is MIS-weighted
 #define SPEC_EARS_MAX 35          // float: rr ears's largest factor q, at most kEarsFactorMax (1: learned roulette alone)
+#define SPEC_EARS_LIGHT_MAX 36    // float: rr ears's largest light factor qL; 0: light samples not learned (ears.h)
 
 VKMC_BEGIN_NAMESPACE
 
@@ -250,7 +251,8 @@ struct Control {
   uvec4 deepArgs;              // dispatch of the deferred deep walks: x groups, y = z = 1, w: walks deferred
   uint deepWalksDeferred;      // in all (one that finds the deep queue full is cut short: walksCut)
   uint deepWalksTraced;        // by the deep passes (equals deepWalksDeferred once every deep pass has run)
-  uint unusedDeep0, unusedDeep1;
+  uint extraShadowRays;        // EARS: shadow-queue slots reserved past light_samples a copy this bounce (ears_shade.glsl)
+  uint unusedDeep1;
   // SPEC_WALK_STATS, summed over rays: loop iterations, node steps, triangle tests, and the iterations of each
   // subgroup's slowest lane (summed over subgroups, times the subgroup size).
   uint walkIterations, walkNodeSteps, walkTriangleTests, walkSlowestLaneIterations;

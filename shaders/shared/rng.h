@@ -10,7 +10,7 @@ VKMC_BEGIN_NAMESPACE
 VKMC_CONST uint kDimsCamera = 4u;         // pixel jitter (pair 0), camera-ray roulette, unused
 VKMC_CONST uint kDimCameraRoulette = 2u;  // within the camera block
 VKMC_CONST uint kDimsPerBounce = 10u;     // five pairs: bsdf, light point, (lobe, roulette), (light select,
-                                          // shadow roulette), (split, unused)
+                                          // shadow roulette), (split, light split)
 VKMC_CONST uint kDimBsdf = 0u;  // and 1
 VKMC_CONST uint kDimLightPoint = 2u;  // and 3
 VKMC_CONST uint kDimBsdfLobe = 4u;
@@ -18,6 +18,7 @@ VKMC_CONST uint kDimRoulette = 5u;
 VKMC_CONST uint kDimLightSelect = 6u;
 VKMC_CONST uint kDimShadowRoulette = 7u;
 VKMC_CONST uint kDimSplit = 8u;
+VKMC_CONST uint kDimLightSplit = 9u;  // EARS: how many light samples a copy takes (floor(qL + u))
 // Light sample j > 0 of a split bounce takes its three dimensions from a separate stream.
 VKMC_CONST uint kDimsSplitBase = 0x40000000u;
 

@@ -47,6 +47,53 @@ TEST(Ears, FurnaceCacheLearnsTheReflectedRadiance) {
       << "learned factors must decide some first vertices";
 }
 
+TEST(Ears, FurnaceLightCellsLearnTheDirectLight) {
+  // Light sampling alone (mis none): one light sample of the emitting sphere, seen from inside, gathers per unit
+  // throughput the direct light a Le = 0.5 in every channel, and every sample traces a shadow ray. Records are
+  // counted as in the test above.
+  EstimatorConfig e = ears();
+  e.mis = MisHeuristic::None;
+  e.earsLightMax = gpu::kEarsLightFactorMax;
+  RenderOutcome r = renderWith("furnace.gltf", e, 32, 32, 64);
+  ASSERT_TRUE(r.ears);
+  const EarsSummary& s = *r.ears;
+  ASSERT_TRUE(s.learnsLight);
+  ASSERT_GT(s.lightSamples, 1e4);
+  EXPECT_GT(s.trustedLightCells, 0u);
+  EXPECT_LE(s.occupiedLightCells, s.cells);
+  for (int c = 0; c < 3; ++c) {
+    const double variance = s.meanVSquared[c] - s.meanV[c] * s.meanV[c];
+    const double se = std::sqrt(variance / (s.lightSamples / gpu::kEarsDepths));
+    EXPECT_TRUE(withinSigmas(zTest(s.meanV[c], 0.5, se), 5.0)) << "channel " << c << ": " << s.meanV[c] << " +- " << se;
+  }
+  EXPECT_GT(s.meanLightRays, 0.99);
+  EXPECT_LE(s.meanLightRays, 1.0);
+  // The learned light factors decide the first vertices' light samples once the cells are trusted.
+  const auto& first = s.lightFactors[0];
+  EXPECT_GT(first[gpu::kEarsBinRoulette] + first[gpu::kEarsBinOne] + first[gpu::kEarsBinSplit], 0u);
+  EXPECT_EQ(r.film.totalNonfinite(), 0u);
+}
+
+// On the glossy room most light samples gather little for their ray: the light cells roulette them, so fewer
+// shadow rays are traced for the same image (independent seeds; docs/ears.md has the measurement).
+TEST(Ears, LearnedLightSamplesRouletteShadowRaysAndKeepTheMean) {
+  EstimatorConfig learned = ears();
+  learned.earsLightMax = gpu::kEarsLightFactorMax;
+  RenderOutcome off = renderWith("glossy_room.gltf", ears(), 32, 32, 32, 11);
+  RenderOutcome on = renderWith("glossy_room.gltf", learned, 32, 32, 32, 12);
+  ASSERT_TRUE(off.ears && on.ears);
+  EXPECT_FALSE(off.ears->learnsLight);
+  ASSERT_TRUE(on.ears->learnsLight);
+  uint64_t rouletted = 0;
+  for (const auto& depth : on.ears->lightFactors) rouletted += depth[gpu::kEarsBinRoulette];
+  EXPECT_GT(rouletted, 0u);
+  const double shadowPerVertexOff = double(off.stats.shadowRays) / double(off.stats.cameraRays + off.stats.extensionRays);
+  const double shadowPerVertexOn = double(on.stats.shadowRays) / double(on.stats.cameraRays + on.stats.extensionRays);
+  EXPECT_LT(shadowPerVertexOn, 0.8 * shadowPerVertexOff);
+  EXPECT_TRUE(regionsAgree(whole(on.film), whole(off.film), 4.0));
+  EXPECT_EQ(on.film.totalNonfinite(), 0u);
+}
+
 // ears_max bounds the factor: at 1 the cache decides roulette alone and no vertex splits, where the default (20)
 // splits on the room lit through a slit.
 TEST(Ears, AMaximumOfOneLearnsRouletteAloneAndNeverSplits) {
@@ -89,8 +136,8 @@ TEST(Ears, MemoryIsBoundedOnAMillionTriangles) {
   RenderOutcome r = runRender(sharedContext(), o);
   ASSERT_TRUE(r.ears);
   EXPECT_GT(r.sceneInfo.triangles, 500000u);
-  // The cache does not grow with the scene: at most 2^19 cells (sums and learned texels), and each path slot's
-  // records.
+  // The cache does not grow with the scene: at most 2^19 cells (sums and learned texels; light cells are off by
+  // default), and each path slot's records.
   const uint64_t slots = uint64_t(32 * 32 * 2) * kEarsPoolFactor;
   EXPECT_LE(r.ears->deviceBytes, (uint64_t(1) << 19) * (sizeof(gpu::EarsCell) + gpu::kEarsSamplingTexels * 16) +
                                      slots * (gpu::kEarsDepths * sizeof(gpu::EarsRecord) + sizeof(gpu::EarsSlot)) +

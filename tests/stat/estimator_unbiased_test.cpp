@@ -44,6 +44,10 @@ std::vector<Variant> variants() {
     c.rr = RouletteMode::Ears;
     c.earsMax = 1.0f;
   });
+  add("rr ears, learned light samples", [](EstimatorConfig& c) {
+    c.rr = RouletteMode::Ears;
+    c.earsLightMax = gpu::kEarsLightFactorMax;
+  });
   add("light samples 4", [](EstimatorConfig& c) { c.lightSamples = 4; });
   add("light samples 3, split depth 3", [](EstimatorConfig& c) {
     c.lightSamples = 3;

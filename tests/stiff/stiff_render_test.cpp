@@ -73,12 +73,16 @@ TEST(StiffRender, TinyIntenseLightMatchesTheAnalyticRadiance) {
 }
 
 // The same light under rr ears: a pixel's few bright vertices get split, the rest rouletted; the image mean and
-// the pixels stay the analytic radiance.
-TEST(StiffRender, TinyIntenseLightWithEars) {
+// the pixels stay the analytic radiance. With learned light samples too, the light cells split or roulette each
+// copy's light samples.
+class TinyIntenseLightWithEars : public ::testing::TestWithParam<float> {};
+
+TEST_P(TinyIntenseLightWithEars, MeanAndPixelsAreTheAnalyticRadiance) {
   const uint32_t n = 16;
   EstimatorConfig e;
   e.sampler = Sampler::Independent;
   e.rr = RouletteMode::Ears;
+  e.earsLightMax = GetParam();
   RenderOutcome r = renderWith("stiff/tiny_light.gltf", e, n, n, 256);
   ASSERT_EQ(r.film.totalNonfinite(), 0u);
   const double expectedMean = tinyLightImageMean(n);
@@ -91,7 +95,13 @@ TEST(StiffRender, TinyIntenseLightWithEars) {
   }
   ASSERT_TRUE(r.ears);
   EXPECT_GT(r.ears->trustedCells, 0u);
+  if (GetParam() > 0.0f) EXPECT_GT(r.ears->trustedLightCells, 0u);
 }
+
+INSTANTIATE_TEST_SUITE_P(StiffRender, TinyIntenseLightWithEars, ::testing::Values(0.0f, gpu::kEarsLightFactorMax),
+                         [](const ::testing::TestParamInfo<float>& p) {
+                           return p.param > 0.0f ? std::string("LearnedLightSamples") : std::string("Default");
+                         });
 
 TEST(StiffRender, RouletteAndSplittingAtTheEdges) {
   // Case 9 on the white furnace (L = 2). One roulette decision (at the first continuation, depth cap 1, so

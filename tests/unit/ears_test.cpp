@@ -110,6 +110,22 @@ TEST(EarsCell, GridCellsLevelsAndNormalBins) {
   }
 }
 
+TEST(EarsCell, LightCellsFollowTheCopiesCellsAndTagsFindTheirRecords) {
+  const uint mask = (1u << 10) - 1u;
+  EXPECT_EQ(earsLightCell(0u, mask), mask + 1u);
+  EXPECT_EQ(earsLightCell(mask, mask), 2u * mask + 1u);  // the table's last cell
+  // A first light sample's tag names its copy's record, for the largest slot the pool allows (2^24 paths a pass
+  // times kEarsPoolFactor = 4) and every training depth; untagged slots stay below the tag bit.
+  for (uint slot : {0u, 1u, 12345u, (1u << 26) - 1u})
+    for (uint depth = 0; depth < kEarsDepths; ++depth) {
+      const uint tag = earsFirstLightTag(slot, depth);
+      EXPECT_NE(tag & kEarsFirstLightTag, 0u);
+      EXPECT_EQ(tag & kEarsSlotMask, slot);
+      EXPECT_EQ(earsTaggedRecord(tag), slot * kEarsDepths + depth);
+    }
+  EXPECT_EQ(((1u << 26) - 1u) & kEarsFirstLightTag, 0u);
+}
+
 TEST(EarsImageStatistics, PassSumsAreTheBatchAfterMinusBefore) {
   FilmPixel batch[2] = {};
   batch[0].sum = vec4(1.0f, 2.0f, 3.0f, 2.0f);
