@@ -37,6 +37,7 @@ EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathS
     cellBuffer_ = storage(16, vk::MemoryKind::DeviceLocal);
     records_ = storage(16, vk::MemoryKind::DeviceLocal);
     slots_ = storage(16, vk::MemoryKind::DeviceLocal);
+    training_ = storage(16, vk::MemoryKind::DeviceLocal);
     deviceBytes_ = 0;  // placeholders
     return;
   }
@@ -49,6 +50,7 @@ EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathS
   const uint64_t recordBytes = sizeof(gpu::EarsRecord) + (learnsLight_ ? gpu::kEarsLightRecordBytes : 0);
   records_ = storage(uint64_t(pathSlots) * gpu::kEarsDepths * recordBytes, vk::MemoryKind::DeviceLocal);
   slots_ = storage(uint64_t(pathSlots) * sizeof(gpu::EarsSlot), vk::MemoryKind::DeviceLocal);
+  training_ = storage(uint64_t(pathSlots) * (gpu::kEarsDepths + 1) * sizeof(uint32_t), vk::MemoryKind::DeviceLocal);
   cellBuffer_.zero();
   records_.zero();
   slots_.zero();
@@ -70,6 +72,7 @@ void EarsCache::bindTo(vk::KernelLayout& layout) const {
   layout.bindTexel(BINDING_EARS_SAMPLING, sampling_);
   layout.bindStorage(BINDING_EARS_RECORDS, records_);
   layout.bindStorage(BINDING_EARS_SLOTS, slots_);
+  layout.bindStorage(BINDING_EARS_TRAINING, training_);
 }
 
 void EarsCache::setImageStatistics(double raysPerSample, double relativeVariance) {

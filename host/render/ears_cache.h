@@ -50,6 +50,10 @@ class EarsCache {
   void noteTrainingSamples(uint32_t samplesPerPixel) { trainingSamples_ += samplesPerPixel; }
   EarsSummary summary();
   uint64_t deviceBytes() const { return deviceBytes_; }
+  // The pass's training lists (ears.h EarsHeader): records written and slots split off; emptied after training.
+  uint32_t trainingRecords() const { return header().trainingRecords; }
+  uint32_t trainingChildren() const { return header().trainingChildren; }
+  void clearTrainingLists() const { header().trainingRecords = header().trainingChildren = 0; }
   uint32_t cellCount() const { return cells_; }                // copies' cells (as many light cells follow)
   uint32_t tableCells() const { return (learnsLight_ ? 2 : 1) * cells_; }  // both kinds
   std::vector<gpu::EarsCell> downloadCells();                  // tableCells()
@@ -62,7 +66,7 @@ class EarsCache {
   uint32_t learningPasses_ = 0;
   uint32_t trainingSamples_ = 0;
   uint64_t deviceBytes_ = 0;
-  vk::Buffer header_, cellBuffer_, sampling_, records_, slots_;
+  vk::Buffer header_, cellBuffer_, sampling_, records_, slots_, training_;
 };
 
 }  // namespace vkmc

@@ -302,7 +302,7 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
   }
   collectCounters(stats);
   if (settings_.recordDepthStats) collectPilot(count);
-  if (ears_->enabled()) trainEars(count + std::min(controlView().splitChildren, pool_ - count), stats);
+  if (ears_->enabled()) trainEars(count, pixelCount, stats);
   return bounce;
 }
 
@@ -328,18 +328,23 @@ uint32_t PathRenderer::trainEarsPasses(const Film& film, RenderStats& stats) {
   return samples;
 }
 
-void PathRenderer::trainEars(uint32_t slotsUsed, RenderStats& stats) {
+void PathRenderer::trainEars(uint32_t cameraPaths, uint32_t pixels, RenderStats& stats) {
   gpu::PushConstants pc{};
   pc.queueCapacity = pool_;
+  // Only training paths fill the lists: the pass's first samples (common.glsl earsTrains) and their copies.
+  const uint32_t cameras = std::min(cameraPaths, std::max(pixels, gpu::kEarsTrainingPaths));
+  const uint32_t slots = cameras + ears_->trainingChildren();
   VkCommandBuffer cmd = ctx_.beginCommands();
   timer_->reset(cmd);
-  pc.pathCount = slotsUsed;
-  vk::dispatch(cmd, *layout_, *kernels_.earsGather, &pc, sizeof(pc), groupsFor(slotsUsed), timer_.get());
-  vk::dispatch(cmd, *layout_, *kernels_.earsTrain, &pc, sizeof(pc), groupsFor(slotsUsed * gpu::kEarsDepths), timer_.get());
+  pc.pathCount = cameras;
+  pc.pixelCount = pixels;
+  vk::dispatch(cmd, *layout_, *kernels_.earsGather, &pc, sizeof(pc), groupsFor(slots), timer_.get());
+  vk::dispatch(cmd, *layout_, *kernels_.earsTrain, &pc, sizeof(pc), groupsFor(ears_->trainingRecords() + slots), timer_.get());
   pc.pathCount = ears_->tableCells();
   vk::dispatch(cmd, *layout_, *kernels_.earsFold, &pc, sizeof(pc), groupsFor(pc.pathCount), timer_.get());
   ctx_.submitAndWait(cmd);
   timer_->collect(stats.stageSeconds);
+  ears_->clearTrainingLists();
 }
 
 // The device's unfolded batch: in place where the film is mapped (lavapipe), else downloaded into `copy`.

@@ -77,7 +77,8 @@ class PathRenderer {
   void foldFilm(Film& film);
   // EARS after a pass: its records into the cache (slotsUsed: the pass's path slots), then the image statistics
   // of the film so far (raysPerSample: the pass's) for the next pass's factors.
-  void trainEars(uint32_t slotsUsed, RenderStats& stats);
+  // After a pass of cameraPaths samples over `pixels` pixels: its training paths' sums into the cache.
+  void trainEars(uint32_t cameraPaths, uint32_t pixels, RenderStats& stats);
   uint32_t trainEarsPasses(const Film& film, RenderStats& stats);
   bool earsTraining_ = false;  // a training pass: its own seed, its samples dropped
   void updateEarsStatistics(const Film& film, double raysPerSample);

@@ -96,6 +96,11 @@ layout(binding = BINDING_EARS_RECORDS, std430) buffer EarsRecords { EarsRecord e
 // The same buffer as vec4s: the light records after the pool's records (ears.h, ears_light_max > 0).
 layout(binding = BINDING_EARS_RECORDS, std430) buffer EarsRecordTexels { vec4 earsRecordVec4s[]; };
 uint earsLightRecord(uint record) { return 2u * kEarsDepths * pc.queueCapacity + record; }
+// The pass's training lists: record indices from 0, the slots split off by training paths from earsChildList().
+layout(binding = BINDING_EARS_TRAINING, std430) buffer EarsTraining { uint earsTrainingList[]; };
+uint earsChildList() { return kEarsDepths * pc.queueCapacity; }
+// Slot i of the pass's training slots: its first `cameras` camera paths (slot = sample), then the listed children.
+uint earsTrainingSlot(uint i, uint cameras) { return i < cameras ? i : earsTrainingList[earsChildList() + i - cameras]; }
 layout(binding = BINDING_EARS_SLOTS, std430) buffer EarsSlots { EarsSlot earsSlots[]; };
 layout(binding = BINDING_PUNCTUAL_LIGHTS, std430) readonly buffer PunctualLights { PunctualLight punctualLights[]; };
 layout(binding = BINDING_ENVIRONMENT, std430) readonly buffer Environment {

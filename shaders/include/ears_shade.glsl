@@ -70,6 +70,18 @@ float earsLightFactor(EarsReading r, vec3 t, float q) {
   return min(earsFactor(t / q, r.lightMoment, r.lightVariance, earsHeader.imageFactor), kEarsLightMax);
 }
 
+// Appends to the training lists, one atomic per subgroup (call where the appending lanes are the active ones).
+uint appendTrainingRecord() {
+  uint n = subgroupAdd(1u), base = 0u;
+  if (subgroupElect()) base = atomicAdd(earsHeader.trainingRecords, n);
+  return appendSlot(base);
+}
+uint appendTrainingChild() {
+  uint n = subgroupAdd(1u), base = 0u;
+  if (subgroupElect()) base = atomicAdd(earsHeader.trainingChildren, n);
+  return earsChildList() + appendSlot(base);
+}
+
 // The factor histograms by depth: one atomic per subgroup and bin (a bounce's paths all have the same depth).
 void countEarsFactor(uint depth, uint bin) {
   uint row = min(depth, kEarsHistogramDepths - 1u) * kEarsBins;
@@ -102,12 +114,18 @@ uint earsLightSamples(PathState copy, float qL, out float share) {
 }
 
 // Copy c of the vertex of `path` (its throughput before the factor) in slot `target`, split off from `parent`'s:
-// its record, its light samples (qL: earsLightFactor) and its BSDF continuation, each weighted 1/q.
-void shadeEarsCopy(PathState path, uint target, uint parent, SurfacePoint s, GltfMaterial gm, vec3 wo, vec3 woLocal,
-                   float q, float qL, uint c, uint key) {
+// its record, its light samples (qL: earsLightFactor) and its BSDF continuation, each weighted 1/q. `emission`:
+// what the hit itself sends back (copy 0 only), which the caller adds with the copy's results (addToEarsSample)
+// and which belongs to the vertex before. Returns the rays the copy traced and, in `poisoned`, a non-finite
+// throughput to add (counted by continuePath).
+float shadeEarsCopy(PathState path, uint target, uint parent, SurfacePoint s, GltfMaterial gm, vec3 wo, vec3 woLocal,
+                    float q, float qL, uint c, uint key, vec3 emission, out vec3 poisoned) {
   uint depth = path.depth;
   bool trains = earsTrains(path.rootPath);
-  if (c > 0u && trains) earsSlots[target] = EarsSlot(vec4(0.0), parent + 1u, depth, 0u, 0u);
+  if (c > 0u && trains) {
+    earsSlots[target] = EarsSlot(vec4(0.0), parent + 1u, depth, 0u, 0u);
+    earsTrainingList[appendTrainingChild()] = target;
+  }
   vec3 beta = path.throughput.rgb;
   bool records = trains && depth < kEarsDepths && maxComponent(beta) > 0.0;
   PathState copy = path;
@@ -132,50 +150,57 @@ void shadeEarsCopy(PathState path, uint target, uint parent, SurfacePoint s, Glt
   if (records) {
     vec3 scale = vec3(beta.r > 0.0 ? q / beta.r : 0.0, beta.g > 0.0 ? q / beta.g : 0.0, beta.b > 0.0 ? q / beta.b : 0.0);
     uint record = target * kEarsDepths + depth;
-    earsRecords[record] = EarsRecord(-earsSlots[target].gathered, vec4(scale, uintBitsToFloat(key + 1u)));
+    vec4 before = earsSlots[target].gathered + vec4(allFinite(emission) ? emission : vec3(0.0), 0.0);
+    earsRecords[record] = EarsRecord(-before, vec4(scale, uintBitsToFloat(key + 1u)));
+    earsTrainingList[appendTrainingRecord()] = record;
     if (kEarsLightMax > 0.0) earsRecordVec4s[earsLightRecord(record)] = vec4(scale / share, firstLight);
   }
-  vec3 poisoned = vec3(0.0);  // a non-finite throughput, counted by continuePath
+  poisoned = vec3(0.0);
   PathState next;
   if (continuationIsUseful(depth) && continuePath(path, target, s, gm, woLocal, c, q, poisoned, next)) {
     queueContinuation(target, next, c > 0u);
     ++rays;
   }
-  if (trains) earsSlots[target].gathered.w += float(rays);
-  addToSample(target, path.rootPath, poisoned);
+  return float(rays);
 }
 
-// The vertex of `path` (slot id) at hit `hit`: its factor, its copies queued, copy 0 shaded here.
-void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMaterial gm, vec3 wo, vec3 woLocal) {
+// The vertex of `path` (slot id) at hit `hit`: its factor, its copies queued, copy 0 shaded here; its results and
+// the hit's emission added to the sample once.
+void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMaterial gm, vec3 wo, vec3 woLocal,
+                     vec3 emission) {
   uint depth = path.depth;
-  if (!belowDepthCap(depth)) return;
-  uint key = earsCellKey(s.p, s.ng, earsHeader.grid);
-  EarsReading reading = earsRead(key);
-  vec3 t = earsRelativeThroughput(path);
-  bool trained;
-  float q = earsVertexFactor(path, reading, t, trained);
-  // Slots for every copy but the first are taken before the copies are drawn, so whether the pool was full
-  // (then q = 1: the vertex as it is) never depends on the draw: unbiased.
-  uint spare = uint(ceil(q)) - 1u, firstChild = 0u;
-  if (spare > 0u) {
-    uint base = atomicAdd(control.splitChildren, spare);
-    if (pc.pathCount + base + spare > pc.queueCapacity) {
-      q = 1.0;
-      spare = 0u;
-    } else {
-      firstChild = pc.pathCount + base;
+  vec3 poisoned = vec3(0.0);
+  float rays = 0.0;
+  if (belowDepthCap(depth)) {
+    uint key = earsCellKey(s.p, s.ng, earsHeader.grid);
+    EarsReading reading = earsRead(key);
+    vec3 t = earsRelativeThroughput(path);
+    bool trained;
+    float q = earsVertexFactor(path, reading, t, trained);
+    // Slots for every copy but the first are taken before the copies are drawn, so whether the pool was full
+    // (then q = 1: the vertex as it is) never depends on the draw: unbiased.
+    uint spare = uint(ceil(q)) - 1u, firstChild = 0u;
+    if (spare > 0u) {
+      uint base = atomicAdd(control.splitChildren, spare);
+      if (pc.pathCount + base + spare > pc.queueCapacity) {
+        q = 1.0;
+        spare = 0u;
+      } else {
+        firstChild = pc.pathCount + base;
+      }
     }
+    uint copies = min(splitCount(q, sampleU(pathStream(path), bounceDim(depth, kDimSplit))), spare + 1u);
+    countEarsFactor(depth, earsBin(trained, q));
+    float qL = earsLightFactor(reading, t, q);
+    for (uint c = 1u; c < copies; ++c) {
+      uint target = firstChild + c - 1u;
+      PathState child = path;
+      child.radiance = vec4(q, uintBitsToFloat(c), uintBitsToFloat(id), qL);
+      storePath(target, child);
+      storeHit(target, hit);
+      rayQueues[copyQueueBase() + atomicAdd(control.copyQueueCount, 1u)] = target;
+    }
+    if (copies > 0u) rays = shadeEarsCopy(path, id, id, s, gm, wo, woLocal, q, qL, 0u, key, emission, poisoned);
   }
-  uint copies = min(splitCount(q, sampleU(pathStream(path), bounceDim(depth, kDimSplit))), spare + 1u);
-  countEarsFactor(depth, earsBin(trained, q));
-  float qL = earsLightFactor(reading, t, q);
-  for (uint c = 1u; c < copies; ++c) {
-    uint target = firstChild + c - 1u;
-    PathState child = path;
-    child.radiance = vec4(q, uintBitsToFloat(c), uintBitsToFloat(id), qL);
-    storePath(target, child);
-    storeHit(target, hit);
-    rayQueues[copyQueueBase() + atomicAdd(control.copyQueueCount, 1u)] = target;
-  }
-  if (copies > 0u) shadeEarsCopy(path, id, id, s, gm, wo, woLocal, q, qL, 0u, key);
+  addToEarsSample(id, path.rootPath, emission + poisoned, rays);
 }

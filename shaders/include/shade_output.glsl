@@ -22,6 +22,18 @@ void addToSample(uint id, uint root, vec3 value) {
   storeRadiance(id, vec4(radiance.rgb + value, radiance.w));
 }
 
+// Under EARS a copy's radiance and its rays in one go: `value` into its sample, and, for a training path, into its
+// slot's sums with `rays` (one read and one write of the slot; finite values only, as addToSample).
+void addToEarsSample(uint id, uint root, vec3 value, float rays) {
+  bool finite = allFinite(value);
+  if (!finite) atomicAdd(control.nonfiniteEmission, 1u);
+  if (earsTrains(root)) earsSlots[id].gathered += vec4(finite ? value : vec3(0.0), rays);
+  if (finite && !(maxComponent(abs(value)) > 0.0)) return;
+  atomicAdd(paths[root].radiance.r, value.r);
+  atomicAdd(paths[root].radiance.g, value.g);
+  atomicAdd(paths[root].radiance.b, value.b);
+}
+
 // Queue appends take one atomic per subgroup: an active lane's slot is the subgroup's base plus its rank among
 // the active lanes. (llvmpipe runs a subgroup's atomics one lane after another, on counters its threads share.)
 // Call where the appending lanes are exactly the active ones.

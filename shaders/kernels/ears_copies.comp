@@ -17,6 +17,9 @@ void main() {
   vec3 wo = -path.direction.xyz;
   SurfacePoint s = surfaceAt(floatBitsToUint(hit.w), hit.yz, wo);
   GltfMaterial gm = shadeSurface(loadMaterial(s.material), s, wo);
-  shadeEarsCopy(path, target, floatBitsToUint(path.radiance.z), s, gm, wo, wo * s.frame, path.radiance.x,
-                path.radiance.w, floatBitsToUint(path.radiance.y), earsCellKey(s.p, s.ng, earsHeader.grid));
+  vec3 poisoned;
+  float rays = shadeEarsCopy(path, target, floatBitsToUint(path.radiance.z), s, gm, wo, wo * s.frame, path.radiance.x,
+                             path.radiance.w, floatBitsToUint(path.radiance.y), earsCellKey(s.p, s.ng, earsHeader.grid),
+                             vec3(0.0), poisoned);
+  addToEarsSample(target, path.rootPath, poisoned, rays);
 }

@@ -3,8 +3,8 @@
 #extension GL_EXT_shader_atomic_float : require
 // EARS training, step 1 of 3, after a pass's last bounce: each path slot adds what it gathered and the rays it
 // traced to its own records and to those of the copies it descends from (its parent's below the depth that split
-// it off, and so on up to the camera path), so each record ends with its whole subtree's sums. pc.pathCount: the
-// slots the pass used.
+// it off, and so on up to the camera path), so each record ends with its whole subtree's sums. One invocation per
+// training slot (earsTrainingSlot): pc.pathCount training camera paths, then the listed children.
 #include "common.glsl"
 
 void addToRecord(uint r, vec4 value) {
@@ -15,8 +15,9 @@ void addToRecord(uint r, vec4 value) {
 }
 
 void main() {
-  uint slot = invocationIndex();
-  if (slot >= pc.pathCount) return;
+  uint i = invocationIndex();
+  if (i >= pc.pathCount + earsHeader.trainingChildren) return;
+  uint slot = earsTrainingSlot(i, pc.pathCount);
   EarsSlot own = earsSlots[slot];
   if (own.gathered == vec4(0.0)) return;
   uint s = slot, from = own.splitDepth, to = kEarsDepths, parent = own.parent;

@@ -4,13 +4,18 @@
 // EARS training, step 2 of 3: each record (one copy of a training vertex) adds its Lr (what its subtree gathered,
 // per unit throughput at the vertex) and its rays to the training sums of its cell at every level, and its first
 // light sample's v and ray to the light cell beside each (ears.h earsLightCell), then is
-// cleared, as is its slot, for the next pass. pc.pathCount: the slots the pass used (kEarsDepths records each).
+// cleared for the next pass. One invocation per listed record, then one per training slot (as ears_gather), which
+// it clears. pc.pathCount: the pass's training camera paths.
 #include "common.glsl"
 
 void main() {
-  uint i = invocationIndex();
-  if (i >= pc.pathCount * kEarsDepths) return;
-  if (i % kEarsDepths == 0u) earsSlots[i / kEarsDepths] = EarsSlot(vec4(0.0), 0u, 0u, 0u, 0u);
+  uint records = earsHeader.trainingRecords, n = invocationIndex();
+  if (n >= records + pc.pathCount + earsHeader.trainingChildren) return;
+  if (n >= records) {
+    earsSlots[earsTrainingSlot(n - records, pc.pathCount)] = EarsSlot(vec4(0.0), 0u, 0u, 0u, 0u);
+    return;
+  }
+  uint i = earsTrainingList[n];
   EarsRecord r = earsRecords[i];
   uint keyCode = floatBitsToUint(r.scale.w);
   if (keyCode == 0u) return;

@@ -38,8 +38,7 @@ void main() {
   vec3 gathered = emissionAt(path, s, m, tri, hit, wo);
   vec3 woLocal = wo * s.frame;
   if (kRouletteMode == kRouletteEars) {
-    addToSample(id, root, gathered);  // the hit's emission: the previous vertex's copy gathered it
-    shadeEarsVertex(path, id, hit, s, gm, wo, woLocal);
+    shadeEarsVertex(path, id, hit, s, gm, wo, woLocal, gathered);  // the hit's emission: the vertex before gathered it
     return;
   }
   if (belowDepthCap(depth) && kHasLights != 0u && kNee != 0u) {

@@ -53,6 +53,11 @@ struct EarsHeader {
   float imageFactor;  // sqrt(C_img / V_img) of the passes so far; 0: nothing learned yet (throughput roulette)
   float epsilon;      // t = beta / sqrt(I^2 + epsilon)
   uint extraShadowSlots;  // shadow-queue slots beyond light_samples per path slot, for split light samples
+  // The training lists of the pass (BINDING_EARS_TRAINING): records written, then slots split off by training
+  // paths, so that the training kernels visit those alone; the host empties them after each pass's training.
+  uint trainingRecords;
+  uint trainingChildren;
+  uint unused0, unused1;
   uint factors[kEarsHistogramDepths * kEarsBins];       // vertices by depth and factor bin
   uint lightFactors[kEarsHistogramDepths * kEarsBins];  // copies by depth and light-factor bin
 };
@@ -165,7 +170,7 @@ VKMC_END_NAMESPACE
 
 #ifdef __cplusplus
 namespace vkmc::gpu {
-static_assert(sizeof(EarsHeader) == 32 + 2 * 4 * kEarsHistogramDepths * kEarsBins);
+static_assert(sizeof(EarsHeader) == 48 + 2 * 4 * kEarsHistogramDepths * kEarsBins);
 static_assert(sizeof(EarsCell) == 32 && sizeof(EarsRecord) == 32 && sizeof(EarsSlot) == 32);
 static_assert(kEarsDepths <= 4u, "the first-light tag holds a depth in two bits");
 }  // namespace vkmc::gpu

@@ -46,7 +46,9 @@
 #define BINDING_HIT_TEXELS 33              // imageBuffer: BINDING_HITS as texels, for reading
 #define BINDING_QUEUE_TEXELS 34            // uimageBuffer: BINDING_RAY_QUEUES as texels, for reading
 #define BINDING_SHADOW_TEXELS 35           // uimageBuffer: BINDING_SHADOW_QUEUE's ShadowRay[] as texels (3 a ray)
-#define BINDING_COUNT 36
+#define BINDING_EARS_TRAINING 36           // uint[pool * (kEarsDepths + 1)]: the records written and the slots split off
+                                           // by training paths this pass (ears.h EarsHeader training*)
+#define BINDING_COUNT 37
 
 // Texel formats of the scene bindings as GLSL image-format qualifiers (common.glsl declares the bindings with
 // them); the host derives each VkFormat from the same token (sceneTexelFormat in host/render/gpu_scene.cpp).
