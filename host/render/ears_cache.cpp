@@ -136,8 +136,9 @@ EarsSummary EarsCache::summary() {
   }
   for (uint32_t d = 0; d < gpu::kEarsHistogramDepths; ++d)
     for (uint32_t b = 0; b < gpu::kEarsBins; ++b) {
-      s.factors[d][b] = header().factors[d * gpu::kEarsBins + b];
-      s.lightFactors[d][b] = header().lightFactors[d * gpu::kEarsBins + b];
+      auto count = [&](uint32_t h) { return header().histograms[(h * gpu::kEarsHistogramDepths + d) * gpu::kEarsBins + b]; };
+      s.factors[d][b] = count(gpu::kEarsFactorHistogram);
+      s.lightFactors[d][b] = count(gpu::kEarsLightHistogram);
     }
   return s;
 }

@@ -5,6 +5,7 @@
 // group for 20 iterations. Each copy at a training depth leaves a record (EarsRecord) that the pass's end fills
 // with what its subtree gathered (kernels/ears_*.comp). Needs shade_output.glsl.
 
+#ifdef VKMC_FLOAT_ATOMICS  // EARS runs the atomic variants only (its copies add to shared roots)
 layout(binding = BINDING_EARS_SAMPLING, TEXEL_FORMAT_EARS_SAMPLING) uniform readonly imageBuffer earsLearned;
 
 // The copy queue: the third region of BINDING_RAY_QUEUES. A queued slot holds the vertex's path (before its
@@ -20,26 +21,23 @@ struct EarsReading {
   float lightSamples;
 };
 
+// One cell's learned statistics mixed into those of the coarser levels read before it (earsShrunk).
+void earsReadCell(uint cell, inout vec3 moment, inout vec3 variance, inout float copies) {
+  vec4 m = imageLoad(earsLearned, int(kEarsSamplingTexels * cell));
+  if (!(m.w > 0.0)) return;
+  vec3 v = imageLoad(earsLearned, int(kEarsSamplingTexels * cell + 1u)).rgb;
+  moment = earsShrunk(moment, copies, m.rgb, m.w);
+  variance = earsShrunk(variance, copies, v, m.w);
+  copies = max(copies, m.w);
+}
+
 EarsReading earsRead(uint key) {
   EarsReading r = EarsReading(vec3(0.0), vec3(0.0), 0.0, vec3(0.0), vec3(0.0), 0.0);
   for (int level = int(kEarsLevels) - 1; level >= 0 && earsHeader.imageFactor > 0.0; --level) {
     uint cell = earsCellIndex(key, uint(level), earsHeader.cellMask);
-    vec4 m = imageLoad(earsLearned, int(kEarsSamplingTexels * cell));
-    if (m.w > 0.0) {
-      vec3 v = imageLoad(earsLearned, int(kEarsSamplingTexels * cell + 1u)).rgb;
-      r.moment = earsShrunk(r.moment, r.copies, m.rgb, m.w);
-      r.variance = earsShrunk(r.variance, r.copies, v, m.w);
-      r.copies = max(r.copies, m.w);
-    }
-    if (kEarsLightMax == 0.0) continue;
-    uint light = earsLightCell(cell, earsHeader.cellMask);
-    vec4 lm = imageLoad(earsLearned, int(kEarsSamplingTexels * light));
-    if (lm.w > 0.0) {
-      vec3 lv = imageLoad(earsLearned, int(kEarsSamplingTexels * light + 1u)).rgb;
-      r.lightMoment = earsShrunk(r.lightMoment, r.lightSamples, lm.rgb, lm.w);
-      r.lightVariance = earsShrunk(r.lightVariance, r.lightSamples, lv, lm.w);
-      r.lightSamples = max(r.lightSamples, lm.w);
-    }
+    earsReadCell(cell, r.moment, r.variance, r.copies);
+    if (kEarsLightMax > 0.0)
+      earsReadCell(earsLightCell(cell, earsHeader.cellMask), r.lightMoment, r.lightVariance, r.lightSamples);
   }
   return r;
 }
@@ -82,19 +80,13 @@ uint appendTrainingChild() {
   return earsChildList() + appendSlot(base);
 }
 
-// The factor histograms by depth: one atomic per subgroup and bin (a bounce's paths all have the same depth).
-void countEarsFactor(uint depth, uint bin) {
-  uint row = min(depth, kEarsHistogramDepths - 1u) * kEarsBins;
+// A decision into its histogram (kEarsFactorHistogram, kEarsLightHistogram) by depth: one atomic per subgroup
+// and bin (a bounce's paths all have the same depth).
+void countEarsDecision(uint histogram, uint depth, uint bin) {
+  uint row = (histogram * kEarsHistogramDepths + min(depth, kEarsHistogramDepths - 1u)) * kEarsBins;
   for (uint b = 0u; b < kEarsBins; ++b) {
     uint n = subgroupAdd(bin == b ? 1u : 0u);
-    if (subgroupElect() && n > 0u) atomicAdd(earsHeader.factors[row + b], n);
-  }
-}
-void countEarsLightFactor(uint depth, uint bin) {
-  uint row = min(depth, kEarsHistogramDepths - 1u) * kEarsBins;
-  for (uint b = 0u; b < kEarsBins; ++b) {
-    uint n = subgroupAdd(bin == b ? 1u : 0u);
-    if (subgroupElect() && n > 0u) atomicAdd(earsHeader.lightFactors[row + b], n);
+    if (subgroupElect() && n > 0u) atomicAdd(earsHeader.histograms[row + b], n);
   }
 }
 
@@ -134,7 +126,7 @@ float shadeEarsCopy(PathState path, uint target, uint parent, SurfacePoint s, Gl
   uint rays = 0u;
   float share = 1.0;
   uint samples = kHasLights != 0u && kNee != 0u ? earsLightSamples(copy, qL, share) : 0u;
-  if (kEarsLightMax > 0.0 && kHasLights != 0u && kNee != 0u) countEarsLightFactor(depth, earsBin(qL > 0.0, qL));
+  if (kEarsLightMax > 0.0 && kHasLights != 0u && kNee != 0u) countEarsDecision(kEarsLightHistogram, depth, earsBin(qL > 0.0, qL));
   float firstLight = samples > 0u ? kEarsLightNoRay : kEarsLightNone;
   for (uint j = 0u; j < samples; ++j) {
     ShadowRay ray;
@@ -190,7 +182,7 @@ void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMate
       }
     }
     uint copies = min(splitCount(q, sampleU(pathStream(path), bounceDim(depth, kDimSplit))), spare + 1u);
-    countEarsFactor(depth, earsBin(trained, q));
+    countEarsDecision(kEarsFactorHistogram, depth, earsBin(trained, q));
     float qL = earsLightFactor(reading, t, q);
     for (uint c = 1u; c < copies; ++c) {
       uint target = firstChild + c - 1u;
@@ -204,3 +196,4 @@ void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMate
   }
   addToEarsSample(id, path.rootPath, emission + poisoned, rays);
 }
+#endif

@@ -1,37 +1,46 @@
 // Where a shaded vertex's results go in the wavefront (shade.comp, ears_copies.comp): radiance into its sample,
 // continuations into the next bounce's queue.
 
+// Under EARS a copy's radiance and its rays in one go: `value` into its sample, and, for a training path, into its
+// slot's sums with `rays` (one read and one write of the slot; finite values only, as addToSample).
+#ifdef VKMC_FLOAT_ATOMICS
+void atomicAddToRoot(uint root, vec3 value) {
+  atomicAdd(paths[root].radiance.r, value.r);
+  atomicAdd(paths[root].radiance.g, value.g);
+  atomicAdd(paths[root].radiance.b, value.b);
+}
+
+void addToEarsSample(uint id, uint root, vec3 value, float rays) {
+  bool finite = allFinite(value);
+  if (!finite) atomicAdd(control.nonfiniteEmission, 1u);
+  if (earsTrains(root)) earsSlots[id].gathered += vec4(finite ? value : vec3(0.0), rays);
+  if (finite && !(maxComponent(abs(value)) > 0.0)) return;
+  atomicAddToRoot(root, value);
+}
+#endif
+
 // Radiance of a sample accumulates in its root path. A non-finite value is counted here by kind and still
 // added: the whole sample is then excluded (and counted) by accumulate, never written to the image. Without BSDF
 // splitting a path is its own root and is alone in its slot during this dispatch; with splitting, siblings add
 // concurrently, hence the atomics.
 // Under EARS a training path's slot also sums what it gathered (finite values only), for the cache.
 void addToSample(uint id, uint root, vec3 value) {
+#ifdef VKMC_FLOAT_ATOMICS
+  if (kRouletteMode == kRouletteEars) {
+    addToEarsSample(id, root, value, 0.0);
+    return;
+  }
+#endif
   if (!allFinite(value)) atomicAdd(control.nonfiniteEmission, 1u);
   else if (!(maxComponent(abs(value)) > 0.0)) return;
-  else if (kRouletteMode == kRouletteEars && earsTrains(root)) earsSlots[id].gathered.rgb += value;
 #ifdef VKMC_FLOAT_ATOMICS
-  if (kBsdfSamples > 1.0 || kRouletteMode == kRouletteEars) {
-    atomicAdd(paths[root].radiance.r, value.r);
-    atomicAdd(paths[root].radiance.g, value.g);
-    atomicAdd(paths[root].radiance.b, value.b);
+  if (kBsdfSamples > 1.0) {
+    atomicAddToRoot(root, value);
     return;
   }
 #endif
   vec4 radiance = loadRadiance(id);
   storeRadiance(id, vec4(radiance.rgb + value, radiance.w));
-}
-
-// Under EARS a copy's radiance and its rays in one go: `value` into its sample, and, for a training path, into its
-// slot's sums with `rays` (one read and one write of the slot; finite values only, as addToSample).
-void addToEarsSample(uint id, uint root, vec3 value, float rays) {
-  bool finite = allFinite(value);
-  if (!finite) atomicAdd(control.nonfiniteEmission, 1u);
-  if (earsTrains(root)) earsSlots[id].gathered += vec4(finite ? value : vec3(0.0), rays);
-  if (finite && !(maxComponent(abs(value)) > 0.0)) return;
-  atomicAdd(paths[root].radiance.r, value.r);
-  atomicAdd(paths[root].radiance.g, value.g);
-  atomicAdd(paths[root].radiance.b, value.b);
 }
 
 // Queue appends take one atomic per subgroup: an active lane's slot is the subgroup's base plus its rank among

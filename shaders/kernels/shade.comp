@@ -37,10 +37,12 @@ void main() {
   GltfMaterial gm = shadeSurface(m, s, wo);
   vec3 gathered = emissionAt(path, s, m, tri, hit, wo);
   vec3 woLocal = wo * s.frame;
+#ifdef VKMC_FLOAT_ATOMICS  // EARS's copies add to shared roots: only the atomic variant runs it
   if (kRouletteMode == kRouletteEars) {
     shadeEarsVertex(path, id, hit, s, gm, wo, woLocal, gathered);  // the hit's emission: the vertex before gathered it
     return;
   }
+#endif
   if (belowDepthCap(depth) && kHasLights != 0u && kNee != 0u) {
     uint samples = lightSamplesAt(depth);
     for (uint j = 0u; j < samples; ++j) {

@@ -33,6 +33,7 @@ VKMC_CONST uint kEarsBinFallback = 0u, kEarsBinRoulette = 1u, kEarsBinOne = 2u, 
 VKMC_CONST float kEarsEpsilon = 0.01f;             // relMSE's epsilon (analysis/error_metrics.h; ears_test checks)
 VKMC_CONST uint kEarsTrainingPaths = 65536u;      // samples of a pass that train the cache (common.glsl earsTrains)
 VKMC_CONST uint kEarsHistogramDepths = 8u;        // histogram rows (the last counts every deeper vertex)
+VKMC_CONST uint kEarsFactorHistogram = 0u, kEarsLightHistogram = 1u;  // EarsHeader histograms
 VKMC_CONST float kEarsLightFactorMax = 8.0f;      // light samples a copy takes at most (the SIMD group waits for its
                                                   // lane with the most)
 // The first light sample of a training copy tags its shadow ray (ShadowRay origin.w: the copy's slot, its depth in
@@ -58,8 +59,9 @@ struct EarsHeader {
   uint trainingRecords;
   uint trainingChildren;
   uint unused0, unused1;
-  uint factors[kEarsHistogramDepths * kEarsBins];       // vertices by depth and factor bin
-  uint lightFactors[kEarsHistogramDepths * kEarsBins];  // copies by depth and light-factor bin
+  // Two histograms by depth and bin: the vertices' factors (kEarsFactorHistogram), the copies' light factors
+  // (kEarsLightHistogram).
+  uint histograms[2u * kEarsHistogramDepths * kEarsBins];
 };
 
 // One cell: the sums its training copies added over every pass so far. The table holds the copies' cells, then
