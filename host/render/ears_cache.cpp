@@ -82,7 +82,9 @@ void EarsCache::setImageStatistics(double raysPerSample, double relativeVariance
 }
 
 void EarsCache::beginPass() {
-  if (enabled_ && header().imageFactor > 0.0f) ++learningPasses_;
+  if (!enabled_) return;
+  clearTrainingLists();  // normally empty already: a pass that threw left its entries behind
+  if (header().imageFactor > 0.0f) ++learningPasses_;
 }
 
 std::vector<gpu::EarsCell> EarsCache::downloadCells() {

@@ -93,7 +93,7 @@ void countEarsDecision(uint histogram, uint depth, uint bin) {
 // How many light samples a copy takes, and the weight of each: floor(qL + u) weighted 1/qL where its light
 // cells decided (splitting past light_samples only with shadow-queue slots reserved before the draw), else
 // light_samples weighted 1/light_samples.
-uint earsLightSamples(PathState copy, float qL, out float share) {
+uint earsLightSamples(PathState copy, inout float qL, out float share) {
   uint base = lightSamplesAt(copy.depth);
   if (!(qL > 0.0)) {
     share = 1.0 / float(base);
@@ -125,7 +125,7 @@ float shadeEarsCopy(PathState path, uint target, uint parent, SurfacePoint s, Gl
   copy.throughput.rgb /= q;
   uint rays = 0u;
   float share = 1.0;
-  uint samples = kHasLights != 0u && kNee != 0u ? earsLightSamples(copy, qL, share) : 0u;
+  uint samples = kHasLights != 0u && kNee != 0u ? earsLightSamples(copy, qL, share) : 0u;  // qL as it ran
   if (kEarsLightMax > 0.0 && kHasLights != 0u && kNee != 0u) countEarsDecision(kEarsLightHistogram, depth, earsBin(qL > 0.0, qL));
   float firstLight = samples > 0u ? kEarsLightNoRay : kEarsLightNone;
   for (uint j = 0u; j < samples; ++j) {
@@ -194,6 +194,7 @@ void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMate
     }
     if (copies > 0u) rays = shadeEarsCopy(path, id, id, s, gm, wo, woLocal, q, qL, 0u, key, emission, poisoned);
   }
-  addToEarsSample(id, path.rootPath, emission + poisoned, rays);
+  // The slot trains on the emission even where the continuation poisoned the sample (its record counted it).
+  addToEarsSample(id, path.rootPath, emission + poisoned, emission, rays);
 }
 #endif

@@ -1,8 +1,9 @@
 // Where a shaded vertex's results go in the wavefront (shade.comp, ears_copies.comp): radiance into its sample,
 // continuations into the next bounce's queue.
 
-// Under EARS a copy's radiance and its rays in one go: `value` into its sample, and, for a training path, into its
-// slot's sums with `rays` (one read and one write of the slot; finite values only, as addToSample).
+// Under EARS a copy's radiance and its rays in one go: `value` into its sample (a non-finite one counted and
+// poisoning it, as addToSample), and, for a training path, `trained` (if finite) and `rays` into its slot's sums:
+// one read and one write of the slot.
 #ifdef VKMC_FLOAT_ATOMICS
 void atomicAddToRoot(uint root, vec3 value) {
   atomicAdd(paths[root].radiance.r, value.r);
@@ -10,10 +11,10 @@ void atomicAddToRoot(uint root, vec3 value) {
   atomicAdd(paths[root].radiance.b, value.b);
 }
 
-void addToEarsSample(uint id, uint root, vec3 value, float rays) {
+void addToEarsSample(uint id, uint root, vec3 value, vec3 trained, float rays) {
   bool finite = allFinite(value);
   if (!finite) atomicAdd(control.nonfiniteEmission, 1u);
-  if (earsTrains(root)) earsSlots[id].gathered += vec4(finite ? value : vec3(0.0), rays);
+  if (earsTrains(root)) earsSlots[id].gathered += vec4(allFinite(trained) ? trained : vec3(0.0), rays);
   if (finite && !(maxComponent(abs(value)) > 0.0)) return;
   atomicAddToRoot(root, value);
 }
@@ -27,7 +28,7 @@ void addToEarsSample(uint id, uint root, vec3 value, float rays) {
 void addToSample(uint id, uint root, vec3 value) {
 #ifdef VKMC_FLOAT_ATOMICS
   if (kRouletteMode == kRouletteEars) {
-    addToEarsSample(id, root, value, 0.0);
+    addToEarsSample(id, root, value, value, 0.0);
     return;
   }
 #endif

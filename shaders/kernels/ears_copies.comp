@@ -21,5 +21,5 @@ void main() {
   float rays = shadeEarsCopy(path, target, floatBitsToUint(path.radiance.z), s, gm, wo, wo * s.frame, path.radiance.x,
                              path.radiance.w, floatBitsToUint(path.radiance.y), earsCellKey(s.p, s.ng, earsHeader.grid),
                              vec3(0.0), poisoned);
-  addToEarsSample(target, path.rootPath, poisoned, rays);
+  addToEarsSample(target, path.rootPath, poisoned, vec3(0.0), rays);
 }

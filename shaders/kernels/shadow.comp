@@ -27,16 +27,21 @@ void main() {
   uint id = floatBitsToUint(s.direction.w);  // the root path of the sample
 #ifdef VKMC_FLOAT_ATOMICS
   // EARS trains on what each path copy gathered: the slot that sampled the light (origin.w) sums it.
-  // A copy's first light sample (tagged) also turns its record's pending factor into the sample's v.
-  if (kRouletteMode == kRouletteEars && earsTrains(id) && allFinite(s.contribution.rgb)) {
+  // A copy's first light sample (tagged) also turns its record's pending factor into the sample's v; one whose
+  // contribution is not finite (or whose walk was cut) teaches nothing.
+  if (kRouletteMode == kRouletteEars && earsTrains(id)) {
     uint tag = floatBitsToUint(s.origin.w);
-    uint vertexSlot = tag & kEarsSlotMask;
-    atomicAdd(earsSlots[vertexSlot].gathered.r, s.contribution.r);
-    atomicAdd(earsSlots[vertexSlot].gathered.g, s.contribution.g);
-    atomicAdd(earsSlots[vertexSlot].gathered.b, s.contribution.b);
+    bool finite = allFinite(s.contribution.rgb);
+    if (finite) {
+      uint vertexSlot = tag & kEarsSlotMask;
+      atomicAdd(earsSlots[vertexSlot].gathered.r, s.contribution.r);
+      atomicAdd(earsSlots[vertexSlot].gathered.g, s.contribution.g);
+      atomicAdd(earsSlots[vertexSlot].gathered.b, s.contribution.b);
+    }
     if (kEarsLightMax > 0.0 && (tag & kEarsFirstLightTag) != 0u) {
       uint r = earsLightRecord(earsTaggedRecord(tag));
-      earsRecordVec4s[r] = vec4(s.contribution.rgb * earsRecordVec4s[r].rgb, kEarsLightUnoccluded);
+      earsRecordVec4s[r] = finite ? vec4(s.contribution.rgb * earsRecordVec4s[r].rgb, kEarsLightUnoccluded)
+                                  : vec4(0.0, 0.0, 0.0, kEarsLightNone);
     }
   }
   atomicAdd(paths[id].radiance.r, s.contribution.r);
