@@ -11,8 +11,8 @@
 namespace vkmc {
 
 namespace {
-constexpr uint32_t kMaxCells = 1u << 19;  // of each kind: 64 MiB of sums and learned texels, far more cells than a
-                                          // scene's surfaces fill at 64 per side
+constexpr uint32_t kMaxCells = 1u << 19;  // of each kind (32 MiB of sums and learned texels a kind): far more cells
+                                          // than a scene's surfaces fill at 64 per side
 }
 
 EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathSlots, bool enabled, bool learnsLight,

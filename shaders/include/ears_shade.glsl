@@ -166,7 +166,9 @@ void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMate
   if (belowDepthCap(depth)) {
     uint key = earsCellKey(s.p, s.ng, earsHeader.grid);
     EarsReading reading = earsRead(key);
-    vec3 t = earsRelativeThroughput(path);
+    // The pixel estimate is read only where a cell will use it (as before the light cells).
+    bool learned = max(reading.copies, reading.lightSamples) >= kEarsMinCellCopies;
+    vec3 t = learned ? earsRelativeThroughput(path) : vec3(0.0);
     bool trained;
     float q = earsVertexFactor(path, reading, t, trained);
     // Slots for every copy but the first are taken before the copies are drawn, so whether the pool was full

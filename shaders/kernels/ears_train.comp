@@ -8,6 +8,18 @@
 // it clears. pc.pathCount: the pass's training camera paths.
 #include "common.glsl"
 
+// One training sample x (per channel) and its rays into a cell's sums.
+void addToCell(uint cell, vec3 x, float rays) {
+  atomicAdd(earsCells[cell].sum.r, x.r);
+  atomicAdd(earsCells[cell].sum.g, x.g);
+  atomicAdd(earsCells[cell].sum.b, x.b);
+  atomicAdd(earsCells[cell].sum.w, 1.0);
+  atomicAdd(earsCells[cell].sumSquares.r, x.r * x.r);
+  atomicAdd(earsCells[cell].sumSquares.g, x.g * x.g);
+  atomicAdd(earsCells[cell].sumSquares.b, x.b * x.b);
+  atomicAdd(earsCells[cell].sumSquares.w, rays);
+}
+
 void main() {
   uint records = earsHeader.trainingRecords, n = invocationIndex();
   if (n >= records + pc.pathCount + earsHeader.trainingChildren) return;
@@ -30,26 +42,7 @@ void main() {
   bool lightSampled = kEarsLightMax > 0.0 && light.w != kEarsLightNone && allFinite(v * v);
   for (uint level = 0u; level < kEarsLevels; ++level) {
     uint cell = earsCellIndex(keyCode - 1u, level, earsHeader.cellMask);
-    if (copyFinite) {
-      atomicAdd(earsCells[cell].sum.r, lr.r);
-      atomicAdd(earsCells[cell].sum.g, lr.g);
-      atomicAdd(earsCells[cell].sum.b, lr.b);
-      atomicAdd(earsCells[cell].sum.w, 1.0);
-      atomicAdd(earsCells[cell].sumSquares.r, lr.r * lr.r);
-      atomicAdd(earsCells[cell].sumSquares.g, lr.g * lr.g);
-      atomicAdd(earsCells[cell].sumSquares.b, lr.b * lr.b);
-      atomicAdd(earsCells[cell].sumSquares.w, rays);
-    }
-    if (lightSampled) {
-      uint light = earsLightCell(cell, earsHeader.cellMask);
-      atomicAdd(earsCells[light].sum.r, v.r);
-      atomicAdd(earsCells[light].sum.g, v.g);
-      atomicAdd(earsCells[light].sum.b, v.b);
-      atomicAdd(earsCells[light].sum.w, 1.0);
-      atomicAdd(earsCells[light].sumSquares.r, v.r * v.r);
-      atomicAdd(earsCells[light].sumSquares.g, v.g * v.g);
-      atomicAdd(earsCells[light].sumSquares.b, v.b * v.b);
-      atomicAdd(earsCells[light].sumSquares.w, lightRays);
-    }
+    if (copyFinite) addToCell(cell, lr, rays);
+    if (lightSampled) addToCell(earsLightCell(cell, earsHeader.cellMask), v, lightRays);
   }
 }

@@ -37,7 +37,7 @@ VKMC_CONST uint kEarsFactorHistogram = 0u, kEarsLightHistogram = 1u;  // EarsHea
 VKMC_CONST float kEarsLightFactorMax = 8.0f;      // light samples a copy takes at most (the SIMD group waits for its
                                                   // lane with the most)
 // The first light sample of a training copy tags its shadow ray (ShadowRay origin.w: the copy's slot, its depth in
-// bits 29-30, this bit) so that the shadow stage can fill the copy's record.light.
+// bits 29-30, this bit) so that the shadow stage can fill the copy's light record (earsLightRecord).
 VKMC_CONST uint kEarsFirstLightTag = 0x80000000u;
 VKMC_CONST uint kEarsTagDepthShift = 29u;
 VKMC_CONST uint kEarsSlotMask = (1u << kEarsTagDepthShift) - 1u;
