@@ -234,24 +234,25 @@ void PathRenderer::recordCameraRays(VkCommandBuffer cmd, const gpu::PushConstant
 }
 
 // One bounce: queue sizes into dispatch arguments, intersection (and its deep pass), shading, shadow rays.
-void PathRenderer::recordBounce(VkCommandBuffer cmd, const gpu::PushConstants& pc, bool prepared) {
+void PathRenderer::recordBounce(VkCommandBuffer cmd, const gpu::PushConstants& pc, bool prepared, bool earsTrains) {
   vk::GpuTimer* timer = timer_.get();
+  const RenderKernels::BounceKernels stage = kernels_.bounceKernels(earsTrains);
   if (!prepared) vk::dispatch(cmd, *layout_, *kernels_.prepareBounce, &pc, sizeof(pc), 1, timer);
   // A trace stage's time includes its deep pass (the walks it deferred).
   if (timer) timer->begin(cmd, pc.bounce == 0 ? "intersect_primary" : "intersect");
   vk::dispatchIndirect(cmd, *layout_, *kernels_.intersect, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs));
   vk::dispatchIndirect(cmd, *layout_, *kernels_.intersectDeep, &pc, sizeof(pc), control_, offsetof(gpu::Control, deepArgs));
   if (timer) timer->end(cmd);
-  vk::dispatchIndirect(cmd, *layout_, *kernels_.shade, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs), timer);
-  if (kernels_.earsCopies) {
+  vk::dispatchIndirect(cmd, *layout_, *stage.shade, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs), timer);
+  if (stage.earsCopies) {
     vk::dispatch(cmd, *layout_, *kernels_.prepareCopies, &pc, sizeof(pc), 1, timer);
-    vk::dispatchIndirect(cmd, *layout_, *kernels_.earsCopies, &pc, sizeof(pc), control_, offsetof(gpu::Control, copyArgs), timer);
+    vk::dispatchIndirect(cmd, *layout_, *stage.earsCopies, &pc, sizeof(pc), control_, offsetof(gpu::Control, copyArgs), timer);
   }
   if (!hasShadowStage_) return;
   vk::dispatch(cmd, *layout_, *kernels_.prepareShadow, &pc, sizeof(pc), 1, timer);
   if (timer) timer->begin(cmd, "shadow");
-  vk::dispatchIndirect(cmd, *layout_, *kernels_.shadow, &pc, sizeof(pc), control_, offsetof(gpu::Control, shadowArgs));
-  vk::dispatchIndirect(cmd, *layout_, *kernels_.shadowDeep, &pc, sizeof(pc), control_, offsetof(gpu::Control, deepArgs));
+  vk::dispatchIndirect(cmd, *layout_, *stage.shadow, &pc, sizeof(pc), control_, offsetof(gpu::Control, shadowArgs));
+  vk::dispatchIndirect(cmd, *layout_, *stage.shadowDeep, &pc, sizeof(pc), control_, offsetof(gpu::Control, deepArgs));
   if (timer) timer->end(cmd);
 }
 
@@ -265,11 +266,26 @@ void PathRenderer::recordAccumulate(VkCommandBuffer cmd, const gpu::PushConstant
 
 uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples,
                                   RenderStats& stats) {
-  const gpu::PushConstants base = passConstants(firstPixel, pixelCount, sampleIndex, samples);
-  if (settings_.integrator == Integrator::Megakernel) return renderMegakernelPass(base, stats);
-  gpu::PushConstants pc = base;
-  const uint32_t count = pc.pathCount;
+  if (settings_.integrator == Integrator::Megakernel)
+    return renderMegakernelPass(passConstants(firstPixel, pixelCount, sampleIndex, samples), stats);
+  if (!ears_->enabled()) return renderWavefront(firstPixel, pixelCount, sampleIndex, samples, false, stats);
+  // EARS: the pass's training samples first, as a wavefront of their own whose kernels train the cache; then the
+  // cache learns from them, and the rest of the pass runs on kernels without the training code. Every sample's
+  // decisions still come from other samples than its own: unbiased. A training pass trains on all its samples.
   ears_->beginPass();
+  const uint32_t training = earsTraining_ ? samples : gpu::earsTrainingSamples(pixelCount, samples);
+  uint32_t bounces = renderWavefront(firstPixel, pixelCount, sampleIndex, training, true, stats);
+  trainEars(pixelCount * training, stats);
+  if (training < samples)
+    bounces = std::max(bounces, renderWavefront(firstPixel, pixelCount, sampleIndex + training, samples - training, false, stats));
+  return bounces;
+}
+
+uint32_t PathRenderer::renderWavefront(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples,
+                                       bool earsTrains, RenderStats& stats) {
+  gpu::PushConstants pc = passConstants(firstPixel, pixelCount, sampleIndex, samples);
+  pc.earsTrains = earsTrains ? 1u : 0u;
+  const uint32_t count = pc.pathCount;
   if (settings_.recordDepthStats) {  // -1: "no decision recorded at this depth"
     auto* stats = static_cast<float*>(depthStats_.mapped());
     std::fill(stats, stats + size_t(pool_) * kRouletteTableDepths * 2, -1.0f);
@@ -287,7 +303,7 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
     if (first) recordCameraRays(cmd, pc, count);
     for (uint32_t b = bounce; b < bounce + chunk; ++b) {
       pc.bounce = b;
-      recordBounce(cmd, pc, /*prepared=*/!first && b == bounce);  // the last chunk's end prepared its first bounce
+      recordBounce(cmd, pc, /*prepared=*/!first && b == bounce, earsTrains);  // the last chunk's end prepared its first bounce
     }
     bounce += chunk;
     pc.bounce = bounce;
@@ -302,7 +318,6 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
   }
   collectCounters(stats);
   if (settings_.recordDepthStats) collectPilot(count);
-  if (ears_->enabled()) trainEars(count, pixelCount, stats);
   return bounce;
 }
 
@@ -328,16 +343,14 @@ uint32_t PathRenderer::trainEarsPasses(const Film& film, RenderStats& stats) {
   return samples;
 }
 
-void PathRenderer::trainEars(uint32_t cameraPaths, uint32_t pixels, RenderStats& stats) {
+void PathRenderer::trainEars(uint32_t cameras, RenderStats& stats) {
   gpu::PushConstants pc{};
   pc.queueCapacity = pool_;
-  // Only training paths fill the lists: the pass's first samples (common.glsl earsTrains) and their copies.
-  const uint32_t cameras = std::min(cameraPaths, std::max(pixels, gpu::kEarsTrainingPaths));
+  // The training wavefront's camera paths and the copies they split off (listed by the kernels).
   const uint32_t slots = cameras + ears_->trainingChildren();
   VkCommandBuffer cmd = ctx_.beginCommands();
   timer_->reset(cmd);
   pc.pathCount = cameras;
-  pc.pixelCount = pixels;
   vk::dispatch(cmd, *layout_, *kernels_.earsGather, &pc, sizeof(pc), groupsFor(slots), timer_.get());
   vk::dispatch(cmd, *layout_, *kernels_.earsTrain, &pc, sizeof(pc), groupsFor(ears_->trainingRecords() + slots), timer_.get());
   pc.pathCount = ears_->tableCells();

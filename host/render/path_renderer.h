@@ -62,9 +62,13 @@ class PathRenderer {
 
  private:
   uint32_t renderPass(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples, RenderStats& stats);
+  // One wavefront: camera rays for `samples` samples of each pixel, every bounce until no path is alive, and their
+  // accumulation. earsTrains: under EARS, with the kernels that train the cache.
+  uint32_t renderWavefront(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples, bool earsTrains,
+                           RenderStats& stats);
   // The wavefront's stages, recorded into one command buffer.
   void recordCameraRays(VkCommandBuffer cmd, const gpu::PushConstants& pc, uint32_t paths);
-  void recordBounce(VkCommandBuffer cmd, const gpu::PushConstants& pc, bool prepared);
+  void recordBounce(VkCommandBuffer cmd, const gpu::PushConstants& pc, bool prepared, bool earsTrains);
   void recordAccumulate(VkCommandBuffer cmd, const gpu::PushConstants& pc);
   void allocateBuffers(uint64_t pixels, const PathPoolSize& size);
   void bindBuffers();
@@ -77,8 +81,8 @@ class PathRenderer {
   void foldFilm(Film& film);
   // EARS after a pass: its records into the cache (slotsUsed: the pass's path slots), then the image statistics
   // of the film so far (raysPerSample: the pass's) for the next pass's factors.
-  // After a pass of cameraPaths samples over `pixels` pixels: its training paths' sums into the cache.
-  void trainEars(uint32_t cameraPaths, uint32_t pixels, RenderStats& stats);
+  // After a training wavefront of `cameras` camera paths: their sums into the cache.
+  void trainEars(uint32_t cameras, RenderStats& stats);
   uint32_t trainEarsPasses(const Film& film, RenderStats& stats);
   bool earsTraining_ = false;  // a training pass: its own seed, its samples dropped
   void updateEarsStatistics(const Film& film, double raysPerSample);

@@ -66,6 +66,7 @@ KernelPlan planKernels(const RenderSettings& s) {
   if (s.integrator == Integrator::Wavefront) plan.kernels.push_back("accumulate");
   if (est.rr == RouletteMode::Ears) {
     for (const char* k : {"prepare_copies", "ears_copies", "ears_gather", "ears_train", "ears_fold"}) plan.kernels.push_back(k);
+    plan.kernels.push_back("shade and ears_copies again without training code (a pass's later samples)");
   }
   plan.specs = {{SPEC_WORKGROUP_SIZE, s.workgroupSize},
                 {SPEC_HAS_LIGHTS, s.features.lights() ? 1u : 0u},
@@ -101,6 +102,7 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
     const char* name;
     std::span<const uint32_t> spirv;
     bool helper;
+    bool lean = false;  // built with SPEC_EARS_TRAINS 0
   };
   std::vector<Planned> planned;
   auto spv = [](const auto& words) { return std::span<const uint32_t>(words); };
@@ -127,13 +129,19 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
     planned.push_back({&k.earsGather, "ears_gather", kSpirv_ears_gather, false});
     planned.push_back({&k.earsTrain, "ears_train", kSpirv_ears_train, false});
     planned.push_back({&k.earsFold, "ears_fold", kSpirv_ears_fold, false});
+    // The same names as the training kernels: the report's stage times add both.
+    planned.push_back({&k.shadeLean, "shade", kSpirv_shade_atomic, false, true});
+    planned.push_back({&k.earsCopiesLean, "ears_copies", kSpirv_ears_copies, false, true});
   }
+  std::vector<vk::SpecConstant> leanSpecs = specs;
+  leanSpecs.push_back({SPEC_EARS_TRAINS, 0u});
+  auto specsOf = [&](const Planned& p) -> const std::vector<vk::SpecConstant>& { return p.lean ? leanSpecs : specs; };
   std::vector<KernelSource> helperShare;
   if (compilesAtFirstDispatch(ctx))
     for (const Planned& p : planned)
-      if (p.helper) helperShare.push_back({p.name, p.spirv, specs});
+      if (p.helper) helperShare.push_back({p.name, p.spirv, specsOf(p)});
   BackgroundWarmUp helper(std::move(helperShare));
-  for (const Planned& p : planned) *p.slot = std::make_unique<vk::Kernel>(ctx, layout, p.name, p.spirv, specs);
+  for (const Planned& p : planned) *p.slot = std::make_unique<vk::Kernel>(ctx, layout, p.name, p.spirv, specsOf(p));
 
   // Warm-up: every kernel once on empty queues; the helper's share last, once it has compiled them into the cache.
   gpu::PushConstants pc{};
@@ -148,6 +156,11 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
     });
   }
   return k;
+}
+
+RenderKernels::BounceKernels RenderKernels::bounceKernels(bool earsTrains) const {
+  if (!earsTrains && shadeLean) return {shadeLean.get(), earsCopiesLean.get(), shadow.get(), shadowDeep.get()};
+  return {shade.get(), earsCopies.get(), shadow.get(), shadowDeep.get()};
 }
 
 }  // namespace vkmc

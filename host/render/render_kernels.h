@@ -14,6 +14,16 @@ struct RenderKernels {
       accumulate, megakernel;
   // EARS: the copy stage after shade, and the training after each pass (kernels/ears_*.comp, prepare_copies.comp).
   std::unique_ptr<vk::Kernel> prepareCopies, earsCopies, earsGather, earsTrain, earsFold;
+  // EARS: shade and the copy stage once more without the training code (SPEC_EARS_TRAINS 0), for a pass's
+  // samples after its training ones (common.glsl earsTrains).
+  std::unique_ptr<vk::Kernel> shadeLean, earsCopiesLean;
+
+  // The kernels of a bounce's shading and shadow stages: those that train EARS's cache, or (where built) those
+  // that do not. earsCopies is null unless the rr is ears; shadow and shadowDeep unless there is a shadow stage.
+  struct BounceKernels {
+    vk::Kernel *shade, *earsCopies, *shadow, *shadowDeep;
+  };
+  BounceKernels bounceKernels(bool earsTrains) const;
 };
 
 // The kernels a render dispatches, with the specialization constants each is built with.

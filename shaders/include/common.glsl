@@ -34,6 +34,7 @@ layout(constant_id = SPEC_SHADOW_RR_Q) const float kShadowRouletteQ = 0.5;
 layout(constant_id = SPEC_CAMERA_RR_Q) const float kCameraRouletteQ = 0.0;
 layout(constant_id = SPEC_EARS_MAX) const float kEarsMaxFactor = 20.0;
 layout(constant_id = SPEC_EARS_LIGHT_MAX) const float kEarsLightMax = 0.0;
+layout(constant_id = SPEC_EARS_TRAINS) const uint kEarsTrains = 1u;
 layout(constant_id = SPEC_BSDF_SAMPLES) const float kBsdfSamples = 1.0;
 layout(constant_id = SPEC_RECORD_DEPTH_STATS) const uint kRecordDepthStats = 0u;
 layout(constant_id = SPEC_WALK_STATS) const uint kWalkStats = 0u;
@@ -114,10 +115,11 @@ uint invocationIndex() {
   return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
 }
 
-// EARS: whether a path (by its sample's root slot) trains the cache: the pass's first kEarsTrainingPaths samples,
-// at least its first sample of each pixel, and the copies split from them. The training's atomics (slots, records,
-// cells) then cost a share of a large pass, not all of it.
-bool earsTrains(uint root) { return root < max(pc.pixelCount, kEarsTrainingPaths); }
+// EARS: whether this wavefront's paths train the cache. A pass's first samples (ears.h earsTrainingSamples) run
+// as a wavefront of their own (pc.earsTrains); the rest run on shade and copy kernels built without the training
+// code (kEarsTrains = 0), since llvmpipe runs every line of a kernel for every lane, needed or not. The shadow
+// stage's few training lines stay, decided at run time (one kernel fewer to compile).
+bool earsTrains() { return kEarsTrains != 0u && pc.earsTrains != 0u; }
 
 uint inQueueBase() { return (pc.bounce & 1u) * pc.queueCapacity; }
 uint outQueueBase() { return ((pc.bounce + 1u) & 1u) * pc.queueCapacity; }

@@ -113,7 +113,7 @@ uint earsLightSamples(PathState copy, inout float qL, out float share) {
 float shadeEarsCopy(PathState path, uint target, uint parent, SurfacePoint s, GltfMaterial gm, vec3 wo, vec3 woLocal,
                     float q, float qL, uint c, uint key, vec3 emission, out vec3 poisoned) {
   uint depth = path.depth;
-  bool trains = earsTrains(path.rootPath);
+  bool trains = earsTrains();
   if (c > 0u && trains) {
     earsSlots[target] = EarsSlot(vec4(0.0), parent + 1u, depth, 0u, 0u);
     earsTrainingList[appendTrainingChild()] = target;

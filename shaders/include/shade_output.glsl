@@ -14,7 +14,7 @@ void atomicAddToRoot(uint root, vec3 value) {
 void addToEarsSample(uint id, uint root, vec3 value, vec3 trained, float rays) {
   bool finite = allFinite(value);
   if (!finite) atomicAdd(control.nonfiniteEmission, 1u);
-  if (earsTrains(root)) earsSlots[id].gathered += vec4(allFinite(trained) ? trained : vec3(0.0), rays);
+  if (earsTrains()) earsSlots[id].gathered += vec4(allFinite(trained) ? trained : vec3(0.0), rays);
   if (finite && !(maxComponent(abs(value)) > 0.0)) return;
   atomicAddToRoot(root, value);
 }

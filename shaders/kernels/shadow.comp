@@ -29,7 +29,7 @@ void main() {
   // EARS trains on what each path copy gathered: the slot that sampled the light (origin.w) sums it.
   // A copy's first light sample (tagged) also turns its record's pending factor into the sample's v; one whose
   // contribution is not finite (or whose walk was cut) teaches nothing.
-  if (kRouletteMode == kRouletteEars && earsTrains(id)) {
+  if (kRouletteMode == kRouletteEars && earsTrains()) {
     uint tag = floatBitsToUint(s.origin.w);
     bool finite = allFinite(s.contribution.rgb);
     if (finite) {

@@ -31,7 +31,7 @@ VKMC_CONST uint kEarsGridResolution = 64u;        // cells along the scene's lon
 VKMC_CONST uint kEarsBins = 4u;                   // factor histogram: untrained (fallback), q < 1, q = 1, q > 1
 VKMC_CONST uint kEarsBinFallback = 0u, kEarsBinRoulette = 1u, kEarsBinOne = 2u, kEarsBinSplit = 3u;
 VKMC_CONST float kEarsEpsilon = 0.01f;             // relMSE's epsilon (analysis/error_metrics.h; ears_test checks)
-VKMC_CONST uint kEarsTrainingPaths = 65536u;      // samples of a pass that train the cache (common.glsl earsTrains)
+VKMC_CONST uint kEarsTrainingPaths = 16384u;      // samples of a pass that train the cache (earsTrainingSamples)
 VKMC_CONST uint kEarsHistogramDepths = 8u;        // histogram rows (the last counts every deeper vertex)
 VKMC_CONST uint kEarsFactorHistogram = 0u, kEarsLightHistogram = 1u;  // EarsHeader histograms
 VKMC_CONST float kEarsLightFactorMax = 8.0f;      // light samples a copy takes at most (the SIMD group waits for its
@@ -161,6 +161,13 @@ VKMC_FN void earsSampling(vec4 sum, vec4 sumSquares, INOUT(vec4) momentPerCost, 
 VKMC_FN vec3 earsShrunk(vec3 coarser, float coarserCopies, vec3 level, float copies) {
   if (!(coarserCopies > 0.0f)) return level;
   return mix(coarser, level, copies / (copies + kEarsShrinkCopies));
+}
+
+// How many of a pass's samples per pixel train the cache: about kEarsTrainingPaths samples, at least one a
+// pixel, at most the pass's. They run first, as a wavefront of their own (common.glsl earsTrains).
+VKMC_FN uint earsTrainingSamples(uint pixels, uint samples) {
+  uint perPixel = pixels >= kEarsTrainingPaths ? 1u : (kEarsTrainingPaths + pixels / 2u) / pixels;
+  return perPixel < samples ? perPixel : samples;
 }
 
 // The histogram bin of a vertex's decision.

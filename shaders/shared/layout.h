@@ -108,6 +108,7 @@
 #define SPEC_HAS_DELTA 34         // 0: no lobe can be smooth (delta): every BSDF sample is MIS-weighted
 #define SPEC_EARS_MAX 35          // float: rr ears's largest factor q, at most kEarsFactorMax (1: learned roulette alone)
 #define SPEC_EARS_LIGHT_MAX 36    // float: rr ears's largest light factor qL; 0: light samples not learned (ears.h)
+#define SPEC_EARS_TRAINS 37       // 0/1: rr ears: this kernel's paths train the cache (common.glsl earsTrains)
 
 VKMC_BEGIN_NAMESPACE
 
@@ -283,7 +284,8 @@ struct PushConstants {
   vec4 background;      // rgb: uniform radiance of escaped rays
   uint pixelCount;      // pixels in this pass; path id = sample * pixelCount + pixel offset
   uint samplesPerPass;  // samples of each pixel in this pass (pathCount = pixelCount * samplesPerPass)
-  uint unused0, unused1;
+  uint earsTrains;      // rr ears: 1 where this wavefront's paths train the cache (common.glsl earsTrains)
+  uint unused1;
 };
 
 // Push constants of the analytic furnace probe (shaders/probes/roulette_furnace.comp).

@@ -126,6 +126,23 @@ TEST(EarsCell, LightCellsFollowTheCopiesCellsAndTagsFindTheirRecords) {
   EXPECT_EQ(((1u << 26) - 1u) & kEarsFirstLightTag, 0u);
 }
 
+TEST(EarsTraining, APassTrainsAboutKEarsTrainingPathsSamplesAtLeastOneAPixel) {
+  // Small images: whole samples a pixel, as near kEarsTrainingPaths as rounding allows, never more than the pass.
+  EXPECT_EQ(earsTrainingSamples(96u * 96u, 64u), 2u);  // 18,432 samples
+  EXPECT_EQ(earsTrainingSamples(64u * 64u, 64u), 4u);
+  EXPECT_EQ(earsTrainingSamples(64u * 64u, 3u), 3u);
+  EXPECT_EQ(earsTrainingSamples(1u, 1u << 20), kEarsTrainingPaths);
+  // Large images (and pixel chunks): one sample a pixel.
+  EXPECT_EQ(earsTrainingSamples(kEarsTrainingPaths, 16u), 1u);
+  EXPECT_EQ(earsTrainingSamples(1920u * 1080u, 16u), 1u);
+  for (uint pixels : {1u, 7u, 100u, 9216u, kEarsTrainingPaths - 1u, 1u << 24})
+    for (uint samples : {1u, 2u, 5u, 64u}) {
+      const uint t = earsTrainingSamples(pixels, samples);
+      EXPECT_GE(t, 1u);
+      EXPECT_LE(t, samples);
+    }
+}
+
 TEST(EarsImageStatistics, PassSumsAreTheBatchAfterMinusBefore) {
   FilmPixel batch[2] = {};
   batch[0].sum = vec4(1.0f, 2.0f, 3.0f, 2.0f);
