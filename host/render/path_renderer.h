@@ -79,9 +79,7 @@ class PathRenderer {
   void publishControl(VkCommandBuffer cmd);
   void collectCounters(RenderStats& stats);
   void foldFilm(Film& film);
-  // EARS after a pass: its records into the cache (slotsUsed: the pass's path slots), then the image statistics
-  // of the film so far (raysPerSample: the pass's) for the next pass's factors.
-  // After a training wavefront of `cameras` camera paths: their sums into the cache.
+  // EARS after a training wavefront of `cameras` camera paths: their sums into the cache.
   void trainEars(uint32_t cameras, RenderStats& stats);
   uint32_t trainEarsPasses(const Film& film, RenderStats& stats);
   bool earsTraining_ = false;  // a training pass: its own seed, its samples dropped

@@ -12,7 +12,8 @@ namespace vkmc {
 struct RenderKernels {
   std::unique_ptr<vk::Kernel> camera, prepareBounce, intersect, intersectDeep, shade, prepareShadow, shadow, shadowDeep,
       accumulate, megakernel;
-  // EARS: the copy stage after shade, and the training after each pass (kernels/ears_*.comp, prepare_copies.comp).
+  // EARS: the copy stage after shade, and the training after each pass's training wavefront (kernels/ears_*.comp,
+  // prepare_copies.comp).
   std::unique_ptr<vk::Kernel> prepareCopies, earsCopies, earsGather, earsTrain, earsFold;
   // EARS: shade and the copy stage once more without the training code (SPEC_EARS_TRAINS 0), for a pass's
   // samples after its training ones (common.glsl earsTrains).

@@ -8,7 +8,8 @@
 // its BSDF continuation) gathers per unit throughput and C the rays it costs, both learned per cache cell;
 // C_img / V_img is the image's rays per sample over its relative variance per sample. The vertex is then taken
 // floor(q + u) times, each copy weighted 1/q: q < 1 is roulette, q > 1 splitting (roulette.h splitCount), unbiased
-// for any q chosen before the copies are drawn. Every pass learns from the passes before it, never from itself.
+// for any q chosen before the copies are drawn. Every sample decides with what other samples taught the cache (a
+// pass's training samples run first, as a wavefront of their own), never with its own.
 // The same rule decides each copy's light samples (MARS's per-technique factors, Rath et al. 2024): a second set
 // of cells learns what one light sample gathers per unit throughput (v) and the rays it costs, and the copy takes
 // floor(qL + u) light samples, each weighted 1/qL: qL < 1 is shadow-ray roulette, qL > 1 light-sample splitting.
