@@ -1,10 +1,11 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_atomic_float : require
-// EARS training, step 1 of 3, after the last bounce of a pass's training wavefront: each path slot adds what it gathered and the rays it
-// traced to its own records and to those of the copies it descends from (its parent's below the depth that split
-// it off, and so on up to the camera path), so each record ends with its whole subtree's sums. One invocation per
-// training slot (earsTrainingSlot): pc.pathCount training camera paths, then the listed children.
+// EARS training, step 1 of 3, after the last bounce of a pass's training wavefront: each path slot adds what it
+// gathered and the rays it traced to its own records and to those of the copies it descends from (its parent's
+// below the depth that split it off, and so on up to the camera path), so each record ends with its whole
+// subtree's sums. One invocation per training slot (earsTrainingSlot): pc.pathCount training camera paths, then the
+// listed children.
 #include "common.glsl"
 
 void addToRecord(uint r, vec4 value) {
