@@ -440,8 +440,11 @@ static const int g_iCells = 2048;
 static NOINLINE int FindGridCell(const float fMin, const float fMax, const float fVal)
 {
 	const float fIndex = g_iCells * ((fVal-fMin)/(fMax-fMin));
-	const int iIndex = (int)fIndex;
-	return iIndex < g_iCells ? (iIndex >= 0 ? iIndex : 0) : (g_iCells - 1);
+	/* vkmc: was (int)fIndex, then clamped; the conversion is undefined for a NaN (fMax == fMin) or a value past
+	   int's range (huge coordinates), so the clamp is done in float. The same cell for every other value. */
+	if (!(fIndex >= 0.0f)) return 0;
+	if (fIndex >= (float)g_iCells) return g_iCells - 1;
+	return (int)fIndex;
 }
 
 static void MergeVertsFast(int piTriList_in_and_out[], STmpVert pTmpVert[], const SMikkTSpaceContext * pContext, const int iL_in, const int iR_in);

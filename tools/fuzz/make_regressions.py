@@ -50,3 +50,24 @@ data += b"\0" * (-len(data) % 4)
 glb = b"glTF" + struct.pack("<II", 2, 12 + 8 + len(text) + 8 + len(data))
 glb += struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(data) + 8, 0x004E4942) + data
 write("glb_bin_chunk_too_long.glb", glb)
+# Coordinates of ±3e38 with a normal texture and no TANGENT: MikkTSpace's FindGridCell converted a NaN cell
+# index ((fVal - fMin) / (fMax - fMin) = inf / inf) to int, undefined behaviour (found by the fuzzer, 2026-11-29).
+huge = [-3e38, 0, 0, 3e38, 0, 0, 3e38, 1, 0, -3e38, 1, 0]
+uvs = [0, 0, 1, 0, 1, 1, 0, 1]
+data = struct.pack("<12f", *huge) + struct.pack("<6I", *indices) + struct.pack("<8f", *uvs)
+doc = {
+    "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 2}, "indices": 1, "material": 0}]}],
+    "materials": [{"normalTexture": {"index": 0}}],
+    "textures": [{"source": 0}],
+    "images": [{"uri": "data:image/png;base64," + base64.b64encode(bytes.fromhex(
+        "89504e470d0a1a0a0000000d4948445200000001000000010802000000907753de0000000c4944415478da63f8ffff3f0005fe02fe"
+        "a7d6a8ad0000000049454e44ae426082")).decode()}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 4},
+                  {"bufferView": 1, "componentType": 5125, "type": "SCALAR", "count": 6},
+                  {"bufferView": 2, "componentType": 5126, "type": "VEC2", "count": 4}],
+    "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 24},
+                    {"buffer": 0, "byteOffset": 72, "byteLength": 32}],
+    "buffers": [{"byteLength": len(data), "uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
+}
+write("tangents_huge_coordinates.gltf", json.dumps(doc, separators=(",", ":")))
