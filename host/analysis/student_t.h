@@ -1,6 +1,6 @@
 // Student's t for tests whose standard error is itself estimated from few degrees of freedom: one pixel of a
-// QMC render has 4 replicate means (3 dof), so a bound of 5 sigma taken from the normal would pass an unbiased
-// pixel only 98.5% of the time instead of 99.99994%.
+// QMC render has R replicate means (R - 1 dof: 1 by default, 3 with 4 replicates), so a bound of 5 sigma taken
+// from the normal would pass an unbiased pixel only 98.5% of the time at 3 dof (87% at 1) instead of 99.99994%.
 #pragma once
 
 namespace vkmc {

@@ -9,17 +9,17 @@
 namespace vkmc {
 
 VarianceReliability assessVarianceReliability(const Film& film) {
-  static_assert(gpu::kSampleReplicates == 4, "the pairings below are those of 4 replicates");
-  constexpr uint32_t R = gpu::kSampleReplicates;
+  constexpr uint32_t kSlots = gpu::kMaxSampleReplicates;
+  const uint32_t R = std::min(film.replicates, kSlots);
   VarianceReliability out;
   double sumT = 0.0, sumVarT = 0.0, largestT = 0.0;
   for (size_t p = 0; p < film.pixels(); ++p) {
-    double x[R][3];
-    bool complete = true;
+    double x[kSlots][3];
+    bool complete = R >= 2;
     for (uint32_t r = 0; r < R && complete; ++r) {
-      const uint64_t n = film.replicateCount[p * R + r];
+      const uint64_t n = film.replicateCount[p * kSlots + r];
       complete = n > 0;
-      for (int c = 0; c < 3 && complete; ++c) x[r][c] = film.replicateSum[(p * R + r) * 3 + c] / double(n);
+      for (int c = 0; c < 3 && complete; ++c) x[r][c] = film.replicateSum[(p * kSlots + r) * 3 + c] / double(n);
     }
     if (!complete) continue;
     double w[3];
@@ -32,12 +32,21 @@ VarianceReliability assessVarianceReliability(const Film& film) {
       for (int c = 0; c < 3; ++c) d += w[c] * (x[a][c] - x[b][c]) * (x[a][c] - x[b][c]);
       return 0.5 * d;
     };
-    const double h01 = h(0, 1), h02 = h(0, 2), h03 = h(0, 3), h12 = h(1, 2), h13 = h(1, 3), h23 = h(2, 3);
-    const double u = (h01 + h02 + h03 + h12 + h13 + h23) / 6.0;
-    const double theta2 = (h01 * h23 + h02 * h13 + h03 * h12) / 3.0;
+    double u = 0.0, varU = 0.0;
+    if (R == 4) {
+      const double h01 = h(0, 1), h02 = h(0, 2), h03 = h(0, 3), h12 = h(1, 2), h13 = h(1, 3), h23 = h(2, 3);
+      u = (h01 + h02 + h03 + h12 + h13 + h23) / 6.0;
+      const double theta2 = (h01 * h23 + h02 * h13 + h03 * h12) / 3.0;
+      varU = u * u - theta2;
+    } else {
+      for (uint32_t a = 0; a < R; ++a)
+        for (uint32_t b = a + 1; b < R; ++b) u += h(a, b);
+      u /= double(R * (R - 1) / 2);
+      varU = u * u;  // E[U^2] = Var(U) + E[U]^2: an upper bound with no disjoint pairs to estimate E[U]^2 from
+    }
     const double t = u / R;  // sum over channels of w_c times the variance of the pixel mean
     sumT += t;
-    sumVarT += (u * u - theta2) / double(R * R);
+    sumVarT += varU / double(R * R);
     largestT = std::max(largestT, t);
     ++out.pixelsAssessed;
   }

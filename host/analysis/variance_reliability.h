@@ -2,15 +2,17 @@
 // pixel's estimated variance of its mean (over mean^2 + epsilon); with heavy-tailed samples a few pixels' rare
 // huge samples decide it, and an estimator that has not yet met its rare samples looks better than it is.
 //
-// The estimate's own standard error comes from each pixel's replicate means (sampler.h: 4 per pixel, under every
-// sampler), without any extra moment on the device. With h(a, b) = sum_c w_c (x_ac - x_bc)^2 / 2 over the channels
-// (w_c = 1 / (mean_c^2 + epsilon)), the pixel's term t = U / R, U = the mean of h over the 6 pairs of replicates,
-// estimates sum_c w_c Var(pixel mean_c) without bias, and so does U^2 - theta2 for Var(U), where theta2 = the mean of
-// h(a, b) h(c, d) over the 3 ways to split the replicates into two disjoint pairs (an unbiased estimate of
-// E[h]^2: the U-statistic variance estimator for 4 samples). Summed over the pixels (independent) this gives
-// Var(mean_relvariance); its square root over the estimate is the relative standard error. Channels need no
-// independence: they share one h. Under the independent sampler the report's variance comes from the samples
-// (more degrees of freedom), so the replicates' figure is conservative there.
+// The estimate's own standard error comes from each pixel's replicate means (sampler.h: R per pixel, the
+// estimator's `replicates`, under every sampler), without any extra moment on the device. With h(a, b) =
+// sum_c w_c (x_ac - x_bc)^2 / 2 over the channels (w_c = 1 / (mean_c^2 + epsilon)), the pixel's term t = U / R,
+// U = the mean of h over the pairs of replicates, estimates sum_c w_c Var(pixel mean_c) without bias. For Var(U):
+// with 4 replicates U^2 - theta2, where theta2 = the mean of h(a, b) h(c, d) over the 3 ways to split the replicates
+// into two disjoint pairs (an unbiased estimate of E[h]^2: the U-statistic variance estimator for 4 samples);
+// with 2 or 3 no two pairs are disjoint, so U^2, whose mean Var(U) + E[U]^2 bounds it from above (by sqrt(3/2) in
+// the standard error for normal replicate means, less for heavier tails). Summed over the pixels (independent)
+// this gives Var(mean_relvariance); its square root over the estimate is the relative standard error. Channels
+// need no independence: they share one h. Under the independent sampler the report's variance comes from the
+// samples (more degrees of freedom), so the replicates' figure is conservative there.
 #pragma once
 #include <cstddef>
 
@@ -20,7 +22,7 @@ namespace vkmc {
 
 struct VarianceReliability {
   double relVariance = 0.0;             // the replicates' estimate of mean_relvariance
-  double relativeStandardError = 0.0;   // of that estimate; infinity when it is 0 or no pixel has 4 replicates
+  double relativeStandardError = 0.0;   // of that estimate; infinity when it is 0 or no pixel has every replicate
   size_t pixelsAssessed = 0;            // pixels with samples in every replicate
   double largestPixelShare = 0.0;       // the largest single pixel's share of the estimate
   // An efficiency figure whose variance is uncertain by more than this (one standard error) cannot rank two

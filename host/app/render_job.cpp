@@ -375,6 +375,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
     plan.device = out.device;
     plan.width = width, plan.height = height;
     plan.replicateVariance = options.estimator.sampler != Sampler::Independent;
+    plan.replicates = options.estimator.replicates;
     out.ranks = renderDistributed(renderer, group, state, control, plan);
   } else {
     renderer.render(state, control);
@@ -573,8 +574,9 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
             "\n";
   const VarianceReliability reliability = assessVarianceReliability(r.film);
   if (reliability.pixelsAssessed == 0) {
-    text += "reliability fewer samples than the 4 replicates in every pixel: the variance estimate cannot be assessed, "
-            "so the estimated efficiency is unreliable\n";
+    text += "reliability fewer samples than the " + std::to_string(r.film.replicates) +
+            " replicates in every pixel: the variance estimate cannot be assessed, so the estimated efficiency is "
+            "unreliable\n";
   } else if (!std::isfinite(reliability.relativeStandardError)) {
     text += "reliability no pixel's samples varied, so nothing measures the variance (a contribution too rare to "
             "have been met?): the estimated efficiency is unreliable\n";

@@ -72,6 +72,7 @@ std::vector<RankReport> renderDistributed(PathRenderer& renderer, const RankGrou
 
   if (state.film.pixels() == 0) state.film = Film(plan.width, plan.height);
   state.film.replicateVariance = plan.replicateVariance;
+  state.film.replicates = plan.replicates;
   // Where the render stands: rank 0's state (a checkpoint's, perhaps), told to every rank.
   std::string where = group.isRoot() ? std::to_string(state.nextSample) + " " + std::to_string(state.batchSamples) : "";
   group.broadcast(where);

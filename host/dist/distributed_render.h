@@ -37,6 +37,7 @@ struct DistributedPlan {
   std::string device;               // this rank's device, for the report
   uint32_t width = 0, height = 0;   // the film's
   bool replicateVariance = false;   // Film::replicateVariance (QMC samplers)
+  uint32_t replicates = 2;          // Film::replicates (the estimator's)
 };
 
 // Every rank calls it, in step. On rank 0 `state` is the render's (its film, the next sample, the counters of all

@@ -62,6 +62,7 @@ struct EstimatorConfig {
   MisHeuristic mis{};
   uint32_t maxDepth{};
   Sampler sampler{};
+  uint32_t replicates{};  // independently scrambled replicates a pixel's samples are split into (sampler.h)
   std::string name;  // free text from the estimator file, echoed in reports
 
   // Every key's range, then the rules that join keys; throws vkmc::Error naming the offending key.

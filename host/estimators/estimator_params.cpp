@@ -124,7 +124,11 @@ constexpr EstimatorParam kParams[] = {
     choice<&C::mis>("mis", MisHeuristic::Power, kMisNames, SPEC_MIS, "MIS heuristic of light and BSDF sampling"),
     choice<&C::sampler>("sampler", Sampler::Sobol, kSamplerNames, SPEC_SAMPLER,
                         "uniform numbers: independent hashes, Owen-scrambled Sobol per pixel, or Morton-ordered "
-                        "ZSobol; the Sobol ones in 4 replicates whose spread is the variance"),
+                        "ZSobol"),
+    count<&C::replicates>("replicates", 2, 2, gpu::kMaxSampleReplicates, SPEC_SAMPLE_REPLICATES,
+                          "independently scrambled replicates per pixel, whose spread is the variance of the pixel "
+                          "mean under sobol and zsobol: fewer keep more stratification, more give each pixel's "
+                          "variance more degrees of freedom (replicates - 1)"),
 };
 
 std::string number(double v) {

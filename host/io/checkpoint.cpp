@@ -15,7 +15,7 @@ namespace {
 
 constexpr char kMagic[] = "VKMC-CHECKPOINT\n";  // 16 bytes without the terminator
 constexpr size_t kMagicBytes = sizeof(kMagic) - 1;
-constexpr int kFormatVersion = 1;
+constexpr int kFormatVersion = 2;  // 2: the estimator's `replicates` (earlier films had 4)
 static_assert(std::endian::native == std::endian::little, "checkpoints are little-endian");
 
 }  // namespace

@@ -16,8 +16,8 @@ Film::Film(uint32_t w, uint32_t h)
       count(pixels(), 0),
       nonfinite(pixels(), 0),
       highRange(pixels(), 0),
-      replicateSum(3 * gpu::kSampleReplicates * pixels(), 0.0),
-      replicateCount(gpu::kSampleReplicates * pixels(), 0) {}
+      replicateSum(3 * gpu::kMaxSampleReplicates * pixels(), 0.0),
+      replicateCount(gpu::kMaxSampleReplicates * pixels(), 0) {}
 
 namespace {
 constexpr double kFilmHighUnscale = 1.0 / double(gpu::kFilmHighScale);  // 2^96: exact
@@ -38,20 +38,20 @@ void Film::addBatch(const gpu::FilmPixel* px) {
     nonfinite[p] += static_cast<uint64_t>(px[p].sumSq[3]);
     highRange[p] += static_cast<uint64_t>(px[p].sumHigh[3]);
     // The last replicate is the rest of the batch: its sums and count by difference.
-    const uint32_t last = gpu::kSampleReplicates - 1;
+    const uint32_t last = replicates - 1;
     double rest[3];
     uint64_t restCount = static_cast<uint64_t>(px[p].sum[3]);
     for (int c = 0; c < 3; ++c) rest[c] = batchChannelSum(px[p], c);
     for (uint32_t r = 0; r < last; ++r) {
       for (int c = 0; c < 3; ++c) {
-        replicateSum[(p * gpu::kSampleReplicates + r) * 3 + c] += px[p].replicate[r][c];
+        replicateSum[(p * gpu::kMaxSampleReplicates + r) * 3 + c] += px[p].replicate[r][c];
         rest[c] -= px[p].replicate[r][c];
       }
-      replicateCount[p * gpu::kSampleReplicates + r] += static_cast<uint64_t>(px[p].replicate[r][3]);
+      replicateCount[p * gpu::kMaxSampleReplicates + r] += static_cast<uint64_t>(px[p].replicate[r][3]);
       restCount -= static_cast<uint64_t>(px[p].replicate[r][3]);
     }
-    for (int c = 0; c < 3; ++c) replicateSum[(p * gpu::kSampleReplicates + last) * 3 + c] += rest[c];
-    replicateCount[p * gpu::kSampleReplicates + last] += restCount;
+    for (int c = 0; c < 3; ++c) replicateSum[(p * gpu::kMaxSampleReplicates + last) * 3 + c] += rest[c];
+    replicateCount[p * gpu::kMaxSampleReplicates + last] += restCount;
   }
 }
 
@@ -77,11 +77,11 @@ double Film::varianceOfMean(size_t p, int c) const {
 }
 
 double Film::replicateVarianceOfMean(size_t p, int c) const {
-  double means[gpu::kSampleReplicates];
+  double means[gpu::kMaxSampleReplicates];
   int k = 0;
-  for (uint32_t r = 0; r < gpu::kSampleReplicates; ++r) {
-    uint64_t n = replicateCount[p * gpu::kSampleReplicates + r];
-    if (n) means[k++] = replicateSum[(p * gpu::kSampleReplicates + r) * 3 + c] / static_cast<double>(n);
+  for (uint32_t r = 0; r < gpu::kMaxSampleReplicates; ++r) {
+    uint64_t n = replicateCount[p * gpu::kMaxSampleReplicates + r];
+    if (n) means[k++] = replicateSum[(p * gpu::kMaxSampleReplicates + r) * 3 + c] / static_cast<double>(n);
   }
   if (k < 2) return 0.0;
   double m = 0.0;
@@ -95,7 +95,7 @@ double Film::replicateVarianceOfMean(size_t p, int c) const {
 double Film::varianceDof(size_t p) const {
   if (!replicateVariance) return count[p] < 2 ? 0.0 : double(count[p] - 1);
   int k = 0;
-  for (uint32_t r = 0; r < gpu::kSampleReplicates; ++r) k += replicateCount[p * gpu::kSampleReplicates + r] != 0;
+  for (uint32_t r = 0; r < gpu::kMaxSampleReplicates; ++r) k += replicateCount[p * gpu::kMaxSampleReplicates + r] != 0;
   return k < 2 ? 0.0 : double(k - 1);
 }
 

@@ -17,9 +17,11 @@ struct Film {
   std::vector<uint64_t> count;  // finite samples per pixel
   std::vector<uint64_t> nonfinite;
   std::vector<uint64_t> highRange;  // finite samples with a channel >= 2^56, kept in the scaled high sums
-  // Replicates (shaders/shared/sampler.h): per pixel kSampleReplicates sums (3 each) and counts.
+  // Replicates (shaders/shared/sampler.h): per pixel kMaxSampleReplicates slots of sums (3 each) and counts,
+  // the first `replicates` used (the estimator's `replicates`; the device's last one is the batch's rest).
   std::vector<double> replicateSum;
   std::vector<uint64_t> replicateCount;
+  uint32_t replicates = gpu::kMaxSampleReplicates;
   // QMC samplers: a pixel's samples are correlated, so the variance of its mean comes from the spread of the
   // replicate means; the independent sampler's samples are independent, so from the samples (more dof).
   bool replicateVariance = false;
@@ -38,7 +40,7 @@ struct Film {
   double sampleVarianceOfMean(size_t pixel, int c) const;     // from the samples, as if independent
   double replicateVarianceOfMean(size_t pixel, int c) const;  // from the replicate means
   // Degrees of freedom of varianceOfMean: replicates with samples - 1, or samples - 1. A z-test on one pixel
-  // whose variance has few (3 with the QMC samplers) needs Student's t, not the normal, for its bound.
+  // whose variance has few (replicates - 1 with the QMC samplers) needs Student's t, not the normal, for its bound.
   double varianceDof(size_t pixel) const;
 
   glm::dvec3 imageMean() const;

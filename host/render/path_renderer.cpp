@@ -482,6 +482,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
     throw Error("internal error: resumed film size differs from the render's");
   }
   state.film.replicateVariance = settings_.estimator.sampler != Sampler::Independent;
+  state.film.replicates = settings_.estimator.replicates;
   state.interrupted = false;
   RenderStats& stats = state.stats;
   const RenderStats before = stats;

@@ -40,7 +40,8 @@ uint32_t log2Ceil(uint64_t v) {
 
 ZSobolLayout zsobolLayout(const RenderSettings& s) {
   ZSobolLayout z;
-  z.log2Spp = log2Ceil((uint64_t(s.spp) + gpu::kSampleReplicates - 1) / gpu::kSampleReplicates);
+  const uint64_t replicates = s.estimator.replicates;
+  z.log2Spp = log2Ceil((uint64_t(s.spp) + replicates - 1) / replicates);
   const uint32_t pixelBits = log2Ceil(std::max(s.width, s.height));
   z.digits = pixelBits + (z.log2Spp + 1) / 2;
   if (s.estimator.sampler == Sampler::ZSobol && 2 * pixelBits + z.log2Spp > 32)

@@ -8,7 +8,7 @@
 PathState cameraPath(uint id) {
   uint pixel = pc.firstPixel + id % pc.pixelCount;
   uint sampleIndex = pc.sampleIndex + id / pc.pixelCount;
-  SampleStream stream = SampleStream(streamKey(kSampler, pc.seed, pixel, sampleIndex), sampleIndex, pixel);
+  SampleStream stream = SampleStream(streamKey(kSampler, pc.seed, pixel, sampleIndex, kSampleReplicates), sampleIndex, pixel);
   vec2 u = sampleU2(stream, 0u);
   FilterSample fs = samplePixelFilter(u);
   vec2 jitter = fs.point;

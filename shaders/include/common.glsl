@@ -49,6 +49,7 @@ layout(constant_id = SPEC_HAS_DELTA) const uint kHasDelta = 1u;
 layout(constant_id = SPEC_SAMPLER) const uint kSampler = 0u;
 layout(constant_id = SPEC_SAMPLER_LOG2_SPP) const uint kSamplerLog2Spp = 0u;
 layout(constant_id = SPEC_SAMPLER_DIGITS) const uint kSamplerDigits = 0u;
+layout(constant_id = SPEC_SAMPLE_REPLICATES) const uint kSampleReplicates = 2u;
 layout(constant_id = SPEC_PIXEL_FILTER) const uint kPixelFilterSampling = 0u;
 
 layout(push_constant, std430) uniform Push { PushConstants pc; };
@@ -206,7 +207,7 @@ void storeFilmPixel(uint pixel, FilmPixel f) {
   filmPairs[t + 1u] = wordPairs(f.sumSq);
   filmPairs[t + 2u] = wordPairs(f.sumHigh);
   filmPairs[t + 3u] = wordPairs(f.sumSqHigh);
-  for (uint r = 0u; r + 1u < kSampleReplicates; ++r) filmPairs[t + 4u + r] = wordPairs(f.replicate[r]);
+  for (uint r = 0u; r + 1u < kMaxSampleReplicates; ++r) filmPairs[t + 4u + r] = wordPairs(f.replicate[r]);
 }
 void storeShadowRay(uint slot, ShadowRay r) {
   uint t = slot * kShadowRayTexels;
@@ -242,5 +243,6 @@ bool allFinite(vec3 v) { return !any(isnan(v)) && !any(isinf(v)); }
 // A path's sample stream (sampler.h): its key, its pixel's sample number (the pass's first plus the root
 // path's sample slot), its pixel; and dimension `dim` of it from the sampler the kernels are specialized for.
 SampleStream pathStream(PathState p) { return SampleStream(p.rngKey, pc.sampleIndex + p.rootPath / pc.pixelCount, p.pixel); }
-float sampleU(SampleStream s, uint dim) { return sampleDimension(kSampler, s, dim, pc.width, kSamplerLog2Spp, kSamplerDigits); }
-vec2 sampleU2(SampleStream s, uint dim) { return samplePair(kSampler, s, dim, pc.width, kSamplerLog2Spp, kSamplerDigits); }  // dim even
+SamplerShape samplerShape() { return SamplerShape(kSampleReplicates, pc.width, kSamplerLog2Spp, kSamplerDigits); }
+float sampleU(SampleStream s, uint dim) { return sampleDimension(kSampler, s, dim, samplerShape()); }
+vec2 sampleU2(SampleStream s, uint dim) { return samplePair(kSampler, s, dim, samplerShape()); }  // dim even

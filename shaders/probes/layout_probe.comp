@@ -38,7 +38,7 @@ void echoStructs() {
   putSlot(m.specularTexture); putSlot(m.specularColorTexture);
   FilmPixel f = film[0];
   put4(f.sum); put4(f.sumSq); put4(f.sumHigh); put4(f.sumSqHigh);
-  for (uint r = 0u; r + 1u < kSampleReplicates; ++r) put4(f.replicate[r]);
+  for (uint r = 0u; r + 1u < kMaxSampleReplicates; ++r) put4(f.replicate[r]);
   put(control.rayQueueCount[0]); put(control.rayQueueCount[1]); put(control.shadowQueueCount); put(control.splitChildren);
   put4u(control.rayArgs); put4u(control.shadowArgs); put4u(control.accumulateArgs);
   put(control.cameraRays); put(control.extensionRays); put(control.shadowRays); put(control.copyQueueCount);

@@ -109,6 +109,7 @@
 #define SPEC_EARS_MAX 35          // float: rr ears's largest factor q, at most kEarsFactorMax (1: learned roulette alone)
 #define SPEC_EARS_LIGHT_MAX 36    // float: rr ears's largest light factor qL; 0: light samples not learned (ears.h)
 #define SPEC_EARS_TRAINS 37       // 0/1: rr ears: this kernel's paths train the cache (common.glsl earsTrains)
+#define SPEC_SAMPLE_REPLICATES 38 // replicates a pixel's samples are split into, 2..kMaxSampleReplicates (sampler.h)
 
 VKMC_BEGIN_NAMESPACE
 
@@ -220,18 +221,19 @@ struct PixelFilterHeader {
 // reaches kFilmHighThreshold (2^56) goes to the high sums scaled by kFilmHighScale (2^-96): its square would
 // overflow float past ~1.8e19, and every finite value up to FLT_MAX (2^128) must count. The host adds the high
 // sums back times 2^96 (squares 2^192) in double.
-// Replicates (sampler.h): sample i of a pixel belongs to replicate i % kSampleReplicates; their separate sums
-// give the variance of the pixel mean when the samples inside a replicate are correlated (QMC). The last
-// replicate's sums are the rest of `sum` (the host subtracts), which keeps the film at 112 bytes a pixel
-// (1024x1024 fits lavapipe's 128 MiB storage-buffer limit).
-VKMC_CONST uint kSampleReplicates = 4u;
-VKMC_CONST uint kFilmPixelWords = 3u + kSampleReplicates;  // 16-byte words of a FilmPixel
+// Replicates (sampler.h): sample i of a pixel belongs to replicate i % R (R = the `replicates` setting, at most
+// kMaxSampleReplicates); their separate sums give the variance of the pixel mean when the samples inside a
+// replicate are correlated (QMC). The last replicate's sums are the rest of `sum` (the host subtracts), which
+// keeps the film at 112 bytes a pixel (1024x1024 fits lavapipe's 128 MiB storage-buffer limit); slots of
+// replicates beyond R stay 0.
+VKMC_CONST uint kMaxSampleReplicates = 4u;
+VKMC_CONST uint kFilmPixelWords = 3u + kMaxSampleReplicates;  // 16-byte words of a FilmPixel
 struct FilmPixel {
   vec4 sum;        // rgb: sum of estimate channels below the threshold, w: finite samples
   vec4 sumSq;      // rgb: sum of their squares, w: non-finite samples (counted, excluded)
   vec4 sumHigh;    // rgb: sum of channels at or above the threshold, times kFilmHighScale; w: samples with one
   vec4 sumSqHigh;  // rgb: sum of the squares of those scaled channels; w unused
-  vec4 replicate[kSampleReplicates - 1u];  // rgb: sum of replicate r's finite samples, w: their count
+  vec4 replicate[kMaxSampleReplicates - 1u];  // rgb: sum of replicate r's finite samples, w: their count
 };
 VKMC_CONST float kFilmHighThreshold = 72057594037927936.0f;          // 2^56
 VKMC_CONST float kFilmHighScale = 1.2621774483536188886587657e-29f;  // 2^-96

@@ -7,9 +7,11 @@
 // its sample order shuffled and its values Owen-scrambled with seeds of its own, so pairs are independent of
 // each other and each stays stratified (padding). A 1D sample is one half of a pair.
 //
-// Honest variance: a pixel's samples are split into kSampleReplicates independent replicates (sample index i
-// belongs to replicate i % R and is point i / R of that replicate's own scrambling), so the spread of the R
-// replicate means is an unbiased estimate of the variance of the pixel mean (host/render/film.cpp).
+// Honest variance: a pixel's samples are split into R independent replicates (`replicates`, 2 to
+// kMaxSampleReplicates; sample index i belongs to replicate i % R and is point i / R of that replicate's own
+// scrambling), so the spread of the R replicate means is an unbiased estimate of the variance of the pixel mean
+// (host/render/film.cpp). Fewer replicates keep more of the sequence's stratification (QMC error falls faster
+// than 1/n inside one); more give the per-pixel variance more degrees of freedom (R - 1).
 #ifndef VKMC_SAMPLER_H
 #define VKMC_SAMPLER_H
 #include "glsl_cpp.h"
@@ -120,44 +122,53 @@ struct SampleStream {
 
 // The stream key of a camera path: per sample for the independent sampler; per pixel and replicate for Sobol;
 // per replicate (the same for every pixel: the Morton index separates pixels) for ZSobol.
-VKMC_FN uint streamKey(uint samplerKind, uint seed, uint pixel, uint sampleIndex) {
+VKMC_FN uint streamKey(uint samplerKind, uint seed, uint pixel, uint sampleIndex, uint replicates) {
   if (samplerKind == kSamplerIndependent) return pathKey(seed, pixel, sampleIndex);
-  uint replicate = sampleIndex % kSampleReplicates;
+  uint replicate = sampleIndex % replicates;
   if (samplerKind == kSamplerSobol) return hashU32(pathKey(seed, pixel, 0u) ^ hashU32(replicate + 0x2545f491u));
   return hashU32(hashU32(seed + 0x632be5abu) ^ hashU32(replicate + 0x2545f491u));
 }
+
+// How a sampler's points are laid out: `replicates` per pixel (R above); for ZSobol `width` (the image's),
+// `log2Spp` (a replicate's point numbers are < 2^log2Spp) and `digits` (the Morton index's length in base-4
+// digits: pixel bits + log2Spp, rounded up).
+struct SamplerShape {
+  uint replicates;
+  uint width;
+  uint log2Spp;
+  uint digits;
+};
 
 // A per-sample hash key of the stream (stochastic alpha and other decisions that need no stratification).
 VKMC_FN uint streamHash(SampleStream s) { return hashU32(s.key ^ hashU32(s.sampleIndex * 0x9e3779b9u + 0x7f4a7c15u)); }
 
 // The Sobol index of a pair's point for stream s (before the dimension's own scrambling).
-VKMC_FN uint pairIndex(uint samplerKind, SampleStream s, uint pair, uint pairSeed, uint width, uint log2Spp, uint digits) {
-  uint point = s.sampleIndex / kSampleReplicates;
+VKMC_FN uint pairIndex(uint samplerKind, SampleStream s, uint pair, uint pairSeed, SamplerShape shape) {
+  uint point = s.sampleIndex / shape.replicates;
   if (samplerKind == kSamplerSobol) return shuffleIndex(point, pairSeed);
-  uint morton = (mortonCode(s.pixel % width, s.pixel / width) << log2Spp) | point;
-  return zsobolIndex(morton, pair, s.key, digits, (log2Spp & 1u) != 0u);
+  uint morton = (mortonCode(s.pixel % shape.width, s.pixel / shape.width) << shape.log2Spp) | point;
+  return zsobolIndex(morton, pair, s.key, shape.digits, (shape.log2Spp & 1u) != 0u);
 }
 VKMC_FN uint pairSeedOf(SampleStream s, uint pair) { return hashU32(s.key ^ hashU32(pair * 0x68bc21ebu + 0x02e5be93u)); }
 VKMC_FN float scrambledComponent(uint index, uint component, uint pairSeed) {
   return bitsToUnit(owenScramble(sobolBits(index, component), hashU32(pairSeed ^ (component + 0x1b873593u))));
 }
 
-// Uniform in [0, 1) for dimension `dim`. ZSobol: `log2Spp` bounds the replicate's point numbers (< 2^log2Spp),
-// `digits` is the Morton index's length in base-4 digits (pixel bits + log2Spp, rounded up), `width` the image's.
-VKMC_FN float sampleDimension(uint samplerKind, SampleStream s, uint dim, uint width, uint log2Spp, uint digits) {
+// Uniform in [0, 1) for dimension `dim`.
+VKMC_FN float sampleDimension(uint samplerKind, SampleStream s, uint dim, SamplerShape shape) {
   if (samplerKind == kSamplerIndependent) return randomUnit(s.key, dim);
   uint pair = dim >> 1u;
   uint pairSeed = pairSeedOf(s, pair);
-  return scrambledComponent(pairIndex(samplerKind, s, pair, pairSeed, width, log2Spp, digits), dim & 1u, pairSeed);
+  return scrambledComponent(pairIndex(samplerKind, s, pair, pairSeed, shape), dim & 1u, pairSeed);
 }
 
 // Dimensions dim and dim + 1 (dim even: one pair), the same values as two sampleDimension calls, with the pair's
 // seed and index computed once.
-VKMC_FN vec2 samplePair(uint samplerKind, SampleStream s, uint dim, uint width, uint log2Spp, uint digits) {
+VKMC_FN vec2 samplePair(uint samplerKind, SampleStream s, uint dim, SamplerShape shape) {
   if (samplerKind == kSamplerIndependent) return vec2(randomUnit(s.key, dim), randomUnit(s.key, dim + 1u));
   uint pair = dim >> 1u;
   uint pairSeed = pairSeedOf(s, pair);
-  uint index = pairIndex(samplerKind, s, pair, pairSeed, width, log2Spp, digits);
+  uint index = pairIndex(samplerKind, s, pair, pairSeed, shape);
   return vec2(scrambledComponent(index, 0u, pairSeed), scrambledComponent(index, 1u, pairSeed));
 }
 

@@ -29,7 +29,7 @@ vk::Context& context() {
 
 TEST(Furnace, EveryPixelIsTwoWithinFiveSigmaWithoutDepthCap) {
   // A sharp test of every pixel needs many-dof variances: the independent sampler's (1023 dof; the QMC samplers'
-  // 3 would widen 5 sigma to 157). The other furnace tests run the default sampler.
+  // 1, or 3 with 4 replicates, would widen 5 sigma to 157 or more). The other furnace tests run the default sampler.
   RenderOptions o = furnaceOptions(1024);
   o.estimator.sampler = Sampler::Independent;
   RenderOutcome r = runRender(context(), o);

@@ -61,7 +61,7 @@ TEST_P(PixelFilterRender, FurnaceStaysTwo) {
   o.width = 16, o.height = 16, o.spp = 256, o.seed = 99, o.progress = false;
   o.filter = GetParam().filter;
   o.integrator = GetParam().integrator;
-  // Pixel by pixel at 5 sigma needs many-dof variances (sobol's 3 would widen the bound to 157 sigma).
+  // Pixel by pixel at 5 sigma needs many-dof variances (sobol's 1 by default, 3 with 4 replicates, would widen the bound to 157 sigma or more).
   o.estimator.sampler = Sampler::Independent;
   RenderOutcome r = runRender(sharedContext(), o);
   ASSERT_EQ(r.film.totalNonfinite(), 0u);

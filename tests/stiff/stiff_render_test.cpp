@@ -35,10 +35,12 @@ double tinyLightImageMean(uint32_t n) {
 
 TEST(StiffRender, TinyIntenseLightMatchesTheAnalyticRadiance) {
   const uint32_t n = 16;
-  // Pixel by pixel at 3 sigma: the independent sampler, whose pixel variances have 255 dof (sobol's 3 would
-  // widen 3 sigma to 9.2).
+  // Pixel by pixel at 3 sigma: the independent sampler, whose pixel variances have 255 dof (sobol's 3 with
+  // 4 replicates would widen 3 sigma to 9.2, its default 1 far more).
   EstimatorConfig independent;
   independent.sampler = Sampler::Independent;
+  // 4 replicates: the reliability figure below is then the unbiased U-statistic (with 2 it is an upper bound).
+  independent.replicates = 4;
   RenderOutcome r = renderWith("stiff/tiny_light.gltf", independent, n, n, 256);
   ASSERT_EQ(r.film.totalNonfinite(), 0u);
   const double expectedMean = tinyLightImageMean(n);
@@ -59,6 +61,7 @@ TEST(StiffRender, TinyIntenseLightMatchesTheAnalyticRadiance) {
   // non-negative (nearly black) and its sampled variance is no evidence of accuracy, which the report shows.
   EstimatorConfig off;
   off.nee = false;
+  off.replicates = 4;
   RenderOutcome b = renderWith("stiff/tiny_light.gltf", off, n, n, 64);
   EXPECT_EQ(b.film.totalNonfinite(), 0u);
   EXPECT_GE(whole(b.film).mean.x, 0.0);

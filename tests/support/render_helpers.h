@@ -101,7 +101,7 @@ inline bool pixelMatches(const Film& f, size_t p, int c, double expected, double
 }
 
 // One pixel's channel in two independent renders agrees within k sigma, sigma and its degrees of freedom by
-// Welch (3 dof a pixel under the QMC samplers: Student's bound, not the normal's; analysis/student_t.h).
+// Welch (replicates - 1 dof a pixel under the QMC samplers: Student's bound, not the normal's; analysis/student_t.h).
 inline bool pixelsAgree(const Film& a, const Film& b, size_t p, int c, double k, double slack = 0.0) {
   const double va = a.varianceOfMean(p, c), vb = b.varianceOfMean(p, c);
   const double dof = welchDof(va, a.varianceDof(p), vb, b.varianceDof(p));

@@ -15,7 +15,7 @@ TEST(Layout, Std430SizesMatchGlsl) {
   EXPECT_EQ(sizeof(ShadowRay), 48u);
   EXPECT_EQ(sizeof(Material), 688u);
   EXPECT_EQ(sizeof(TextureSlot), 48u);
-  EXPECT_EQ(sizeof(FilmPixel), 64u + 16u * (kSampleReplicates - 1u));
+  EXPECT_EQ(sizeof(FilmPixel), 64u + 16u * (kMaxSampleReplicates - 1u));
   EXPECT_EQ(double(kFilmHighThreshold), std::ldexp(1.0, 56));
   EXPECT_EQ(double(kFilmHighScale), std::ldexp(1.0, -96));  // film.cpp adds the high sums back times 2^96
   EXPECT_EQ(offsetof(Control, shadowArgs), 32u);

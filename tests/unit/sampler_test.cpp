@@ -61,10 +61,11 @@ TEST(Samplers, APairIsItsTwoDimensions) {
   for (uint32_t sampler : {kSamplerIndependent, kSamplerSobol, kSamplerZSobol})
     for (uint32_t sample = 0; sample < 40; ++sample)
       for (uint32_t dim : {0u, 2u, 6u, 14u, lightDim(3u, 2u, 1u)}) {
-        SampleStream s{streamKey(sampler, 9u, 77u, sample), sample, 77u};
-        vec2 pair = samplePair(sampler, s, dim, 16u, 4u, 6u);
-        EXPECT_EQ(pair.x, sampleDimension(sampler, s, dim, 16u, 4u, 6u)) << sampler << " " << dim;
-        EXPECT_EQ(pair.y, sampleDimension(sampler, s, dim + 1u, 16u, 4u, 6u)) << sampler << " " << dim;
+        const SamplerShape shape{2u, 16u, 4u, 6u};
+        SampleStream s{streamKey(sampler, 9u, 77u, sample, shape.replicates), sample, 77u};
+        vec2 pair = samplePair(sampler, s, dim, shape);
+        EXPECT_EQ(pair.x, sampleDimension(sampler, s, dim, shape)) << sampler << " " << dim;
+        EXPECT_EQ(pair.y, sampleDimension(sampler, s, dim + 1u, shape)) << sampler << " " << dim;
       }
   // The kernels' 2D samples start at even dimensions (one pair each).
   for (uint32_t depth = 0; depth < 8; ++depth) {
@@ -97,27 +98,31 @@ TEST(SobolSequence, ShuffleMapsTheFirstIndicesOntoAnAlignedBlock) {
 }
 
 // A pixel's first 2^k samples of one replicate, dimension pair `pair`, as 32-bit fractions.
-std::vector<uvec2> pixelPoints(uint32_t sampler, uint32_t pixel, uint32_t replicate, uint32_t pair, uint32_t k, uint32_t width,
-                               uint32_t log2Spp, uint32_t digits) {
+std::vector<uvec2> pixelPoints(uint32_t sampler, uint32_t pixel, uint32_t replicate, uint32_t pair, uint32_t k,
+                               SamplerShape shape) {
   std::vector<uvec2> pts;
   for (uint32_t i = 0; i < (1u << k); ++i) {
-    uint32_t sampleIndex = i * kSampleReplicates + replicate;
-    SampleStream s{streamKey(sampler, 9u, pixel, sampleIndex), sampleIndex, pixel};
-    pts.push_back(uvec2(bitsOf(sampleDimension(sampler, s, 2 * pair, width, log2Spp, digits)),
-                        bitsOf(sampleDimension(sampler, s, 2 * pair + 1, width, log2Spp, digits))));
+    uint32_t sampleIndex = i * shape.replicates + replicate;
+    SampleStream s{streamKey(sampler, 9u, pixel, sampleIndex, shape.replicates), sampleIndex, pixel};
+    pts.push_back(uvec2(bitsOf(sampleDimension(sampler, s, 2 * pair, shape)),
+                        bitsOf(sampleDimension(sampler, s, 2 * pair + 1, shape))));
   }
   return pts;
 }
 
 TEST(Samplers, EveryPairOfAPixelIsStratified) {
   const uint32_t width = 64, log2Spp = 6, digits = 6 + (log2Spp + 1) / 2;
-  for (uint32_t sampler : {kSamplerSobol, kSamplerZSobol}) {
-    for (uint32_t pixel : {0u, 1u, 65u, 4000u}) {
-      for (uint32_t replicate = 0; replicate < kSampleReplicates; ++replicate) {
-        for (uint32_t pair : {0u, 1u, bounceDim(0, kDimBsdf) / 2, bounceDim(2, kDimLightPoint) / 2, lightDim(1, 3, 1) / 2}) {
-          for (uint32_t k : {2u, 4u, 6u}) {
-            EXPECT_TRUE(isNet(pixelPoints(sampler, pixel, replicate, pair, k, width, log2Spp, digits), k))
-                << "sampler " << sampler << " pixel " << pixel << " replicate " << replicate << " pair " << pair << " k " << k;
+  for (uint32_t replicates = 2; replicates <= kMaxSampleReplicates; ++replicates) {
+    const SamplerShape shape{replicates, width, log2Spp, digits};
+    for (uint32_t sampler : {kSamplerSobol, kSamplerZSobol}) {
+      for (uint32_t pixel : {0u, 1u, 65u, 4000u}) {
+        for (uint32_t replicate = 0; replicate < replicates; ++replicate) {
+          for (uint32_t pair : {0u, 1u, bounceDim(0, kDimBsdf) / 2, bounceDim(2, kDimLightPoint) / 2, lightDim(1, 3, 1) / 2}) {
+            for (uint32_t k : {2u, 4u, 6u}) {
+              EXPECT_TRUE(isNet(pixelPoints(sampler, pixel, replicate, pair, k, shape), k))
+                  << "sampler " << sampler << " replicates " << replicates << " pixel " << pixel << " replicate "
+                  << replicate << " pair " << pair << " k " << k;
+            }
           }
         }
       }
@@ -147,14 +152,15 @@ TEST(Samplers, NeverOne) {
 // One dimension over many pixels (and samples) is uniform: chi-square over 64 bins, for each sampler.
 TEST(Samplers, ScrambledDimensionsAreUniform) {
   const uint32_t width = 128, log2Spp = 2, digits = 7 + (log2Spp + 1) / 2;
+  const SamplerShape shape{kMaxSampleReplicates, width, log2Spp, digits};
   for (uint32_t sampler : {kSamplerIndependent, kSamplerSobol, kSamplerZSobol}) {
     for (uint32_t dim : {0u, 3u, bounceDim(1, kDimRoulette), lightDim(0, 2, 0)}) {
       std::vector<double> bins(64, 0.0);
       uint32_t n = 0;
       for (uint32_t pixel = 0; pixel < width * 128; pixel += 3) {
-        for (uint32_t sampleIndex = 0; sampleIndex < 4 * kSampleReplicates; sampleIndex += 5) {
-          SampleStream s{streamKey(sampler, 21u, pixel, sampleIndex), sampleIndex, pixel};
-          float u = sampleDimension(sampler, s, dim, width, log2Spp, digits);
+        for (uint32_t sampleIndex = 0; sampleIndex < 4 * shape.replicates; sampleIndex += 5) {
+          SampleStream s{streamKey(sampler, 21u, pixel, sampleIndex, shape.replicates), sampleIndex, pixel};
+          float u = sampleDimension(sampler, s, dim, shape);
           ASSERT_TRUE(u >= 0.0f && u < 1.0f);
           bins[static_cast<size_t>(u * 64.0f)] += 1.0;
           ++n;
@@ -185,11 +191,11 @@ TEST(ZSobol, DigitPermutationsAreTheTwentyFour) {
 
 // Neighbouring pixels get distinct parts of the sequence: no two pixels of a 16x16 tile share their first point.
 TEST(ZSobol, PixelsGetDistinctPoints) {
-  const uint32_t width = 16, log2Spp = 0, digits = 4;
+  const SamplerShape shape{2u, 16u, 0u, 4u};
   std::set<uint32_t> first;
   for (uint32_t pixel = 0; pixel < 256; ++pixel) {
-    SampleStream s{streamKey(kSamplerZSobol, 1u, pixel, 0u), 0u, pixel};
-    first.insert(bitsOf(sampleDimension(kSamplerZSobol, s, 0u, width, log2Spp, digits)) >> 24);
+    SampleStream s{streamKey(kSamplerZSobol, 1u, pixel, 0u, shape.replicates), 0u, pixel};
+    first.insert(bitsOf(sampleDimension(kSamplerZSobol, s, 0u, shape)) >> 24);
   }
   EXPECT_EQ(first.size(), 256u);  // the 256 pixels' first x values fall one per 1/256 interval
 }
