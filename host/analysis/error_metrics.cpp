@@ -56,7 +56,7 @@ ErrorMetrics compareImages(const ExrImage& a, const ExrImage& b, double alpha, b
   const char* rgb[] = {"R", "G", "B"};
   const char* var[] = {"variance.R", "variance.G", "variance.B"};
   m.hasZTest = a.channels.count(var[0]) && b.channels.count(var[0]);
-  // With both images' degrees of freedom the test is Welch's t (a QMC pixel's variance has only 3), else the z.
+  // With both images' degrees of freedom the test is Welch's t (a QMC pixel's variance has only replicates - 1), else the z.
   const bool hasDof = m.hasZTest && a.channels.count("variance.dof") && b.channels.count("variance.dof");
   const std::vector<float>* dofA = hasDof ? &channel(a, "variance.dof", "image") : nullptr;
   const std::vector<float>* dofB = hasDof ? &channel(b, "variance.dof", "reference") : nullptr;

@@ -8,8 +8,9 @@
 // U = the mean of h over the pairs of replicates, estimates sum_c w_c Var(pixel mean_c) without bias. For Var(U):
 // with 4 replicates U^2 - theta2, where theta2 = the mean of h(a, b) h(c, d) over the 3 ways to split the replicates
 // into two disjoint pairs (an unbiased estimate of E[h]^2: the U-statistic variance estimator for 4 samples);
-// with 2 or 3 no two pairs are disjoint, so U^2, whose mean Var(U) + E[U]^2 bounds it from above (by sqrt(3/2) in
-// the standard error for normal replicate means, less for heavier tails). Summed over the pixels (independent)
+// with 2 or 3 no two pairs are disjoint, so U^2, whose mean Var(U) + E[U]^2 bounds it from above (for one channel
+// of normal replicate means by 1 + (R - 1) / 2 in variance: sqrt(3/2) in the standard error at R = 2, sqrt(2) at 3;
+// less for heavier tails, more when the channels are less correlated). Summed over the pixels (independent)
 // this gives Var(mean_relvariance); its square root over the estimate is the relative standard error. Channels
 // need no independence: they share one h. Under the independent sampler the report's variance comes from the
 // samples (more degrees of freedom), so the replicates' figure is conservative there.

@@ -89,6 +89,7 @@ std::string encodeCheckpoint(const Checkpoint& c) {
                            {"width", st.film.width},
                            {"height", st.film.height},
                            {"replicate_variance", st.film.replicateVariance},
+                           {"replicates", st.film.replicates},
                            {"next_sample", st.nextSample},
                            {"batch_samples", st.batchSamples},
                            {"stats", renderStatsJson(st.stats)}};
@@ -147,6 +148,9 @@ Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
     if (width == 0 || height == 0 || width > 16384 || height > 16384) throw fail("has an impossible image size");
     c.state.film = Film(width, height);
     c.state.film.replicateVariance = header.at("replicate_variance");
+    c.state.film.replicates = header.at("replicates");
+    if (c.state.film.replicates < 2 || c.state.film.replicates > gpu::kMaxSampleReplicates)
+      throw fail("has an impossible replicate count");
     c.state.nextSample = header.at("next_sample");
     c.state.batchSamples = header.at("batch_samples");
     c.state.stats = renderStatsFromJson(header.at("stats"));

@@ -17,6 +17,7 @@ Checkpoint sample(bool withBatch) {
   RenderState& s = c.state;
   s.film = Film(3, 2);
   s.film.replicateVariance = true;
+  s.film.replicates = 3;
   for (size_t i = 0; i < s.film.sum.size(); ++i) s.film.sum[i] = 0.1 * double(i) + 1e-17, s.film.sumSq[i] = std::ldexp(1.0, int(i) * 50);
   for (size_t i = 0; i < s.film.count.size(); ++i) s.film.count[i] = 1000 + i, s.film.nonfinite[i] = i;
   for (size_t i = 0; i < s.film.replicateSum.size(); ++i) s.film.replicateSum[i] = -double(i) / 3.0;
@@ -53,6 +54,7 @@ TEST(Checkpoint, RoundTripsEveryArrayAndCounterExactly) {
     EXPECT_EQ(d.state.film.width, 3u);
     EXPECT_EQ(d.state.film.height, 2u);
     EXPECT_TRUE(d.state.film.replicateVariance);
+    EXPECT_EQ(d.state.film.replicates, 3u);
     EXPECT_EQ(d.state.film.sum, c.state.film.sum);
     EXPECT_EQ(d.state.film.sumSq, c.state.film.sumSq);
     EXPECT_EQ(d.state.film.count, c.state.film.count);
