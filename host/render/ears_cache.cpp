@@ -27,8 +27,7 @@ EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathS
   std::memset(header_.mapped(), 0, sizeof(gpu::EarsHeader));
   auto texels = [&](VkDeviceSize bytes) {
     deviceBytes_ += bytes;
-    vk::Buffer b(ctx, bytes, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT,
-                 vk::MemoryKind::DeviceLocal);
+    vk::Buffer b(ctx, notPowerOfTwoBytes(bytes), VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
     b.createView(sceneTexelFormat(BINDING_EARS_SAMPLING));
     return b;
   };

@@ -38,13 +38,17 @@ VkFormat formatOfQualifier(std::string_view qualifier) {
 #define VKMC_TOKEN_TEXT(x) #x
 #define VKMC_MACRO_TEXT(x) VKMC_TOKEN_TEXT(x)
 
+// A texel buffer's size: as is where the kernels read its length (imageSize), else notPowerOfTwoBytes.
+enum class TexelSize { Exact, NotPowerOfTwo };
+
 vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, uint32_t binding, const char* name,
-                           size_t texelBytes = 16) {
+                           TexelSize size = TexelSize::NotPowerOfTwo, size_t texelBytes = 16) {
   uint64_t texels = bytes / texelBytes;
   if (texels > ctx.properties().limits.maxTexelBufferElements)
     throw Error(std::string("scene too big for the device: ") + name + " needs " + std::to_string(texels) +
                 " texels, the device allows " + std::to_string(ctx.properties().limits.maxTexelBufferElements));
-  vk::Buffer b(ctx, std::max<size_t>(bytes, 16), VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+  const size_t allocated = size == TexelSize::Exact ? std::max<size_t>(bytes, 16) : notPowerOfTwoBytes(bytes);
+  vk::Buffer b(ctx, allocated, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   b.upload(data, bytes);
   b.createView(sceneTexelFormat(binding));
   return b;
@@ -242,6 +246,12 @@ std::vector<float> environmentDistribution(const EnvironmentMap& e) {
   return table;
 }
 
+size_t notPowerOfTwoBytes(size_t bytes) {
+  size_t n = std::max<size_t>(bytes, 16);
+  while ((n & (n - 1)) == 0) n += 16;
+  return n;
+}
+
 VkFormat sceneTexelFormat(uint32_t binding) {
   switch (binding) {
     case BINDING_TRIANGLES: return formatOfQualifier(VKMC_MACRO_TEXT(TEXEL_FORMAT_TRIANGLES));
@@ -346,7 +356,8 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   if (keepBinaryBvh)
     binaryBvhNodes_ =
         makeTexelBuffer(ctx, bvh.nodes.data(), bvh.nodes.size() * sizeof(BvhGpuNode), BINDING_BVH_NODES, "binary BVH nodes");
-  lights_ = makeTexelBuffer(ctx, lights.entries.data(), lights.entries.size() * 16, BINDING_LIGHTS, "lights");
+  // The light count is the table's length (shading.glsl selectLight).
+  lights_ = makeTexelBuffer(ctx, lights.entries.data(), lights.entries.size() * 16, BINDING_LIGHTS, "lights", TexelSize::Exact);
   // Textures and attributes only where a material reads them (SceneFeatures::textures); one texel otherwise.
   bool textured = scanFeatures(scene).textures;
   const VkPhysicalDeviceLimits& limits = ctx.properties().limits;
@@ -359,9 +370,11 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   texturePages_ = std::make_unique<vk::ArrayImage>(ctx, atlas.pageWidth, atlas.pageHeight, atlas.layers, atlas.texels.data());
   bilinear_ = std::make_unique<vk::Sampler>(ctx, VK_FILTER_LINEAR);
   textures_ = makeTexelBuffer(ctx, packed.infos.data(), packed.infos.size() * 16, BINDING_TEXTURES, "textures");
-  layerAlbedo_ = makeTexelBuffer(ctx, gpu::kLayerAlbedo, sizeof(gpu::kLayerAlbedo), BINDING_LAYER_ALBEDO, "layer albedo", 4);
+  layerAlbedo_ = makeTexelBuffer(ctx, gpu::kLayerAlbedo, sizeof(gpu::kLayerAlbedo), BINDING_LAYER_ALBEDO, "layer albedo",
+                                 TexelSize::NotPowerOfTwo, 4);
   triangleAttributes_ =
-      makeTexelBuffer(ctx, attributes.data(), attributes.size() * 16, BINDING_TRIANGLE_ATTRIBUTES, "triangle attributes");
+      makeTexelBuffer(ctx, attributes.data(), attributes.size() * 16, BINDING_TRIANGLE_ATTRIBUTES, "triangle attributes",
+                      TexelSize::Exact);  // its length bounds the reads (textures.glsl)
   materials_ = makeTexelBuffer(ctx, mats.data(), mats.size() * sizeof(gpu::Material), BINDING_MATERIALS, "materials");
   punctualLights_ = makeStorageBuffer(ctx, lights.punctual.data(), lights.punctual.size() * sizeof(gpu::PunctualLight));
   environment_ = makeStorageBuffer(ctx, lights.environment.data(), lights.environment.size() * sizeof(glm::vec4));

@@ -29,6 +29,13 @@ struct GpuSceneInfo {
 // The view format of a scene texel binding (BINDING_TRIANGLES ... BINDING_LIGHTS), as common.glsl declares it.
 VkFormat sceneTexelFormat(uint32_t binding);
 
+// Bytes for a texel buffer of `bytes` whose length no kernel reads: at least 16 and never a power of two.
+// llvmpipe keys a compiled kernel on whether a texel buffer's texel count is a power of two (for 16- and 4-byte
+// texels exactly when the size is one), and the warm-up compiles for counts that are not
+// (background_warm_up.cpp); a power of two (an empty array's 16 bytes, a small scene's 512 bytes of BVH nodes, a
+// 256x256 image's pixel estimates) made the render compile those kernels a second time.
+size_t notPowerOfTwoBytes(size_t bytes);
+
 // The most triangles a scene may have on this device and machine: its largest buffer (3 texels a triangle)
 // within maxTexelBufferElements and one allocation, the scene (~96 bytes a triangle: triangles, their info, BVH
 // nodes) within half of device-local memory, and the host's peak (~320 bytes a triangle while loading and

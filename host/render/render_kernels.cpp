@@ -2,8 +2,11 @@
 #include "render/render_kernels.h"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
 #include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "../shaders/shared/layout.h"
@@ -142,7 +145,32 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
     for (const Planned& p : planned)
       if (p.helper) helperShare.push_back({p.name, p.spirv, specsOf(p)});
   BackgroundWarmUp helper(std::move(helperShare));
-  for (const Planned& p : planned) *p.slot = std::make_unique<vk::Kernel>(ctx, layout, p.name, p.spirv, specsOf(p));
+  // Creating a pipeline is CPU work of its own on llvmpipe (SPIR-V to NIR: about 0.2 s for shade, whose
+  // specialized-out code is parsed before it is removed), so two threads create them, the largest first.
+  std::vector<const Planned*> bySize;
+  for (const Planned& p : planned) bySize.push_back(&p);
+  std::stable_sort(bySize.begin(), bySize.end(), [](const Planned* a, const Planned* b) { return a->spirv.size() > b->spirv.size(); });
+  std::atomic<size_t> next{0};
+  auto createSome = [&] {
+    for (size_t i = next++; i < bySize.size(); i = next++)
+      *bySize[i]->slot = std::make_unique<vk::Kernel>(ctx, layout, bySize[i]->name, bySize[i]->spirv, specsOf(*bySize[i]));
+  };
+  std::exception_ptr workerError;
+  std::thread worker([&] {
+    try {
+      createSome();
+    } catch (...) {
+      workerError = std::current_exception();
+    }
+  });
+  try {
+    createSome();
+  } catch (...) {
+    worker.join();
+    throw;
+  }
+  worker.join();
+  if (workerError) std::rethrow_exception(workerError);
 
   // Warm-up: every kernel once on empty queues; the helper's share last, once it has compiled them into the cache.
   gpu::PushConstants pc{};

@@ -71,3 +71,20 @@ TEST(DeviceRequirements, TheCheckedFormatsAreTheSceneBuffersFormats) {
   for (uint32_t b : gpu::kTexelBindings)
     EXPECT_NE(std::find(checked.begin(), checked.end(), sceneTexelFormat(b)), checked.end()) << "binding " << b;
 }
+
+// llvmpipe keys compiled kernels on whether a texel buffer's texel count is a power of two; the warm-up compiles
+// for counts that are not, so the render's buffers must not be one either (render/gpu_scene.h notPowerOfTwoBytes).
+TEST(DeviceRequirements, TexelBufferSizesAreNeverAPowerOfTwo) {
+  EXPECT_EQ(notPowerOfTwoBytes(0), 48u);  // 16 and 32 are powers of two
+  EXPECT_EQ(notPowerOfTwoBytes(16), 48u);
+  EXPECT_EQ(notPowerOfTwoBytes(48), 48u);  // not one: unchanged
+  EXPECT_EQ(notPowerOfTwoBytes(512), 528u);
+  EXPECT_EQ(notPowerOfTwoBytes(256 * 256 * 16), 256u * 256u * 16u + 16u);
+  for (size_t size = 16; size <= (size_t(1) << 24); size += 16 * ((size >> 6) + 1)) {
+    const size_t bytes = notPowerOfTwoBytes(size);
+    EXPECT_NE(bytes & (bytes - 1), 0u) << size;
+    EXPECT_GE(bytes, size);
+    EXPECT_LE(bytes, size + 32) << "at most two texels of padding";
+    EXPECT_EQ(bytes % 16, 0u) << "whole 16-byte texels";
+  }
+}
