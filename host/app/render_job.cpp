@@ -258,6 +258,10 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   settings.width = width;
   settings.height = height;
   settings.spp = options.spp;
+  // A time budget without --spp leaves the count open (kMaxSpp); ZSobol's Morton index bounds it by the image.
+  if (options.timeBudget > 0.0 && options.spp == kMaxSpp && options.estimator.sampler == Sampler::ZSobol)
+    if (uint32_t most = zsobolMaxSpp(width, height, options.estimator.replicates); most > 0)
+      settings.spp = std::min(settings.spp, most);
   settings.estimator = options.estimator;
   settings.features = options.specialize ? scanFeatures(scene) : allFeatures(scanFeatures(scene));
   if (options.withoutTextures) settings.features.textures = settings.features.normalMaps = settings.features.alpha = false;

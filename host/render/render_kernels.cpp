@@ -54,6 +54,12 @@ ZSobolLayout zsobolLayout(const RenderSettings& s) {
   return z;
 }
 
+uint32_t zsobolMaxSpp(uint32_t width, uint32_t height, uint32_t replicates) {
+  const uint32_t pixelBits = log2Ceil(std::max(width, height));
+  if (2 * pixelBits > 32) return 0;
+  return uint32_t(std::min<uint64_t>(uint64_t(replicates) << (32 - 2 * pixelBits), uint64_t(1) << 24));
+}
+
 KernelPlan planKernels(const RenderSettings& s) {
   KernelPlan plan;
   const EstimatorConfig& est = s.estimator;

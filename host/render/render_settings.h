@@ -81,5 +81,7 @@ struct ZSobolLayout {
   uint32_t log2Spp = 0, digits = 0;
 };
 ZSobolLayout zsobolLayout(const RenderSettings& settings);
+// The most samples a pixel ZSobol can index at this image size (its Morton index within 32 bits); 0 when not one.
+uint32_t zsobolMaxSpp(uint32_t width, uint32_t height, uint32_t replicates);
 
 }  // namespace vkmc

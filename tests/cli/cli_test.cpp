@@ -208,6 +208,16 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"unknown_flag", "", "--no-such-flag", "no-such-flag", 2}),
     [](const auto& info) { return std::string(info.param.name); });
 
+TEST(Cli, ZSobolWithATimeBudgetRendersAtTheDefaultSize) {
+  // Without --spp a budget leaves the count open; ZSobol's Morton index bounds it by the image (at 256x256 and 2
+  // replicates 2^17 samples a pixel) instead of refusing the open count of 2^24.
+  fs::path report = workDir() / "zsobol_budget.json";
+  RunResult r = runVkmc("render " + cornell() + " --sampler zsobol --time-budget 0.2 -q --report " + report.string() +
+                        " -o " + (workDir() / "zsobol_budget.exr").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_GE(nlohmann::json::parse(slurp(report))["spp_reached"].get<uint32_t>(), 1u);
+}
+
 TEST(Cli, PixelFilterIsEchoedAndTheBoxIsTheDefaultBitForBit) {
   fs::path report = workDir() / "filter.json";
   std::string common = "render " + cornell() + " --width 12 --height 12 --spp 2 -q --report " + report.string();
