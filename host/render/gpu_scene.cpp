@@ -47,7 +47,8 @@ vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, uin
   if (texels > ctx.properties().limits.maxTexelBufferElements)
     throw Error(std::string("scene too big for the device: ") + name + " needs " + std::to_string(texels) +
                 " texels, the device allows " + std::to_string(ctx.properties().limits.maxTexelBufferElements));
-  const size_t allocated = size == TexelSize::Exact ? std::max<size_t>(bytes, 16) : notPowerOfTwoBytes(bytes);
+  const size_t allocated = size == TexelSize::Exact ? std::max<size_t>(bytes, 16)
+                                                    : notPowerOfTwoBytes(bytes, ctx.properties().limits.maxTexelBufferElements * texelBytes);
   vk::Buffer b(ctx, allocated, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   b.upload(data, bytes);
   b.createView(sceneTexelFormat(binding));
@@ -246,10 +247,11 @@ std::vector<float> environmentDistribution(const EnvironmentMap& e) {
   return table;
 }
 
-size_t notPowerOfTwoBytes(size_t bytes) {
-  size_t n = std::max<size_t>(bytes, 16);
+size_t notPowerOfTwoBytes(size_t bytes, size_t maxBytes) {
+  const size_t exact = std::max<size_t>(bytes, 16);
+  size_t n = exact;
   while ((n & (n - 1)) == 0) n += 16;
-  return n;
+  return n <= maxBytes ? n : exact;
 }
 
 VkFormat sceneTexelFormat(uint32_t binding) {

@@ -33,8 +33,9 @@ VkFormat sceneTexelFormat(uint32_t binding);
 // llvmpipe keys a compiled kernel on whether a texel buffer's texel count is a power of two (for 16- and 4-byte
 // texels exactly when the size is one), and the warm-up compiles for counts that are not
 // (background_warm_up.cpp); a power of two (an empty array's 16 bytes, a small scene's 512 bytes of BVH nodes, a
-// 256x256 image's pixel estimates) made the render compile those kernels a second time.
-size_t notPowerOfTwoBytes(size_t bytes);
+// 256x256 image's pixel estimates) made the render compile those kernels a second time. Where padding would pass
+// maxBytes (the device's texel limit), the size stays as it is.
+size_t notPowerOfTwoBytes(size_t bytes, size_t maxBytes = SIZE_MAX);
 
 // The most triangles a scene may have on this device and machine: its largest buffer (3 texels a triangle)
 // within maxTexelBufferElements and one allocation, the scene (~96 bytes a triangle: triangles, their info, BVH

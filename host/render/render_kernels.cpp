@@ -172,6 +172,7 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
   try {
     createSome();
   } catch (...) {
+    next = bySize.size();  // the worker stops after its current kernel
     worker.join();
     throw;
   }

@@ -87,4 +87,7 @@ TEST(DeviceRequirements, TexelBufferSizesAreNeverAPowerOfTwo) {
     EXPECT_LE(bytes, size + 32) << "at most two texels of padding";
     EXPECT_EQ(bytes % 16, 0u) << "whole 16-byte texels";
   }
+  // Never past the device's texel limit: at exactly the limit (a power of two) the size stays as it is.
+  EXPECT_EQ(notPowerOfTwoBytes(65536 * 16, 65536 * 16), 65536u * 16u);
+  EXPECT_EQ(notPowerOfTwoBytes(65536 * 16, 65536 * 16 + 16), 65536u * 16u + 16u);
 }
