@@ -41,23 +41,29 @@ uint32_t log2Ceil(uint64_t v) {
 }
 }  // namespace
 
+namespace {
+// ZSobol's Morton index: the pixel's bits (both axes) and then the point's, within one 32-bit word.
+constexpr uint32_t kZSobolIndexBits = 32;
+uint32_t zsobolPixelBits(uint32_t width, uint32_t height) { return 2 * log2Ceil(std::max(width, height)); }
+}  // namespace
+
 ZSobolLayout zsobolLayout(const RenderSettings& s) {
   ZSobolLayout z;
   const uint64_t replicates = s.estimator.replicates;
   z.log2Spp = log2Ceil((uint64_t(s.spp) + replicates - 1) / replicates);
-  const uint32_t pixelBits = log2Ceil(std::max(s.width, s.height));
-  z.digits = pixelBits + (z.log2Spp + 1) / 2;
-  if (s.estimator.sampler == Sampler::ZSobol && 2 * pixelBits + z.log2Spp > 32)
+  const uint32_t pixelBits = zsobolPixelBits(s.width, s.height);
+  z.digits = pixelBits / 2 + (z.log2Spp + 1) / 2;
+  if (s.estimator.sampler == Sampler::ZSobol && pixelBits + z.log2Spp > kZSobolIndexBits)
     throw Error("--sampler zsobol: " + std::to_string(s.width) + "x" + std::to_string(s.height) + " at " +
-                std::to_string(s.spp) + " spp needs a Morton index of " + std::to_string(2 * pixelBits + z.log2Spp) +
+                std::to_string(s.spp) + " spp needs a Morton index of " + std::to_string(pixelBits + z.log2Spp) +
                 " bits, more than 32: use --sampler sobol, fewer samples or a smaller image");
   return z;
 }
 
 uint32_t zsobolMaxSpp(uint32_t width, uint32_t height, uint32_t replicates) {
-  const uint32_t pixelBits = log2Ceil(std::max(width, height));
-  if (2 * pixelBits > 32) return 0;
-  return uint32_t(std::min<uint64_t>(uint64_t(replicates) << (32 - 2 * pixelBits), uint64_t(1) << 24));
+  const uint32_t pixelBits = zsobolPixelBits(width, height);
+  if (pixelBits > kZSobolIndexBits) return 0;
+  return uint32_t(std::min<uint64_t>(uint64_t(replicates) << (kZSobolIndexBits - pixelBits), uint64_t(1) << 24));
 }
 
 KernelPlan planKernels(const RenderSettings& s) {
