@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(cmake g++ make pkg-config libvulkan-dev mesa-vulkan-drivers glslang-tools libglm-dev libtinygltf-dev
+packages=(cmake g++ make pkg-config libvulkan-dev mesa-vulkan-drivers glslang-tools spirv-tools libglm-dev libtinygltf-dev
           libopenexr-dev openexr libgtest-dev libcli11-dev nlohmann-json3-dev libpng-dev libstb-dev libdraco-dev
           libmeshoptimizer-dev libxml2-utils python3)
 missing=()

@@ -35,7 +35,7 @@ struct RenderArgs {
   std::string out = "out.exr", png, report, lookFrom, lookAt, background, estimatorFile, filter = "box", filterRadius;
   std::map<std::string, std::string> estimatorValues;  // by key, as typed after the flag
   float exposure = 0.0f;
-  bool quiet = false, noSpecialize = false;
+  bool quiet = false, noSpecialize = false, generalSpirv = false;
   int spp = 64;
   long long seed = 1;
   int width = -1, height = -1, cameraIndex = -1;
@@ -152,6 +152,7 @@ void fillOptions(RenderArgs& a, const CLI::App& cmd) {
   ro.filter = pixelFilterFromName(a.filter, a.filterRadius.empty() ? std::nullopt : std::optional<double>(parseRadius(a.filterRadius)));
   ro.progress = !a.quiet;
   ro.specialize = !a.noSpecialize;
+  ro.prespecializedSpirv = !a.generalSpirv;
   ro.integrator = integratorFromString(a.integrator);
   ro.workgroupSize = parseCountOrAuto(a.workgroup, "--workgroup");
   ro.wavefrontPaths = parseCountOrAuto(a.wavefront, "--wavefront");
@@ -285,6 +286,8 @@ Command addRenderCommand(CLI::App& app) {
   render->add_option("--time-budget", ro.timeBudget, "render whole sample passes until this many seconds are spent (--spp caps)");
   render->add_option("--reference", ro.referencePath, "reference EXR: the report gains mse, relmse, efficiency");
   render->add_flag("--no-specialize", a->noSpecialize, "build general pipelines (every scene feature on), for comparison");
+  render->add_flag("--general-spirv", a->generalSpirv,
+                   "create pipelines from the general SPIR-V even where a pre-specialized variant matches (set-up comparisons)");
   render->add_option("--workgroup", a->workgroup, "invocations per workgroup of every kernel: 32, 64, 128, 256, or auto (the device's)")
       ->capture_default_str();
   render->add_option("--wavefront", a->wavefront, "paths in flight per pass at most (1024 to 16777216), or auto (the device's)")

@@ -90,7 +90,9 @@ int runInfo(const RenderOptions& options) {
   Camera cam = scene.cameras.empty() ? autoCamera(scene.bounds, 1.0f) : scene.cameras[0];
   settings.camera = makeCameraRig(cam, settings.width, settings.height);
   KernelPlan plan = planKernels(settings);
-  std::printf("kernels      %s pipelines on %s:\n", options.specialize ? "specialized" : "general", ctx.deviceName().c_str());
+  const std::string spirv = plan.spirvVariant.empty() ? "general SPIR-V" : "SPIR-V pre-specialized for " + plan.spirvVariant;
+  std::printf("kernels      %s pipelines on %s, %s:\n", options.specialize ? "specialized" : "general", ctx.deviceName().c_str(),
+              spirv.c_str());
   for (const std::string& k : plan.kernels) std::printf("               %s\n", k.c_str());
   std::printf("              not dispatched: %s\n",
               plan.kernels.size() < 7 ? "prepare_shadow, shadow (no lights or NEE off)" : "none");

@@ -291,6 +291,8 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   settings.integrator = resolved.integrator;
   settings.workgroupSize = resolved.workgroupSize;
   settings.maxPathsPerPass = resolved.wavefrontPaths;
+  settings.prespecializedSpirv = options.prespecializedSpirv;
+  out.spirvVariant = planKernels(settings).spirvVariant;
   out.integrator = resolved.integrator;
   out.tuning.subgroupSize = ctx.subgroupSize();
   out.tuning.workgroupSize = resolved.workgroupSize;
@@ -539,7 +541,8 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                           {"punctual_lights", r.features.punctualLights > 0},
                           {"environment", r.features.environment},
                           {"glossy", r.features.glossy},
-                          {"specialized", o.specialize}};
+                          {"specialized", o.specialize},
+                          {"prespecialized_spirv", r.spirvVariant}};
   j["background"] = {r.background.x, r.background.y, r.background.z};
   j["filter"] = pixelFilterJson(o.filter);
   j["environment"] = r.environment;

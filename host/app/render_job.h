@@ -43,6 +43,7 @@ struct RenderOptions {
   double timeBudget = 0.0;       // seconds; 0 = render spp samples
   std::string referencePath;     // EXR to compare with: mse, relmse, efficiency in the report
   bool specialize = true;        // false: pipelines with every feature on (for comparison)
+  bool prespecializedSpirv = true;  // false: the general SPIR-V even where a pre-specialized variant matches
   bool withoutTextures = false;  // textures, vertex colours and alpha compiled out: their cost, by comparison
   uint32_t workgroupSize = 0;    // invocations per workgroup of every kernel (32, 64, 128, 256); 0: the device's
   uint32_t wavefrontPaths = 0;   // paths in flight per pass at most; 0: the device's (device_tuning.h)
@@ -89,6 +90,7 @@ struct RenderOutcome {
   double pilotSeconds = 0.0;          // efficiency roulette's pilot, included in stats.seconds
   std::optional<EarsSummary> ears;    // what rr ears learned
   SceneFeatures features;             // what the pipelines were specialized for
+  std::string spirvVariant;           // pre-specialized SPIR-V used for shading (KernelPlan::spirvVariant)
   std::optional<RouletteTable> roulette;
   glm::vec3 background{0.0f};  // what escaped rays saw besides the environment light
   std::string environment;     // the environment light: its file, "constant", or empty (none)

@@ -12,6 +12,7 @@
 #include "../shaders/shared/layout.h"
 #include "error.h"
 #include "render/background_warm_up.h"
+#include "render/kernel_variants.h"
 #include "spirv/accumulate_spv.h"
 #include "spirv/camera_rays_spv.h"
 #include "spirv/ears_copies_spv.h"
@@ -34,6 +35,13 @@
 namespace vkmc {
 
 namespace {
+// A kernel's SPIR-V and its name in the build (shaders/CMakeLists.txt), which names its pre-specialized variants.
+struct NamedSpirv {
+  const char* build;
+  std::span<const uint32_t> words;
+};
+#define VKMC_SPIRV(kernel) NamedSpirv{#kernel, kSpirv_##kernel}
+
 uint32_t log2Ceil(uint64_t v) {
   uint32_t k = 0;
   while ((uint64_t(1) << k) < v) ++k;
@@ -103,6 +111,12 @@ KernelPlan planKernels(const RenderSettings& s) {
   const ZSobolLayout z = zsobolLayout(s);
   plan.specs.push_back({SPEC_SAMPLER_LOG2_SPP, z.log2Spp});
   plan.specs.push_back({SPEC_SAMPLER_DIGITS, z.digits});
+  if (s.prespecializedSpirv) {
+    const NamedSpirv shading = s.integrator == Integrator::Megakernel ? VKMC_SPIRV(megakernel)
+                               : est.splitsPaths()                     ? VKMC_SPIRV(shade_atomic)
+                                                                       : VKMC_SPIRV(shade);
+    plan.spirvVariant = chooseSpirv(shading.build, shading.words, plan.specs).variant;
+  }
   return plan;
 }
 
@@ -116,42 +130,44 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
   struct Planned {
     std::unique_ptr<vk::Kernel>* slot;
     const char* name;
-    std::span<const uint32_t> spirv;
+    NamedSpirv source;
     bool helper;
     bool lean = false;  // built with SPEC_EARS_TRAINS 0
+    std::span<const uint32_t> spirv = {};  // what the pipeline is created from: the source or a variant of it
   };
   std::vector<Planned> planned;
-  auto spv = [](const auto& words) { return std::span<const uint32_t>(words); };
   RenderKernels k;
   if (settings.integrator == Integrator::Megakernel) {
-    planned.push_back({&k.megakernel, "megakernel", kSpirv_megakernel, false});
+    planned.push_back({&k.megakernel, "megakernel", VKMC_SPIRV(megakernel), false});
   } else {
-    planned.push_back({&k.camera, "camera_rays", kSpirv_camera_rays, false});
-    planned.push_back({&k.prepareBounce, "prepare_bounce", kSpirv_prepare_bounce, false});
-    planned.push_back({&k.intersect, "intersect", kSpirv_intersect, true});
-    planned.push_back({&k.intersectDeep, "intersect_deep", kSpirv_intersect_deep, true});
-    planned.push_back({&k.shade, "shade", est.splitsPaths() ? spv(kSpirv_shade_atomic) : spv(kSpirv_shade), false});
+    planned.push_back({&k.camera, "camera_rays", VKMC_SPIRV(camera_rays), false});
+    planned.push_back({&k.prepareBounce, "prepare_bounce", VKMC_SPIRV(prepare_bounce), false});
+    planned.push_back({&k.intersect, "intersect", VKMC_SPIRV(intersect), true});
+    planned.push_back({&k.intersectDeep, "intersect_deep", VKMC_SPIRV(intersect_deep), true});
+    planned.push_back({&k.shade, "shade", est.splitsPaths() ? VKMC_SPIRV(shade_atomic) : VKMC_SPIRV(shade), false});
     if (hasShadowStage) {
       const bool atomics = est.needsFloatAtomics();
-      planned.push_back({&k.prepareShadow, "prepare_shadow", kSpirv_prepare_shadow, false});
-      planned.push_back({&k.shadow, "shadow", atomics ? spv(kSpirv_shadow_atomic) : spv(kSpirv_shadow), false});
-      planned.push_back({&k.shadowDeep, "shadow_deep", atomics ? spv(kSpirv_shadow_atomic_deep) : spv(kSpirv_shadow_deep), true});
+      planned.push_back({&k.prepareShadow, "prepare_shadow", VKMC_SPIRV(prepare_shadow), false});
+      planned.push_back({&k.shadow, "shadow", atomics ? VKMC_SPIRV(shadow_atomic) : VKMC_SPIRV(shadow), false});
+      planned.push_back({&k.shadowDeep, "shadow_deep", atomics ? VKMC_SPIRV(shadow_atomic_deep) : VKMC_SPIRV(shadow_deep), true});
     }
   }
-  planned.push_back({&k.accumulate, "accumulate", kSpirv_accumulate, true});
+  planned.push_back({&k.accumulate, "accumulate", VKMC_SPIRV(accumulate), true});
   if (est.rr == RouletteMode::Ears) {
-    planned.push_back({&k.prepareCopies, "prepare_copies", kSpirv_prepare_copies, false});
-    planned.push_back({&k.earsCopies, "ears_copies", kSpirv_ears_copies, false});
-    planned.push_back({&k.earsGather, "ears_gather", kSpirv_ears_gather, false});
-    planned.push_back({&k.earsTrain, "ears_train", kSpirv_ears_train, false});
-    planned.push_back({&k.earsFold, "ears_fold", kSpirv_ears_fold, false});
+    planned.push_back({&k.prepareCopies, "prepare_copies", VKMC_SPIRV(prepare_copies), false});
+    planned.push_back({&k.earsCopies, "ears_copies", VKMC_SPIRV(ears_copies), false});
+    planned.push_back({&k.earsGather, "ears_gather", VKMC_SPIRV(ears_gather), false});
+    planned.push_back({&k.earsTrain, "ears_train", VKMC_SPIRV(ears_train), false});
+    planned.push_back({&k.earsFold, "ears_fold", VKMC_SPIRV(ears_fold), false});
     // The same names as the training kernels: the report's stage times add both.
-    planned.push_back({&k.shadeLean, "shade", kSpirv_shade_atomic, false, true});
-    planned.push_back({&k.earsCopiesLean, "ears_copies", kSpirv_ears_copies, false, true});
+    planned.push_back({&k.shadeLean, "shade", VKMC_SPIRV(shade_atomic), false, true});
+    planned.push_back({&k.earsCopiesLean, "ears_copies", VKMC_SPIRV(ears_copies), false, true});
   }
   std::vector<vk::SpecConstant> leanSpecs = specs;
   leanSpecs.push_back({SPEC_EARS_TRAINS, 0u});
   auto specsOf = [&](const Planned& p) -> const std::vector<vk::SpecConstant>& { return p.lean ? leanSpecs : specs; };
+  for (Planned& p : planned)
+    p.spirv = settings.prespecializedSpirv ? chooseSpirv(p.source.build, p.source.words, specsOf(p)).spirv : p.source.words;
   std::vector<KernelSource> helperShare;
   if (compilesAtFirstDispatch(ctx))
     for (const Planned& p : planned)

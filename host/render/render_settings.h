@@ -36,6 +36,7 @@ struct RenderSettings {
   bool recordDepthStats = false;        // efficiency-roulette pilot: per-path, per-depth statistics
   uint32_t workgroupSize = 64;          // invocations per workgroup of every kernel: 32, 64, 128 or 256
   Integrator integrator = Integrator::Wavefront;
+  bool prespecializedSpirv = true;  // false: pipelines from the general SPIR-V even where a variant matches
 };
 
 struct RenderStats {
@@ -72,6 +73,7 @@ struct RenderStats {
 struct KernelPlan {
   std::vector<std::string> kernels;
   std::vector<vk::SpecConstant> specs;
+  std::string spirvVariant;  // the feature sets of the pre-specialized SPIR-V shading uses; "": the general SPIR-V
 };
 KernelPlan planKernels(const RenderSettings& settings);
 
