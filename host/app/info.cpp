@@ -76,14 +76,16 @@ int runInfo(const RenderOptions& options) {
   std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   const BvhStats& b = bvh.stats;
-  std::printf("bvh          %u inner nodes, %u leaves, depth %u, leaf size avg %.2f max %u, SAH cost %.2f (4-wide %.2f), built in %.3f s on "
-              "%u threads\n",
-              b.innerNodes, b.leaves, b.maxDepth, b.averageLeafSize, b.maxLeafSize, b.sahCost, b.wideSahCost, b.buildSeconds,
-              b.buildThreads);
+  std::printf("bvh          %u inner nodes, %u leaves, depth %u (4-wide %u: %s), leaf size avg %.2f max %u, SAH cost %.2f (4-wide %.2f), "
+              "built in %.3f s on %u threads\n",
+              b.innerNodes, b.leaves, b.maxDepth, b.wideMaxDepth,
+              walksCanOutgrowRegisterStack(b) ? "deep passes built" : "no walk outgrows the register stack", b.averageLeafSize,
+              b.maxLeafSize, b.sahCost, b.wideSahCost, b.buildSeconds, b.buildThreads);
   GpuScene gpu(ctx, scene, bvh, options.estimator.lightSelect == LightSelect::Uniform);
   RenderSettings settings;
   settings.estimator = options.estimator;
   settings.features = options.specialize ? f : allFeatures(f);
+  if (options.specialize) settings.features.deepWalks = walksCanOutgrowRegisterStack(bvh.stats);
   settings.width = options.width.value_or(256);
   settings.height = options.height.value_or(256);
   settings.spp = options.spp;

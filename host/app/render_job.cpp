@@ -265,6 +265,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   settings.estimator = options.estimator;
   settings.features = options.specialize ? scanFeatures(scene) : allFeatures(scanFeatures(scene));
   if (options.withoutTextures) settings.features.textures = settings.features.normalMaps = settings.features.alpha = false;
+  if (options.specialize) settings.features.deepWalks = walksCanOutgrowRegisterStack(bvh.stats);
   out.features = settings.features;
   settings.seed = options.seed;
   out.background = options.background.value_or(glm::vec3(0.0f));
@@ -534,7 +535,8 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                      {"materials", r.sceneInfo.materials},
                      {"degenerate_triangles_skipped", r.degenerateTriangles}};
   j["bvh"] = {{"inner_nodes", r.bvh.innerNodes},    {"leaves", r.bvh.leaves},    {"max_depth", r.bvh.maxDepth},
-              {"max_leaf_size", r.bvh.maxLeafSize}, {"sah_cost", r.bvh.sahCost}, {"wide_sah_cost", r.bvh.wideSahCost}, {"build_seconds", r.bvh.buildSeconds},
+              {"max_leaf_size", r.bvh.maxLeafSize}, {"sah_cost", r.bvh.sahCost}, {"wide_sah_cost", r.bvh.wideSahCost},
+              {"wide_max_depth", r.bvh.wideMaxDepth}, {"deep_walk_passes", r.features.deepWalks}, {"build_seconds", r.bvh.buildSeconds},
               {"build_threads", r.bvh.buildThreads}};
   j["max_bounces"] = s.maxBounces;
   j["specialized_for"] = {{"emitters", r.features.emitters()},

@@ -116,6 +116,22 @@ BvhWideNode quantizeBoxes(std::span<const Child> children) {
   return out;
 }
 
+uint32_t wideMaxDepth(const std::vector<BvhWideNode>& wide) {
+  if (wide.empty()) return 0;
+  uint32_t deepest = 0;
+  std::vector<std::pair<uint32_t, uint32_t>> stack{{0u, 1u}};  // (node, inner nodes from the root down to it)
+  while (!stack.empty()) {
+    auto [node, depth] = stack.back();
+    stack.pop_back();
+    deepest = std::max(deepest, depth);
+    for (int c = 0; c < 4; ++c) {
+      uint32_t entry = wide[node].texels[gpu::kBvhWideChildTexel][c];
+      if (entry != gpu::kBvhEmptySlot && !gpu::bvhIsLeaf(entry)) stack.push_back({entry, depth + 1});
+    }
+  }
+  return deepest;
+}
+
 // Collapses the binary GPU layout into 4-wide nodes: a node's children are its binary children, the inner one
 // with the largest surface opened in turn until there are four (Wald et al. 2008's collapse). The shape is planned
 // in one pass; the boxes, the costly part, are quantized on every thread.
@@ -258,6 +274,7 @@ Bvh buildBvh(std::span<const Aabb> bounds, const BvhOptions& options) {
   s.buildThreads = tree.threads;
   s.averageLeafSize = s.leaves ? static_cast<double>(bounds.size()) / s.leaves : 0.0;
   bvh.wideNodes = collapseToWide(bvh.nodes, tree.threads, s.wideSahCost);
+  s.wideMaxDepth = wideMaxDepth(bvh.wideNodes);
   widenByOneFloat(bvh.nodes, tree.threads);
   s.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return bvh;
@@ -357,5 +374,7 @@ Aabb wideChildBox(const BvhWideNode& node, int i) {
   }
   return box;
 }
+
+bool walksCanOutgrowRegisterStack(const BvhStats& stats) { return 3 * stats.wideMaxDepth > gpu::kBvhRegisterStackEntries; }
 
 }  // namespace vkmc

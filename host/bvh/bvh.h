@@ -34,6 +34,7 @@ struct BvhStats {
   double averageLeafSize = 0.0;
   double sahCost = 0.0;  // expected cost per ray, inner traversal cost 1, triangle test cost 1
   double wideSahCost = 0.0;  // the same for the 4-wide tree the kernels walk: wide node steps plus triangle tests
+  uint32_t wideMaxDepth = 0;  // inner nodes on the 4-wide tree's longest root-to-leaf path
   double buildSeconds = 0.0;
   uint32_t buildThreads = 1;
 };
@@ -58,6 +59,10 @@ struct Bvh {
 
 // bounds: one box per triangle. Deterministic, whatever options.threads is.
 Bvh buildBvh(std::span<const Aabb> bounds, const BvhOptions& options = {});
+
+// Whether some walk of the 4-wide tree can outgrow the kernels' register stack (gpu::kBvhRegisterStackEntries), so
+// that the deep passes must be there: a walk holds at most 3 pending children per inner node on its path.
+bool walksCanOutgrowRegisterStack(const BvhStats& stats);
 
 // Host reference traversal over the GPU layout (tests, tools). Returns t < 0 on a miss.
 struct HostHit {

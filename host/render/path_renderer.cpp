@@ -88,7 +88,8 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
   queues_ = readAsTexels((megakernel ? 16 : uint64_t(pool_) * 4 * (ears ? 3 : 2)) + 48, BINDING_QUEUE_TEXELS);  // EARS: a copy queue too
   shadowQueue_ = readAsTexels(hasShadowStage_ ? size.shadowSlots * sizeof(gpu::ShadowRay) : 48, BINDING_SHADOW_TEXELS);
   // Room for every item of the larger trace stage, so a deferred walk is never turned away in practice.
-  deepWalks_ = storage(megakernel ? 16 : std::max<uint64_t>(pool_, size.shadowSlots) * sizeof(uint32_t));
+  const bool deep = !megakernel && settings_.features.deepWalks;
+  deepWalks_ = storage(deep ? std::max<uint64_t>(pool_, size.shadowSlots) * sizeof(uint32_t) : 16);
   // What the host reads or writes every pass: mapped in place on unified memory; on a discrete GPU device-local
   // (the kernels' atomics and the film's read-modify-write stay off the bus), copied at chunk ends and folds.
   const vk::MemoryKind exchange = ctx_.unifiedMemory() ? vk::MemoryKind::HostVisible : vk::MemoryKind::DeviceLocal;
@@ -243,7 +244,8 @@ void PathRenderer::recordBounce(VkCommandBuffer cmd, const gpu::PushConstants& p
   // A trace stage's time includes its deep pass (the walks it deferred).
   if (timer) timer->begin(cmd, pc.bounce == 0 ? "intersect_primary" : "intersect");
   vk::dispatchIndirect(cmd, *layout_, *kernels_.intersect, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs));
-  vk::dispatchIndirect(cmd, *layout_, *kernels_.intersectDeep, &pc, sizeof(pc), control_, offsetof(gpu::Control, deepArgs));
+  if (kernels_.intersectDeep)
+    vk::dispatchIndirect(cmd, *layout_, *kernels_.intersectDeep, &pc, sizeof(pc), control_, offsetof(gpu::Control, deepArgs));
   if (timer) timer->end(cmd);
   vk::dispatchIndirect(cmd, *layout_, *stage.shade, &pc, sizeof(pc), control_, offsetof(gpu::Control, rayArgs), timer);
   if (stage.earsCopies) {
@@ -254,7 +256,8 @@ void PathRenderer::recordBounce(VkCommandBuffer cmd, const gpu::PushConstants& p
   vk::dispatch(cmd, *layout_, *kernels_.prepareShadow, &pc, sizeof(pc), 1, timer);
   if (timer) timer->begin(cmd, "shadow");
   vk::dispatchIndirect(cmd, *layout_, *stage.shadow, &pc, sizeof(pc), control_, offsetof(gpu::Control, shadowArgs));
-  vk::dispatchIndirect(cmd, *layout_, *stage.shadowDeep, &pc, sizeof(pc), control_, offsetof(gpu::Control, deepArgs));
+  if (stage.shadowDeep)
+    vk::dispatchIndirect(cmd, *layout_, *stage.shadowDeep, &pc, sizeof(pc), control_, offsetof(gpu::Control, deepArgs));
   if (timer) timer->end(cmd);
 }
 

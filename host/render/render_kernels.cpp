@@ -106,7 +106,8 @@ KernelPlan planKernels(const RenderSettings& s) {
                 {SPEC_HAS_SHEEN, s.features.sheen ? 1u : 0u},
                 {SPEC_HAS_DELTA, s.features.delta ? 1u : 0u},
                 {SPEC_RECORD_DEPTH_STATS, s.recordDepthStats ? 1u : 0u},
-                {SPEC_PIXEL_FILTER, s.filter.specSampling()}};
+                {SPEC_PIXEL_FILTER, s.filter.specSampling()},
+                {SPEC_DEEP_WALKS, s.features.deepWalks ? 1u : 0u}};
   for (const vk::SpecConstant& c : est.specConstants()) plan.specs.push_back(c);
   const ZSobolLayout z = zsobolLayout(s);
   plan.specs.push_back({SPEC_SAMPLER_LOG2_SPP, z.log2Spp});
@@ -125,59 +126,66 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
   const EstimatorConfig& est = settings.estimator;
   const KernelPlan plan = planKernels(settings);
   const std::vector<vk::SpecConstant>& specs = plan.specs;
-  // Every kernel this render dispatches, and whether a helper thread compiles it (see BackgroundWarmUp): about
-  // half of the compile time each, the helper taking the tracing kernels.
+  // Every kernel this render dispatches, and whether a helper thread compiles it (see BackgroundWarmUp).
   struct Planned {
     std::unique_ptr<vk::Kernel>* slot;
     const char* name;
     NamedSpirv source;
-    bool helper;
     bool lean = false;  // built with SPEC_EARS_TRAINS 0
     std::span<const uint32_t> spirv = {};  // what the pipeline is created from: the source or a variant of it
+    bool helper = false;
   };
   std::vector<Planned> planned;
   RenderKernels k;
   if (settings.integrator == Integrator::Megakernel) {
-    planned.push_back({&k.megakernel, "megakernel", VKMC_SPIRV(megakernel), false});
+    planned.push_back({&k.megakernel, "megakernel", VKMC_SPIRV(megakernel)});
   } else {
-    planned.push_back({&k.camera, "camera_rays", VKMC_SPIRV(camera_rays), false});
-    planned.push_back({&k.prepareBounce, "prepare_bounce", VKMC_SPIRV(prepare_bounce), false});
-    planned.push_back({&k.intersect, "intersect", VKMC_SPIRV(intersect), true});
-    planned.push_back({&k.intersectDeep, "intersect_deep", VKMC_SPIRV(intersect_deep), true});
-    planned.push_back({&k.shade, "shade", est.splitsPaths() ? VKMC_SPIRV(shade_atomic) : VKMC_SPIRV(shade), false});
+    planned.push_back({&k.camera, "camera_rays", VKMC_SPIRV(camera_rays)});
+    planned.push_back({&k.prepareBounce, "prepare_bounce", VKMC_SPIRV(prepare_bounce)});
+    planned.push_back({&k.intersect, "intersect", VKMC_SPIRV(intersect)});
+    if (settings.features.deepWalks) planned.push_back({&k.intersectDeep, "intersect_deep", VKMC_SPIRV(intersect_deep)});
+    planned.push_back({&k.shade, "shade", est.splitsPaths() ? VKMC_SPIRV(shade_atomic) : VKMC_SPIRV(shade)});
     if (hasShadowStage) {
       const bool atomics = est.needsFloatAtomics();
-      planned.push_back({&k.prepareShadow, "prepare_shadow", VKMC_SPIRV(prepare_shadow), false});
-      planned.push_back({&k.shadow, "shadow", atomics ? VKMC_SPIRV(shadow_atomic) : VKMC_SPIRV(shadow), false});
-      planned.push_back({&k.shadowDeep, "shadow_deep", atomics ? VKMC_SPIRV(shadow_atomic_deep) : VKMC_SPIRV(shadow_deep), true});
+      planned.push_back({&k.prepareShadow, "prepare_shadow", VKMC_SPIRV(prepare_shadow)});
+      planned.push_back({&k.shadow, "shadow", atomics ? VKMC_SPIRV(shadow_atomic) : VKMC_SPIRV(shadow)});
+      if (settings.features.deepWalks)
+        planned.push_back({&k.shadowDeep, "shadow_deep", atomics ? VKMC_SPIRV(shadow_atomic_deep) : VKMC_SPIRV(shadow_deep)});
     }
   }
-  planned.push_back({&k.accumulate, "accumulate", VKMC_SPIRV(accumulate), true});
+  planned.push_back({&k.accumulate, "accumulate", VKMC_SPIRV(accumulate)});
   if (est.rr == RouletteMode::Ears) {
-    planned.push_back({&k.prepareCopies, "prepare_copies", VKMC_SPIRV(prepare_copies), false});
-    planned.push_back({&k.earsCopies, "ears_copies", VKMC_SPIRV(ears_copies), false});
-    planned.push_back({&k.earsGather, "ears_gather", VKMC_SPIRV(ears_gather), false});
-    planned.push_back({&k.earsTrain, "ears_train", VKMC_SPIRV(ears_train), false});
-    planned.push_back({&k.earsFold, "ears_fold", VKMC_SPIRV(ears_fold), false});
+    planned.push_back({&k.prepareCopies, "prepare_copies", VKMC_SPIRV(prepare_copies)});
+    planned.push_back({&k.earsCopies, "ears_copies", VKMC_SPIRV(ears_copies)});
+    planned.push_back({&k.earsGather, "ears_gather", VKMC_SPIRV(ears_gather)});
+    planned.push_back({&k.earsTrain, "ears_train", VKMC_SPIRV(ears_train)});
+    planned.push_back({&k.earsFold, "ears_fold", VKMC_SPIRV(ears_fold)});
     // The same names as the training kernels: the report's stage times add both.
-    planned.push_back({&k.shadeLean, "shade", VKMC_SPIRV(shade_atomic), false, true});
-    planned.push_back({&k.earsCopiesLean, "ears_copies", VKMC_SPIRV(ears_copies), false, true});
+    planned.push_back({&k.shadeLean, "shade", VKMC_SPIRV(shade_atomic), true});
+    planned.push_back({&k.earsCopiesLean, "ears_copies", VKMC_SPIRV(ears_copies), true});
   }
   std::vector<vk::SpecConstant> leanSpecs = specs;
   leanSpecs.push_back({SPEC_EARS_TRAINS, 0u});
   auto specsOf = [&](const Planned& p) -> const std::vector<vk::SpecConstant>& { return p.lean ? leanSpecs : specs; };
   for (Planned& p : planned)
     p.spirv = settings.prespecializedSpirv ? chooseSpirv(p.source.build, p.source.words, specsOf(p)).spirv : p.source.words;
+  std::vector<Planned*> bySize;
+  for (Planned& p : planned) bySize.push_back(&p);
+  std::stable_sort(bySize.begin(), bySize.end(), [](const Planned* a, const Planned* b) { return a->spirv.size() > b->spirv.size(); });
+  // The first-dispatch compiles, shared by SPIR-V size: this thread takes the largest kernel, each next one goes to
+  // the lighter share. (Sizes stand in for compile times: the pre-specialized variants hold little dead code.)
+  size_t ownWords = 0, helperWords = 0;
+  for (Planned* p : bySize) {
+    p->helper = helperWords < ownWords;
+    (p->helper ? helperWords : ownWords) += p->spirv.size();
+  }
   std::vector<KernelSource> helperShare;
   if (compilesAtFirstDispatch(ctx))
     for (const Planned& p : planned)
       if (p.helper) helperShare.push_back({p.name, p.spirv, specsOf(p)});
   BackgroundWarmUp helper(std::move(helperShare));
-  // Creating a pipeline is CPU work of its own on llvmpipe (SPIR-V to NIR: about 0.2 s for shade, whose
-  // specialized-out code is parsed before it is removed), so two threads create them, the largest first.
-  std::vector<const Planned*> bySize;
-  for (const Planned& p : planned) bySize.push_back(&p);
-  std::stable_sort(bySize.begin(), bySize.end(), [](const Planned* a, const Planned* b) { return a->spirv.size() > b->spirv.size(); });
+  // Creating a pipeline is CPU work of its own on llvmpipe (SPIR-V to NIR, before specialization removes anything:
+  // 0.2 s for the general shade), so two threads create them, the largest first.
   std::atomic<size_t> next{0};
   auto createSome = [&] {
     for (size_t i = next++; i < bySize.size(); i = next++)

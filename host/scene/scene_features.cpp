@@ -64,6 +64,7 @@ SceneFeatures allFeatures(const SceneFeatures& scene) {
   f.delta = true;
   f.punctualLights = std::max(f.punctualLights, 1u);
   f.environment = true;
+  f.deepWalks = true;
   return f;
 }
 

@@ -31,6 +31,9 @@ struct SceneFeatures {
   // An environment light (Scene::environment): --environment, or the constant one that lights a scene with no
   // emitters and no punctual lights.
   bool environment = false;
+  // Some BVH walk can outgrow the register stack (walksCanOutgrowRegisterStack): the deep passes are built. Known
+  // only once the BVH is; true until then.
+  bool deepWalks = true;
 
   bool emitters() const { return emissiveTriangles > 0; }
   // Anything next-event estimation can sample: emissive triangles, punctual lights, the environment.

@@ -42,6 +42,7 @@ bool traceItem(uint item, vec3 origin, vec3 dir, float tMax, bool anyHit, out ve
   hit = traceRayShallow(origin, dir, tMax, anyHit, complete, overflow);
   if (!overflow) return true;
   complete = false;
-  return !deferWalk(item);
+  // kDeepWalks 0: the host proved no walk overflows (kBvhRegisterStackEntries); one that did is reported as cut.
+  return kDeepWalks == 0u || !deferWalk(item);
 #endif
 }

@@ -98,7 +98,7 @@ uint hitChildren(uint node, vec3 invDir, vec3 origin, bvec3 nearIsHigh, float tM
 // (a, b, c) are pushed (1..3, a on top), or -shift entries popped (1..2), or nothing (0). Pushing past the bottom
 // sets overflow; the walk then restarts with traceRayDeep. (Why 12: docs/performance.md.)
 struct RegisterStack {
-  uvec4 s0, s1, s2;
+  uvec4 s0, s1, s2;  // kBvhRegisterStackEntries
 };
 
 void shiftStack(inout RegisterStack st, int shift, uint a, uint b, uint c, inout bool overflow) {
@@ -266,7 +266,8 @@ vec4 traceRayShallow(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool co
 vec4 traceRay(vec3 origin, vec3 dir, float tMax, bool anyHit, out bool complete) {
   bool overflow;
   vec4 best = traceRayShallow(origin, dir, tMax, anyHit, complete, overflow);
-  if (overflow) best = traceRayDeep(origin, dir, tMax, anyHit, complete);
+  // kDeepWalks 0: no walk can overflow (the host's bound); complete stays false if one ever did.
+  if (overflow && kDeepWalks != 0u) best = traceRayDeep(origin, dir, tMax, anyHit, complete);
   return best;
 }
 #else

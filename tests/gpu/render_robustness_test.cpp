@@ -290,3 +290,39 @@ INSTANTIATE_TEST_SUITE_P(
                       IntegratorCase{"furnace_camera_rr_efficiency_rr", "furnace.gltf",
                                      R"({"camera_rr": 0.5, "rr": "efficiency"})"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+// Scenes whose 4-wide BVH has at most 4 inner nodes on a path cannot outgrow the walk's 12-entry register stack, so
+// their kernels leave the deep passes out (walksCanOutgrowRegisterStack); a walk that still overflowed would be
+// reported as cut. many_lights sits on the bound (4 levels: 12 entries). veach_mis (7 levels) keeps them.
+struct DeepPassCase {
+  std::string name;
+  bool deepPasses;
+  Integrator integrator;
+};
+void PrintTo(const DeepPassCase& c, std::ostream* os) { *os << c.name; }
+class DeepWalkPasses : public ::testing::TestWithParam<DeepPassCase> {};
+
+TEST_P(DeepWalkPasses, AreLeftOutOnlyWhereNoWalkCanNeedThem) {
+  const DeepPassCase& c = GetParam();
+  RenderOptions o = smallOptions(std::string(VKMC_SOURCE_DIR) + "/scenes/" + c.name + ".gltf");
+  o.width = 64;
+  o.height = 64;
+  o.spp = 16;
+  o.integrator = c.integrator;
+  RenderOutcome r = runRender(context(), o);
+  EXPECT_EQ(r.features.deepWalks, c.deepPasses);
+  EXPECT_EQ(walksCanOutgrowRegisterStack(r.bvh), c.deepPasses);
+  EXPECT_EQ(r.stats.traversalsCut, 0u);
+  if (!c.deepPasses) EXPECT_EQ(r.stats.deepWalks, 0u);
+  EXPECT_GT(r.stats.rays(), 64u * 64u * 16u);
+}
+
+INSTANTIATE_TEST_SUITE_P(RenderRobustness, DeepWalkPasses,
+                         ::testing::Values(DeepPassCase{"cornell_box", false, Integrator::Wavefront},
+                                           DeepPassCase{"cornell_box", false, Integrator::Megakernel},
+                                           DeepPassCase{"many_lights", false, Integrator::Wavefront},
+                                           DeepPassCase{"two_rooms", false, Integrator::Wavefront},
+                                           DeepPassCase{"veach_mis", true, Integrator::Wavefront}),
+                         [](const auto& info) {
+                           return info.param.name + (info.param.integrator == Integrator::Megakernel ? "_megakernel" : "");
+                         });

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <functional>
 #include <random>
+#include <set>
 
 #include "../shaders/shared/geometry.h"
 #include "../shaders/shared/rng.h"
@@ -155,6 +156,57 @@ TEST(Bvh, BuildStatisticsAreConsistent) {
   std::vector<bool> seen(20000, false);
   for (uint32_t t : soup.bvh.triangleOrder) seen[t] = true;
   EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](bool b) { return b; }));
+}
+
+// The kernels leave out the deep passes where no walk can outgrow the register stack (walksCanOutgrowRegisterStack).
+// The worst walk hits every child of every node and pushes all but the nearest: its stack must stay within 3 per
+// inner node on the path, and the depth the bound uses must be the tree's.
+TEST(Bvh, NoWalkOutgrowsThreeEntriesPerInnerNodeOnItsPath) {
+  std::set<uint32_t> depths;
+  for (int triangles : {1, 3, 20, 60, 200, 2000, 20000}) {
+    Soup soup = randomSoup(triangles, 11);
+    const std::vector<BvhWideNode>& wide = soup.bvh.wideNodes;
+    auto children = [&](uint32_t node) {
+      std::vector<uint32_t> c;
+      for (int i = 0; i < 4; ++i)
+        if (wide[node].texels[gpu::kBvhWideChildTexel][i] != gpu::kBvhEmptySlot) c.push_back(wide[node].texels[gpu::kBvhWideChildTexel][i]);
+      return c;
+    };
+    std::function<uint32_t(uint32_t)> depth = [&](uint32_t node) {
+      uint32_t d = 0;
+      for (uint32_t c : children(node))
+        if (!gpu::bvhIsLeaf(c)) d = std::max(d, depth(c));
+      return d + 1;
+    };
+    const uint32_t wideDepth = depth(0);
+    EXPECT_EQ(soup.bvh.stats.wideMaxDepth, wideDepth) << triangles << " triangles";
+    depths.insert(wideDepth);
+    size_t most = 0;
+    std::vector<uint32_t> stack;
+    uint32_t current = 0;
+    for (bool walking = true; walking;) {
+      if (!gpu::bvhIsLeaf(current)) {
+        std::vector<uint32_t> c = children(current);
+        current = c[0];
+        for (size_t i = c.size(); i-- > 1;) stack.push_back(c[i]);
+        most = std::max(most, stack.size());
+      } else if (!stack.empty()) {
+        current = stack.back();
+        stack.pop_back();
+      } else {
+        walking = false;
+      }
+    }
+    EXPECT_LE(most, 3 * wideDepth) << triangles << " triangles";
+    EXPECT_EQ(walksCanOutgrowRegisterStack(soup.bvh.stats), 3 * wideDepth > gpu::kBvhRegisterStackEntries) << triangles;
+    if (!walksCanOutgrowRegisterStack(soup.bvh.stats)) EXPECT_LE(most, gpu::kBvhRegisterStackEntries) << triangles;
+  }
+  EXPECT_GE(depths.size(), 4u);  // shallow trees, which skip the deep passes, and deep ones, which need them
+  BvhStats s;
+  s.wideMaxDepth = 4;
+  EXPECT_FALSE(walksCanOutgrowRegisterStack(s));
+  s.wideMaxDepth = 5;
+  EXPECT_TRUE(walksCanOutgrowRegisterStack(s));
 }
 
 // The build divides its work by fixed rules (parallel_chunks.h, the subtree limit), so the thread count changes
