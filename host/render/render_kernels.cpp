@@ -173,10 +173,13 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
   for (Planned& p : planned) bySize.push_back(&p);
   std::stable_sort(bySize.begin(), bySize.end(), [](const Planned* a, const Planned* b) { return a->spirv.size() > b->spirv.size(); });
   // The first-dispatch compiles, shared by SPIR-V size: this thread takes the largest kernel, each next one goes to
-  // the lighter share. (Sizes stand in for compile times: the pre-specialized variants hold little dead code.)
+  // the lighter share. (Sizes stand in for compile times: the pre-specialized variants hold little dead code.) A
+  // kernel past kHelperMaxWords stays here: the helper would create its pipeline a second time, SPIR-V to NIR
+  // before the dead code goes, which costs about what its compile does, and all of it when the cache is warm.
+  constexpr size_t kHelperMaxWords = 32768;
   size_t ownWords = 0, helperWords = 0;
   for (Planned* p : bySize) {
-    p->helper = helperWords < ownWords;
+    p->helper = helperWords < ownWords && p->spirv.size() <= kHelperMaxWords;
     (p->helper ? helperWords : ownWords) += p->spirv.size();
   }
   std::vector<KernelSource> helperShare;
