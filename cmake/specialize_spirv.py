@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Pre-specializes a kernel's SPIR-V at build time for a few feature sets: in each, some specialization constants
-become plain constants, spirv-opt folds and strips the code they switch off, and the variants are written as one
+become plain constants, spirv-opt folds and strips the code they switch off
+(PASSES below), and the variants are written as one
 C++ header.
 
 Why: lavapipe turns a module's whole SPIR-V into NIR, and inlines it, before a pipeline's specialization removes
@@ -82,14 +83,31 @@ def fix_constants(words, fixed):
     return out
 
 
+# Constant propagation and dead-code removal only, twice (after inlining, so branches on the fixed constants fold
+# inside callees). spirv-opt -O's other passes made the kernels slower on llvmpipe, which runs every block for all
+# lanes: --merge-return (a function with early returns becomes a one-pass loop) took shade to 1.6x its time,
+# --scalar-replacement the megakernel to 1.05x. Functions with early returns stay calls; lavapipe inlines them.
+_CLEAN = ('--eliminate-local-single-block --eliminate-local-single-store --ssa-rewrite --ccp --eliminate-dead-branches '
+          '--merge-blocks --eliminate-dead-code-aggressive --eliminate-dead-functions').split()
+PASSES = ['--inline-entry-points-exhaustive'] + _CLEAN + _CLEAN
+
+
+def run_spirv_opt(spirv_opt, args):
+    # Quiet unless it fails: without merge-return the inliner warns about every function it leaves as a call.
+    r = subprocess.run([spirv_opt] + args, capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.stderr.write(r.stdout + r.stderr)
+        fail(f'spirv-opt failed ({r.returncode})')
+
+
 def optimize(words, spirv_opt):
     with tempfile.TemporaryDirectory() as tmp:
         paths = [os.path.join(tmp, f'{k}.spv') for k in range(3)]
         with open(paths[0], 'wb') as f:
             f.write(struct.pack(f'<{len(words)}I', *words))
-        # Two runs: in one, -O's passes ran before the fold and left the new constants' expressions unfolded.
-        subprocess.run([spirv_opt, '--fold-spec-const-op-composite', paths[0], '-o', paths[1]], check=True)
-        subprocess.run([spirv_opt, '-O', paths[1], '-o', paths[2]], check=True)
+        # Two runs: in one, the other passes ran before the fold and left the new constants' expressions unfolded.
+        run_spirv_opt(spirv_opt, ['--fold-spec-const-op-composite', paths[0], '-o', paths[1]])
+        run_spirv_opt(spirv_opt, PASSES + [paths[1], '-o', paths[2]])
         data = open(paths[2], 'rb').read()
     return list(struct.unpack(f'<{len(data) // 4}I', data))
 

@@ -37,18 +37,21 @@ glm::vec3 anyPerpendicular(const glm::vec3& n) {
 
 namespace {
 
-// MikkTSpace's view of an indexed triangle list; its results land per corner.
+// MikkTSpace's view of an indexed triangle list, its faces those of `faces` (triangles of non-zero area); its
+// results land per corner of the whole list.
 struct MikkMesh {
   const std::vector<glm::vec3>& positions;
   const std::vector<glm::vec3>& normals;
   const std::vector<glm::vec2>& uvs;
   const std::vector<uint32_t>& triangles;
+  const std::vector<uint32_t>& faces;
   std::vector<glm::vec4>& out;
   static MikkMesh& of(const SMikkTSpaceContext* c) { return *static_cast<MikkMesh*>(c->m_pUserData); }
-  uint32_t vertex(int face, int corner) const { return triangles[3 * size_t(face) + size_t(corner)]; }
+  size_t corner(int face, int k) const { return 3 * size_t(faces[size_t(face)]) + size_t(k); }
+  uint32_t vertex(int face, int k) const { return triangles[corner(face, k)]; }
 };
 
-int faceCount(const SMikkTSpaceContext* c) { return int(MikkMesh::of(c).triangles.size() / 3); }
+int faceCount(const SMikkTSpaceContext* c) { return int(MikkMesh::of(c).faces.size()); }
 int cornersOfFace(const SMikkTSpaceContext*, const int) { return 3; }
 void position(const SMikkTSpaceContext* c, float out[], const int face, const int corner) {
   const MikkMesh& m = MikkMesh::of(c);
@@ -69,7 +72,7 @@ void setTangent(const SMikkTSpaceContext* c, const float t[], const float sign, 
   MikkMesh& m = MikkMesh::of(c);
   // glTF's v runs down the image while a normal map's +Y (green) points up it: the bitangent is -dP/dv, the
   // opposite of MikkTSpace's (OpenGL's) sign, as three.js's computeMikkTSpaceTangents(negateSign) does for glTF.
-  m.out[3 * size_t(face) + size_t(corner)] = glm::vec4(t[0], t[1], t[2], sign < 0.0f ? 1.0f : -1.0f);
+  m.out[m.corner(face, corner)] = glm::vec4(t[0], t[1], t[2], sign < 0.0f ? 1.0f : -1.0f);
 }
 
 }  // namespace
@@ -81,7 +84,14 @@ std::vector<glm::vec4> generateTangents(const std::vector<glm::vec3>& positions,
   const size_t corners = tri.size() / 3 * 3;
   std::vector<glm::vec4> out(corners, glm::vec4(0.0f));
   const std::vector<glm::vec2> noUvs;
-  MikkMesh mesh{positions, normals, uvs.size() == positions.size() ? uvs : noUvs, tri, out};
+  // Zero-area triangles (never rendered) stay out: MikkTSpace welds corners of equal position by comparing each
+  // with all before it, so a primitive whose positions are all equal (an accessor without a buffer view reads
+  // zeros) took it 10 s for 15k triangles (found by the fuzzer).
+  std::vector<uint32_t> faces;
+  for (size_t t = 0; t < corners; t += 3)
+    if (usable(glm::cross(positions[tri[t + 1]] - positions[tri[t]], positions[tri[t + 2]] - positions[tri[t]])))
+      faces.push_back(uint32_t(t / 3));
+  MikkMesh mesh{positions, normals, uvs.size() == positions.size() ? uvs : noUvs, tri, faces, out};
   SMikkTSpaceInterface callbacks{};
   callbacks.m_getNumFaces = faceCount;
   callbacks.m_getNumVerticesOfFace = cornersOfFace;
@@ -90,7 +100,7 @@ std::vector<glm::vec4> generateTangents(const std::vector<glm::vec3>& positions,
   callbacks.m_getTexCoord = texCoord;
   callbacks.m_setTSpaceBasic = setTangent;
   SMikkTSpaceContext context{&callbacks, &mesh};
-  if (corners > 0) genTangSpaceDefault(&context);
+  if (!faces.empty()) genTangSpaceDefault(&context);
   // MikkTSpace leaves what it cannot build (degenerate or missing uvs) as it found it or not unit: some unit
   // perpendicular of the corner's normal instead, sign +1.
   for (size_t i = 0; i < corners; ++i) {

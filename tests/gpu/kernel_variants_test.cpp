@@ -23,11 +23,13 @@ const SpirvVariantInfo* find(const std::string& kernel, const std::string& name)
 }
 }  // namespace
 
-TEST(KernelVariants, TheCommonFeatureSetsAreBuiltForShadeAndTheMegakernel) {
-  for (const char* kernel : {"shade", "megakernel"})
-    for (const char* set : {"lambertian", "glossy", "textured"}) EXPECT_NE(find(kernel, set), nullptr) << kernel << " " << set;
-  // intersect reads none of the material constants, so its lambertian and glossy variants are one.
-  EXPECT_NE(find("intersect", "lambertian+glossy"), nullptr);
+TEST(KernelVariants, TheCommonFeatureSetsAreBuiltForShadeAndTheWalks) {
+  for (const char* set : {"lambertian", "glossy", "textured"}) EXPECT_NE(find("shade", set), nullptr) << set;
+  // The walks read none of the material constants, so their lambertian and glossy variants are one.
+  for (const char* kernel : {"intersect", "intersect_deep", "shadow", "shadow_deep"}) {
+    EXPECT_NE(find(kernel, "lambertian+glossy"), nullptr) << kernel;
+    EXPECT_NE(find(kernel, "textured"), nullptr) << kernel;
+  }
 }
 
 TEST(KernelVariants, AVariantIsChosenOnlyWhereEveryFixedConstantMatches) {
@@ -85,7 +87,6 @@ TEST_P(PrespecializedSpirv, RendersTheGeneralSpirvsImageBitForBit) {
 INSTANTIATE_TEST_SUITE_P(
     KernelVariants, PrespecializedSpirv,
     ::testing::Values(VariantCase{"cornell_box", scenePath("cornell_box.gltf"), "lambertian", Integrator::Wavefront},
-                      VariantCase{"cornell_box_megakernel", scenePath("cornell_box.gltf"), "lambertian", Integrator::Megakernel},
                       VariantCase{"veach_mis", scenePath("veach_mis.gltf"), "glossy", Integrator::Wavefront},
                       VariantCase{"shared_DamagedHelmet", std::string(VKMC_SHARED_SCENES) + "/DamagedHelmet/DamagedHelmet.gltf",
                                   "textured", Integrator::Wavefront}),

@@ -72,3 +72,29 @@ TEST(TangentSpace, AMirroredSeamGivesEachSideItsOwnFrame) {
     EXPECT_EQ(t[i].w, right ? -1.0f : 1.0f) << "corner " << i;
   }
 }
+
+// Zero-area triangles take the fallback frame and stay out of MikkTSpace, whose weld compares each corner with every
+// earlier one of the same position: 60k corners at one point (an accessor without a buffer view reads zeros) with
+// distinct uvs took it 10 s (found by the fuzzer), 180k 3 minutes. A real triangle beside them keeps its frame.
+TEST(TangentSpace, ZeroAreaTrianglesGetTheFallbackAndDoNotSlowTheWeld) {
+  const uint32_t collapsed = 60000;  // about 3 minutes before the fix, milliseconds after: the ctest timeout catches it
+  std::vector<glm::vec3> p(3 * collapsed, glm::vec3(0.0f));
+  std::vector<glm::vec2> uv;
+  std::vector<uint32_t> tri;
+  for (uint32_t i = 0; i < 3 * collapsed; ++i) {
+    uv.push_back(glm::vec2(float(i) / float(3 * collapsed), float(i % 7) / 7.0f));
+    tri.push_back(i);
+  }
+  const uint32_t base = uint32_t(p.size());
+  p.insert(p.end(), kQuad.begin(), kQuad.end());
+  for (glm::vec2 u : {glm::vec2(0, 1), glm::vec2(1, 1), glm::vec2(1, 0), glm::vec2(0, 0)}) uv.push_back(u);
+  for (uint32_t k : kTriangles) tri.push_back(base + k);
+  std::vector<glm::vec3> up(p.size(), glm::vec3(0, 0, 1));
+  std::vector<glm::vec4> t = generateTangents(p, up, uv, tri);
+  ASSERT_EQ(t.size(), tri.size());
+  for (size_t i = 0; i < 3 * size_t(collapsed); ++i) ASSERT_EQ(t[i], glm::vec4(anyPerpendicular(up[0]), 1.0f)) << i;
+  for (size_t i = 3 * size_t(collapsed); i < t.size(); ++i) {
+    EXPECT_NEAR(t[i].x, 1.0f, 1e-6f);
+    EXPECT_EQ(t[i].w, 1.0f);
+  }
+}
