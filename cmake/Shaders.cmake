@@ -40,7 +40,9 @@ function(add_kernel_variants out_list name)
     OUTPUT ${header}
     COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/cmake/specialize_spirv.py --layout ${VKMC_SHADER_DIR}/shared/layout.h
             --spirv-opt ${SPIRV_OPT} --kernel ${name} ${sets} ${base} ${header}
-    DEPENDS ${base} ${CMAKE_SOURCE_DIR}/cmake/specialize_spirv.py ${VKMC_SHADER_DIR}/shared/layout.h
+    # The calling list file holds the feature sets: a changed set rebuilds the variants.
+    DEPENDS ${base} ${CMAKE_SOURCE_DIR}/cmake/specialize_spirv.py ${VKMC_SHADER_DIR}/shared/layout.h ${CMAKE_CURRENT_LIST_FILE}
+            ${SPIRV_OPT}
     COMMENT "spirv-opt ${name}: ${VKMC_FEATURE_SETS}"
     VERBATIM)
   set(${out_list} ${${out_list}} ${header} PARENT_SCOPE)

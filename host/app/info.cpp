@@ -9,6 +9,7 @@
 #include "estimators/estimator_params.h"
 #include "render/gpu_scene.h"
 #include "render/path_renderer.h"
+#include "render/render_kernels.h"
 #include "scene/camera_rig.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_features.h"
@@ -35,6 +36,7 @@ const char* specName(uint32_t id) {
     case SPEC_RECORD_DEPTH_STATS: return "record_depth_stats";
     case SPEC_SAMPLER_LOG2_SPP: return "zsobol_log2_spp";
     case SPEC_SAMPLER_DIGITS: return "zsobol_digits";
+    case SPEC_DEEP_WALKS: return "deep_walks";
     case SPEC_PIXEL_FILTER: return "pixel_filter";  // 0: the pixel's box (u as is), 1: a filter's table
   }
   for (const EstimatorParam& p : estimatorParams())
@@ -84,8 +86,7 @@ int runInfo(const RenderOptions& options) {
   GpuScene gpu(ctx, scene, bvh, options.estimator.lightSelect == LightSelect::Uniform);
   RenderSettings settings;
   settings.estimator = options.estimator;
-  settings.features = options.specialize ? f : allFeatures(f);
-  if (options.specialize) settings.features.deepWalks = walksCanOutgrowRegisterStack(bvh.stats);
+  settings.features = pipelineFeatures(f, bvh.stats, options.specialize);
   settings.width = options.width.value_or(256);
   settings.height = options.height.value_or(256);
   settings.spp = options.spp;

@@ -20,6 +20,7 @@
 #include "io/output_files.h"
 #include "render/device_tuning.h"
 #include "render/gpu_scene.h"
+#include "render/render_kernels.h"
 #include "scene/camera_rig.h"
 #include "scene/gltf_loader.h"
 #include "scene/content_hash.h"
@@ -263,9 +264,8 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
     if (uint32_t most = zsobolMaxSpp(width, height, options.estimator.replicates); most > 0)
       settings.spp = std::min(settings.spp, most);
   settings.estimator = options.estimator;
-  settings.features = options.specialize ? scanFeatures(scene) : allFeatures(scanFeatures(scene));
+  settings.features = pipelineFeatures(scanFeatures(scene), bvh.stats, options.specialize);
   if (options.withoutTextures) settings.features.textures = settings.features.normalMaps = settings.features.alpha = false;
-  if (options.specialize) settings.features.deepWalks = walksCanOutgrowRegisterStack(bvh.stats);
   out.features = settings.features;
   settings.seed = options.seed;
   out.background = options.background.value_or(glm::vec3(0.0f));

@@ -375,6 +375,8 @@ Aabb wideChildBox(const BvhWideNode& node, int i) {
   return box;
 }
 
-bool walksCanOutgrowRegisterStack(const BvhStats& stats) { return 3 * stats.wideMaxDepth > gpu::kBvhRegisterStackEntries; }
+bool walksCanOutgrowRegisterStack(const BvhStats& stats) {
+  return (gpu::kBvhWideChildren - 1) * stats.wideMaxDepth > gpu::kBvhRegisterStackEntries;
+}
 
 }  // namespace vkmc

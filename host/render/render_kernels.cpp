@@ -74,6 +74,21 @@ uint32_t zsobolMaxSpp(uint32_t width, uint32_t height, uint32_t replicates) {
   return uint32_t(std::min<uint64_t>(uint64_t(replicates) << (kZSobolIndexBits - pixelBits), uint64_t(1) << 24));
 }
 
+SceneFeatures pipelineFeatures(const SceneFeatures& scene, const BvhStats& bvh, bool specialize) {
+  if (!specialize) return allFeatures(scene);
+  SceneFeatures f = scene;
+  f.deepWalks = walksCanOutgrowRegisterStack(bvh);
+  return f;
+}
+
+namespace {
+// The kernel that shades: the megakernel, or the wavefront's shade stage (with float atomics where paths split).
+NamedSpirv shadingSpirv(const RenderSettings& s) {
+  if (s.integrator == Integrator::Megakernel) return VKMC_SPIRV(megakernel);
+  return s.estimator.splitsPaths() ? VKMC_SPIRV(shade_atomic) : VKMC_SPIRV(shade);
+}
+}  // namespace
+
 KernelPlan planKernels(const RenderSettings& s) {
   KernelPlan plan;
   const EstimatorConfig& est = s.estimator;
@@ -113,9 +128,7 @@ KernelPlan planKernels(const RenderSettings& s) {
   plan.specs.push_back({SPEC_SAMPLER_LOG2_SPP, z.log2Spp});
   plan.specs.push_back({SPEC_SAMPLER_DIGITS, z.digits});
   if (s.prespecializedSpirv) {
-    const NamedSpirv shading = s.integrator == Integrator::Megakernel ? VKMC_SPIRV(megakernel)
-                               : est.splitsPaths()                     ? VKMC_SPIRV(shade_atomic)
-                                                                       : VKMC_SPIRV(shade);
+    const NamedSpirv shading = shadingSpirv(s);
     plan.spirvVariant = chooseSpirv(shading.build, shading.words, plan.specs).variant;
   }
   return plan;
@@ -138,13 +151,13 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
   std::vector<Planned> planned;
   RenderKernels k;
   if (settings.integrator == Integrator::Megakernel) {
-    planned.push_back({&k.megakernel, "megakernel", VKMC_SPIRV(megakernel)});
+    planned.push_back({&k.megakernel, "megakernel", shadingSpirv(settings)});
   } else {
     planned.push_back({&k.camera, "camera_rays", VKMC_SPIRV(camera_rays)});
     planned.push_back({&k.prepareBounce, "prepare_bounce", VKMC_SPIRV(prepare_bounce)});
     planned.push_back({&k.intersect, "intersect", VKMC_SPIRV(intersect)});
     if (settings.features.deepWalks) planned.push_back({&k.intersectDeep, "intersect_deep", VKMC_SPIRV(intersect_deep)});
-    planned.push_back({&k.shade, "shade", est.splitsPaths() ? VKMC_SPIRV(shade_atomic) : VKMC_SPIRV(shade)});
+    planned.push_back({&k.shade, "shade", shadingSpirv(settings)});
     if (hasShadowStage) {
       const bool atomics = est.needsFloatAtomics();
       planned.push_back({&k.prepareShadow, "prepare_shadow", VKMC_SPIRV(prepare_shadow)});

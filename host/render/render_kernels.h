@@ -1,9 +1,11 @@
 // The kernels one render dispatches: chosen for its integrator and estimator, built with its specialization
 // constants, and warmed up once on empty queues so that the driver's first-dispatch compile is not timed as
-// rendering (llvmpipe compiles at first dispatch; a helper thread takes the tracing kernels, BackgroundWarmUp).
+// rendering (llvmpipe compiles at first dispatch; a helper thread takes part of them, BackgroundWarmUp). Where a
+// pre-specialized variant of a kernel's SPIR-V matches the render's constants it is used (render/kernel_variants.h).
 #pragma once
 #include <memory>
 
+#include "bvh/bvh.h"
 #include "render/render_settings.h"
 #include "vk/kernel.h"
 
@@ -20,7 +22,8 @@ struct RenderKernels {
   std::unique_ptr<vk::Kernel> shadeLean, earsCopiesLean;
 
   // The kernels of a bounce's shading and shadow stages: those that train EARS's cache, or (where built) those
-  // that do not. earsCopies is null unless the rr is ears; shadow and shadowDeep unless there is a shadow stage.
+  // that do not. earsCopies is null unless the rr is ears; shadow and shadowDeep unless there is a shadow stage;
+  // shadowDeep (and intersectDeep) also where no walk can outgrow the register stack (SceneFeatures::deepWalks).
   struct BounceKernels {
     vk::Kernel *shade, *earsCopies, *shadow, *shadowDeep;
   };
@@ -29,6 +32,10 @@ struct RenderKernels {
 
 // The kernels a render dispatches, with the specialization constants each is built with.
 KernelPlan planKernels(const RenderSettings& settings);
+
+// What a render's pipelines are specialized for: the scene's features and whether its BVH needs the deep walk
+// passes (walksCanOutgrowRegisterStack), or every feature (specialize false: general pipelines, for comparison).
+SceneFeatures pipelineFeatures(const SceneFeatures& scene, const BvhStats& bvh, bool specialize);
 
 // Builds and warms up the planned kernels on `layout` (whose buffers must be bound, the control block zeroed).
 // pathSlots is the pool size the warm-up's push constants announce.

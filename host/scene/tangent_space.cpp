@@ -84,13 +84,14 @@ std::vector<glm::vec4> generateTangents(const std::vector<glm::vec3>& positions,
   const size_t corners = tri.size() / 3 * 3;
   std::vector<glm::vec4> out(corners, glm::vec4(0.0f));
   const std::vector<glm::vec2> noUvs;
-  // Zero-area triangles (never rendered) stay out: MikkTSpace welds corners of equal position by comparing each
-  // with all before it, so a primitive whose positions are all equal (an accessor without a buffer view reads
-  // zeros) took it 10 s for 15k triangles (found by the fuzzer).
+  // Triangles without a surface to orient (a cross product of exactly zero, or not finite) stay out: MikkTSpace
+  // welds corners of equal position by comparing each with all before it, so a primitive whose positions are all
+  // equal (an accessor without a buffer view reads zeros) took it 10 s for 15k triangles (found by the fuzzer).
   std::vector<uint32_t> faces;
-  for (size_t t = 0; t < corners; t += 3)
-    if (usable(glm::cross(positions[tri[t + 1]] - positions[tri[t]], positions[tri[t + 2]] - positions[tri[t]])))
-      faces.push_back(uint32_t(t / 3));
+  for (size_t t = 0; t < corners; t += 3) {
+    glm::vec3 c = glm::cross(positions[tri[t + 1]] - positions[tri[t]], positions[tri[t + 2]] - positions[tri[t]]);
+    if (c != glm::vec3(0.0f) && std::isfinite(glm::dot(c, c))) faces.push_back(uint32_t(t / 3));
+  }
   MikkMesh mesh{positions, normals, uvs.size() == positions.size() ? uvs : noUvs, tri, faces, out};
   SMikkTSpaceInterface callbacks{};
   callbacks.m_getNumFaces = faceCount;

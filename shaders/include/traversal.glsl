@@ -96,7 +96,8 @@ uint hitChildren(uint node, vec3 invDir, vec3 origin, bvec3 nearIsHigh, float tM
 
 // The register stack: 12 entries in three uvec4 (top = s0.x, empty slots = kNoEntry). `shift` entries of
 // (a, b, c) are pushed (1..3, a on top), or -shift entries popped (1..2), or nothing (0). Pushing past the bottom
-// sets overflow; the walk then restarts with traceRayDeep. (Why 12: docs/performance.md.)
+// sets overflow; the walk then restarts with traceRayDeep, or is reported as cut where SPEC_DEEP_WALKS is 0 (the
+// host's bound says no walk of the scene's BVH can overflow: kBvhRegisterStackEntries). (Why 12: docs/performance.md.)
 struct RegisterStack {
   uvec4 s0, s1, s2;  // kBvhRegisterStackEntries
 };

@@ -31,8 +31,10 @@ VKMC_CONST uint kBvhMaxLeafSize = 8u;
 VKMC_CONST uint kBvhLeafFirstLimit = 1u << 27u;  // a leaf's first triangle is below this
 VKMC_CONST uint kBvhEmptySlot = 0x7f7fffffu;     // FLT_MAX's bits: no NaN on the way through a float texel
 VKMC_CONST uint kBvhNoEntry = 0xffffffffu;       // the walk's empty stack slot
-// The 4-wide walk's register stack (traversal.glsl RegisterStack: three uvec4). A walk pushes at most 3 entries per
-// inner node on its path, so over a 4-wide tree with at most 4 inner nodes on any path it never outgrows them.
+// The 4-wide walk's register stack (traversal.glsl RegisterStack: three uvec4). A walk pushes at most the
+// kBvhWideChildren - 1 children it does not enter next per inner node on its path, so over a 4-wide tree with at
+// most 4 inner nodes on any path it never outgrows them.
+VKMC_CONST uint kBvhWideChildren = 4u;
 VKMC_CONST uint kBvhRegisterStackEntries = 12u;
 
 VKMC_FN uint bvhLeafEntry(uint first, uint count) { return kBvhLeafTag | ((count - 1u) << 27u) | first; }
