@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace vkmc;
 
 namespace {
@@ -96,5 +98,32 @@ TEST(TangentSpace, ZeroAreaTrianglesGetTheFallbackAndDoNotSlowTheWeld) {
   for (size_t i = 3 * size_t(collapsed); i < t.size(); ++i) {
     EXPECT_NEAR(t[i].x, 1.0f, 1e-6f);
     EXPECT_EQ(t[i].w, 1.0f);
+  }
+}
+
+// A fan of real triangles around one apex whose corners each carry their own uv: MikkTSpace's weld compared every
+// apex corner with all earlier ones (quadratic: 24 s for 60k, minutes for 150k, past the test's hang-guard timeout);
+// it now sorts them (third_party/mikktspace/README.md) and takes milliseconds.
+// The frames are still MikkTSpace's: tangents along the uvs' u direction, here +x on the plane z = 0.
+TEST(TangentSpace, AFanOfManyCornersAtOnePositionWeldsQuickly) {
+  const uint32_t blades = 150000;
+  std::vector<glm::vec3> p;
+  std::vector<glm::vec2> uv;
+  std::vector<uint32_t> tri;
+  for (uint32_t i = 0; i < blades; ++i) {
+    float a0 = 6.2831853f * float(i) / float(blades), a1 = 6.2831853f * float(i + 1) / float(blades);
+    glm::vec3 b(std::cos(a0), std::sin(a0), 0.0f), c(std::cos(a1), std::sin(a1), 0.0f);
+    for (glm::vec3 v : {glm::vec3(0.0f), b, c}) {
+      tri.push_back(uint32_t(p.size()));
+      p.push_back(v);
+      uv.push_back(glm::vec2(0.5f + 0.5f * v.x, 0.5f - 0.5f * v.y) + glm::vec2(0.0f, 1e-7f * float(i)));  // v down
+    }
+  }
+  std::vector<glm::vec3> up(p.size(), glm::vec3(0, 0, 1));
+  std::vector<glm::vec4> t = generateTangents(p, up, uv, tri);
+  ASSERT_EQ(t.size(), tri.size());
+  for (size_t i = 0; i < t.size(); i += 997) {
+    EXPECT_NEAR(t[i].x, 1.0f, 1e-3f) << i;
+    EXPECT_EQ(t[i].w, 1.0f) << i;
   }
 }

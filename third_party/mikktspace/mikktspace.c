@@ -578,6 +578,54 @@ static void GenerateSharedVerticesIndexList(int piTriList_in_and_out[], const SM
 	free(piHashOffsets);
 }
 
+// vkmc: altered (see MergeVertsFast). Corners iL..iR of pTmpVert are welded: each takes the vertex of the earliest
+// corner whose position, normal and texcoord compare equal (==, so -0 equals +0 and a NaN equals nothing), as the
+// original pairwise loop did, in O(n log n): the corners are sorted by their data (-0 read as +0), then by order.
+typedef struct {
+	unsigned int key[9];
+	int order;
+	int nan;
+} SWeldKey;
+
+static int CompareWeldKeys(const void * a, const void * b)
+{
+	const SWeldKey * ka = (const SWeldKey *) a, * kb = (const SWeldKey *) b;
+	int c;
+	if (ka->nan != kb->nan) return ka->nan < kb->nan ? -1 : 1;
+	for (c=0; c<9; c++)
+		if (ka->key[c] != kb->key[c]) return ka->key[c] < kb->key[c] ? -1 : 1;
+	return ka->order < kb->order ? -1 : (ka->order > kb->order ? 1 : 0);
+}
+
+static void WeldSorted(int piTriList_in_and_out[], const STmpVert pTmpVert[], const SMikkTSpaceContext * pContext, const int iL, const int iR)
+{
+	const int n = iR - iL + 1;
+	int l, c, head = 0;
+	SWeldKey * keys = (SWeldKey *) malloc(sizeof(SWeldKey) * (size_t) n);
+	if (keys == NULL) return;	// corners stay unwelded: MikkTSpace then treats them as separate vertices
+	for (l=0; l<n; l++)
+	{
+		const int index = piTriList_in_and_out[pTmpVert[iL + l].index];
+		const SVec3 vP = GetPosition(pContext, index), vN = GetNormal(pContext, index), vT = GetTexCoord(pContext, index);
+		const float f[9] = { vP.x, vP.y, vP.z, vN.x, vN.y, vN.z, vT.x, vT.y, vT.z };
+		keys[l].order = l;
+		keys[l].nan = 0;
+		for (c=0; c<9; c++)
+		{
+			const float v = f[c] == 0.0f ? 0.0f : f[c];
+			memcpy(&keys[l].key[c], &v, sizeof(v));
+			if (v != v) keys[l].nan = 1;
+		}
+	}
+	qsort(keys, (size_t) n, sizeof(SWeldKey), CompareWeldKeys);
+	for (l=1; l<n; l++)
+	{
+		if (keys[l].nan || memcmp(keys[l].key, keys[head].key, sizeof(keys[l].key)) != 0) { head = l; continue; }
+		piTriList_in_and_out[pTmpVert[iL + keys[l].order].index] = piTriList_in_and_out[pTmpVert[iL + keys[head].order].index];
+	}
+	free(keys);
+}
+
 static void MergeVertsFast(int piTriList_in_and_out[], STmpVert pTmpVert[], const SMikkTSpaceContext * pContext, const int iL_in, const int iR_in)
 {
 	// make bbox
@@ -612,38 +660,10 @@ static void MergeVertsFast(int piTriList_in_and_out[], STmpVert pTmpVert[], cons
 	if (fSep>=fvMax[channel] || fSep<=fvMin[channel])
 	{
 		// complete the weld
-		for (l=iL_in; l<=iR_in; l++)
-		{
-			int i = pTmpVert[l].index;
-			const int index = piTriList_in_and_out[i];
-			const SVec3 vP = GetPosition(pContext, index);
-			const SVec3 vN = GetNormal(pContext, index);
-			const SVec3 vT = GetTexCoord(pContext, index);
-
-			tbool bNotFound = TTRUE;
-			int l2=iL_in, i2rec=-1;
-			while (l2<l && bNotFound)
-			{
-				const int i2 = pTmpVert[l2].index;
-				const int index2 = piTriList_in_and_out[i2];
-				const SVec3 vP2 = GetPosition(pContext, index2);
-				const SVec3 vN2 = GetNormal(pContext, index2);
-				const SVec3 vT2 = GetTexCoord(pContext, index2);
-				i2rec=i2;
-
-				//if (vP==vP2 && vN==vN2 && vT==vT2)
-				if (vP.x==vP2.x && vP.y==vP2.y && vP.z==vP2.z &&
-					vN.x==vN2.x && vN.y==vN2.y && vN.z==vN2.z &&
-					vT.x==vT2.x && vT.y==vT2.y && vT.z==vT2.z)
-					bNotFound = TFALSE;
-				else
-					++l2;
-			}
-			
-			// merge if previously found
-			if (!bNotFound)
-				piTriList_in_and_out[i] = piTriList_in_and_out[i2rec];
-		}
+		// vkmc: altered. The weld compared each corner with every earlier one, quadratic in the corners of one
+		// position (a fuzzed primitive with one position took 10 s); it now sorts them by their data and welds
+		// each run to its earliest corner, the same result (see WeldSorted).
+		WeldSorted(piTriList_in_and_out, pTmpVert, pContext, iL_in, iR_in);
 	}
 	else
 	{
