@@ -27,8 +27,7 @@ EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathS
   std::memset(header_.mapped(), 0, sizeof(gpu::EarsHeader));
   auto texels = [&](VkDeviceSize bytes) {
     deviceBytes_ += bytes;
-    const size_t limit = size_t(ctx.properties().limits.maxTexelBufferElements) * sizeof(glm::vec4);
-    vk::Buffer b(ctx, notPowerOfTwoBytes(bytes, limit), VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+    vk::Buffer b(ctx, notPowerOfTwoTexelBytes(ctx, bytes), VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
     b.createView(sceneTexelFormat(BINDING_EARS_SAMPLING));
     return b;
   };

@@ -48,7 +48,7 @@ vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, uin
     throw Error(std::string("scene too big for the device: ") + name + " needs " + std::to_string(texels) +
                 " texels, the device allows " + std::to_string(ctx.properties().limits.maxTexelBufferElements));
   const size_t allocated = size == TexelSize::Exact ? std::max<size_t>(bytes, 16)
-                                                    : notPowerOfTwoBytes(bytes, ctx.properties().limits.maxTexelBufferElements * texelBytes);
+                                                    : notPowerOfTwoTexelBytes(ctx, bytes, texelBytes);
   vk::Buffer b(ctx, allocated, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   b.upload(data, bytes);
   b.createView(sceneTexelFormat(binding));
@@ -252,6 +252,10 @@ size_t notPowerOfTwoBytes(size_t bytes, size_t maxBytes) {
   size_t n = exact;
   while ((n & (n - 1)) == 0) n += 16;
   return n <= maxBytes ? n : exact;
+}
+
+size_t notPowerOfTwoTexelBytes(const vk::Context& ctx, size_t bytes, size_t texelBytes) {
+  return notPowerOfTwoBytes(bytes, size_t(ctx.properties().limits.maxTexelBufferElements) * texelBytes);
 }
 
 VkFormat sceneTexelFormat(uint32_t binding) {

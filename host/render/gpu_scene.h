@@ -36,6 +36,8 @@ VkFormat sceneTexelFormat(uint32_t binding);
 // 256x256 image's pixel estimates) made the render compile those kernels a second time. Where padding would pass
 // maxBytes (the device's texel limit), the size stays as it is.
 size_t notPowerOfTwoBytes(size_t bytes, size_t maxBytes = SIZE_MAX);
+// The same within this device's texel limit for texels of texelBytes.
+size_t notPowerOfTwoTexelBytes(const vk::Context& ctx, size_t bytes, size_t texelBytes = 16);
 
 // The most triangles a scene may have on this device and machine: its largest buffer (3 texels a triangle)
 // within maxTexelBufferElements and one allocation, the scene (~96 bytes a triangle: triangles, their info, BVH

@@ -97,9 +97,8 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
   if (!control_.mapped()) controlMirror_ = vk::Buffer(ctx_, sizeof(gpu::Control), 0, vk::MemoryKind::HostVisible);
   film_ = storage(pixels * sizeof(gpu::FilmPixel), exchange);
   film_.zero();
-  const size_t texelLimit = size_t(ctx_.properties().limits.maxTexelBufferElements) * sizeof(glm::vec4);
   pixelEstimate_ =
-      storage(notPowerOfTwoBytes(pixels * sizeof(glm::vec4), texelLimit), exchange, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT);
+      storage(notPowerOfTwoTexelBytes(ctx_, pixels * sizeof(glm::vec4)), exchange, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT);
   pixelEstimate_.createView(sceneTexelFormat(BINDING_PIXEL_ESTIMATE));
   pixelEstimate_.zero();
   rouletteTable_ = storage(gpu::kRouletteTableDepths * sizeof(float), vk::MemoryKind::HostVisible);

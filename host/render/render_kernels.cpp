@@ -47,9 +47,7 @@ uint32_t log2Ceil(uint64_t v) {
   while ((uint64_t(1) << k) < v) ++k;
   return k;
 }
-}  // namespace
 
-namespace {
 // ZSobol's Morton index: the pixel's bits (both axes) and then the point's, within one 32-bit word.
 constexpr uint32_t kZSobolIndexBits = 32;
 uint32_t zsobolPixelBits(uint32_t width, uint32_t height) { return 2 * log2Ceil(std::max(width, height)); }
