@@ -2,6 +2,7 @@
 // constants match a variant's fixed ones, and the same image, bit for bit, as the general SPIR-V it comes from.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <set>
 
@@ -82,7 +83,18 @@ TEST_P(PrespecializedSpirv, RendersTheGeneralSpirvsImageBitForBit) {
   o.prespecializedSpirv = false;
   RenderOutcome general = runRender(sharedContext(), o);
   EXPECT_EQ(general.spirvVariant, "");
-  EXPECT_EQ(encodeFilmExr(pre.film), encodeFilmExr(general.film)) << "the images differ";
+  if (c.bsdfSamples <= 1.0f) {
+    EXPECT_EQ(encodeFilmExr(pre.film), encodeFilmExr(general.film)) << "the images differ";
+  } else {
+    // Split paths add into the film with float atomics, whose order varies from run to run (so does the general
+    // SPIR-V's image): the same paths, the sums equal to rounding.
+    ExrImage a = filmToImage(pre.film), b = filmToImage(general.film);
+    for (const char* ch : {"R", "G", "B"})
+      for (size_t i = 0; i < a.channels[ch].size(); ++i) {
+        float x = a.channels[ch][i], y = b.channels[ch][i];
+        ASSERT_LE(std::abs(x - y), 1e-5f * (std::abs(x) + std::abs(y)) + 1e-7f) << ch << " pixel " << i;
+      }
+  }
   EXPECT_EQ(pre.stats.rays(), general.stats.rays());
 }
 
