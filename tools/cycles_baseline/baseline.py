@@ -36,7 +36,7 @@ def run(cmd, **kw):
 def vkmc_render(args, out, spp=None, seconds=None, seed=1, ref=False):
     report = out[:-4] + ".json"
     cmd = [VKMC, "render", args.scene, "-o", out, "--report", report, "--width", str(args.width),
-           "--height", str(args.height), "--seed", str(seed), "-q"]
+           "--height", str(args.height), "--seed", str(seed), "--rr-depth", str(args.rr_depth), "-q"]
     if seconds is not None:
         cmd += ["--time-budget", str(seconds), "--spp", str(1 << 24)]
     else:
@@ -107,6 +107,15 @@ def reference(args, cache):
         vkmc_render(args, path, spp=args.ref_spp, seed=REFERENCE_SEED)
     with open(path[:-4] + ".json") as f:
         return path, json.load(f)
+
+
+def cycles_min_bounces(rr_depth):
+    # vkmc roulettes the continuation from vertex rr_depth - 1 (the camera's hit is vertex 0): vertex rr_depth's
+    # emission, light sample and everything after are at stake. Cycles adds 1 to min_light_bounces (its
+    # kernel's min_bounce, "so that a bounce of 0 indicates ... only direct illumination") and roulettes at the hit
+    # of vertex k > min_bounce, after adding that hit's emission and before its light sample. The same first
+    # rouletted light sample, vertex rr_depth: min_light_bounces = rr_depth - 2 (Cycles keeps one emission more).
+    return max(rr_depth - 2, 0)
 
 
 def median_row(runs):
@@ -190,12 +199,16 @@ def main():
     p.add_argument("--ref-spp", type=int, default=4096)
     p.add_argument("--reference", help="use this EXR as the reference instead of rendering one")
     p.add_argument("--threads", type=int, default=2, help="Cycles' threads (vkmc: lavapipe's, LP_NUM_THREADS)")
-    p.add_argument("--min-bounces", type=int, default=2, help="Cycles' min_light_bounces (see docs/cycles.md)")
+    p.add_argument("--rr-depth", type=int, default=3, help="vkmc's --rr-depth (its default 3); sets Cycles' min bounces")
+    p.add_argument("--min-bounces", type=int, help="Cycles' min_light_bounces (default: --rr-depth - 2, the same first "
+                   "rouletted light sample; see cycles_min_bounces)")
     p.add_argument("--pattern", default="PROGRESSIVE_MULTI_JITTER", help="Cycles' sampling pattern (or SOBOL)")
     p.add_argument("--blender", default="blender")
     p.add_argument("--out", help="folder for the renders (default build/cycles_baseline/<scene>-<hash>)")
     p.add_argument("--json", help="write every run as JSON")
     args = p.parse_args()
+    if args.min_bounces is None:
+        args.min_bounces = cycles_min_bounces(args.rr_depth)
     args.scene = os.path.abspath(args.scene)
     args.seconds = [args.seconds] if args.seconds > 0 else []
     cache = os.path.join(ROOT, "build", "cycles_baseline")
