@@ -313,7 +313,9 @@ TEST_P(DeepWalkPasses, AreLeftOutOnlyWhereNoWalkCanNeedThem) {
   EXPECT_EQ(r.features.deepWalks, c.deepPasses);
   EXPECT_EQ(walksCanOutgrowRegisterStack(r.bvh), c.deepPasses);
   EXPECT_EQ(r.stats.traversalsCut, 0u);
-  if (!c.deepPasses) EXPECT_EQ(r.stats.deepWalks, 0u);
+  if (!c.deepPasses) {
+    EXPECT_EQ(r.stats.deepWalks, 0u);
+  }
   EXPECT_GT(r.stats.rays(), 64u * 64u * 16u);
 }
 

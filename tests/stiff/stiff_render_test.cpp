@@ -98,7 +98,9 @@ TEST_P(TinyIntenseLightWithEars, MeanAndPixelsAreTheAnalyticRadiance) {
   }
   ASSERT_TRUE(r.ears);
   EXPECT_GT(r.ears->trustedCells, 0u);
-  if (GetParam() > 0.0f) EXPECT_GT(r.ears->trustedLightCells, 0u);
+  if (GetParam() > 0.0f) {
+    EXPECT_GT(r.ears->trustedLightCells, 0u);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(StiffRender, TinyIntenseLightWithEars, ::testing::Values(0.0f, gpu::kEarsLightFactorMax),

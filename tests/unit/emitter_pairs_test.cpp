@@ -33,7 +33,9 @@ TEST(EmitterPairs, QuadsPairAndTheApexFacesTheSharedEdge) {
     for (int j = 0; j < 3; ++j) shared += (b[j] == p0 || b[j] == p2) ? 1 : 0;
     EXPECT_EQ(shared, 2) << "the second half holds the shared edge p0-p2";
     for (int j = 0; j < 3; ++j)
-      if (b[j] != p0 && b[j] != p2) EXPECT_LT(glm::length(b[j] - (p0 + p2 - p1)), 1e-6f) << "the far corner";
+      if (b[j] != p0 && b[j] != p2) {
+        EXPECT_LT(glm::length(b[j] - (p0 + p2 - p1)), 1e-6f) << "the far corner";
+      }
   }
   EXPECT_EQ(pairs[0].first, 0u);
   EXPECT_EQ(pairs[0].second, 1u);

@@ -62,7 +62,9 @@ TEST_P(VarianceReliabilityOf, ItsStandardErrorMatchesTheSpreadOverFilms) {
   // films' estimate is near normal: 1024 pixels): a 25% band is 5.5 of those.
   EXPECT_NEAR(reportedVar / observedVar, expected, 0.25) << "reported " << reportedVar << ", observed " << observedVar;
   // The bound of 2 or 3 replicates is an upper bound: above 1 (by 4 of the observed variance's 4.5% errors).
-  if (R < 4) EXPECT_GT(reportedVar / observedVar, 1.0) << "an upper bound below the observed variance";
+  if (R < 4) {
+    EXPECT_GT(reportedVar / observedVar, 1.0) << "an upper bound below the observed variance";
+  }
   std::printf("%u replicates: reported / observed variance of mean_relvariance: %.3f (expected %.1f)\n", R,
               reportedVar / observedVar, expected);
 }
