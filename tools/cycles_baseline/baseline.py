@@ -162,6 +162,8 @@ def print_table(args, rows, ref_path, ref_report):
               f"its own expected relMSE {ref_report.get('mean_relvariance', float('nan')):.3g} (included in every relMSE below)")
     else:
         print(f"reference {ref_path}")
+    print(f"roulette: vkmc --rr-depth {args.rr_depth}, Cycles min_light_bounces {args.min_bounces} (its first rouletted "
+          f"light sample at vertex {args.min_bounces + 2}; vkmc's at vertex {args.rr_depth}; the camera's hit is vertex 0)")
     print("seconds: sample loop only (vkmc report 'seconds'; Cycles render_time without sync, from its EXR header); "
           "relMSE spread: (max - min)/median over the repeats; mean - ref mean: image mean minus the reference's, "
           "over pixels and channels, relative")
