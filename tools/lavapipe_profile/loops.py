@@ -10,16 +10,12 @@ import os
 import re
 import sys
 
-LINE = re.compile(r"\s*([0-9a-f]+):\s+(?:[0-9a-f]{2} )+\s*(\S+)\s*(.*)")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from report import instructions  # noqa: E402  (the same objdump parsing as the profile's report)
 
 
 def read(path):
-    ins = []
-    for line in open(path):
-        m = LINE.match(line)
-        if m:
-            ins.append((int(m.group(1), 16), m.group(2), m.group(3)))
-    return ins
+    return [(a, text.split(None, 1)[0], text.split(None, 1)[1] if " " in text else "") for a, text in instructions(path)]
 
 
 def loops(ins):

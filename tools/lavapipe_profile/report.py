@@ -9,7 +9,9 @@ import os
 import re
 import sys
 
-INSTRUCTION = re.compile(r"\s*([0-9a-f]+):\s+(?:[0-9a-f]{2} )+\s*(.*)")
+# objdump -D: "addr:<TAB>bytes<TAB>mnemonic operands"; an instruction of more than 7 bytes continues on a line of
+# bytes alone (no second tab), which is not an instruction.
+INSTRUCTION = re.compile(r"\s*([0-9a-f]+):\t[0-9a-f ]+\t(.+)")
 STORE = re.compile(r",\s*(0x[0-9a-f]+)?\(%r(?!sp)\w+(,%r\w+,\d)?\)$")  # a store through a pointer, not the stack
 
 
