@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The loops of llvmpipe's compiled kernels, counted instead of timed: runs a command (a vkmc render, a baseline
 # tool) for a few seconds, copies its JIT code out of /proc (lavapipe_profile/dump_jit.py) and prints the largest
-# loops with their instructions, spills and selects (lavapipe_profile/loops.py). Needs objdump; run as root (or
-# with ptrace rights). docs/performance.md, "Traversal against Embree", uses it.
+# loops with their instructions, spills and selects (lavapipe_profile/loops.py). COMMAND must be the process that
+# runs lavapipe itself (a binary, or a script that execs it), not a wrapper that starts it as a child. Needs
+# objdump; run as root (or with ptrace rights). docs/performance.md, "Traversal against Embree", uses it.
 #   bash tools/jit_loops.sh [--wait S] [--out DIR] -- COMMAND...
 # e.g. bash tools/jit_loops.sh -- ./build/vkmc render scenes/cornell_box.gltf --spp 8192 -o /tmp/r.exr -q
 set -euo pipefail
@@ -13,7 +14,8 @@ while [[ $# -gt 0 ]]; do
     --wait) wait="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --) shift; break ;;
-    -h|--help) sed -n 2,7p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,8p "$0"; exit 0 ;;
+    -*) echo "jit_loops: unknown option $1 (the command goes after --)" >&2; exit 1 ;;
     *) break ;;
   esac
 done
@@ -21,10 +23,15 @@ done
 command -v objdump >/dev/null || { echo "jit_loops: objdump is missing (apt-get install binutils)" >&2; exit 1; }
 mkdir -p "$out"
 rm -f "$out"/region_* "$out"/regions.txt
-"$@" >/dev/null 2>&1 &
+"$@" >"$out/command.log" 2>&1 &
 pid=$!
 trap 'kill $pid 2>/dev/null || true' EXIT
 sleep "$wait"
-kill -0 "$pid" 2>/dev/null || { echo "jit_loops: the command ended within ${wait} s; give it more work" >&2; exit 1; }
+if ! kill -0 "$pid" 2>/dev/null; then
+  echo "jit_loops: the command ended within ${wait} s (give it more work); its last output:" >&2
+  tail -n 5 "$out/command.log" >&2
+  exit 1
+fi
 python3 "$here/lavapipe_profile/dump_jit.py" "$pid" "$out"
+[[ -s "$out/regions.txt" ]] || { echo "jit_loops: no JIT code in process $pid (a wrapper? run the binary itself)" >&2; exit 1; }
 python3 "$here/lavapipe_profile/loops.py" "$out"

@@ -163,7 +163,8 @@ def print_table(args, rows, ref_path, ref_report):
     else:
         print(f"reference {ref_path}")
     print(f"roulette: vkmc --rr-depth {args.rr_depth}, Cycles min_light_bounces {args.min_bounces} (its first rouletted "
-          f"light sample at vertex {args.min_bounces + 2}; vkmc's at vertex {args.rr_depth}; the camera's hit is vertex 0)")
+          f"light sample at vertex {args.min_bounces + 2}; vkmc's at vertex {max(args.rr_depth, 1)}; the camera's hit is "
+          f"vertex 0)")
     print("seconds: sample loop only (vkmc report 'seconds'; Cycles render_time without sync, from its EXR header); "
           "relMSE spread: (max - min)/median over the repeats; mean - ref mean: image mean minus the reference's, "
           "over pixels and channels, relative")
@@ -211,6 +212,9 @@ def main():
     args = p.parse_args()
     if args.min_bounces is None:
         args.min_bounces = cycles_min_bounces(args.rr_depth)
+        if args.rr_depth < 2:
+            log(f"cycles_baseline: warning: Cycles roulettes no light sample before vertex 2; vkmc's --rr-depth "
+                f"{args.rr_depth} starts earlier, so the two starts differ")
     args.scene = os.path.abspath(args.scene)
     args.seconds = [args.seconds] if args.seconds > 0 else []
     cache = os.path.join(ROOT, "build", "cycles_baseline")
