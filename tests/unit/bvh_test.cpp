@@ -199,7 +199,9 @@ TEST(Bvh, NoWalkOutgrowsThreeEntriesPerInnerNodeOnItsPath) {
     }
     EXPECT_LE(most, 3 * wideDepth) << triangles << " triangles";
     EXPECT_EQ(walksCanOutgrowRegisterStack(soup.bvh.stats), 3 * wideDepth > gpu::kBvhRegisterStackEntries) << triangles;
-    if (!walksCanOutgrowRegisterStack(soup.bvh.stats)) EXPECT_LE(most, gpu::kBvhRegisterStackEntries) << triangles;
+    if (!walksCanOutgrowRegisterStack(soup.bvh.stats)) {
+      EXPECT_LE(most, gpu::kBvhRegisterStackEntries) << triangles;
+    }
   }
   EXPECT_GE(depths.size(), 4u);  // shallow trees, which skip the deep passes, and deep ones, which need them
   BvhStats s;
