@@ -26,6 +26,8 @@ Outcome evaluate(const std::vector<PilotPath>& pilot, const std::array<float, kR
     double rays = 1.0 + raysPerVertex * std::min<double>(p.lastDepth + 1, firstDepth + 1);
     uint32_t d = firstDepth;
     for (; d < p.lastDepth; ++d) {
+      // Past the table the kernels reuse its last scale; the pilot records no throughput there, so the last one
+      // stands in (the survival then climbs to the cap: the model's cost of very long paths is an upper bound).
       uint32_t t = std::min<uint32_t>(d, kRouletteTableDepths - 1);
       float beta = d < kRouletteTableDepths ? p.beta[d] : p.beta[t];
       if (d < kRouletteTableDepths && (beta <= 0.0f || p.gathered[d] < 0.0f)) break;
