@@ -14,7 +14,7 @@ RoulettePilot runRoulettePilot(vk::Context& ctx, const GpuScene& scene, const Re
   const EstimatorConfig& est = settings.estimator;
   RenderSettings pilotSettings = settings;
   pilotSettings.estimator.rr = RouletteMode::None;
-  pilotSettings.estimator.maxDepth = est.maxDepth ? std::min(est.maxDepth, 96u) : 96u;  // efficiency_roulette.h: why 96
+  pilotSettings.estimator.maxDepth = est.maxDepth ? std::min(est.maxDepth, 24u) : 24u;
   pilotSettings.estimator.bsdfSamples = 1.0f;
   pilotSettings.estimator.splitDepth = 1;
   pilotSettings.spp = std::min<uint32_t>(4, settings.spp);

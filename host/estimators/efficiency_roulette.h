@@ -2,21 +2,17 @@
 // the survival probability at depth d is s = min(k_d * max(beta), cap), with one scale k_d per depth chosen
 // to maximize the efficiency 1 / (V * T) measured on the scene itself.
 //
-// A pilot pass without roulette (up to 96 bounces: a shorter cap hides the cost of long paths, and the optimizer
-// then keeps paths it should kill) records, for every path i and decision depth d, the throughput beta_{i,d} and
-// the part of the sample's estimate gathered after the decision, A_{i,d} = L_i - L_{i,<=d}. Every depth's roulette
-// is modelled at once, as the kernels apply it: a path reaches decision d with probability P_d (the product of
-// the survivals before it), its throughput there divided by P_d, and survives with s_d = min(k_d beta_d / P_d, cap).
-// Its estimate's second moment then exceeds L^2 by sum_d A_d^2 (1/P_{d+1} - 1/P_d), and it traces the rays of
-// vertex d + 1 with probability P_{d+1}; so over the pilot's samples
-//   V(k) = V + (1/N) sum_i sum_d A_{i,d}^2 (1/P_{i,d+1} - 1/P_{i,d}),   T(k) = (1/N) sum_i (rays of i, each vertex
-//   weighted by the probability of reaching it),
-// where V is the per-sample variance without roulette. Variances are relative (each path's terms over its
-// pixel's mean^2 + epsilon), so the choice optimizes the relMSE efficiency that vkmc reports, rather than letting
-// dark pixels take the roulette's noise. The scales minimize V(k) T(k) by coordinate descent (each depth over a
-// log-spaced grid, "no roulette at this depth" included, the others as they stand; two sweeps) on at most 16384
-// of the pilot's paths. An earlier version judged each depth alone against no roulette anywhere and a 24-bounce
-// pilot; it chose mild roulette where aggressive paid (docs/cycles.md, "Would a milder survival close the gap?").
+// A pilot pass without roulette records, for every path i and depth d, the throughput beta_{i,d} at the
+// roulette decision, the part of the sample's estimate gathered after it, F_{i,d} = L_i - L_{i,<=d}, and the
+// rays traced after it, C_{i,d}. Rouletting with survival s_i adds F^2 (1/s - 1) to the second moment (the
+// unbiased estimator F/s with probability s, else 0) and saves (1 - s) C in cost, so over N pilot samples
+//   V_d(k) = V + (1/N) sum_i F_{i,d}^2 (1/s_i(k) - 1),   T_d(k) = T - (1/N) sum_i (1 - s_i(k)) C_{i,d},
+// where V is the per-sample variance and T the per-sample cost without roulette. Variances are relative
+// (each path's F^2 over its pixel's mean^2 + epsilon), so the choice optimizes the relMSE efficiency that
+// vkmc reports, rather than letting dark pixels take the roulette's noise. k_d maximizes
+// 1 / (V_d(k) T_d(k)) over a log-spaced grid; "no roulette at this depth" (k = infinity) is a candidate, so the
+// choice never makes the pilot's efficiency worse. Depths are optimized one at a time (a greedy
+// approximation: roulette at one depth changes what later depths see).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -39,7 +35,7 @@ struct PilotPath {
 
 struct RouletteTable {
   std::array<float, kRouletteTableDepths> scale{};           // k_d; +inf: no roulette at that depth
-  std::array<double, kRouletteTableDepths> predictedGain{};  // the table's predicted efficiency ratio once depths <= d are chosen
+  std::array<double, kRouletteTableDepths> predictedGain{};  // efficiency ratio predicted at each depth
 };
 
 // sampleVariance: per-sample relative variance of the pixel estimates (image mean); raysPerVertex: rays one

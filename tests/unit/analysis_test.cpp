@@ -137,14 +137,13 @@ TEST(EfficiencyRoulette, KillsFreelyWhereTheContinuationAddsNothing) {
   }
   RouletteTable t = optimizeRouletteScales(pilot, 0.1, 2.0, 1);
   EXPECT_TRUE(std::isinf(t.scale[0])) << "depths before the first decision are left alone";
-  EXPECT_NEAR(t.scale[1], 0.01f, 1e-6f) << "the first decision kills all it can (the grid's smallest scale)";
-  // No variance is added, so the gain is the cost ratio. Vertices 0 and 1 are always traced (2 rays each, after
-  // the camera ray); each later vertex is reached with the survivals' product: without roulette the cap's 0.999
-  // per decision, with the table 0.01 x 0.5 at the first and then the cap (the throughput divided by 0.005 is 100).
-  double without = 5.0, with = 5.0, reach = 0.005;
-  for (int j = 1; j <= 9; ++j) without += 2.0 * std::pow(0.999, j);
-  for (int j = 0; j < 9; ++j, reach *= 0.999) with += 2.0 * reach;
-  EXPECT_NEAR(t.predictedGain[kRouletteTableDepths - 1], without / with, 1e-6);
+  for (uint32_t d = 1; d < 9; ++d) {
+    EXPECT_NEAR(t.scale[d], 0.01f, 1e-6f) << "depth " << d;
+    // No variance is added, so the gain is the cost ratio: 1 + 2 x 11 rays against what remains after killing
+    // with survival 0.01 x 0.5 the 2 (10 - d) rays of the continuation.
+    double saved = (1.0 - 0.005) * 2.0 * (10 - d);
+    EXPECT_NEAR(t.predictedGain[d], 23.0 / (23.0 - saved), 1e-6) << "depth " << d;
+  }
 }
 
 TEST(EfficiencyRoulette, KeepsPathsWhoseContinuationCarriesTheEstimate) {
