@@ -395,6 +395,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.pilotSeconds = pilotSeconds;
   out.roulette = roulette;
   if (renderer.ears().enabled()) out.ears = renderer.ears().summary();
+  out.earsGuard = renderer.earsGuard();
   if (reference) out.error = compareImages(filmToImage(out.film), *reference);
   return out;
 }
@@ -472,6 +473,17 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                                 {"formula", "survival = min(scale[depth] * max(throughput), 0.999)"}};
   }
   if (r.ears) j["ears"] = earsJson(*r.ears);
+  if (r.ears && r.earsGuard.compared) {
+    auto pass = [](const PolicyPass& p) {
+      return nlohmann::json{{"relative_variance_per_sample", p.relativeVariance},
+                            {"seconds_per_sample", p.secondsPerSample},
+                            {"efficiency", std::isfinite(p.efficiency()) ? nlohmann::json(p.efficiency()) : nlohmann::json(nullptr)}};
+    };
+    j["ears"]["guard"] = {{"ears", pass(r.earsGuard.ears)},
+                          {"throughput", pass(r.earsGuard.throughput)},
+                          {"rest_rendered_by", r.earsGuard.fellBack ? "throughput" : "ears"},
+                          {"from_sample", r.earsGuard.fromSample}};
+  }
   if (o.timeBudget > 0.0) j["time_budget"] = o.timeBudget;
   // Checkpoints: a resumed render's counters and seconds include the runs before it (pass time only).
   j["resumed"] = r.resumed;
@@ -576,7 +588,7 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 var.y, var.z, (unsigned long long)r.film.totalNonfinite(),
                 (unsigned long long)r.film.totalHighRange());
   std::string text = buf;
-  if (r.ears) text += earsLine(*r.ears);
+  if (r.ears) text += earsLine(*r.ears) + earsGuardLine(r.earsGuard);
   if (r.error)
     text += "error       relMSE " + std::to_string(r.error->relmse) + ", MSE " + std::to_string(r.error->mse) +
             ", efficiency 1/(relMSE x s) " + std::to_string(r.error->relmse > 0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0) +

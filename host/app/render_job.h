@@ -10,6 +10,7 @@
 #include "dist/distributed_render.h"
 #include "estimators/estimator_config.h"
 #include "render/ears_cache.h"
+#include "render/ears_guard.h"
 #include "render/film.h"
 #include "render/path_renderer.h"
 #include "render/pixel_filter.h"
@@ -89,6 +90,7 @@ struct RenderOutcome {
   std::optional<ErrorMetrics> error;  // against the reference, when one was given
   double pilotSeconds = 0.0;          // efficiency roulette's pilot, included in stats.seconds
   std::optional<EarsSummary> ears;    // what rr ears learned
+  EarsGuardOutcome earsGuard;         // rr ears's guard: compared false where it did not run
   SceneFeatures features;             // what the pipelines were specialized for
   std::string spirvVariant;           // pre-specialized SPIR-V used for shading (KernelPlan::spirvVariant)
   std::optional<RouletteTable> roulette;

@@ -34,6 +34,9 @@ enum class Sampler : uint32_t {
   Sobol = gpu::kSamplerSobol,
   ZSobol = gpu::kSamplerZSobol
 };
+// rr ears's guard (path_renderer.cpp): after EARS's first pass, one pass of throughput roulette, then the measured
+// better of the two (Auto), EARS throughout (Never), or throughput roulette (Always: the switch, reproducibly).
+enum class EarsFallback : uint32_t { Auto, Never, Always };  // host only
 enum class MisHeuristic : uint32_t { None = gpu::kMisNone, Balance = gpu::kMisBalance, Power = gpu::kMisPower };
 
 // Path slots per camera path under EARS: room for its splits (a full pool leaves a vertex unsplit, unbiased).
@@ -52,6 +55,8 @@ struct EstimatorConfig {
   float earsMax{};  // rr ears: the largest factor (splitting up to it; 1: learned roulette alone)
   float earsLightMax{};  // rr ears: the largest light factor (0: light samples not learned; 1: their roulette alone)
   bool earsLearnsLight() const { return rr == RouletteMode::Ears && earsLightMax > 0.0f; }
+  EarsFallback earsFallback{};
+  bool earsMayFallBack() const { return rr == RouletteMode::Ears && earsFallback != EarsFallback::Never; }
   uint32_t lightSamples{};
   uint32_t splitDepth{};
   float bsdfSamples{};  // q: floor(q + u) continuations, each weighted 1/q

@@ -20,6 +20,12 @@
 namespace vkmc {
 
 namespace {
+// The samples a pixel of each of EARS's guard's two passes (a sample variance needs two; a short render's budget
+// should not go to the comparison).
+constexpr uint32_t kEarsGuardSamples = 4;
+// EARS's passes before the one the guard measures: the first after training decides from a cache that has learned
+// from a few samples a pixel, and measured 0.6x the efficiency of later passes on two_rooms (docs/ears.md).
+constexpr uint32_t kEarsGuardWarmPasses = 1;
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 constexpr uint32_t kFirstChunkBounces = 24;
@@ -238,7 +244,7 @@ void PathRenderer::recordCameraRays(VkCommandBuffer cmd, const gpu::PushConstant
 // One bounce: queue sizes into dispatch arguments, intersection (and its deep pass), shading, shadow rays.
 void PathRenderer::recordBounce(VkCommandBuffer cmd, const gpu::PushConstants& pc, bool prepared, bool earsTrains) {
   vk::GpuTimer* timer = timer_.get();
-  const RenderKernels::BounceKernels stage = kernels_.bounceKernels(earsTrains);
+  const RenderKernels::BounceKernels stage = kernels_.bounceKernels(earsTrains, throughputPass());
   if (!prepared) vk::dispatch(cmd, *layout_, *kernels_.prepareBounce, &pc, sizeof(pc), 1, timer);
   // A trace stage's time includes its deep pass (the walks it deferred).
   if (timer) timer->begin(cmd, pc.bounce == 0 ? "intersect_primary" : "intersect");
@@ -272,7 +278,7 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
                                   RenderStats& stats) {
   if (settings_.integrator == Integrator::Megakernel)
     return renderMegakernelPass(passConstants(firstPixel, pixelCount, sampleIndex, samples), stats);
-  if (!ears_->enabled()) return renderWavefront(firstPixel, pixelCount, sampleIndex, samples, false, stats);
+  if (!ears_->enabled() || throughputPass()) return renderWavefront(firstPixel, pixelCount, sampleIndex, samples, false, stats);
   // EARS: the pass's training samples first, as a wavefront of their own whose kernels train the cache; then the
   // cache learns from them, and the rest of the pass runs on kernels without the training code. Every sample's
   // decisions still come from other samples than its own: unbiased. A training pass trains on all its samples.
@@ -280,8 +286,13 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
   const uint32_t training = earsTraining_ ? samples : gpu::earsTrainingSamples(pixelCount, samples);
   uint32_t bounces = renderWavefront(firstPixel, pixelCount, sampleIndex, training, true, stats);
   trainEars(pixelCount * training, stats);
-  if (training < samples)
+  earsLeanSeconds_ = 0.0;
+  earsLeanSamples_ = samples - training;
+  if (training < samples) {
+    const auto leanStart = Clock::now();
     bounces = std::max(bounces, renderWavefront(firstPixel, pixelCount, sampleIndex + training, samples - training, false, stats));
+    earsLeanSeconds_ = since(leanStart);
+  }
   return bounces;
 }
 
@@ -376,11 +387,11 @@ const gpu::FilmPixel* PathRenderer::currentBatch(std::vector<gpu::FilmPixel>& co
 // EARS after a pass: V_img of the pass against the earlier passes' estimate, then the next pass's estimate. The
 // kernels read the smoothed estimate (EARS reads a denoised one): a pixel's own mean from a few samples is often
 // far below its value, which would make t, and V_img's ratios, huge there.
-void PathRenderer::updateEarsStatistics(const Film& film, double raysPerSample) {
+std::vector<PixelSums> PathRenderer::updateEarsStatistics(const Film& film, double raysPerSample) {
   std::vector<gpu::FilmPixel> copy;
   const gpu::FilmPixel* batch = currentBatch(copy);
   std::vector<PixelSums> after = batchPixelSums(batch, film.pixels());
-  const std::vector<PixelSums> pass = passPixelSums(after, std::move(earsBatchBefore_));
+  std::vector<PixelSums> pass = passPixelSums(after, std::move(earsBatchBefore_));
   // Without earlier samples (the first training pass) there is nothing to measure against: V_img 0, no factor,
   // throughput roulette for the next pass too.
   ears_->setImageStatistics(raysPerSample, earsHaveEstimate_ ? earsRelativeVariance(pass, earsEstimate_, gpu::kEarsEpsilon) : 0.0);
@@ -388,6 +399,54 @@ void PathRenderer::updateEarsStatistics(const Film& film, double raysPerSample) 
   earsEstimate_ = earsPixelEstimate(runningPixelEstimate(film, batch), settings_.width, settings_.height);
   earsHaveEstimate_ = true;
   setPixelEstimate(earsEstimate_.smoothed);
+  return pass;
+}
+
+// The guard's comparison (ears_guard.h): EARS's first pass, then one of throughput roulette as large, whose own
+// V_img stays out of EARS's factors; both passes' sample variances relative to the estimate after both.
+void PathRenderer::afterEarsPass(const Film& film, double raysPerSample, double seconds, uint32_t samples, uint32_t nextSample) {
+  switch (earsPhase_) {
+    case EarsPhase::Ears: {
+      updateEarsStatistics(film, raysPerSample);
+      if (earsGuardPending_ && ++earsWarmPasses_ >= kEarsGuardWarmPasses) earsPhase_ = EarsPhase::MeasureEars;
+      return;
+    }
+    case EarsPhase::Throughput:
+      return;
+    case EarsPhase::MeasureEars:
+      earsComparedPass_ = updateEarsStatistics(film, raysPerSample);
+      if (samples < kEarsGuardSamples) {  // the render's last samples: nothing to compare, EARS as chosen
+        earsPhase_ = EarsPhase::Ears;
+        earsGuardPending_ = false;
+        return;
+      }
+      // EARS's cost a sample once a pass's training is a small share of it: its samples that did not train, where
+      // there were any (a pass trains on its first ~kEarsTrainingPaths samples, most of a small early pass).
+      earsGuard_.ears.secondsPerSample = earsLeanSamples_ > 0 ? earsLeanSeconds_ / earsLeanSamples_ : seconds / samples;
+      earsPhase_ = EarsPhase::MeasureThroughput;
+      return;
+    case EarsPhase::MeasureThroughput: {
+      std::vector<gpu::FilmPixel> copy;
+      const gpu::FilmPixel* batch = currentBatch(copy);
+      std::vector<PixelSums> after = batchPixelSums(batch, film.pixels());
+      const std::vector<PixelSums> pass = passPixelSums(after, std::move(earsBatchBefore_));
+      earsBatchBefore_ = std::move(after);
+      earsEstimate_ = earsPixelEstimate(runningPixelEstimate(film, batch), settings_.width, settings_.height);
+      setPixelEstimate(earsEstimate_.smoothed);
+      earsPhase_ = EarsPhase::Ears;
+      earsGuardPending_ = false;
+      if (samples < kEarsGuardSamples) return;  // the render's last samples cut the pass short: no comparison
+      earsGuard_.throughput.secondsPerSample = seconds / samples;
+      earsGuard_.ears.relativeVariance = relativeSampleVariance(earsComparedPass_, earsEstimate_.smoothed, gpu::kEarsEpsilon);
+      earsGuard_.throughput.relativeVariance = relativeSampleVariance(pass, earsEstimate_.smoothed, gpu::kEarsEpsilon);
+      earsGuard_.compared = true;
+      earsGuard_.fellBack = earsFallsBack(settings_.estimator.earsFallback, earsGuard_.ears, earsGuard_.throughput);
+      earsGuard_.fromSample = nextSample;
+      earsPhase_ = earsGuard_.fellBack ? EarsPhase::Throughput : EarsPhase::Ears;
+      earsComparedPass_.clear();
+      return;
+    }
+  }
 }
 
 void PathRenderer::refreshPixelEstimate(const Film& film) {
@@ -530,21 +589,37 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
       setPixelEstimate(earsEstimate_.smoothed);
     }
     earsSamples = trainEarsPasses(state.film, stats);
+    earsGuard_ = EarsGuardOutcome{};
+    earsGuardPending_ = settings_.estimator.earsMayFallBack();
+    earsWarmPasses_ = 0;
+    earsPhase_ = earsGuardPending_ && kEarsGuardWarmPasses == 0 ? EarsPhase::MeasureEars : EarsPhase::Ears;
   }
+  uint32_t lastEarsPass = 0;  // the guard's throughput pass is as large as the EARS pass it is compared with
   for (uint32_t s = state.nextSample; s < settings_.spp;) {
     if (budget > 0.0 && s > firstSample && since(start) >= budget) break;
     if (stopRequested()) {
       state.interrupted = true;
       break;
     }
-    uint32_t samples = ears_->enabled() ? std::min(perPass, earsSamples) : shadowRoulette ? std::min(perPass, s + 1) : perPass;
+    const bool earsPass = ears_->enabled() && !throughputPass();
+    // The guard's passes take kEarsGuardSamples each: enough for a sample variance, little of a short render.
+    uint32_t samples = earsPhase_ == EarsPhase::MeasureEars           ? kEarsGuardSamples
+                       : earsPass                                     ? std::min(perPass, earsSamples)
+                       : earsPhase_ == EarsPhase::MeasureThroughput ? lastEarsPass
+                       : shadowRoulette && !ears_->enabled()        ? std::min(perPass, s + 1)
+                                                                    : perPass;
     samples = std::min(samples, settings_.spp - s);
     double passStart = since(start);
     const uint64_t raysBefore = stats.rays();
     renderSamples(s, samples, stats);
-    if (ears_->enabled()) updateEarsStatistics(state.film, double(stats.rays() - raysBefore) / (double(pixels) * samples));
+    if (ears_->enabled())
+      afterEarsPass(state.film, double(stats.rays() - raysBefore) / (double(pixels) * samples), since(start) - passStart,
+                    samples, s + samples);
     else if (shadowRoulette) refreshPixelEstimate(state.film);
-    earsSamples = std::min(2 * earsSamples, maxPerPass);
+    if (earsPass) {
+      lastEarsPass = samples;
+      earsSamples = std::min(2 * earsSamples, maxPerPass);
+    }
     s += samples;
     state.nextSample = s;
     inBatch += samples;

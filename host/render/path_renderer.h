@@ -17,6 +17,7 @@
 #include "render/render_kernels.h"
 #include "render/render_settings.h"
 #include "render/ears_cache.h"
+#include "render/ears_guard.h"
 #include "render/ears_image_statistics.h"
 #include "render/film.h"
 #include "render/gpu_scene.h"
@@ -59,6 +60,8 @@ class PathRenderer {
   uint64_t deviceBytes() const { return deviceBytes_; }
   // EARS's cache (placeholders unless the estimator's rr is ears).
   EarsCache& ears() { return *ears_; }
+  // EARS's guard: what its comparison measured and chose (compared false where it did not run).
+  const EarsGuardOutcome& earsGuard() const { return earsGuard_; }
 
  private:
   uint32_t renderPass(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples, RenderStats& stats);
@@ -83,13 +86,27 @@ class PathRenderer {
   void trainEars(uint32_t cameras, RenderStats& stats);
   uint32_t trainEarsPasses(const Film& film, RenderStats& stats);
   bool earsTraining_ = false;  // a training pass: its own seed, its samples dropped
-  void updateEarsStatistics(const Film& film, double raysPerSample);
+  // Returns the pass's sums (after - before).
+  std::vector<PixelSums> updateEarsStatistics(const Film& film, double raysPerSample);
   // What V_img measures a pass against: the batch's sums before it (zeroed with the batch), and the pixel
   // estimate the pass read (none before the render's first samples).
   void resetEarsBatchSums() { earsBatchBefore_.assign(earsBatchBefore_.size(), PixelSums{}); }
   std::vector<PixelSums> earsBatchBefore_;
   EarsPixelEstimate earsEstimate_;
   bool earsHaveEstimate_ = false;
+  // EARS's guard (ears_guard.h): which policy the next pass runs. MeasureEars and MeasureThroughput are the
+  // comparison's two passes; Throughput renders the rest with the guard's shade kernel.
+  enum class EarsPhase { Ears, MeasureEars, MeasureThroughput, Throughput };
+  EarsPhase earsPhase_ = EarsPhase::Ears;
+  bool throughputPass() const { return earsPhase_ == EarsPhase::MeasureThroughput || earsPhase_ == EarsPhase::Throughput; }
+  // After each pass under EARS: the EARS statistics, or the guard's measurement and choice.
+  void afterEarsPass(const Film& film, double raysPerSample, double seconds, uint32_t samples, uint32_t nextSample);
+  EarsGuardOutcome earsGuard_;
+  bool earsGuardPending_ = false;  // the comparison is still to come
+  uint32_t earsWarmPasses_ = 0;    // EARS passes before it
+  double earsLeanSeconds_ = 0.0;  // the last EARS pass's wavefront without training: its seconds and samples a pixel
+  uint32_t earsLeanSamples_ = 0;
+  std::vector<PixelSums> earsComparedPass_;  // the measured EARS pass's sums, until the throughput pass's are known
   // Shadow-ray roulette's pixel estimate from every sample so far (the unfolded batch's too), after each pass.
   void refreshPixelEstimate(const Film& film);
   const gpu::FilmPixel* currentBatch(std::vector<gpu::FilmPixel>& copy);

@@ -104,6 +104,7 @@ KernelPlan planKernels(const RenderSettings& s) {
   if (est.rr == RouletteMode::Ears) {
     for (const char* k : {"prepare_copies", "ears_copies", "ears_gather", "ears_train", "ears_fold"}) plan.kernels.push_back(k);
     plan.kernels.push_back("shade and ears_copies again without training code (a pass's later samples)");
+    if (est.earsMayFallBack()) plan.kernels.push_back("shade with throughput roulette (ears_fallback's comparison pass)");
   }
   plan.specs = {{SPEC_WORKGROUP_SIZE, s.workgroupSize},
                 {SPEC_HAS_LIGHTS, s.features.lights() ? 1u : 0u},
@@ -143,6 +144,7 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
     const char* name;
     NamedSpirv source;
     bool lean = false;  // built with SPEC_EARS_TRAINS 0
+    bool throughput = false;  // built with throughput roulette (EARS's guard)
     std::span<const uint32_t> spirv = {};  // what the pipeline is created from: the source or a variant of it
     bool helper = false;
   };
@@ -174,10 +176,16 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
     // The same names as the training kernels: the report's stage times add both.
     planned.push_back({&k.shadeLean, "shade", VKMC_SPIRV(shade_atomic), true});
     planned.push_back({&k.earsCopiesLean, "ears_copies", VKMC_SPIRV(ears_copies), true});
+    if (est.earsMayFallBack()) planned.push_back({&k.shadeThroughput, "shade", VKMC_SPIRV(shade), false, true});
   }
   std::vector<vk::SpecConstant> leanSpecs = specs;
   leanSpecs.push_back({SPEC_EARS_TRAINS, 0u});
-  auto specsOf = [&](const Planned& p) -> const std::vector<vk::SpecConstant>& { return p.lean ? leanSpecs : specs; };
+  std::vector<vk::SpecConstant> throughputSpecs = specs;
+  for (vk::SpecConstant& c : throughputSpecs)
+    if (c.id == SPEC_RR_MODE) c.value = uint32_t(RouletteMode::Throughput);
+  auto specsOf = [&](const Planned& p) -> const std::vector<vk::SpecConstant>& {
+    return p.throughput ? throughputSpecs : p.lean ? leanSpecs : specs;
+  };
   for (Planned& p : planned)
     p.spirv = settings.prespecializedSpirv ? chooseSpirv(p.source.build, p.source.words, specsOf(p)).spirv : p.source.words;
   std::vector<Planned*> bySize;
@@ -238,7 +246,8 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
   return k;
 }
 
-RenderKernels::BounceKernels RenderKernels::bounceKernels(bool earsTrains) const {
+RenderKernels::BounceKernels RenderKernels::bounceKernels(bool earsTrains, bool throughput) const {
+  if (throughput && shadeThroughput) return {shadeThroughput.get(), nullptr, shadow.get(), shadowDeep.get()};
   if (!earsTrains && shadeLean) return {shadeLean.get(), earsCopiesLean.get(), shadow.get(), shadowDeep.get()};
   return {shade.get(), earsCopies.get(), shadow.get(), shadowDeep.get()};
 }

@@ -20,14 +20,17 @@ struct RenderKernels {
   // EARS: shade and the copy stage once more without the training code (SPEC_EARS_TRAINS 0), for a pass's
   // samples after its training ones (common.glsl earsTrains).
   std::unique_ptr<vk::Kernel> shadeLean, earsCopiesLean;
+  // EARS's guard (ears_guard.h): shade with throughput roulette, for the comparison pass and a fallback.
+  std::unique_ptr<vk::Kernel> shadeThroughput;
 
   // The kernels of a bounce's shading and shadow stages: those that train EARS's cache, or (where built) those
-  // that do not. earsCopies is null unless the rr is ears; shadow and shadowDeep unless there is a shadow stage;
-  // shadowDeep (and intersectDeep) also where no walk can outgrow the register stack (SceneFeatures::deepWalks).
+  // that do not, or (throughput, where built) those of EARS's guard. earsCopies is null unless the rr is ears (and
+  // for the guard's kernels); shadow and shadowDeep unless there is a shadow stage; shadowDeep (and intersectDeep)
+  // also where no walk can outgrow the register stack (SceneFeatures::deepWalks).
   struct BounceKernels {
     vk::Kernel *shade, *earsCopies, *shadow, *shadowDeep;
   };
-  BounceKernels bounceKernels(bool earsTrains) const;
+  BounceKernels bounceKernels(bool earsTrains, bool throughput = false) const;
 };
 
 // The kernels a render dispatches, with the specialization constants each is built with.

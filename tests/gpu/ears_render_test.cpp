@@ -12,9 +12,11 @@ using namespace vkmc;
 using namespace vkmc::test;
 
 namespace {
+// EARS throughout: what these tests check is the cache's, not the guard's choice (which measures time).
 EstimatorConfig ears() {
   EstimatorConfig e;
   e.rr = RouletteMode::Ears;
+  e.earsFallback = EarsFallback::Never;
   return e;
 }
 }  // namespace
@@ -121,6 +123,51 @@ TEST(Ears, SameSeedSameImage) {
   ASSERT_EQ(a.film.sum.size(), b.film.sum.size());
   for (size_t i = 0; i < a.film.sum.size(); ++i) ASSERT_EQ(a.film.sum[i], b.film.sum[i]) << "value " << i;
   EXPECT_EQ(a.stats.rays(), b.stats.rays());
+}
+
+// The guard (ears_guard.h): after a warm-up pass of EARS, one measured pass each of EARS and of throughput roulette
+// (kEarsGuardSamples a pixel), then the rest by the choice. `always` takes the switch whatever was measured, so
+// it is reproducible; `never` never compares.
+TEST(Ears, GuardComparesOnePassEachThenRendersTheRestWithItsChoice) {
+  EstimatorConfig always = ears();
+  always.earsFallback = EarsFallback::Always;
+  RenderOutcome a = renderWith("furnace.gltf", always, 24, 24, 64);
+  ASSERT_TRUE(a.ears);
+  const EarsGuardOutcome& g = a.earsGuard;
+  ASSERT_TRUE(g.compared);
+  EXPECT_TRUE(g.fellBack);
+  // Training passes (1, 2, 4 spp, dropped), then EARS's warm-up pass of 8 and the two measured passes of 4.
+  EXPECT_EQ(g.fromSample, 16u);
+  EXPECT_EQ(a.film.totalSamples(), 24u * 24u * 64u);
+  for (const PolicyPass& p : {g.ears, g.throughput}) {
+    EXPECT_GT(p.relativeVariance, 0.0);
+    EXPECT_GT(p.secondsPerSample, 0.0);
+    EXPECT_GT(p.efficiency(), 0.0);
+    EXPECT_TRUE(std::isfinite(p.efficiency()));
+  }
+  // Throughput roulette's passes render the rest: their first vertices (every camera ray hits the sphere) are not
+  // counted in EARS's histogram, which holds the training passes' and EARS's 8 + 4 samples a pixel.
+  uint64_t first = 0;
+  for (uint64_t n : a.ears->factors[0]) first += n;
+  EXPECT_EQ(first, 24u * 24u * (a.ears->trainingSamples + 12u));
+  // Unbiased across the switch (stat/estimator_unbiased_test has the Cornell box's and the quadrants'): L = 2.
+  EXPECT_TRUE(regionMatches(whole(a.film), glm::dvec3(2.0), 5.0));
+  // Auto compares too; never does not.
+  EstimatorConfig automatic = ears();
+  automatic.earsFallback = EarsFallback::Auto;
+  EXPECT_TRUE(renderWith("cornell_box.gltf", automatic, 24, 24, 32).earsGuard.compared);
+  EXPECT_FALSE(renderWith("cornell_box.gltf", ears(), 24, 24, 32).earsGuard.compared);
+  // Too few samples for the comparison: EARS renders them all.
+  EXPECT_FALSE(renderWith("cornell_box.gltf", automatic, 24, 24, 10).earsGuard.compared);
+}
+
+TEST(Ears, GuardWithAlwaysIsReproducible) {
+  EstimatorConfig always = ears();
+  always.earsFallback = EarsFallback::Always;
+  RenderOutcome a = renderWith("cornell_box.gltf", always, 16, 16, 24, 3);
+  RenderOutcome b = renderWith("cornell_box.gltf", always, 16, 16, 24, 3);
+  ASSERT_EQ(a.film.sum.size(), b.film.sum.size());
+  for (size_t i = 0; i < a.film.sum.size(); ++i) ASSERT_EQ(a.film.sum[i], b.film.sum[i]) << "value " << i;
 }
 
 TEST(Ears, MemoryIsBoundedOnAMillionTriangles) {

@@ -39,14 +39,23 @@ std::vector<Variant> variants() {
   });
   add("rr throughput from 1", [](EstimatorConfig& c) { c.rrDepth = 1; });
   add("rr efficiency", [](EstimatorConfig& c) { c.rr = RouletteMode::Efficiency; });
-  add("rr ears", [](EstimatorConfig& c) { c.rr = RouletteMode::Ears; });
+  add("rr ears", [](EstimatorConfig& c) {
+    c.rr = RouletteMode::Ears;
+    c.earsFallback = EarsFallback::Never;
+  });
   add("rr ears, learned roulette alone", [](EstimatorConfig& c) {
     c.rr = RouletteMode::Ears;
     c.earsMax = 1.0f;
+    c.earsFallback = EarsFallback::Never;
   });
   add("rr ears, learned light samples", [](EstimatorConfig& c) {
     c.rr = RouletteMode::Ears;
     c.earsLightMax = gpu::kEarsLightFactorMax;
+    c.earsFallback = EarsFallback::Never;
+  });
+  add("rr ears, fallen back to throughput roulette", [](EstimatorConfig& c) {
+    c.rr = RouletteMode::Ears;
+    c.earsFallback = EarsFallback::Always;
   });
   add("light samples 4", [](EstimatorConfig& c) { c.lightSamples = 4; });
   add("light samples 3, split depth 3", [](EstimatorConfig& c) {
@@ -159,6 +168,7 @@ INSTANTIATE_TEST_SUITE_P(Unbiased, GlossyTechnique, ::testing::ValuesIn(glossyTe
 TEST(EstimatorUnbiased, StiffFurnaceWithEars) {
   EstimatorConfig e;
   e.rr = RouletteMode::Ears;
+  e.earsFallback = EarsFallback::Never;
   // 64x64 at 12 spp: of its first image pass (8 spp) half are training samples, the other half run on the kernels
   // without the training code (ears.h earsTrainingSamples), deciding with what the first half just taught.
   RenderOutcome r = renderWith("furnace_stiff.gltf", e, 64, 64, 12);

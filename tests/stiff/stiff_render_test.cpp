@@ -85,6 +85,7 @@ TEST_P(TinyIntenseLightWithEars, MeanAndPixelsAreTheAnalyticRadiance) {
   EstimatorConfig e;
   e.sampler = Sampler::Independent;
   e.rr = RouletteMode::Ears;
+  e.earsFallback = EarsFallback::Never;
   e.earsLightMax = GetParam();
   RenderOutcome r = renderWith("stiff/tiny_light.gltf", e, n, n, 256);
   ASSERT_EQ(r.film.totalNonfinite(), 0u);

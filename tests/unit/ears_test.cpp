@@ -1,5 +1,5 @@
-// EARS's pure functions (shaders/shared/ears.h) and the image statistic its factors are scaled by
-// (host/render/ears_image_statistics.h).
+// EARS's pure functions (shaders/shared/ears.h), the image statistic its factors are scaled by
+// (host/render/ears_image_statistics.h) and its guard's measure and choice (host/render/ears_guard.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +8,7 @@
 #include "../shaders/shared/roulette.h"
 #include "analysis/error_metrics.h"
 #include "error.h"
+#include "render/ears_guard.h"
 #include "render/ears_image_statistics.h"
 
 using namespace vkmc;
@@ -209,4 +210,36 @@ TEST(EarsImageStatistics, SmoothedEstimateIsTheBoxMeanClippedAtTheEdges) {
   EXPECT_NEAR(e.smoothed[0].x, 0.0f, 0.0f);
   mean.assign(35, glm::vec4(1.0f));  // a constant stays constant, edges included
   for (const glm::vec4& v : earsPixelEstimate(mean, 7, 5).smoothed) EXPECT_NEAR(v.x, 1.0f, 1e-6f);
+}
+
+TEST(EarsGuard, RelativeSampleVarianceIsEachPixelsUnbiasedVarianceOverTheScale) {
+  // Pixel 0: samples 1 and 3 in every channel (variance 2), scale 2 (relative 2 / 4); pixel 1: samples 0, 0, 6 in
+  // red only (variance 12, channels averaged: 4), scale 1; pixel 2 has one sample and is left out.
+  std::vector<PixelSums> pass(3);
+  pass[0].n = 2, pass[0].sum = glm::dvec3(4.0), pass[0].sumSq = glm::dvec3(10.0);
+  pass[1].n = 3, pass[1].sum = glm::dvec3(6.0, 0.0, 0.0), pass[1].sumSq = glm::dvec3(36.0, 0.0, 0.0);
+  pass[2].n = 1, pass[2].sum = glm::dvec3(100.0), pass[2].sumSq = glm::dvec3(1e4);
+  const std::vector<glm::vec4> scale = {glm::vec4(2.0f), glm::vec4(1.0f), glm::vec4(1.0f)};
+  EXPECT_NEAR(relativeSampleVariance(pass, scale, 0.0), (0.5 + 4.0) / 2.0, 1e-12);
+  // Epsilon joins the scale's square, as in relMSE.
+  EXPECT_NEAR(relativeSampleVariance(pass, scale, 1.0), (2.0 / 5.0 + 4.0 / 2.0) / 2.0, 1e-12);
+  EXPECT_THROW(relativeSampleVariance(pass, {glm::vec4(1.0f)}, 0.0), Error);
+  EXPECT_EQ(relativeSampleVariance(std::vector<PixelSums>{}, std::vector<glm::vec4>{}, 0.0), 0.0);
+}
+
+TEST(EarsGuard, TheMoreEfficientPolicyRendersTheRest) {
+  const PolicyPass ears{2.0, 0.5}, throughput{4.0, 0.2};  // 1/(V T): 1 against 1.25
+  EXPECT_DOUBLE_EQ(ears.efficiency(), 1.0);
+  EXPECT_TRUE(earsFallsBack(EarsFallback::Auto, ears, throughput));
+  EXPECT_FALSE(earsFallsBack(EarsFallback::Auto, PolicyPass{1.0, 0.5}, throughput));  // 2 against 1.25
+  // A tie goes to the cheaper kernels; never and always decide alone.
+  EXPECT_TRUE(earsFallsBack(EarsFallback::Auto, PolicyPass{4.0, 0.2}, throughput));
+  EXPECT_FALSE(earsFallsBack(EarsFallback::Never, ears, throughput));
+  EXPECT_TRUE(earsFallsBack(EarsFallback::Always, PolicyPass{1.0, 0.01}, throughput));
+  // A noiseless pass is infinitely efficient; a non-finite one (poisoned sums) never wins.
+  EXPECT_TRUE(std::isinf(PolicyPass{0.0, 1.0}.efficiency()));
+  EXPECT_FALSE(earsFallsBack(EarsFallback::Auto, PolicyPass{0.0, 1.0}, throughput));
+  EXPECT_EQ((PolicyPass{std::nan(""), 1.0}.efficiency()), 0.0);
+  EXPECT_TRUE(earsFallsBack(EarsFallback::Auto, PolicyPass{std::nan(""), 1.0}, throughput));
+  EXPECT_FALSE(earsFallsBack(EarsFallback::Auto, ears, PolicyPass{INFINITY, 1.0}));
 }

@@ -1,0 +1,52 @@
+// rr ears's guard (ears_guard.h).
+#include "render/ears_guard.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "error.h"
+
+namespace vkmc {
+
+double PolicyPass::efficiency() const {
+  const double cost = relativeVariance * secondsPerSample;
+  if (!std::isfinite(cost) || cost < 0.0) return 0.0;
+  return cost > 0.0 ? 1.0 / cost : std::numeric_limits<double>::infinity();
+}
+
+double relativeSampleVariance(const std::vector<PixelSums>& pass, const std::vector<glm::vec4>& scale, double epsilon) {
+  if (scale.size() != pass.size()) throw Error("internal error: the pass's sums and the scale differ in size");
+  double sum = 0.0;
+  size_t pixels = 0;
+  for (size_t p = 0; p < pass.size(); ++p) {
+    const PixelSums& s = pass[p];
+    if (!(s.n >= 2.0)) continue;
+    double v = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      const double variance = std::max(0.0, s.sumSq[c] - s.sum[c] * s.sum[c] / s.n) / (s.n - 1.0);
+      v += variance / (double(scale[p][c]) * double(scale[p][c]) + epsilon);
+    }
+    sum += v / 3.0;
+    ++pixels;
+  }
+  return pixels > 0 ? sum / double(pixels) : 0.0;
+}
+
+bool earsFallsBack(EarsFallback mode, const PolicyPass& ears, const PolicyPass& throughput) {
+  if (mode == EarsFallback::Never) return false;
+  if (mode == EarsFallback::Always) return true;
+  return !(ears.efficiency() > throughput.efficiency());
+}
+
+std::string earsGuardLine(const EarsGuardOutcome& g) {
+  if (!g.compared) return "";
+  char buf[320];
+  std::snprintf(buf, sizeof(buf),
+                "ears guard  one pass each, efficiency 1/(relative variance x seconds) a sample: ears %.4g, throughput "
+                "roulette %.4g; %s from sample %u\n",
+                g.ears.efficiency(), g.throughput.efficiency(), g.fellBack ? "throughput roulette" : "ears", g.fromSample);
+  return buf;
+}
+
+}  // namespace vkmc
