@@ -1,6 +1,7 @@
 // rr ears's guard (ears_guard.h).
 #include "render/ears_guard.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -30,7 +31,27 @@ double relativeSampleVariance(const std::vector<PixelSums>& pass, const std::vec
     sum += v / 3.0;
     ++pixels;
   }
-  return pixels > 0 ? sum / double(pixels) : 0.0;
+  return pixels > 0 ? sum / double(pixels) : std::numeric_limits<double>::quiet_NaN();
+}
+
+void PolicyTally::addPass(const std::vector<PixelSums>& pass, uint32_t passSamples, double passSeconds) {
+  if (sums.empty()) sums.resize(pass.size());
+  if (sums.size() != pass.size()) throw Error("internal error: the guard's passes differ in size");
+  for (size_t p = 0; p < pass.size(); ++p) {
+    sums[p].n += pass[p].n;
+    sums[p].sum += pass[p].sum;
+    sums[p].sumSq += pass[p].sumSq;
+  }
+  samples += passSamples;
+  seconds += passSeconds;
+}
+
+double earsSecondsPerSample(const PolicyTally& t, double pixels, double passSamples, double trainingPixelSamples) {
+  if (!(t.trainPixelSamples > 0.0)) return t.samples > 0 ? t.seconds / t.samples : 0.0;
+  const double train = t.trainSeconds / t.trainPixelSamples;
+  const double lean = t.leanPixelSamples > 0.0 ? t.leanSeconds / t.leanPixelSamples : train;
+  const double all = pixels * passSamples, training = std::min(trainingPixelSamples, all);
+  return (training * train + (all - training) * lean) / all * pixels;
 }
 
 bool earsFallsBack(EarsFallback mode, const PolicyPass& ears, const PolicyPass& throughput) {

@@ -1,6 +1,8 @@
-// rr ears's guard: EARS's first pass and one pass of throughput roulette as large are measured, each by its
+// rr ears's guard: after the training passes and a warm-up pass of EARS, 4 samples a pixel of EARS and as many
+// of throughput roulette (kEarsGuardSamples, path_renderer.cpp) are measured (in one pass each, or more where passes are smaller), each by its
 // efficiency per sample, 1 / (relative variance of a sample x seconds of a sample); the better renders the rest
-// (ears_fallback auto). Both passes are in the image, and the choice depends on earlier passes only: unbiased.
+// (ears_fallback auto). The measured passes are in the image, and the choice depends on earlier passes only:
+// unbiased.
 #pragma once
 #include <glm/glm.hpp>
 
@@ -13,7 +15,8 @@
 
 namespace vkmc {
 
-// One policy's pass: the relative variance of one sample (relativeSampleVariance) and the seconds one sample took.
+// One policy's measurement: the relative variance of one sample (relativeSampleVariance) and the seconds one sample
+// (a whole image's worth) takes.
 struct PolicyPass {
   double relativeVariance = 0.0;
   double secondsPerSample = 0.0;
@@ -21,10 +24,28 @@ struct PolicyPass {
 };
 
 // The mean over pixels (with at least two samples in the pass) of their samples' unbiased variance relative to
-// scale^2 + epsilon, averaged over the channels. Nothing is left out: a firefly counts as it does in the image's
-// error. Under sobol a pixel's samples are stratified, so this is a little above the variance of one sample, for
-// either policy alike. Throws on a size mismatch.
+// scale^2 + epsilon, averaged over the channels; NaN where no pixel has two. Nothing is left out: a firefly
+// counts as it does in the image's error. Under sobol a pixel's samples are stratified, so this is a little above
+// the variance of one sample, for either policy alike. Throws on a size mismatch.
 double relativeSampleVariance(const std::vector<PixelSums>& pass, const std::vector<glm::vec4>& scale, double epsilon);
+
+// What one policy's measured passes added up to.
+struct PolicyTally {
+  std::vector<PixelSums> sums;  // per pixel
+  uint32_t samples = 0;         // a pixel
+  double seconds = 0.0;         // of the whole passes
+  // EARS's passes in two parts: the training (its wavefront and the cache's update) and the rest, in seconds and
+  // pixel-samples.
+  double trainSeconds = 0.0, leanSeconds = 0.0;
+  double trainPixelSamples = 0.0, leanPixelSamples = 0.0;
+  void addPass(const std::vector<PixelSums>& pass, uint32_t passSamples, double passSeconds);
+};
+
+// EARS's seconds a sample in a later pass of the whole image (`pixels`) in which trainingPixelSamples of
+// pixels x passSamples train: the measured seconds of a training and of a lean pixel-sample, mixed in that pass's
+// proportion (a training pass's share shrinks as passes grow). Where nothing lean was measured, a lean sample is
+// costed as a training one; where nothing was split, the whole passes' seconds a sample.
+double earsSecondsPerSample(const PolicyTally& t, double pixels, double passSamples, double trainingPixelSamples);
 
 // The guard's outcome, for the report.
 struct EarsGuardOutcome {

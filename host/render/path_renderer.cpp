@@ -284,14 +284,16 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
   // decisions still come from other samples than its own: unbiased. A training pass trains on all its samples.
   ears_->beginPass();
   const uint32_t training = earsTraining_ ? samples : gpu::earsTrainingSamples(pixelCount, samples);
+  const auto trainStart = Clock::now();
   uint32_t bounces = renderWavefront(firstPixel, pixelCount, sampleIndex, training, true, stats);
   trainEars(pixelCount * training, stats);
-  earsLeanSeconds_ = 0.0;
-  earsLeanSamples_ = samples - training;
+  earsPassTrainSeconds_ += since(trainStart);
+  earsPassTrainPixelSamples_ += double(pixelCount) * training;
   if (training < samples) {
     const auto leanStart = Clock::now();
     bounces = std::max(bounces, renderWavefront(firstPixel, pixelCount, sampleIndex + training, samples - training, false, stats));
-    earsLeanSeconds_ = since(leanStart);
+    earsPassLeanSeconds_ += since(leanStart);
+    earsPassLeanPixelSamples_ += double(pixelCount) * (samples - training);
   }
   return bounces;
 }
@@ -402,48 +404,61 @@ std::vector<PixelSums> PathRenderer::updateEarsStatistics(const Film& film, doub
   return pass;
 }
 
-// The guard's comparison (ears_guard.h): EARS's first pass, then one of throughput roulette as large, whose own
-// V_img stays out of EARS's factors; both passes' sample variances relative to the estimate after both.
+double PathRenderer::earsTrainingPixelSamples(uint32_t samples) const {
+  const uint32_t pixels = settings_.width * settings_.height;
+  double n = 0.0;
+  for (uint32_t first = 0; first < pixels; first += capacity_) {
+    const uint32_t tile = std::min(capacity_, pixels - first);
+    n += double(tile) * gpu::earsTrainingSamples(tile, samples);
+  }
+  return n;
+}
+
+// After a pass under EARS: its statistics, or the guard's measurement (ears_guard.h). The throughput passes' own
+// V_img stays out of EARS's factors; both policies' sample variances are taken relative to the estimate after
+// both, and EARS's seconds a sample are those of a pass as large as its later ones.
 void PathRenderer::afterEarsPass(const Film& film, double raysPerSample, double seconds, uint32_t samples, uint32_t nextSample) {
   switch (earsPhase_) {
-    case EarsPhase::Ears: {
+    case EarsPhase::Ears:
       updateEarsStatistics(film, raysPerSample);
       if (earsGuardPending_ && ++earsWarmPasses_ >= kEarsGuardWarmPasses) earsPhase_ = EarsPhase::MeasureEars;
       return;
-    }
     case EarsPhase::Throughput:
+      // Shadow-ray roulette's estimate from every sample so far, as without EARS.
+      if (settings_.estimator.shadowRrThreshold > 0.0f && ctx_.unifiedMemory()) refreshPixelEstimate(film);
       return;
     case EarsPhase::MeasureEars:
-      earsComparedPass_ = updateEarsStatistics(film, raysPerSample);
-      if (samples < kEarsGuardSamples) {  // the render's last samples: nothing to compare, EARS as chosen
-        earsPhase_ = EarsPhase::Ears;
-        earsGuardPending_ = false;
-        return;
-      }
-      // EARS's cost a sample once a pass's training is a small share of it: its samples that did not train, where
-      // there were any (a pass trains on its first ~kEarsTrainingPaths samples, most of a small early pass).
-      earsGuard_.ears.secondsPerSample = earsLeanSamples_ > 0 ? earsLeanSeconds_ / earsLeanSamples_ : seconds / samples;
-      earsPhase_ = EarsPhase::MeasureThroughput;
+      earsTally_.addPass(updateEarsStatistics(film, raysPerSample), samples, seconds);
+      earsTally_.trainSeconds += earsPassTrainSeconds_;
+      earsTally_.leanSeconds += earsPassLeanSeconds_;
+      earsTally_.trainPixelSamples += earsPassTrainPixelSamples_;
+      earsTally_.leanPixelSamples += earsPassLeanPixelSamples_;
+      if (earsTally_.samples >= kEarsGuardSamples) earsPhase_ = EarsPhase::MeasureThroughput;
       return;
     case EarsPhase::MeasureThroughput: {
       std::vector<gpu::FilmPixel> copy;
       const gpu::FilmPixel* batch = currentBatch(copy);
       std::vector<PixelSums> after = batchPixelSums(batch, film.pixels());
-      const std::vector<PixelSums> pass = passPixelSums(after, std::move(earsBatchBefore_));
+      throughputTally_.addPass(passPixelSums(after, std::move(earsBatchBefore_)), samples, seconds);
       earsBatchBefore_ = std::move(after);
       earsEstimate_ = earsPixelEstimate(runningPixelEstimate(film, batch), settings_.width, settings_.height);
       setPixelEstimate(earsEstimate_.smoothed);
+      if (throughputTally_.samples < earsTally_.samples) return;
       earsPhase_ = EarsPhase::Ears;
       earsGuardPending_ = false;
-      if (samples < kEarsGuardSamples) return;  // the render's last samples cut the pass short: no comparison
-      earsGuard_.throughput.secondsPerSample = seconds / samples;
-      earsGuard_.ears.relativeVariance = relativeSampleVariance(earsComparedPass_, earsEstimate_.smoothed, gpu::kEarsEpsilon);
-      earsGuard_.throughput.relativeVariance = relativeSampleVariance(pass, earsEstimate_.smoothed, gpu::kEarsEpsilon);
-      earsGuard_.compared = true;
-      earsGuard_.fellBack = earsFallsBack(settings_.estimator.earsFallback, earsGuard_.ears, earsGuard_.throughput);
-      earsGuard_.fromSample = nextSample;
-      earsPhase_ = earsGuard_.fellBack ? EarsPhase::Throughput : EarsPhase::Ears;
-      earsComparedPass_.clear();
+      const double vEars = relativeSampleVariance(earsTally_.sums, earsEstimate_.smoothed, gpu::kEarsEpsilon);
+      const double vThroughput = relativeSampleVariance(throughputTally_.sums, earsEstimate_.smoothed, gpu::kEarsEpsilon);
+      if (std::isfinite(vEars) && std::isfinite(vThroughput)) {  // else nothing to compare: EARS as chosen
+        const uint32_t later = samplesPerPass();
+        earsGuard_.ears = {vEars, earsSecondsPerSample(earsTally_, double(settings_.width) * settings_.height, later,
+                                                       earsTrainingPixelSamples(later))};
+        earsGuard_.throughput = {vThroughput, throughputTally_.seconds / throughputTally_.samples};
+        earsGuard_.compared = true;
+        earsGuard_.fellBack = earsFallsBack(settings_.estimator.earsFallback, earsGuard_.ears, earsGuard_.throughput);
+        earsGuard_.fromSample = nextSample;
+        if (earsGuard_.fellBack) earsPhase_ = EarsPhase::Throughput;
+      }
+      earsTally_ = throughputTally_ = PolicyTally{};
       return;
     }
   }
@@ -463,8 +478,9 @@ void PathRenderer::foldFilm(Film& film) {
     film_.download(batch.data(), pixels * sizeof(gpu::FilmPixel));
     film.addBatch(batch.data());
   }
-  // Under EARS the estimate of the passes so far, as updateEarsStatistics computed it from the film this folds.
-  if (ears_->enabled() && earsHaveEstimate_) setPixelEstimate(earsEstimate_.smoothed);
+  // Under EARS the estimate of the passes so far, as updateEarsStatistics computed it from the film this folds
+  // (once the guard has fallen back, the film's own, as without EARS).
+  if (ears_->enabled() && earsHaveEstimate_ && earsPhase_ != EarsPhase::Throughput) setPixelEstimate(earsEstimate_.smoothed);
   else uploadPixelEstimate(film);
   film_.zero();
   resetEarsBatchSums();
@@ -491,6 +507,7 @@ uint32_t PathRenderer::samplesPerBatch() const { return kSamplesPerBatch / sampl
 
 void PathRenderer::renderSamples(uint32_t s, uint32_t samples, RenderStats& stats) {
   const uint32_t pixels = settings_.width * settings_.height;
+  earsPassTrainSeconds_ = earsPassLeanSeconds_ = earsPassTrainPixelSamples_ = earsPassLeanPixelSamples_ = 0.0;
   for (uint32_t first = 0; first < pixels; first += capacity_) {
     uint32_t bounces = renderPass(first, std::min(capacity_, pixels - first), s, samples, stats);
     stats.maxBounces = std::max(stats.maxBounces, bounces);
@@ -588,13 +605,15 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
       earsEstimate_ = earsPixelEstimate(runningPixelEstimate(state.film), settings_.width, settings_.height);
       setPixelEstimate(earsEstimate_.smoothed);
     }
-    earsSamples = trainEarsPasses(state.film, stats);
+    // The guard starts over (before the training passes, which must run EARS's kernels).
     earsGuard_ = EarsGuardOutcome{};
+    earsTally_ = throughputTally_ = PolicyTally{};
     earsGuardPending_ = settings_.estimator.earsMayFallBack();
     earsWarmPasses_ = 0;
-    earsPhase_ = earsGuardPending_ && kEarsGuardWarmPasses == 0 ? EarsPhase::MeasureEars : EarsPhase::Ears;
+    earsPhase_ = EarsPhase::Ears;
+    earsSamples = trainEarsPasses(state.film, stats);
+    if (earsGuardPending_ && kEarsGuardWarmPasses == 0) earsPhase_ = EarsPhase::MeasureEars;
   }
-  uint32_t lastEarsPass = 0;  // the guard's throughput pass is as large as the EARS pass it is compared with
   for (uint32_t s = state.nextSample; s < settings_.spp;) {
     if (budget > 0.0 && s > firstSample && since(start) >= budget) break;
     if (stopRequested()) {
@@ -602,12 +621,13 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
       break;
     }
     const bool earsPass = ears_->enabled() && !throughputPass();
-    // The guard's passes take kEarsGuardSamples each: enough for a sample variance, little of a short render.
-    uint32_t samples = earsPhase_ == EarsPhase::MeasureEars           ? kEarsGuardSamples
-                       : earsPass                                     ? std::min(perPass, earsSamples)
-                       : earsPhase_ == EarsPhase::MeasureThroughput ? lastEarsPass
-                       : shadowRoulette && !ears_->enabled()        ? std::min(perPass, s + 1)
-                                                                    : perPass;
+    // The guard measures kEarsGuardSamples a pixel of each policy, in passes no larger than the others.
+    uint32_t samples = earsPhase_ == EarsPhase::MeasureEars ? std::min(perPass, kEarsGuardSamples - earsTally_.samples)
+                       : earsPass                           ? std::min(perPass, earsSamples)
+                       : earsPhase_ == EarsPhase::MeasureThroughput
+                           ? std::min(perPass, earsTally_.samples - throughputTally_.samples)
+                       : shadowRoulette && !ears_->enabled() ? std::min(perPass, s + 1)
+                                                             : perPass;
     samples = std::min(samples, settings_.spp - s);
     double passStart = since(start);
     const uint64_t raysBefore = stats.rays();
@@ -616,10 +636,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
       afterEarsPass(state.film, double(stats.rays() - raysBefore) / (double(pixels) * samples), since(start) - passStart,
                     samples, s + samples);
     else if (shadowRoulette) refreshPixelEstimate(state.film);
-    if (earsPass) {
-      lastEarsPass = samples;
-      earsSamples = std::min(2 * earsSamples, maxPerPass);
-    }
+    if (earsPass) earsSamples = std::min(2 * earsSamples, maxPerPass);
     s += samples;
     state.nextSample = s;
     inBatch += samples;

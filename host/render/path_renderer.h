@@ -104,9 +104,12 @@ class PathRenderer {
   EarsGuardOutcome earsGuard_;
   bool earsGuardPending_ = false;  // the comparison is still to come
   uint32_t earsWarmPasses_ = 0;    // EARS passes before it
-  double earsLeanSeconds_ = 0.0;  // the last EARS pass's wavefront without training: its seconds and samples a pixel
-  uint32_t earsLeanSamples_ = 0;
-  std::vector<PixelSums> earsComparedPass_;  // the measured EARS pass's sums, until the throughput pass's are known
+  PolicyTally earsTally_, throughputTally_;  // the measured passes of each policy
+  // The EARS pass in progress, over its tiles: its training part (wavefront and cache update) and the rest.
+  double earsPassTrainSeconds_ = 0.0, earsPassLeanSeconds_ = 0.0;
+  double earsPassTrainPixelSamples_ = 0.0, earsPassLeanPixelSamples_ = 0.0;
+  // The pixel-samples that train in a pass of `samples` a pixel over the whole image (tile by tile).
+  double earsTrainingPixelSamples(uint32_t samples) const;
   // Shadow-ray roulette's pixel estimate from every sample so far (the unfolded batch's too), after each pass.
   void refreshPixelEstimate(const Film& film);
   const gpu::FilmPixel* currentBatch(std::vector<gpu::FilmPixel>& copy);

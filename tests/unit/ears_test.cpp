@@ -224,7 +224,30 @@ TEST(EarsGuard, RelativeSampleVarianceIsEachPixelsUnbiasedVarianceOverTheScale) 
   // Epsilon joins the scale's square, as in relMSE.
   EXPECT_NEAR(relativeSampleVariance(pass, scale, 1.0), (2.0 / 5.0 + 4.0 / 2.0) / 2.0, 1e-12);
   EXPECT_THROW(relativeSampleVariance(pass, {glm::vec4(1.0f)}, 0.0), Error);
-  EXPECT_EQ(relativeSampleVariance(std::vector<PixelSums>{}, std::vector<glm::vec4>{}, 0.0), 0.0);
+  EXPECT_TRUE(std::isnan(relativeSampleVariance({pass[2]}, {glm::vec4(1.0f)}, 0.0))) << "no pixel with two samples";
+}
+
+TEST(EarsGuard, TalliesAddPassesAndEarsIsCostedAsInItsLaterPasses) {
+  PolicyTally t;
+  std::vector<PixelSums> pass(2);
+  pass[0].n = 2, pass[0].sum = glm::dvec3(1.0), pass[0].sumSq = glm::dvec3(1.0);
+  t.addPass(pass, 2, 0.5);
+  t.addPass(pass, 1, 0.25);
+  EXPECT_EQ(t.samples, 3u);
+  EXPECT_DOUBLE_EQ(t.seconds, 0.75);
+  EXPECT_DOUBLE_EQ(t.sums[0].n, 4.0);
+  EXPECT_DOUBLE_EQ(t.sums[0].sumSq.y, 2.0);
+  EXPECT_THROW(t.addPass(std::vector<PixelSums>(3), 1, 0.1), Error);
+  // Nothing split into training and lean: the whole passes' seconds a sample.
+  EXPECT_DOUBLE_EQ(earsSecondsPerSample(t, 100.0, 8.0, 100.0), 0.25);
+  // 100 pixels; a training pixel-sample 3 ms, a lean one 1 ms. A later pass of 8 a pixel of which 100 pixel-samples
+  // train: (100 x 3 + 700 x 1) ms / 800 pixel-samples, 100 pixel-samples a sample.
+  t.trainSeconds = 0.3, t.trainPixelSamples = 100.0, t.leanSeconds = 0.2, t.leanPixelSamples = 200.0;
+  EXPECT_NEAR(earsSecondsPerSample(t, 100.0, 8.0, 100.0), (0.3 + 0.7) / 800.0 * 100.0, 1e-12);
+  // A later pass that trains on everything costs as training does; nothing lean measured: as training too.
+  EXPECT_NEAR(earsSecondsPerSample(t, 100.0, 1.0, 100.0), 0.3, 1e-12);
+  t.leanPixelSamples = 0.0;
+  EXPECT_NEAR(earsSecondsPerSample(t, 100.0, 8.0, 100.0), 0.3, 1e-12);
 }
 
 TEST(EarsGuard, TheMoreEfficientPolicyRendersTheRest) {
