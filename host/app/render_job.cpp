@@ -475,7 +475,8 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   if (r.ears) j["ears"] = earsJson(*r.ears);
   if (r.ears && r.earsGuard.compared) {
     auto pass = [](const PolicyPass& p) {
-      return nlohmann::json{{"relative_variance_per_sample", p.relativeVariance},
+      return nlohmann::json{{"samples_measured", p.samples},
+                            {"relative_variance_per_sample", p.relativeVariance},
                             {"seconds_per_sample", p.secondsPerSample},
                             {"efficiency", std::isfinite(p.efficiency()) ? nlohmann::json(p.efficiency()) : nlohmann::json(nullptr)}};
     };

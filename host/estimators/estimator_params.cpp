@@ -114,8 +114,8 @@ constexpr EstimatorParam kParams[] = {
                            "rr ears: the largest light factor qL, so at most this many light samples a copy; 0 = light "
                            "samples not learned (light_samples, as without ears), 1 = learned shadow-ray roulette alone"),
     choice<&C::earsFallback>("ears_fallback", EarsFallback::Auto, kEarsFallbackNames, -1,
-                             "rr ears: after a warm-up pass of EARS, 4 samples a pixel each of EARS and of throughput "
-                             "roulette are measured; auto: the one with the higher efficiency, 1/(variance x seconds) a "
+                             "rr ears: after a warm-up pass of EARS, 4 samples a pixel of EARS and a full pass of "
+                             "throughput roulette are measured; auto: the one with the higher efficiency, 1/(variance x seconds) a "
                              "sample, renders the rest; never: EARS throughout; always: throughput roulette after the "
                              "comparison"),
     count<&C::lightSamples>("light_samples", 1, 1, 4096, SPEC_LIGHT_SAMPLES, "light samples per hit below --split-depth"),

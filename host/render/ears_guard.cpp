@@ -64,9 +64,10 @@ std::string earsGuardLine(const EarsGuardOutcome& g) {
   if (!g.compared) return "";
   char buf[320];
   std::snprintf(buf, sizeof(buf),
-                "ears guard  one pass each, efficiency 1/(relative variance x seconds) a sample: ears %.4g, throughput "
-                "roulette %.4g; %s from sample %u\n",
-                g.ears.efficiency(), g.throughput.efficiency(), g.fellBack ? "throughput roulette" : "ears", g.fromSample);
+                "ears guard  efficiency 1/(relative variance x seconds) a sample, measured on %u samples a pixel of ears "
+                "and %u of throughput roulette: ears %.4g, throughput roulette %.4g; %s from sample %u\n",
+                g.ears.samples, g.throughput.samples, g.ears.efficiency(), g.throughput.efficiency(),
+                g.fellBack ? "throughput roulette" : "ears", g.fromSample);
   return buf;
 }
 

@@ -1,5 +1,6 @@
-// rr ears's guard: after the training passes and a warm-up pass of EARS, 4 samples a pixel of EARS and as many
-// of throughput roulette (kEarsGuardSamples, path_renderer.cpp) are measured (in one pass each, or more where passes are smaller), each by its
+// rr ears's guard: after the training passes and a warm-up pass of EARS, 4 samples a pixel of EARS
+// (kEarsGuardSamples, path_renderer.cpp) and a pass of throughput roulette as large as its later ones (at least
+// 4 samples, in more passes where passes are smaller) are measured, each by its
 // efficiency per sample, 1 / (relative variance of a sample x seconds of a sample); the better renders the rest
 // (ears_fallback auto). The measured passes are in the image, and the choice depends on earlier passes only:
 // unbiased.
@@ -20,6 +21,7 @@ namespace vkmc {
 struct PolicyPass {
   double relativeVariance = 0.0;
   double secondsPerSample = 0.0;
+  uint32_t samples = 0;  // a pixel, measured
   double efficiency() const;  // 1 / (variance x seconds); +inf for a noiseless pass, 0 for a non-finite one
 };
 

@@ -443,16 +443,18 @@ void PathRenderer::afterEarsPass(const Film& film, double raysPerSample, double 
       earsBatchBefore_ = std::move(after);
       earsEstimate_ = earsPixelEstimate(runningPixelEstimate(film, batch), settings_.width, settings_.height);
       setPixelEstimate(earsEstimate_.smoothed);
-      if (throughputTally_.samples < earsTally_.samples) return;
+      if (throughputTally_.samples < kEarsGuardSamples) return;
       earsPhase_ = EarsPhase::Ears;
       earsGuardPending_ = false;
       const double vEars = relativeSampleVariance(earsTally_.sums, earsEstimate_.smoothed, gpu::kEarsEpsilon);
       const double vThroughput = relativeSampleVariance(throughputTally_.sums, earsEstimate_.smoothed, gpu::kEarsEpsilon);
       if (std::isfinite(vEars) && std::isfinite(vThroughput)) {  // else nothing to compare: EARS as chosen
         const uint32_t later = samplesPerPass();
-        earsGuard_.ears = {vEars, earsSecondsPerSample(earsTally_, double(settings_.width) * settings_.height, later,
-                                                       earsTrainingPixelSamples(later))};
-        earsGuard_.throughput = {vThroughput, throughputTally_.seconds / throughputTally_.samples};
+        earsGuard_.ears = {vEars,
+                           earsSecondsPerSample(earsTally_, double(settings_.width) * settings_.height, later,
+                                                earsTrainingPixelSamples(later)),
+                           earsTally_.samples};
+        earsGuard_.throughput = {vThroughput, throughputTally_.seconds / throughputTally_.samples, throughputTally_.samples};
         earsGuard_.compared = true;
         earsGuard_.fellBack = earsFallsBack(settings_.estimator.earsFallback, earsGuard_.ears, earsGuard_.throughput);
         earsGuard_.fromSample = nextSample;
@@ -621,13 +623,15 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
       break;
     }
     const bool earsPass = ears_->enabled() && !throughputPass();
-    // The guard measures kEarsGuardSamples a pixel of each policy, in passes no larger than the others.
+    // The guard measures kEarsGuardSamples a pixel of EARS, in passes no larger than the others, and throughput
+    // roulette in passes as large as its own later ones, whose per-pass overhead (a pass's bounces, each a
+    // dispatch and most of them nearly empty) is then shared as it will be: on veach_mis a 4-sample pass took
+    // twice the seconds a sample of a 64-sample one.
     uint32_t samples = earsPhase_ == EarsPhase::MeasureEars ? std::min(perPass, kEarsGuardSamples - earsTally_.samples)
                        : earsPass                           ? std::min(perPass, earsSamples)
-                       : earsPhase_ == EarsPhase::MeasureThroughput
-                           ? std::min(perPass, earsTally_.samples - throughputTally_.samples)
-                       : shadowRoulette && !ears_->enabled() ? std::min(perPass, s + 1)
-                                                             : perPass;
+                       : earsPhase_ == EarsPhase::MeasureThroughput ? maxPerPass
+                       : shadowRoulette && !ears_->enabled()        ? std::min(perPass, s + 1)
+                                                                    : perPass;
     samples = std::min(samples, settings_.spp - s);
     double passStart = since(start);
     const uint64_t raysBefore = stats.rays();

@@ -125,20 +125,23 @@ TEST(Ears, SameSeedSameImage) {
   EXPECT_EQ(a.stats.rays(), b.stats.rays());
 }
 
-// The guard (ears_guard.h): after a warm-up pass of EARS, one measured pass each of EARS and of throughput roulette
-// (kEarsGuardSamples a pixel), then the rest by the choice. `always` takes the switch whatever was measured, so
-// it is reproducible; `never` never compares.
+// The guard (ears_guard.h): after a warm-up pass of EARS, 4 samples a pixel of EARS and a pass of throughput
+// roulette as large as its later ones are measured, then the rest rendered by the choice. `always` takes the
+// switch whatever was measured, so it is reproducible; `never` never compares.
 TEST(Ears, GuardComparesOnePassEachThenRendersTheRestWithItsChoice) {
   EstimatorConfig always = ears();
   always.earsFallback = EarsFallback::Always;
-  RenderOutcome a = renderWith("furnace.gltf", always, 24, 24, 64);
+  RenderOutcome a = renderWith("furnace.gltf", always, 24, 24, 128);
   ASSERT_TRUE(a.ears);
   const EarsGuardOutcome& g = a.earsGuard;
   ASSERT_TRUE(g.compared);
   EXPECT_TRUE(g.fellBack);
-  // Training passes (1, 2, 4 spp, dropped), then EARS's warm-up pass of 8 and the two measured passes of 4.
-  EXPECT_EQ(g.fromSample, 16u);
-  EXPECT_EQ(a.film.totalSamples(), 24u * 24u * 64u);
+  // Training passes (1, 2, 4 spp, dropped), then EARS's warm-up pass of 8, its measured 4, and throughput
+  // roulette's measured pass of 64 (a pass's most at 24 x 24).
+  EXPECT_EQ(g.ears.samples, 4u);
+  EXPECT_EQ(g.throughput.samples, 64u);
+  EXPECT_EQ(g.fromSample, 76u);
+  EXPECT_EQ(a.film.totalSamples(), 24u * 24u * 128u);
   for (const PolicyPass& p : {g.ears, g.throughput}) {
     EXPECT_GT(p.relativeVariance, 0.0);
     EXPECT_GT(p.secondsPerSample, 0.0);
@@ -159,6 +162,31 @@ TEST(Ears, GuardComparesOnePassEachThenRendersTheRestWithItsChoice) {
   EXPECT_FALSE(renderWith("cornell_box.gltf", ears(), 24, 24, 32).earsGuard.compared);
   // Too few samples for the comparison: EARS renders them all.
   EXPECT_FALSE(renderWith("cornell_box.gltf", automatic, 24, 24, 10).earsGuard.compared);
+}
+
+// Where a pass takes one sample a pixel in tiles (a wavefront of 1024 paths on 48 x 48 pixels: three tiles), the
+// guard measures EARS over four passes and throughput roulette over four more, every tile's time counted.
+TEST(Ears, GuardMeasuresOverSeveralTiledPasses) {
+  RenderOptions o;
+  o.scenePath = scenePath("furnace.gltf");
+  o.width = o.height = 48;
+  o.spp = 16;
+  o.wavefrontPaths = 1024;
+  o.estimator = ears();
+  o.estimator.earsFallback = EarsFallback::Always;
+  o.progress = false;
+  RenderOutcome r = runRender(sharedContext(), o);
+  ASSERT_TRUE(r.ears);
+  ASSERT_TRUE(r.earsGuard.compared);
+  // Training passes of one sample each (3, dropped), the warm-up pass (1), then 4 + 4 measured.
+  EXPECT_EQ(r.ears->trainingSamples, 3u);
+  EXPECT_EQ(r.earsGuard.ears.samples, 4u);
+  EXPECT_EQ(r.earsGuard.throughput.samples, 4u);
+  EXPECT_EQ(r.earsGuard.fromSample, 9u);
+  EXPECT_GT(r.earsGuard.ears.secondsPerSample, 0.0);
+  EXPECT_GT(r.earsGuard.throughput.secondsPerSample, 0.0);
+  EXPECT_EQ(r.film.totalSamples(), 48u * 48u * 16u);
+  EXPECT_TRUE(regionMatches(whole(r.film), glm::dvec3(2.0), 5.0));
 }
 
 TEST(Ears, GuardWithAlwaysIsReproducible) {
