@@ -483,6 +483,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
     j["ears"]["guard"] = {{"ears", pass(r.earsGuard.ears)},
                           {"throughput", pass(r.earsGuard.throughput)},
                           {"rest_rendered_by", r.earsGuard.fellBack ? "throughput" : "ears"},
+                          {"ears_first_look", r.earsGuard.secondLook ? pass(r.earsGuard.firstEars) : nlohmann::json(nullptr)},
                           {"from_sample", r.earsGuard.fromSample}};
   }
   if (o.timeBudget > 0.0) j["time_budget"] = o.timeBudget;

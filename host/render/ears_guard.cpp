@@ -60,13 +60,24 @@ bool earsFallsBack(EarsFallback mode, const PolicyPass& ears, const PolicyPass& 
   return !(ears.efficiency() > throughput.efficiency());
 }
 
+bool earsGuardLooksAgain(EarsFallback mode, const PolicyPass& ears, const PolicyPass& throughput) {
+  if (mode == EarsFallback::Never) return false;
+  if (mode == EarsFallback::Always) return true;
+  const double e = ears.efficiency(), t = throughput.efficiency();
+  return e < t && e >= kEarsSecondLookRatio * t;
+}
+
 std::string earsGuardLine(const EarsGuardOutcome& g) {
   if (!g.compared) return "";
-  char buf[320];
+  char again[120] = "";
+  if (g.secondLook)
+    std::snprintf(again, sizeof(again), " (measured again: its first %u samples read %.4g)", g.firstEars.samples,
+                  g.firstEars.efficiency());
+  char buf[420];
   std::snprintf(buf, sizeof(buf),
                 "ears guard  efficiency 1/(relative variance x seconds) a sample, measured on %u samples a pixel of ears "
-                "and %u of throughput roulette: ears %.4g, throughput roulette %.4g; %s from sample %u\n",
-                g.ears.samples, g.throughput.samples, g.ears.efficiency(), g.throughput.efficiency(),
+                "and %u of throughput roulette: ears %.4g%s, throughput roulette %.4g; %s from sample %u\n",
+                g.ears.samples, g.throughput.samples, g.ears.efficiency(), again, g.throughput.efficiency(),
                 g.fellBack ? "throughput roulette" : "ears", g.fromSample);
   return buf;
 }

@@ -55,7 +55,19 @@ struct EarsGuardOutcome {
   bool fellBack = false;      // throughput roulette rendered the rest
   uint32_t fromSample = 0;    // the first sample after the comparison
   PolicyPass ears, throughput;
+  bool secondLook = false;    // EARS was measured again, on a later pass (earsGuardLooksAgain)
+  PolicyPass firstEars;       // then: its first measure
 };
+
+// EARS's cache keeps learning after its first measured samples: on two_rooms a pass's efficiency rose from about
+// 0.6x throughput roulette's at the first measure to 1.1-1.2x in later passes (docs/ears.md, "The guard").
+// So a first measure of EARS at kEarsSecondLookRatio or more of throughput roulette's efficiency, but below it,
+// is taken again on a later EARS pass (throughput roulette's measure is kept) before the choice.
+constexpr double kEarsSecondLookRatio = 0.6;
+
+// Whether EARS is measured again before the choice: under auto where the first measure was close (above), and
+// always under always, which then still switches (so its tests take the same path); never under never.
+bool earsGuardLooksAgain(EarsFallback mode, const PolicyPass& ears, const PolicyPass& throughput);
 
 // Whether throughput roulette renders the rest: Always, or under Auto when its efficiency is at least EARS's (a tie
 // goes to the cheaper kernels). Never: false.

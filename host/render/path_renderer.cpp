@@ -428,12 +428,15 @@ void PathRenderer::afterEarsPass(const Film& film, double raysPerSample, double 
       if (settings_.estimator.shadowRrThreshold > 0.0f && ctx_.unifiedMemory()) refreshPixelEstimate(film);
       return;
     case EarsPhase::MeasureEars:
+    case EarsPhase::MeasureEarsAgain:
       earsTally_.addPass(updateEarsStatistics(film, raysPerSample), samples, seconds);
       earsTally_.trainSeconds += earsPassTrainSeconds_;
       earsTally_.leanSeconds += earsPassLeanSeconds_;
       earsTally_.trainPixelSamples += earsPassTrainPixelSamples_;
       earsTally_.leanPixelSamples += earsPassLeanPixelSamples_;
-      if (earsTally_.samples >= kEarsGuardSamples) earsPhase_ = EarsPhase::MeasureThroughput;
+      if (earsTally_.samples < kEarsGuardSamples) return;
+      if (earsPhase_ == EarsPhase::MeasureEars) earsPhase_ = EarsPhase::MeasureThroughput;
+      else decideEarsGuard(nextSample, true);
       return;
     case EarsPhase::MeasureThroughput: {
       std::vector<gpu::FilmPixel> copy;
@@ -443,27 +446,49 @@ void PathRenderer::afterEarsPass(const Film& film, double raysPerSample, double 
       earsBatchBefore_ = std::move(after);
       earsEstimate_ = earsPixelEstimate(runningPixelEstimate(film, batch), settings_.width, settings_.height);
       setPixelEstimate(earsEstimate_.smoothed);
-      if (throughputTally_.samples < kEarsGuardSamples) return;
-      earsPhase_ = EarsPhase::Ears;
-      earsGuardPending_ = false;
-      const double vEars = relativeSampleVariance(earsTally_.sums, earsEstimate_.smoothed, gpu::kEarsEpsilon);
-      const double vThroughput = relativeSampleVariance(throughputTally_.sums, earsEstimate_.smoothed, gpu::kEarsEpsilon);
-      if (std::isfinite(vEars) && std::isfinite(vThroughput)) {  // else nothing to compare: EARS as chosen
-        const uint32_t later = samplesPerPass();
-        earsGuard_.ears = {vEars,
-                           earsSecondsPerSample(earsTally_, double(settings_.width) * settings_.height, later,
-                                                earsTrainingPixelSamples(later)),
-                           earsTally_.samples};
-        earsGuard_.throughput = {vThroughput, throughputTally_.seconds / throughputTally_.samples, throughputTally_.samples};
-        earsGuard_.compared = true;
-        earsGuard_.fellBack = earsFallsBack(settings_.estimator.earsFallback, earsGuard_.ears, earsGuard_.throughput);
-        earsGuard_.fromSample = nextSample;
-        if (earsGuard_.fellBack) earsPhase_ = EarsPhase::Throughput;
-      }
-      earsTally_ = throughputTally_ = PolicyTally{};
+      if (throughputTally_.samples >= kEarsGuardSamples) decideEarsGuard(nextSample, false);
       return;
     }
   }
+}
+
+void PathRenderer::decideEarsGuard(uint32_t nextSample, bool secondLook) {
+  earsPhase_ = EarsPhase::Ears;
+  const double vEars = relativeSampleVariance(earsTally_.sums, earsEstimate_.smoothed, gpu::kEarsEpsilon);
+  const double vThroughput = relativeSampleVariance(throughputTally_.sums, earsEstimate_.smoothed, gpu::kEarsEpsilon);
+  const uint32_t later = samplesPerPass();
+  const PolicyPass ears{vEars,
+                        earsSecondsPerSample(earsTally_, double(settings_.width) * settings_.height, later,
+                                             earsTrainingPixelSamples(later)),
+                        earsTally_.samples};
+  const PolicyPass throughput{vThroughput, throughputTally_.seconds / throughputTally_.samples, throughputTally_.samples};
+  const EarsFallback mode = settings_.estimator.earsFallback;
+  if (!(std::isfinite(vEars) && std::isfinite(vThroughput))) {
+    // Nothing to compare (no pixel with two samples): EARS as chosen, or after a first look that EARS lost, the
+    // first look's verdict.
+    if (secondLook) {
+      earsGuard_.ears = earsGuard_.firstEars;
+      earsGuard_.compared = earsGuard_.fellBack = true;
+      earsGuard_.fromSample = nextSample;
+      earsPhase_ = EarsPhase::Throughput;
+    }
+  } else if (!secondLook && earsGuardLooksAgain(mode, ears, throughput)) {
+    earsGuard_.secondLook = true;
+    earsGuard_.firstEars = ears;
+    earsGuard_.throughput = throughput;
+    earsTally_ = PolicyTally{};  // throughput roulette's tally stays, measured against the later estimate
+    earsPhase_ = EarsPhase::MeasureEarsAgain;
+    return;
+  } else {
+    earsGuard_.ears = ears;
+    earsGuard_.throughput = throughput;
+    earsGuard_.compared = true;
+    earsGuard_.fellBack = earsFallsBack(mode, ears, throughput);
+    earsGuard_.fromSample = nextSample;
+    if (earsGuard_.fellBack) earsPhase_ = EarsPhase::Throughput;
+  }
+  earsGuardPending_ = false;
+  earsTally_ = throughputTally_ = PolicyTally{};
 }
 
 void PathRenderer::refreshPixelEstimate(const Film& film) {

@@ -96,11 +96,13 @@ class PathRenderer {
   bool earsHaveEstimate_ = false;
   // EARS's guard (ears_guard.h): which policy the next pass runs. MeasureEars and MeasureThroughput are the
   // comparison's two passes; Throughput renders the rest with the guard's shade kernel.
-  enum class EarsPhase { Ears, MeasureEars, MeasureThroughput, Throughput };
+  enum class EarsPhase { Ears, MeasureEars, MeasureThroughput, MeasureEarsAgain, Throughput };
   EarsPhase earsPhase_ = EarsPhase::Ears;
   bool throughputPass() const { return earsPhase_ == EarsPhase::MeasureThroughput || earsPhase_ == EarsPhase::Throughput; }
   // After each pass under EARS: the EARS statistics, or the guard's measurement and choice.
   void afterEarsPass(const Film& film, double raysPerSample, double seconds, uint32_t samples, uint32_t nextSample);
+  // The guard's choice from the tallies, against the estimate after the last measured pass (or a second look).
+  void decideEarsGuard(uint32_t nextSample, bool secondLook);
   EarsGuardOutcome earsGuard_;
   bool earsGuardPending_ = false;  // the comparison is still to come
   uint32_t earsWarmPasses_ = 0;    // EARS passes before it

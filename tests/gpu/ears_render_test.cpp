@@ -126,8 +126,9 @@ TEST(Ears, SameSeedSameImage) {
 }
 
 // The guard (ears_guard.h): after a warm-up pass of EARS, 4 samples a pixel of EARS and a pass of throughput
-// roulette as large as its later ones are measured, then the rest rendered by the choice. `always` takes the
-// switch whatever was measured, so it is reproducible; `never` never compares.
+// roulette as large as its later ones are measured, EARS again on its next pass where the first measure was close,
+// then the rest rendered by the choice. `always` takes the second look and then the switch whatever was measured,
+// so it is reproducible; `never` never compares.
 TEST(Ears, GuardComparesOnePassEachThenRendersTheRestWithItsChoice) {
   EstimatorConfig always = ears();
   always.earsFallback = EarsFallback::Always;
@@ -136,11 +137,13 @@ TEST(Ears, GuardComparesOnePassEachThenRendersTheRestWithItsChoice) {
   const EarsGuardOutcome& g = a.earsGuard;
   ASSERT_TRUE(g.compared);
   EXPECT_TRUE(g.fellBack);
-  // Training passes (1, 2, 4 spp, dropped), then EARS's warm-up pass of 8, its measured 4, and throughput
-  // roulette's measured pass of 64 (a pass's most at 24 x 24).
-  EXPECT_EQ(g.ears.samples, 4u);
+  // Training passes (1, 2, 4 spp, dropped), then EARS's warm-up pass of 8, its measured 4, throughput roulette's
+  // measured pass of 64 (a pass's most at 24 x 24), and EARS's second look, its next pass (32).
+  ASSERT_TRUE(g.secondLook);
+  EXPECT_EQ(g.firstEars.samples, 4u);
+  EXPECT_EQ(g.ears.samples, 32u);
   EXPECT_EQ(g.throughput.samples, 64u);
-  EXPECT_EQ(g.fromSample, 76u);
+  EXPECT_EQ(g.fromSample, 108u);
   EXPECT_EQ(a.film.totalSamples(), 24u * 24u * 128u);
   for (const PolicyPass& p : {g.ears, g.throughput}) {
     EXPECT_GT(p.relativeVariance, 0.0);
@@ -149,10 +152,10 @@ TEST(Ears, GuardComparesOnePassEachThenRendersTheRestWithItsChoice) {
     EXPECT_TRUE(std::isfinite(p.efficiency()));
   }
   // Throughput roulette's passes render the rest: their first vertices (every camera ray hits the sphere) are not
-  // counted in EARS's histogram, which holds the training passes' and EARS's 8 + 4 samples a pixel.
+  // counted in EARS's histogram, which holds the training passes' and EARS's 8 + 4 + 32 samples a pixel.
   uint64_t first = 0;
   for (uint64_t n : a.ears->factors[0]) first += n;
-  EXPECT_EQ(first, 24u * 24u * (a.ears->trainingSamples + 12u));
+  EXPECT_EQ(first, 24u * 24u * (a.ears->trainingSamples + 44u));
   // Unbiased across the switch (stat/estimator_unbiased_test has the Cornell box's and the quadrants'): L = 2.
   EXPECT_TRUE(regionMatches(whole(a.film), glm::dvec3(2.0), 5.0));
   // Auto compares too; never does not.
@@ -178,11 +181,12 @@ TEST(Ears, GuardMeasuresOverSeveralTiledPasses) {
   RenderOutcome r = runRender(sharedContext(), o);
   ASSERT_TRUE(r.ears);
   ASSERT_TRUE(r.earsGuard.compared);
-  // Training passes of one sample each (3, dropped), the warm-up pass (1), then 4 + 4 measured.
+  // Training passes of one sample each (3, dropped), the warm-up pass (1), then 4 + 4 measured and EARS's 4 again.
   EXPECT_EQ(r.ears->trainingSamples, 3u);
+  EXPECT_EQ(r.earsGuard.firstEars.samples, 4u);
   EXPECT_EQ(r.earsGuard.ears.samples, 4u);
   EXPECT_EQ(r.earsGuard.throughput.samples, 4u);
-  EXPECT_EQ(r.earsGuard.fromSample, 9u);
+  EXPECT_EQ(r.earsGuard.fromSample, 13u);
   EXPECT_GT(r.earsGuard.ears.secondsPerSample, 0.0);
   EXPECT_GT(r.earsGuard.throughput.secondsPerSample, 0.0);
   EXPECT_EQ(r.film.totalSamples(), 48u * 48u * 16u);

@@ -266,3 +266,13 @@ TEST(EarsGuard, TheMoreEfficientPolicyRendersTheRest) {
   EXPECT_TRUE(earsFallsBack(EarsFallback::Auto, PolicyPass{std::nan(""), 1.0}, throughput));
   EXPECT_FALSE(earsFallsBack(EarsFallback::Auto, ears, PolicyPass{INFINITY, 1.0}));
 }
+
+TEST(EarsGuard, ACloseFirstMeasureOfEarsIsTakenAgain) {
+  const PolicyPass throughput{1.0, 1.0};  // efficiency 1
+  EXPECT_TRUE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 1.25}, throughput));   // 0.8
+  EXPECT_TRUE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 1.0 / kEarsSecondLookRatio}, throughput));
+  EXPECT_FALSE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 2.0}, throughput));   // 0.5: clearly worse
+  EXPECT_FALSE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 0.5}, throughput));   // 2: EARS wins
+  EXPECT_FALSE(earsGuardLooksAgain(EarsFallback::Never, PolicyPass{1.0, 1.25}, throughput));
+  EXPECT_TRUE(earsGuardLooksAgain(EarsFallback::Always, PolicyPass{1.0, 0.5}, throughput));  // its tests' path
+}
