@@ -138,12 +138,12 @@ TEST(Ears, GuardComparesOnePassEachThenRendersTheRestWithItsChoice) {
   ASSERT_TRUE(g.compared);
   EXPECT_TRUE(g.fellBack);
   // Training passes (1, 2, 4 spp, dropped), then EARS's warm-up pass of 8, its measured 4, throughput roulette's
-  // measured pass of 64 (a pass's most at 24 x 24), and EARS's second look, its next pass (32).
+  // measured pass of 64 (a pass's most at 24 x 24; dropped), and EARS's second look, its next pass (32).
   ASSERT_TRUE(g.secondLook);
   EXPECT_EQ(g.firstEars.samples, 4u);
   EXPECT_EQ(g.ears.samples, 32u);
   EXPECT_EQ(g.throughput.samples, 64u);
-  EXPECT_EQ(g.fromSample, 108u);
+  EXPECT_EQ(g.fromSample, 44u);
   EXPECT_EQ(a.film.totalSamples(), 24u * 24u * 128u);
   for (const PolicyPass& p : {g.ears, g.throughput}) {
     EXPECT_GT(p.relativeVariance, 0.0);
@@ -181,12 +181,13 @@ TEST(Ears, GuardMeasuresOverSeveralTiledPasses) {
   RenderOutcome r = runRender(sharedContext(), o);
   ASSERT_TRUE(r.ears);
   ASSERT_TRUE(r.earsGuard.compared);
-  // Training passes of one sample each (3, dropped), the warm-up pass (1), then 4 + 4 measured and EARS's 4 again.
+  // Training passes of one sample each (3, dropped), the warm-up pass (1), then 4 of EARS and 4 of throughput
+  // roulette (dropped) measured, and EARS's 4 again.
   EXPECT_EQ(r.ears->trainingSamples, 3u);
   EXPECT_EQ(r.earsGuard.firstEars.samples, 4u);
   EXPECT_EQ(r.earsGuard.ears.samples, 4u);
   EXPECT_EQ(r.earsGuard.throughput.samples, 4u);
-  EXPECT_EQ(r.earsGuard.fromSample, 13u);
+  EXPECT_EQ(r.earsGuard.fromSample, 9u);
   EXPECT_GT(r.earsGuard.ears.secondsPerSample, 0.0);
   EXPECT_GT(r.earsGuard.throughput.secondsPerSample, 0.0);
   EXPECT_EQ(r.film.totalSamples(), 48u * 48u * 16u);
