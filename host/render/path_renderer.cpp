@@ -451,12 +451,16 @@ void PathRenderer::afterEarsPass(const Film& film, double raysPerSample, double 
 // an image that EARS goes on to render would hold samples of the policy that lost: on two_rooms, where a sample of
 // EARS has a fifth of throughput roulette's variance, 28 of them in 173 made the 4-s image 0.79x as efficient as
 // EARS's alone.
-void PathRenderer::measureThroughputForGuard(uint32_t sampleIndex, uint32_t samples, RenderStats& stats) {
+void PathRenderer::measureThroughputForGuard(const Film& film, uint32_t sampleIndex, uint32_t samples, RenderStats& stats) {
   const auto start = Clock::now();
   renderSamples(sampleIndex, samples, stats);
   const double seconds = since(start);
   std::vector<gpu::FilmPixel> copy;
-  throughputTally_.addPass(batchPixelSums(currentBatch(copy), size_t(settings_.width) * settings_.height), samples, seconds);
+  const gpu::FilmPixel* batch = currentBatch(copy);
+  throughputTally_.addPass(batchPixelSums(batch, film.pixels()), samples, seconds);
+  // What both policies' variances are relative to: the smoothed estimate with this pass's samples too (an estimate
+  // from the few samples before it left pixels near veach_mis's small lamps near 0, and V in the hundreds).
+  earsGuardScale_ = earsPixelEstimate(runningPixelEstimate(film, batch), settings_.width, settings_.height).smoothed;
   film_.zero();
   resetEarsBatchSums();
   if (throughputTally_.samples >= kEarsGuardSamples) decideEarsGuard(sampleIndex, false);
@@ -464,8 +468,10 @@ void PathRenderer::measureThroughputForGuard(uint32_t sampleIndex, uint32_t samp
 
 void PathRenderer::decideEarsGuard(uint32_t nextSample, bool secondLook) {
   earsPhase_ = EarsPhase::Ears;
-  const double vEars = relativeSampleVariance(earsTally_.sums, earsEstimate_.smoothed, gpu::kEarsEpsilon);
-  const double vThroughput = relativeSampleVariance(throughputTally_.sums, earsEstimate_.smoothed, gpu::kEarsEpsilon);
+  // A second look's estimate holds EARS's next pass: as many samples as the first look's scale, or more.
+  const std::vector<glm::vec4>& scale = secondLook ? earsEstimate_.smoothed : earsGuardScale_;
+  const double vEars = relativeSampleVariance(earsTally_.sums, scale, gpu::kEarsEpsilon);
+  const double vThroughput = relativeSampleVariance(throughputTally_.sums, scale, gpu::kEarsEpsilon);
   const uint32_t later = samplesPerPass();
   const PolicyPass ears{vEars,
                         earsSecondsPerSample(earsTally_, double(settings_.width) * settings_.height, later,
@@ -662,7 +668,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
       // dispatch and most nearly empty) it then shares as they will: on veach_mis a 4-sample pass took twice the
       // seconds a sample of a 28-sample one. Dropped, so it advances no sample.
       if (inBatch > 0) foldFilm(state.film), inBatch = 0;
-      measureThroughputForGuard(s, maxPerPass, stats);
+      measureThroughputForGuard(state.film, s, maxPerPass, stats);
       continue;
     }
     const bool earsPass = ears_->enabled() && !throughputPass();

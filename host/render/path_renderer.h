@@ -102,7 +102,8 @@ class PathRenderer {
   // After each pass under EARS: the EARS statistics, or the guard's measurement and choice.
   void afterEarsPass(const Film& film, double raysPerSample, double seconds, uint32_t samples, uint32_t nextSample);
   // The guard's throughput roulette pass of `samples` a pixel (from a folded film): measured, then dropped.
-  void measureThroughputForGuard(uint32_t sampleIndex, uint32_t samples, RenderStats& stats);
+  void measureThroughputForGuard(const Film& film, uint32_t sampleIndex, uint32_t samples, RenderStats& stats);
+  std::vector<glm::vec4> earsGuardScale_;  // the first look's variances are relative to it (measureThroughputForGuard)
   // The guard's choice from the tallies, against the estimate after the last measured pass (or a second look).
   void decideEarsGuard(uint32_t nextSample, bool secondLook);
   EarsGuardOutcome earsGuard_;
