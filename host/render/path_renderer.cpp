@@ -20,8 +20,8 @@
 namespace vkmc {
 
 namespace {
-// The samples a pixel of each of EARS's guard's two passes (a sample variance needs two; a short render's budget
-// should not go to the comparison).
+// The samples a pixel of EARS the guard measures (each look), and the fewest of throughput roulette (a sample
+// variance needs two; a short render's budget should not go to the comparison).
 constexpr uint32_t kEarsGuardSamples = 4;
 // EARS's passes before the one the guard measures: the first after training decides from a cache that has learned
 // from a few samples a pixel, and measured 0.6x the efficiency of later passes on two_rooms (docs/ears.md).
@@ -417,9 +417,8 @@ double PathRenderer::earsTrainingPixelSamples(uint32_t samples) const {
   return n;
 }
 
-// After a pass under EARS: its statistics, or the guard's measurement (ears_guard.h). The throughput passes' own
-// V_img stays out of EARS's factors; both policies' sample variances are taken relative to the estimate after
-// both, and EARS's seconds a sample are those of a pass as large as its later ones.
+// After a pass under EARS: its statistics, or the guard's measurement of EARS (ears_guard.h; throughput roulette's is
+// measureThroughputForGuard's, whose V_img stays out of EARS's factors).
 void PathRenderer::afterEarsPass(const Film& film, double raysPerSample, double seconds, uint32_t samples, uint32_t nextSample) {
   switch (earsPhase_) {
     case EarsPhase::Ears:
