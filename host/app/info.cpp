@@ -37,6 +37,7 @@ const char* specName(uint32_t id) {
     case SPEC_SAMPLER_LOG2_SPP: return "zsobol_log2_spp";
     case SPEC_SAMPLER_DIGITS: return "zsobol_digits";
     case SPEC_DEEP_WALKS: return "deep_walks";
+    case SPEC_REGISTER_STACK: return "register_stack";
     case SPEC_PIXEL_FILTER: return "pixel_filter";  // 0: the pixel's box (u as is), 1: a filter's table
   }
   for (const EstimatorParam& p : estimatorParams())
@@ -78,10 +79,10 @@ int runInfo(const RenderOptions& options) {
   std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   const BvhStats& b = bvh.stats;
-  std::printf("bvh          %u inner nodes, %u leaves, depth %u (4-wide %u: %s), leaf size avg %.2f max %u, SAH cost %.2f (4-wide %.2f), "
-              "built in %.3f s on %u threads\n",
-              b.innerNodes, b.leaves, b.maxDepth, b.wideMaxDepth,
-              walksCanOutgrowRegisterStack(b) ? "deep passes built" : "no walk outgrows the register stack", b.averageLeafSize,
+  std::printf("bvh          %u inner nodes, %u leaves, depth %u (4-wide %u, at most %u entries pending: register stack of %u, %s), "
+              "leaf size avg %.2f max %u, SAH cost %.2f (4-wide %.2f), built in %.3f s on %u threads\n",
+              b.innerNodes, b.leaves, b.maxDepth, b.wideMaxDepth, b.wideMaxPending, registerStackEntries(b),
+              walksCanOutgrowRegisterStack(b) ? "deep passes built" : "no walk outgrows it", b.averageLeafSize,
               b.maxLeafSize, b.sahCost, b.wideSahCost, b.buildSeconds, b.buildThreads);
   GpuScene gpu(ctx, scene, bvh, options.estimator.lightSelect == LightSelect::Uniform);
   RenderSettings settings;

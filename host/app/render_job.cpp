@@ -550,7 +550,8 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                      {"degenerate_triangles_skipped", r.degenerateTriangles}};
   j["bvh"] = {{"inner_nodes", r.bvh.innerNodes},    {"leaves", r.bvh.leaves},    {"max_depth", r.bvh.maxDepth},
               {"max_leaf_size", r.bvh.maxLeafSize}, {"sah_cost", r.bvh.sahCost}, {"wide_sah_cost", r.bvh.wideSahCost},
-              {"wide_max_depth", r.bvh.wideMaxDepth}, {"deep_walk_passes", r.features.deepWalks}, {"build_seconds", r.bvh.buildSeconds},
+              {"wide_max_depth", r.bvh.wideMaxDepth}, {"wide_max_pending", r.bvh.wideMaxPending},
+              {"register_stack_entries", r.features.registerStackEntries}, {"deep_walk_passes", r.features.deepWalks}, {"build_seconds", r.bvh.buildSeconds},
               {"build_threads", r.bvh.buildThreads}};
   j["max_bounces"] = s.maxBounces;
   j["specialized_for"] = {{"emitters", r.features.emitters()},

@@ -32,16 +32,20 @@ RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh, bo
       binaryBvh ? std::span<const uint32_t>(kSpirv_trace_rays_bvh2) : std::span<const uint32_t>(kSpirv_trace_rays);
   // Two-sided, as the host walks and Embree's rtcIntersect1 are; the alpha test only where a triangle needs it, as
   // the renderer's kernels are specialized.
-  const uint32_t alpha = scene.info().alphaTested ? 1u : 0u;
-  auto specs = [alpha](bool anyHit, bool counting) {
+  // The register stack sized to the tree and the deep pass only where a walk can outgrow it, as the renderer's
+  // walks are specialized (pipelineFeatures).
+  const uint32_t alpha = scene.info().alphaTested ? 1u : 0u, stack = scene.info().registerStackEntries;
+  const uint32_t deep = scene.info().deepWalks ? 1u : 0u;
+  auto specs = [alpha, stack, deep](bool anyHit, bool counting) {
     return std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, anyHit},
-                                         {SPEC_WALK_STATS, counting}, {SPEC_CULLS_BACK_FACES, 0u}, {SPEC_HAS_ALPHA, alpha}};
+                                         {SPEC_WALK_STATS, counting}, {SPEC_CULLS_BACK_FACES, 0u}, {SPEC_HAS_ALPHA, alpha},
+                                         {SPEC_REGISTER_STACK, stack}, {SPEC_DEEP_WALKS, deep}};
   };
   closest_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest", spirv, specs(false, walkStats));
   any_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any", spirv, specs(true, walkStats));
   // The binary walk keeps its stack in memory and never defers; the 4-wide one defers walks that outgrow its
-  // register stack to a second, indirect dispatch of the deep variant.
-  if (!binaryBvh) {
+  // register stack to a second, indirect dispatch of the deep variant (where one can).
+  if (!binaryBvh && deep) {
     closestDeep_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest_deep", kSpirv_trace_rays_deep, specs(false, false));
     anyDeep_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any_deep", kSpirv_trace_rays_deep, specs(true, false));
   }

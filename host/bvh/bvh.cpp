@@ -116,20 +116,27 @@ BvhWideNode quantizeBoxes(std::span<const Child> children) {
   return out;
 }
 
-uint32_t wideMaxDepth(const std::vector<BvhWideNode>& wide) {
-  if (wide.empty()) return 0;
-  uint32_t deepest = 0;
-  std::vector<std::pair<uint32_t, uint32_t>> stack{{0u, 1u}};  // (node, inner nodes from the root down to it)
+// The 4-wide tree's depth in inner nodes, and the most entries a walk can pend (BvhStats::wideMaxPending).
+void wideDepthAndPending(const std::vector<BvhWideNode>& wide, uint32_t& maxDepth, uint32_t& maxPending) {
+  maxDepth = maxPending = 0;
+  if (wide.empty()) return;
+  struct Visit {
+    uint32_t node, depth, pendingAbove;  // inner nodes from the root down to it; entries its ancestors pend
+  };
+  std::vector<Visit> stack{{0u, 1u, 0u}};
   while (!stack.empty()) {
-    auto [node, depth] = stack.back();
+    Visit v = stack.back();
     stack.pop_back();
-    deepest = std::max(deepest, depth);
+    uint32_t children = 0;
+    for (int c = 0; c < 4; ++c) children += wide[v.node].texels[gpu::kBvhWideChildTexel][c] != gpu::kBvhEmptySlot;
+    const uint32_t pending = v.pendingAbove + (children > 0 ? children - 1 : 0);
+    maxDepth = std::max(maxDepth, v.depth);
+    maxPending = std::max(maxPending, pending);
     for (int c = 0; c < 4; ++c) {
-      uint32_t entry = wide[node].texels[gpu::kBvhWideChildTexel][c];
-      if (entry != gpu::kBvhEmptySlot && !gpu::bvhIsLeaf(entry)) stack.push_back({entry, depth + 1});
+      uint32_t entry = wide[v.node].texels[gpu::kBvhWideChildTexel][c];
+      if (entry != gpu::kBvhEmptySlot && !gpu::bvhIsLeaf(entry)) stack.push_back({entry, v.depth + 1, pending});
     }
   }
-  return deepest;
 }
 
 // Collapses the binary GPU layout into 4-wide nodes: a node's children are its binary children, the inner one
@@ -274,7 +281,7 @@ Bvh buildBvh(std::span<const Aabb> bounds, const BvhOptions& options) {
   s.buildThreads = tree.threads;
   s.averageLeafSize = s.leaves ? static_cast<double>(bounds.size()) / s.leaves : 0.0;
   bvh.wideNodes = collapseToWide(bvh.nodes, tree.threads, s.wideSahCost);
-  s.wideMaxDepth = wideMaxDepth(bvh.wideNodes);
+  wideDepthAndPending(bvh.wideNodes, s.wideMaxDepth, s.wideMaxPending);
   widenByOneFloat(bvh.nodes, tree.threads);
   s.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return bvh;
@@ -375,8 +382,12 @@ Aabb wideChildBox(const BvhWideNode& node, int i) {
   return box;
 }
 
-bool walksCanOutgrowRegisterStack(const BvhStats& stats) {
-  return (gpu::kBvhWideChildren - 1) * stats.wideMaxDepth > gpu::kBvhRegisterStackEntries;
+bool walksCanOutgrowRegisterStack(const BvhStats& stats) { return stats.wideMaxPending > registerStackEntries(stats); }
+
+uint32_t registerStackEntries(const BvhStats& stats) {
+  for (uint32_t entries : {4u, 8u})
+    if (stats.wideMaxPending <= entries) return entries;
+  return gpu::kBvhRegisterStackEntries;
 }
 
 }  // namespace vkmc

@@ -299,6 +299,8 @@ LoadLimits deviceLoadLimits(const vk::Context& ctx) {
 GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool uniformLightSelection, bool keepBinaryBvh) {
   const size_t n = scene.triangleCount();
   info_.triangles = static_cast<uint32_t>(n);
+  info_.registerStackEntries = registerStackEntries(bvh.stats);
+  info_.deepWalks = walksCanOutgrowRegisterStack(bvh.stats);
   info_.materials = static_cast<uint32_t>(scene.materials.size());
   if (scene.bounds.valid()) info_.boundsMin = scene.bounds.min, info_.boundsMax = scene.bounds.max;
 

@@ -76,6 +76,7 @@ SceneFeatures pipelineFeatures(const SceneFeatures& scene, const BvhStats& bvh, 
   if (!specialize) return allFeatures(scene);
   SceneFeatures f = scene;
   f.deepWalks = walksCanOutgrowRegisterStack(bvh);
+  f.registerStackEntries = registerStackEntries(bvh);
   return f;
 }
 
@@ -121,7 +122,8 @@ KernelPlan planKernels(const RenderSettings& s) {
                 {SPEC_HAS_DELTA, s.features.delta ? 1u : 0u},
                 {SPEC_RECORD_DEPTH_STATS, s.recordDepthStats ? 1u : 0u},
                 {SPEC_PIXEL_FILTER, s.filter.specSampling()},
-                {SPEC_DEEP_WALKS, s.features.deepWalks ? 1u : 0u}};
+                {SPEC_DEEP_WALKS, s.features.deepWalks ? 1u : 0u},
+                {SPEC_REGISTER_STACK, s.features.registerStackEntries}};
   for (const vk::SpecConstant& c : est.specConstants()) plan.specs.push_back(c);
   const ZSobolLayout z = zsobolLayout(s);
   plan.specs.push_back({SPEC_SAMPLER_LOG2_SPP, z.log2Spp});

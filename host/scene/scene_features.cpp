@@ -65,6 +65,7 @@ SceneFeatures allFeatures(const SceneFeatures& scene) {
   f.punctualLights = std::max(f.punctualLights, 1u);
   f.environment = true;
   f.deepWalks = true;
+  f.registerStackEntries = 12;
   return f;
 }
 

@@ -34,6 +34,8 @@ struct SceneFeatures {
   // Some BVH walk can outgrow the register stack (walksCanOutgrowRegisterStack): the deep passes are built. Known
   // only once the BVH is; true until then.
   bool deepWalks = true;
+  // The walks' register stack entries (registerStackEntries in bvh.h: 4, 8 or 12); the largest until the BVH is known.
+  uint32_t registerStackEntries = 12;
 
   bool emitters() const { return emissiveTriangles > 0; }
   // Anything next-event estimation can sample: emissive triangles, punctual lights, the environment.

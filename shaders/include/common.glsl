@@ -51,6 +51,7 @@ layout(constant_id = SPEC_SAMPLER_LOG2_SPP) const uint kSamplerLog2Spp = 0u;
 layout(constant_id = SPEC_SAMPLER_DIGITS) const uint kSamplerDigits = 0u;
 layout(constant_id = SPEC_SAMPLE_REPLICATES) const uint kSampleReplicates = 2u;
 layout(constant_id = SPEC_DEEP_WALKS) const uint kDeepWalks = 1u;
+layout(constant_id = SPEC_REGISTER_STACK) const uint kRegisterStackEntries = 12u;
 layout(constant_id = SPEC_PIXEL_FILTER) const uint kPixelFilterSampling = 0u;
 
 layout(push_constant, std430) uniform Push { PushConstants pc; };

@@ -94,18 +94,21 @@ uint hitChildren(uint node, vec3 invDir, vec3 origin, bvec3 nearIsHigh, float tM
   return uint(hit.x) + uint(hit.y) + uint(hit.z) + uint(hit.w);
 }
 
-// The register stack: 12 entries in three uvec4 (top = s0.x, empty slots = kNoEntry). `shift` entries of
-// (a, b, c) are pushed (1..3, a on top), or -shift entries popped (1..2), or nothing (0). Pushing past the bottom
-// sets overflow; the walk then restarts with traceRayDeep, or is reported as cut where SPEC_DEEP_WALKS is 0 (the
-// host's bound says no walk of the scene's BVH can overflow: kBvhRegisterStackEntries). (Why 12: docs/performance.md.)
+// The register stack: up to 12 entries in three uvec4 (top = s0.x, empty slots = kNoEntry), of which the scene's
+// kRegisterStackEntries (4, 8 or 12) are used: the unused uvec4 stay constant and the compiler drops their
+// shifts. `shift` entries of (a, b, c) are pushed (1..3, a on top), or -shift entries popped (1..2), or nothing
+// (0). Pushing past the bottom sets overflow; the walk then restarts with traceRayDeep, or is reported as cut where
+// SPEC_DEEP_WALKS is 0 (the host's bound says no walk of the scene's BVH can overflow). (Why 12, and the smaller
+// stacks: docs/performance.md.)
 struct RegisterStack {
   uvec4 s0, s1, s2;  // kBvhRegisterStackEntries
 };
 
 void shiftStack(inout RegisterStack st, int shift, uint a, uint b, uint c, inout bool overflow) {
   uvec4 s0 = st.s0, s1 = st.s1, s2 = st.s2;
-  overflow = overflow || (shift >= 1 && s2.w != kNoEntry) || (shift >= 2 && s2.z != kNoEntry) ||
-             (shift >= 3 && s2.y != kNoEntry);
+  uvec4 bottom = kRegisterStackEntries <= 4u ? s0 : kRegisterStackEntries <= 8u ? s1 : s2;
+  overflow = overflow || (shift >= 1 && bottom.w != kNoEntry) || (shift >= 2 && bottom.z != kNoEntry) ||
+             (shift >= 3 && bottom.y != kNoEntry);
   uvec4 p1_0 = uvec4(a, s0.xyz), p1_1 = uvec4(s0.w, s1.xyz), p1_2 = uvec4(s1.w, s2.xyz);
   uvec4 p2_0 = uvec4(a, b, s0.xy), p2_1 = uvec4(s0.zw, s1.xy), p2_2 = uvec4(s1.zw, s2.xy);
   uvec4 p3_0 = uvec4(a, b, c, s0.x), p3_1 = uvec4(s0.yzw, s1.x), p3_2 = uvec4(s1.yzw, s2.x);
@@ -114,6 +117,8 @@ void shiftStack(inout RegisterStack st, int shift, uint a, uint b, uint c, inout
   st.s0 = shift == 1 ? p1_0 : shift == 2 ? p2_0 : shift == 3 ? p3_0 : shift == -1 ? q1_0 : shift == -2 ? q2_0 : s0;
   st.s1 = shift == 1 ? p1_1 : shift == 2 ? p2_1 : shift == 3 ? p3_1 : shift == -1 ? q1_1 : shift == -2 ? q2_1 : s1;
   st.s2 = shift == 1 ? p1_2 : shift == 2 ? p2_2 : shift == 3 ? p3_2 : shift == -1 ? q1_2 : shift == -2 ? q2_2 : s2;
+  if (kRegisterStackEntries <= 8u) st.s2 = uvec4(kNoEntry);
+  if (kRegisterStackEntries <= 4u) st.s1 = uvec4(kNoEntry);
 }
 
 struct Walk {

@@ -32,10 +32,11 @@ VKMC_CONST uint kBvhLeafFirstLimit = 1u << 27u;  // a leaf's first triangle is b
 VKMC_CONST uint kBvhEmptySlot = 0x7f7fffffu;     // FLT_MAX's bits: no NaN on the way through a float texel
 VKMC_CONST uint kBvhNoEntry = 0xffffffffu;       // the walk's empty stack slot
 // The 4-wide walk's register stack (traversal.glsl RegisterStack: three uvec4). A walk pushes at most the
-// kBvhWideChildren - 1 children it does not enter next per inner node on its path, so over a 4-wide tree with at
-// most 4 inner nodes on any path it never outgrows them.
+// children it does not enter next (at most kBvhWideChildren - 1) per inner node on its path; a tree whose paths
+// pend no more than 4 or 8 of them gets a stack of that many (SPEC_REGISTER_STACK, registerStackEntries in
+// bvh.h): fewer registers to shift and spill on every step of its walk.
 VKMC_CONST uint kBvhWideChildren = 4u;
-VKMC_CONST uint kBvhRegisterStackEntries = 12u;
+VKMC_CONST uint kBvhRegisterStackEntries = 12u;  // the most the walk holds in registers
 
 VKMC_FN uint bvhLeafEntry(uint first, uint count) { return kBvhLeafTag | ((count - 1u) << 27u) | first; }
 VKMC_FN uint bvhLeafFirst(uint entry) { return entry & 0x07ffffffu; }

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <set>
 
 #include "../shaders/shared/geometry.h"
 #include "support/adversarial_geometry.h"
@@ -16,6 +17,35 @@ namespace {
 vk::Context& context() {
   static vk::Context ctx;
   return ctx;
+}
+
+// A soup as a scene of one material.
+Scene sceneOf(const test::Soup& soup) {
+  Scene scene;
+  scene.materials.push_back(Material{});
+  for (size_t i = 0; i < soup.positions.size(); ++i) {
+    scene.positions.push_back(soup.positions[i]);
+    scene.normals.push_back(glm::vec3(0, 1, 0));
+    scene.bounds.grow(soup.positions[i]);
+    if (i % 3 == 0) scene.materialIds.push_back(0);
+  }
+  return scene;
+}
+
+// Rays whose closest hit, and whose any-hit answer (hit or miss), differ from brute force over the soup's
+// triangles in the BVH's order. A walk cut short comes back as t = NaN and counts as wrong.
+std::pair<int, int> wrongHits(RayTracer& tracer, const std::vector<glm::vec3>& ordered, const std::vector<test::Ray>& rays) {
+  std::vector<gpu::TestRay> gpuRays;
+  for (const test::Ray& r : rays) gpuRays.push_back({glm::vec4(r.origin, r.tMax), glm::vec4(r.direction, 0.0f)});
+  std::vector<glm::vec4> closest = tracer.trace(gpuRays, false), any = tracer.trace(gpuRays, true);
+  int closestWrong = 0, anyWrong = 0;
+  for (size_t r = 0; r < rays.size(); ++r) {
+    HostHit want = test::bruteForce(ordered, rays[r]);
+    HostHit got{closest[r].x, closest[r].y, closest[r].z, glm::floatBitsToUint(closest[r].w)};
+    closestWrong += !test::sameClosestHit(got, want);
+    anyWrong += (glm::floatBitsToUint(any[r].w) != gpu::kMissPrimitive) != (want.triangle != gpu::kMissPrimitive);
+  }
+  return {closestWrong, anyWrong};
 }
 }  // namespace
 
@@ -130,40 +160,87 @@ TEST_P(PileOfLeaves, AWalkThroughEveryLeafCompletes) {
 INSTANTIATE_TEST_SUITE_P(GpuTraversal, PileOfLeaves, ::testing::Values(1000u, 400000u),
                          [](const auto& info) { return "leaves" + std::to_string(info.param); });
 
+// A full register stack loses no entry. A pile of triangles one above the other (z = 0, 1, ...), one per leaf,
+// every box over the unit square: a ray down through (0.9, 0.9) is inside every box, so every walk pushes every
+// child it does not enter and fills the stack to the tree's bound (registerStackEntries sizes it to that bound).
+// It misses every triangle but one larger one, placed in turn at each height, which the walk finds only if no
+// entry was dropped. Piles of 3, 12 and 48 leaves give stacks of 4, 8 and 12 entries.
+TEST(GpuTraversal, AFullRegisterStackLosesNoEntry) {
+  vk::Context& ctx = context();
+  std::set<uint32_t> sizes;
+  for (uint32_t count : {3u, 12u, 48u}) {
+    for (uint32_t found = 0; found < count; ++found) {
+      Scene scene;
+      scene.materials.push_back(Material{});
+      std::vector<Aabb> bounds(count);
+      for (uint32_t i = 0; i < count; ++i) {
+        const float reach = i == found ? 2.0f : 1.0f;  // only the larger triangle covers (0.9, 0.9)
+        for (glm::vec3 v : {glm::vec3(0, 0, i), glm::vec3(reach, 0, i), glm::vec3(0, reach, i)}) {
+          scene.positions.push_back(v);
+          scene.normals.push_back(glm::vec3(0, 0, 1));
+          scene.bounds.grow(v);
+          bounds[i].grow(v);
+        }
+        scene.materialIds.push_back(0);
+      }
+      BvhOptions oneTrianglePerLeaf;
+      oneTrianglePerLeaf.maxLeafSize = 1;
+      Bvh bvh = buildBvh(bounds, oneTrianglePerLeaf);
+      GpuScene gpuScene(ctx, scene, bvh);
+      sizes.insert(gpuScene.info().registerStackEntries);
+      EXPECT_LE(bvh.stats.wideMaxPending, gpuScene.info().registerStackEntries) << count << " leaves";
+      RayTracer tracer(ctx, gpuScene);
+      const float top = float(count) + 1.0f;
+      std::vector<gpu::TestRay> rays(8, gpu::TestRay{glm::vec4(0.9f, 0.9f, top, 1e30f), glm::vec4(0, 0, -1, 0)});
+      glm::vec4 closest = tracer.trace(rays, false)[7], any = tracer.trace(rays, true)[7];
+      EXPECT_FLOAT_EQ(closest.x, top - float(found)) << count << " leaves, the larger triangle at z = " << found;
+      const uint32_t hit = glm::floatBitsToUint(closest.w);
+      EXPECT_TRUE(hit < count && bvh.triangleOrder[hit] == found) << count << " leaves, at z = " << found;
+      EXPECT_NE(glm::floatBitsToUint(any.w), gpu::kMissPrimitive) << count << " leaves, at z = " << found;
+    }
+  }
+  EXPECT_EQ(sizes, (std::set<uint32_t>{4, 8, gpu::kBvhRegisterStackEntries})) << "every stack size should be filled";
+}
+
 // The adversarial soups of bvh_property_test (spheres and boxes at the origin, flat boxes, +-0 and denormals,
 // far-away and mixed-scale geometry) through the GPU walks of both node layouts, against brute force.
 class GpuTraversalProperty : public ::testing::TestWithParam<test::Soup> {};
 
 TEST_P(GpuTraversalProperty, BothLayoutsAgreeWithBruteForce) {
   const test::Soup& soup = GetParam();
-  Scene scene;
-  scene.materials.push_back(Material{});
-  for (size_t i = 0; i < soup.positions.size(); ++i) {
-    scene.positions.push_back(soup.positions[i]);
-    scene.normals.push_back(glm::vec3(0, 1, 0));
-    scene.bounds.grow(soup.positions[i]);
-    if (i % 3 == 0) scene.materialIds.push_back(0);
-  }
+  Scene scene = sceneOf(soup);
   Bvh bvh = buildBvh(scene.triangleBounds());
-  std::vector<glm::vec3> pos = test::ordered(soup, bvh);
   vk::Context& ctx = context();
   GpuScene gpuScene(ctx, scene, bvh, false, true);
   std::vector<test::Ray> rays = test::raysAt(soup, 2000, 9);
-  std::vector<gpu::TestRay> gpuRays;
-  for (const test::Ray& r : rays) gpuRays.push_back({glm::vec4(r.origin, r.tMax), glm::vec4(r.direction, 0.0f)});
   for (bool binary : {false, true}) {
     RayTracer tracer(ctx, gpuScene, binary);
-    std::vector<glm::vec4> closest = tracer.trace(gpuRays, false), any = tracer.trace(gpuRays, true);
-    int closestWrong = 0, anyWrong = 0;
-    for (size_t r = 0; r < rays.size(); ++r) {
-      HostHit want = test::bruteForce(pos, rays[r]);
-      HostHit got{closest[r].x, closest[r].y, closest[r].z, glm::floatBitsToUint(closest[r].w)};
-      closestWrong += !test::sameClosestHit(got, want);
-      anyWrong += (glm::floatBitsToUint(any[r].w) != gpu::kMissPrimitive) != (want.triangle != gpu::kMissPrimitive);
-    }
+    auto [closestWrong, anyWrong] = wrongHits(tracer, test::ordered(soup, bvh), rays);
     EXPECT_EQ(closestWrong, 0) << soup.name << (binary ? ", binary layout" : ", 4-wide layout");
     EXPECT_EQ(anyWrong, 0) << soup.name << (binary ? ", binary layout" : ", 4-wide layout");
   }
+}
+
+// The walks' register stack is sized to the tree (registerStackEntries: 4, 8 or 12 entries). Soups whose trees
+// choose each size are walked against brute force. Where no walk can outgrow the stack the kernel has no deep pass,
+// so a walk that did would come back cut (t = NaN) and count as wrong.
+TEST(GpuTraversal, EveryRegisterStackSizeAgreesWithBruteForce) {
+  std::set<uint32_t> sizes;
+  for (int triangles : {2, 6, 16, 60, 2000}) {
+    test::Soup soup = test::randomSoup(triangles, 17, 1.0f, glm::vec3(0.0f), "random soup of " + std::to_string(triangles));
+    Scene scene = sceneOf(soup);
+    Bvh bvh = buildBvh(scene.triangleBounds());
+    vk::Context& ctx = context();
+    GpuScene gpuScene(ctx, scene, bvh);
+    const uint32_t entries = gpuScene.info().registerStackEntries;
+    EXPECT_EQ(entries, registerStackEntries(bvh.stats)) << soup.name;
+    sizes.insert(entries);
+    RayTracer tracer(ctx, gpuScene);
+    auto [closestWrong, anyWrong] = wrongHits(tracer, test::ordered(soup, bvh), test::raysAt(soup, 4000, 23));
+    EXPECT_EQ(closestWrong, 0) << soup.name << ", a stack of " << entries;
+    EXPECT_EQ(anyWrong, 0) << soup.name << ", a stack of " << entries;
+  }
+  EXPECT_EQ(sizes, (std::set<uint32_t>{4, 8, gpu::kBvhRegisterStackEntries})) << "every stack size should be walked";
 }
 
 INSTANTIATE_TEST_SUITE_P(Adversarial, GpuTraversalProperty, ::testing::ValuesIn(test::adversarialSoups()),

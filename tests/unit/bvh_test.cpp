@@ -158,12 +158,13 @@ TEST(Bvh, BuildStatisticsAreConsistent) {
   EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](bool b) { return b; }));
 }
 
-// The kernels leave out the deep passes where no walk can outgrow the register stack (walksCanOutgrowRegisterStack).
-// The worst walk hits every child of every node and pushes all but the nearest: its stack must stay within 3 per
-// inner node on the path, and the depth the bound uses must be the tree's.
-TEST(Bvh, NoWalkOutgrowsThreeEntriesPerInnerNodeOnItsPath) {
-  std::set<uint32_t> depths;
-  for (int triangles : {1, 3, 20, 60, 200, 2000, 20000}) {
+// The kernels size the register stack to the tree (registerStackEntries) and leave out the deep passes where no
+// walk can outgrow it (walksCanOutgrowRegisterStack). A walk pends, per inner node on its path, the children it
+// does not enter next: the bound is the largest such sum over the tree's paths, and the walk that hits every child
+// of every node (pushing all but the nearest) must stay within it.
+TEST(Bvh, NoWalkPendsMoreEntriesThanTheTreesBound) {
+  std::set<uint32_t> depths, stacks;
+  for (int triangles : {1, 3, 8, 20, 60, 200, 2000, 20000}) {
     Soup soup = randomSoup(triangles, 11);
     const std::vector<BvhWideNode>& wide = soup.bvh.wideNodes;
     auto children = [&](uint32_t node) {
@@ -178,8 +179,17 @@ TEST(Bvh, NoWalkOutgrowsThreeEntriesPerInnerNodeOnItsPath) {
         if (!gpu::bvhIsLeaf(c)) d = std::max(d, depth(c));
       return d + 1;
     };
-    const uint32_t wideDepth = depth(0);
+    std::function<uint32_t(uint32_t)> pending = [&](uint32_t node) {
+      const std::vector<uint32_t> c = children(node);
+      uint32_t below = 0;
+      for (uint32_t child : c)
+        if (!gpu::bvhIsLeaf(child)) below = std::max(below, pending(child));
+      return uint32_t(c.size()) - 1 + below;
+    };
+    const uint32_t wideDepth = depth(0), bound = pending(0);
     EXPECT_EQ(soup.bvh.stats.wideMaxDepth, wideDepth) << triangles << " triangles";
+    EXPECT_EQ(soup.bvh.stats.wideMaxPending, bound) << triangles << " triangles";
+    EXPECT_LE(bound, 3 * wideDepth) << triangles << " triangles";
     depths.insert(wideDepth);
     size_t most = 0;
     std::vector<uint32_t> stack;
@@ -197,17 +207,30 @@ TEST(Bvh, NoWalkOutgrowsThreeEntriesPerInnerNodeOnItsPath) {
         walking = false;
       }
     }
-    EXPECT_LE(most, 3 * wideDepth) << triangles << " triangles";
-    EXPECT_EQ(walksCanOutgrowRegisterStack(soup.bvh.stats), 3 * wideDepth > gpu::kBvhRegisterStackEntries) << triangles;
+    EXPECT_LE(most, bound) << triangles << " triangles";
+    const uint32_t entries = registerStackEntries(soup.bvh.stats);
+    stacks.insert(entries);
+    EXPECT_EQ(walksCanOutgrowRegisterStack(soup.bvh.stats), bound > gpu::kBvhRegisterStackEntries) << triangles;
     if (!walksCanOutgrowRegisterStack(soup.bvh.stats)) {
-      EXPECT_LE(most, gpu::kBvhRegisterStackEntries) << triangles;
+      EXPECT_LE(bound, entries) << triangles;
+    }
+    EXPECT_TRUE(entries == 4 || entries == 8 || entries == gpu::kBvhRegisterStackEntries) << entries;
+    if (entries > 4) {
+      EXPECT_GT(bound, entries == 8 ? 4u : 8u) << triangles << ": a smaller stack would hold every walk";
     }
   }
   EXPECT_GE(depths.size(), 4u);  // shallow trees, which skip the deep passes, and deep ones, which need them
+  EXPECT_EQ(stacks, (std::set<uint32_t>{4, 8, gpu::kBvhRegisterStackEntries})) << "every stack size should be chosen";
   BvhStats s;
-  s.wideMaxDepth = 4;
+  s.wideMaxPending = 4;
+  EXPECT_EQ(registerStackEntries(s), 4u);
+  s.wideMaxPending = 5;
+  EXPECT_EQ(registerStackEntries(s), 8u);
+  s.wideMaxPending = 9;
+  EXPECT_EQ(registerStackEntries(s), 12u);
   EXPECT_FALSE(walksCanOutgrowRegisterStack(s));
-  s.wideMaxDepth = 5;
+  s.wideMaxPending = 13;
+  EXPECT_EQ(registerStackEntries(s), 12u);
   EXPECT_TRUE(walksCanOutgrowRegisterStack(s));
 }
 
