@@ -473,6 +473,10 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                                 {"formula", "survival = min(scale[depth] * max(throughput), 0.999)"}};
   }
   if (r.ears) j["ears"] = earsJson(*r.ears);
+  if (r.ears && r.earsGuard.outOfBudget)
+    j["ears"]["guard"] = {{"out_of_budget", true},
+                          {"rest_rendered_by", r.earsGuard.fellBack ? "throughput" : "ears"},
+                          {"from_sample", r.earsGuard.fromSample}};
   if (r.ears && r.earsGuard.compared) {
     auto pass = [](const PolicyPass& p) {
       return nlohmann::json{{"samples_measured", p.samples},
@@ -484,7 +488,8 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                           {"throughput", pass(r.earsGuard.throughput)},
                           {"rest_rendered_by", r.earsGuard.fellBack ? "throughput" : "ears"},
                           {"ears_first_look", r.earsGuard.secondLook ? pass(r.earsGuard.firstEars) : nlohmann::json(nullptr)},
-                          {"from_sample", r.earsGuard.fromSample}};
+                          {"from_sample", r.earsGuard.fromSample},
+                          {"out_of_budget", false}};
   }
   if (o.timeBudget > 0.0) j["time_budget"] = o.timeBudget;
   // Checkpoints: a resumed render's counters and seconds include the runs before it (pass time only).

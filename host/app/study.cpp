@@ -48,6 +48,24 @@ std::string cacheDir() {
   return ".vkmc-cache";
 }
 
+// "constant": one number or [r, g, b], each finite and at least 0 (a radiance).
+glm::vec3 constantReference(const nlohmann::json& v) {
+  auto channel = [](const nlohmann::json& x) {
+    if (!x.is_number() || !std::isfinite(x.get<double>()) || x.get<double>() < 0.0 || x.get<double>() > 3.0e38)
+      throw Error("study: 'reference' constant values must be finite numbers of at least 0");
+    return x.get<float>();
+  };
+  if (v.is_number()) return glm::vec3(channel(v));
+  if (!v.is_array() || v.size() != 3) throw Error("study: 'reference' constant must be a number or [r, g, b]");
+  return glm::vec3(channel(v[0]), channel(v[1]), channel(v[2]));
+}
+
+std::string shortNumber(float x) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%g", double(x));
+  return buf;
+}
+
 }  // namespace
 
 Study loadStudy(const std::string& path) {
@@ -84,8 +102,10 @@ Study loadStudy(const std::string& path) {
     else if (r.contains("spp") && r["spp"].is_number_integer() && r["spp"].get<int64_t>() >= 1 &&
              r["spp"].get<int64_t>() <= (1 << 20))
       s.referenceSpp = r["spp"].get<uint32_t>();
+    else if (r.contains("constant"))
+      s.referenceConstant = constantReference(r["constant"]);
     else
-      throw Error("study: 'reference' must be {\"exr\": path} or {\"spp\": N}");
+      throw Error("study: 'reference' must be {\"exr\": path}, {\"spp\": N} or {\"constant\": [r, g, b]}");
   }
   if (!j.contains("configurations") || !j["configurations"].is_array() || j["configurations"].empty())
     throw Error("study: 'configurations' must be a non-empty array");
@@ -135,7 +155,12 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
   // Reference: given, or rendered with the first configuration and cached by a hash of what determines it.
   ExrImage reference;
   std::string referenceNote;
-  if (!study.referenceExr.empty()) {
+  if (study.referenceConstant) {
+    const glm::vec3 c = *study.referenceConstant;
+    reference.width = int(study.width), reference.height = int(study.height);
+    for (int k = 0; k < 3; ++k) reference.channels[std::string(1, "RGB"[k])].assign(size_t(study.width) * study.height, c[k]);
+    referenceNote = "constant (" + shortNumber(c.r) + ", " + shortNumber(c.g) + ", " + shortNumber(c.b) + ")";
+  } else if (!study.referenceExr.empty()) {
     reference = readExr(study.referenceExr);
     referenceNote = study.referenceExr;
   } else {

@@ -14,6 +14,9 @@
 // | repeats        | renders per configuration and rung (medians reported)                      | 3       |
 // | seed           | first seed; repeat r uses seed + r                                         | 1       |
 #pragma once
+#include <glm/glm.hpp>
+
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +35,8 @@ struct Study {
   std::string scenePath;
   uint32_t width = 64, height = 64;
   std::string referenceExr;  // given reference, or empty
+  // An analytic reference, the same in every pixel (a furnace's Le / (1 - albedo)): "reference": {"constant": [r, g, b]}
+  std::optional<glm::vec3> referenceConstant;
   uint32_t referenceSpp = 1024;
   std::vector<StudyConfiguration> configurations;
   std::vector<double> ladder;  // spp or seconds

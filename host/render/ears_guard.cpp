@@ -67,7 +67,24 @@ bool earsGuardLooksAgain(EarsFallback mode, const PolicyPass& ears, const Policy
   return e < t && e >= kEarsSecondLookRatio * t;
 }
 
+double earsLearningSecondsLeft(uint32_t trainingSamples, uint32_t earsSamples, double earsSecondsPerSample,
+                               uint32_t throughputSamples, double throughputSecondsPerSample) {
+  return double(trainingSamples + earsSamples) * earsSecondsPerSample + double(throughputSamples) * throughputSecondsPerSample;
+}
+
+bool earsLearningFits(double budget, double elapsed, double secondsLeft) {
+  return !(budget > 0.0) || elapsed + secondsLeft <= kEarsLearningBudgetShare * budget;
+}
+
 std::string earsGuardLine(const EarsGuardOutcome& g) {
+  if (g.outOfBudget) {
+    char buf[240];
+    std::snprintf(buf, sizeof(buf),
+                  "ears guard  learning and comparing would take more than %g of the time budget: %s from sample %u\n",
+                  kEarsLearningBudgetShare, g.fellBack ? "throughput roulette, not compared," : "ears, training cut short,",
+                  g.fromSample);
+    return buf;
+  }
   if (!g.compared) return "";
   char again[120] = "";
   if (g.secondLook)

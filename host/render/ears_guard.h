@@ -49,9 +49,25 @@ struct PolicyTally {
 // costed as a training one; where nothing was split, the whole passes' seconds a sample.
 double earsSecondsPerSample(const PolicyTally& t, double pixels, double passSamples, double trainingPixelSamples);
 
+// Under a time budget, EARS's learning (its training passes) and the guard's comparison may take at most this share
+// of it. Where what is left of them would not fit, training stops there, and under auto and always throughput
+// roulette renders the rest without a comparison: learning that cannot pay back within the budget is not done
+// (the stiff furnace at 96x96 spends about a second a sample). The choice depends on time alone: unbiased.
+constexpr double kEarsLearningBudgetShare = 0.25;
+
+// The seconds EARS's learning still needs: `trainingSamples` more samples a pixel of training passes and
+// `earsSamples` of EARS passes before the choice at earsSecondsPerSample (the last training pass's), and
+// `throughputSamples` of throughput roulette's measured pass at throughputSecondsPerSample (the first training
+// pass's, which learned nothing yet and so decided as throughput roulette does, in heavier kernels: an upper bound).
+double earsLearningSecondsLeft(uint32_t trainingSamples, uint32_t earsSamples, double earsSecondsPerSample,
+                               uint32_t throughputSamples, double throughputSecondsPerSample);
+// Whether it fits in the budget's share (kEarsLearningBudgetShare) after `elapsed` seconds; always without a budget.
+bool earsLearningFits(double budget, double elapsed, double secondsLeft);
+
 // The guard's outcome, for the report.
 struct EarsGuardOutcome {
   bool compared = false;      // both passes ran
+  bool outOfBudget = false;   // the learning and the comparison did not fit the time budget (earsLearningFits)
   bool fellBack = false;      // throughput roulette rendered the rest
   uint32_t fromSample = 0;    // the first sample after the comparison
   PolicyPass ears, throughput;

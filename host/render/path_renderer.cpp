@@ -346,16 +346,33 @@ uint32_t PathRenderer::renderWavefront(uint32_t firstPixel, uint32_t pixelCount,
 // outliers. Dropping passes chosen in advance is unbiased; their own seed keeps every image sample's random
 // numbers apart from those that trained its decisions. Their rays and time are the render's cost. Returns the
 // next pass's size.
-uint32_t PathRenderer::trainEarsPasses(const Film& film, RenderStats& stats) {
+uint32_t PathRenderer::trainEarsPasses(const Film& film, RenderStats& stats, Clock::time_point start) {
   const uint32_t pixels = settings_.width * settings_.height;
   uint32_t samples = 1;
   earsTraining_ = true;
+  earsOutOfBudget_ = false;
+  double firstPassPerSample = 0.0;
   for (uint32_t pass = 0; pass < kEarsTrainingPasses; ++pass) {
     const uint64_t raysBefore = stats.rays();
+    const auto passStart = Clock::now();
     renderSamples(0, samples, stats);
+    const double perSample = since(passStart) / samples;
+    if (pass == 0) firstPassPerSample = perSample;
     updateEarsStatistics(film, double(stats.rays() - raysBefore) / (double(pixels) * samples));
     ears_->noteTrainingSamples(samples);
     samples = std::min(2 * samples, samplesPerPass());
+    // What learning still needs: the training passes left and, where the guard will compare, a warm-up sample
+    // (a budget's first pass takes one), two looks of EARS and throughput roulette's full pass.
+    uint32_t trainingLeft = 0;
+    for (uint32_t later = pass + 1, n = samples; later < kEarsTrainingPasses; ++later, n = std::min(2 * n, samplesPerPass()))
+      trainingLeft += n;
+    const bool compares = earsGuardPending_;
+    const double left = earsLearningSecondsLeft(trainingLeft, compares ? kEarsGuardWarmPasses + 2 * kEarsGuardSamples : 0u,
+                                                perSample, compares ? samplesPerPass() : 0u, firstPassPerSample);
+    if (!earsLearningFits(settings_.timeBudget, since(start), left)) {
+      earsOutOfBudget_ = true;
+      break;
+    }
   }
   earsTraining_ = false;
   film_.zero();
@@ -653,8 +670,15 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
     earsGuardPending_ = settings_.estimator.earsMayFallBack();
     earsWarmPasses_ = 0;
     earsPhase_ = EarsPhase::Ears;
-    earsSamples = trainEarsPasses(state.film, stats);
+    earsSamples = trainEarsPasses(state.film, stats, start);
     if (earsGuardPending_ && kEarsGuardWarmPasses == 0) earsPhase_ = EarsPhase::MeasureEars;
+    if (earsOutOfBudget_) {  // no comparison: throughput roulette where the guard may fall back, else EARS
+      earsGuardPending_ = false;
+      earsGuard_.outOfBudget = true;
+      earsGuard_.fromSample = state.nextSample;
+      earsGuard_.fellBack = settings_.estimator.earsFallback != EarsFallback::Never;
+      earsPhase_ = earsGuard_.fellBack ? EarsPhase::Throughput : EarsPhase::Ears;
+    }
   }
   for (uint32_t s = state.nextSample; s < settings_.spp;) {
     if (budget > 0.0 && s > firstSample && since(start) >= budget) break;

@@ -5,6 +5,7 @@
 #pragma once
 #include <glm/glm.hpp>
 
+#include <chrono>
 #include <map>
 #include <memory>
 #include <string>
@@ -84,7 +85,10 @@ class PathRenderer {
   void foldFilm(Film& film);
   // EARS after a training wavefront of `cameras` camera paths: their sums into the cache.
   void trainEars(uint32_t cameras, RenderStats& stats);
-  uint32_t trainEarsPasses(const Film& film, RenderStats& stats);
+  // Under a time budget (from `start`) training stops where it and the guard's comparison would not fit
+  // (earsLearningFits): earsOutOfBudget_.
+  uint32_t trainEarsPasses(const Film& film, RenderStats& stats, std::chrono::steady_clock::time_point start);
+  bool earsOutOfBudget_ = false;
   bool earsTraining_ = false;  // a training pass: its own seed, its samples dropped
   // Returns the pass's sums (after - before).
   std::vector<PixelSums> updateEarsStatistics(const Film& film, double raysPerSample);

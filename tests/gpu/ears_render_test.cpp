@@ -194,6 +194,32 @@ TEST(Ears, GuardMeasuresOverSeveralTiledPasses) {
   EXPECT_TRUE(regionMatches(whole(r.film), glm::dvec3(2.0), 5.0));
 }
 
+// Under a time budget too short for EARS to learn and the guard to compare (kEarsLearningBudgetShare of it),
+// training stops after its first pass and, under auto, throughput roulette renders the image without a
+// comparison; under never, EARS goes on with what it learned. (A budget of a microsecond: no pass fits in a
+// quarter of it on any device, so this depends on no machine's speed.)
+TEST(Ears, ABudgetTooShortToLearnIn) {
+  for (EarsFallback mode : {EarsFallback::Auto, EarsFallback::Never}) {
+    RenderOptions o;
+    o.scenePath = scenePath("furnace.gltf");
+    o.width = o.height = 16;
+    o.spp = 64;
+    o.timeBudget = 1e-6;
+    o.estimator = ears();
+    o.estimator.earsFallback = mode;
+    o.progress = false;
+    RenderOutcome r = runRender(sharedContext(), o);
+    ASSERT_TRUE(r.ears);
+    EXPECT_TRUE(r.earsGuard.outOfBudget);
+    EXPECT_FALSE(r.earsGuard.compared);
+    EXPECT_EQ(r.earsGuard.fellBack, mode == EarsFallback::Auto);
+    EXPECT_EQ(r.earsGuard.fromSample, 0u);
+    EXPECT_EQ(r.ears->trainingSamples, 1u) << "training stops after its first pass";
+    EXPECT_EQ(r.film.totalSamples(), 16u * 16u) << "one pass, as any render whose budget is spent";
+    EXPECT_NE(earsGuardLine(r.earsGuard).find("time budget"), std::string::npos);
+  }
+}
+
 TEST(Ears, GuardWithAlwaysIsReproducible) {
   EstimatorConfig always = ears();
   always.earsFallback = EarsFallback::Always;

@@ -125,3 +125,36 @@ TEST(Study, TimeBudgetRendersReachMoreSamplesWithMoreTime) {
   EXPECT_GT(rows[1].spp, 2 * rows[0].spp);
   EXPECT_LT(rows[1].relmse, rows[0].relmse);
 }
+
+// A reference the scene's physics gives exactly: the furnace (every surface albedo 0.5, emission 1, seen from
+// inside) has radiance 1 / (1 - 0.5) = 2 everywhere. Its relMSE must fall as 1/spp all the way (a biased renderer
+// would level off), and the summary must name the reference.
+TEST(Study, AConstantReferenceMeasuresTheFurnaceAgainstItsAnalyticRadiance) {
+  fs::path file = writeStudy("furnace", R"({"name": "furnace", "scene": ")" + std::string(VKMC_SOURCE_DIR) +
+                                            R"(/scenes/furnace.gltf", "width": 16, "height": 16, "reference": {"constant": 2},
+      "configurations": [{"name": "baseline"}], "spp": [16, 1024], "repeats": 1})");
+  Study study = loadStudy(file.string());
+  ASSERT_TRUE(study.referenceConstant.has_value());
+  EXPECT_EQ(*study.referenceConstant, glm::vec3(2.0f));
+  fs::path out = fs::temp_directory_path() / "vkmc-study-furnace";
+  fs::remove_all(out);
+  std::vector<StudyRow> rows = runStudy(study, out.string());
+  ASSERT_EQ(rows.size(), 2u);
+  double slope = std::log(rows[1].relmse / rows[0].relmse) / std::log(double(rows[1].spp) / rows[0].spp);
+  EXPECT_GT(slope, -1.3);
+  EXPECT_LT(slope, -0.7);
+  EXPECT_NE(slurp(out / "summary.md").find("constant (2, 2, 2)"), std::string::npos);
+}
+
+TEST(Study, RejectsBadConstantReferences) {
+  Study s = loadStudy(writeStudy("rgb", R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1],
+      "reference": {"constant": [1, 0.5, 100]}})").string());
+  ASSERT_TRUE(s.referenceConstant.has_value());
+  EXPECT_EQ(*s.referenceConstant, glm::vec3(1.0f, 0.5f, 100.0f));
+  for (const char* bad : {R"("2")", "[1, 2]", "-1", "[1, 2, -3]", "1e39", "{}"})
+    EXPECT_THROW(loadStudy(writeStudy("badconstant", std::string(R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1], "reference": {"constant": )") +
+                                                         bad + "}}")
+                               .string()),
+                 Error)
+        << bad;
+}

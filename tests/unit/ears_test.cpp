@@ -276,3 +276,14 @@ TEST(EarsGuard, ACloseFirstMeasureOfEarsIsTakenAgain) {
   EXPECT_FALSE(earsGuardLooksAgain(EarsFallback::Never, PolicyPass{1.0, 1.25}, throughput));
   EXPECT_TRUE(earsGuardLooksAgain(EarsFallback::Always, PolicyPass{1.0, 0.5}, throughput));  // its tests' path
 }
+
+// Under a time budget, learning (training passes, EARS's looks and throughput roulette's pass, each costed at its
+// proxy's seconds a sample) must fit in kEarsLearningBudgetShare of it; without a budget it always fits.
+TEST(EarsGuard, LearningMustFitInItsShareOfATimeBudget) {
+  EXPECT_DOUBLE_EQ(earsLearningSecondsLeft(6, 9, 0.01, 28, 0.02), 15 * 0.01 + 28 * 0.02);
+  EXPECT_DOUBLE_EQ(earsLearningSecondsLeft(0, 0, 0.5, 0, 0.5), 0.0);
+  EXPECT_TRUE(earsLearningFits(0.0, 100.0, 1e9)) << "no budget";
+  EXPECT_TRUE(earsLearningFits(4.0, 0.2, kEarsLearningBudgetShare * 4.0 - 0.2));
+  EXPECT_FALSE(earsLearningFits(4.0, 0.2, kEarsLearningBudgetShare * 4.0 - 0.1));
+  EXPECT_FALSE(earsLearningFits(16.0, kEarsLearningBudgetShare * 16.0 + 0.01, 0.0)) << "already past its share";
+}
