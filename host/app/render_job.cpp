@@ -489,6 +489,10 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                           {"rest_rendered_by", r.earsGuard.fellBack ? "throughput" : "ears"},
                           {"ears_first_look", r.earsGuard.secondLook ? pass(r.earsGuard.firstEars) : nlohmann::json(nullptr)},
                           {"from_sample", r.earsGuard.fromSample},
+                          {"watched", r.earsGuard.watched},
+                          {"watched_ears", r.earsGuard.watched && r.earsGuard.watchedEars.samples > 0 ? pass(r.earsGuard.watchedEars)
+                                                                                                       : nlohmann::json(nullptr)},
+                          {"switched_later", r.earsGuard.switchedLater},
                           {"out_of_budget", false}};
   }
   if (o.timeBudget > 0.0) j["time_budget"] = o.timeBudget;

@@ -60,6 +60,8 @@ bool earsFallsBack(EarsFallback mode, const PolicyPass& ears, const PolicyPass& 
   return !(ears.efficiency() > throughput.efficiency());
 }
 
+bool earsGuardWatches(EarsFallback mode) { return mode == EarsFallback::Auto; }
+
 bool earsGuardLooksAgain(EarsFallback mode, const PolicyPass& ears, const PolicyPass& throughput) {
   if (mode == EarsFallback::Never) return false;
   if (mode == EarsFallback::Always) return true;
@@ -90,12 +92,19 @@ std::string earsGuardLine(const EarsGuardOutcome& g) {
   if (g.secondLook)
     std::snprintf(again, sizeof(again), " (measured again: its first %u samples read %.4g)", g.firstEars.samples,
                   g.firstEars.efficiency());
-  char buf[420];
+  char watch[200] = "";
+  if (g.switchedLater)
+    std::snprintf(watch, sizeof(watch), "; then, watched over %u samples a pixel, ears read %.4g: throughput roulette",
+                  g.watchedEars.samples, g.watchedEars.efficiency());
+  else if (g.watched && g.watchedEars.samples > 0)
+    std::snprintf(watch, sizeof(watch), "; watched over %u more samples a pixel, ears read %.4g", g.watchedEars.samples,
+                  g.watchedEars.efficiency());
+  char buf[640];
   std::snprintf(buf, sizeof(buf),
                 "ears guard  efficiency 1/(relative variance x seconds) a sample, measured on %u samples a pixel of ears "
-                "and %u of throughput roulette: ears %.4g%s, throughput roulette %.4g; %s from sample %u\n",
+                "and %u of throughput roulette: ears %.4g%s, throughput roulette %.4g; %s%s from sample %u\n",
                 g.ears.samples, g.throughput.samples, g.ears.efficiency(), again, g.throughput.efficiency(),
-                g.fellBack ? "throughput roulette" : "ears", g.fromSample);
+                g.switchedLater ? "ears" : g.fellBack ? "throughput roulette" : "ears", watch, g.fromSample);
   return buf;
 }
 

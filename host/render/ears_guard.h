@@ -73,6 +73,13 @@ struct EarsGuardOutcome {
   PolicyPass ears, throughput;
   bool secondLook = false;    // EARS was measured again, on a later pass (earsGuardLooksAgain)
   PolicyPass firstEars;       // then: its first measure
+  // Where auto chose EARS, its passes after the choice go on being measured, together, against throughput
+  // roulette's pass (earsGuardWatches): a few samples a pixel of a heavy-tailed scene can miss the rare large
+  // samples that make EARS the worse (veach_mis: chosen in one of three 4-s renders, then 0.41-0.48x). Where
+  // EARS falls behind, throughput roulette renders the rest from that pass on.
+  bool watched = false;       // EARS chosen under auto: its later passes measured
+  PolicyPass watchedEars;     // their measure when the guard last looked
+  bool switchedLater = false; // throughput roulette took over while watching (fromSample: where)
 };
 
 // EARS's cache keeps learning after its first measured samples: on two_rooms a pass's efficiency rose from about
@@ -88,6 +95,10 @@ bool earsGuardLooksAgain(EarsFallback mode, const PolicyPass& ears, const Policy
 // Whether throughput roulette renders the rest: Always, or under Auto when its efficiency is at least EARS's (a tie
 // goes to the cheaper kernels). Never: false.
 bool earsFallsBack(EarsFallback mode, const PolicyPass& ears, const PolicyPass& throughput);
+
+// Whether EARS, once chosen, is watched (EarsGuardOutcome::watched): under auto only (always has switched; never
+// does not compare).
+bool earsGuardWatches(EarsFallback mode);
 
 // One line for the report: what was measured and chosen.
 std::string earsGuardLine(const EarsGuardOutcome& g);

@@ -438,21 +438,19 @@ double PathRenderer::earsTrainingPixelSamples(uint32_t samples) const {
 // measureThroughputForGuard's, whose V_img stays out of EARS's factors).
 void PathRenderer::afterEarsPass(const Film& film, double raysPerSample, double seconds, uint32_t samples, uint32_t nextSample) {
   switch (earsPhase_) {
-    case EarsPhase::Ears:
-      updateEarsStatistics(film, raysPerSample);
+    case EarsPhase::Ears: {
+      std::vector<PixelSums> pass = updateEarsStatistics(film, raysPerSample);
+      if (earsGuard_.watched && !earsGuard_.fellBack) watchEars(pass, samples, seconds, nextSample);
       if (earsGuardPending_ && ++earsWarmPasses_ >= kEarsGuardWarmPasses) earsPhase_ = EarsPhase::MeasureEars;
       return;
+    }
     case EarsPhase::Throughput:
       // Shadow-ray roulette's estimate from every sample so far, as without EARS.
       if (settings_.estimator.shadowRrThreshold > 0.0f && ctx_.unifiedMemory()) refreshPixelEstimate(film);
       return;
     case EarsPhase::MeasureEars:
     case EarsPhase::MeasureEarsAgain:
-      earsTally_.addPass(updateEarsStatistics(film, raysPerSample), samples, seconds);
-      earsTally_.trainSeconds += earsPassTrainSeconds_;
-      earsTally_.leanSeconds += earsPassLeanSeconds_;
-      earsTally_.trainPixelSamples += earsPassTrainPixelSamples_;
-      earsTally_.leanPixelSamples += earsPassLeanPixelSamples_;
+      addEarsPassToTally(updateEarsStatistics(film, raysPerSample), samples, seconds);
       if (earsTally_.samples < kEarsGuardSamples) return;
       if (earsPhase_ == EarsPhase::MeasureEars) earsPhase_ = EarsPhase::MeasureThroughput;
       else decideEarsGuard(nextSample, true);
@@ -482,18 +480,47 @@ void PathRenderer::measureThroughputForGuard(const Film& film, uint32_t sampleIn
   if (throughputTally_.samples >= kEarsGuardSamples) decideEarsGuard(sampleIndex, false);
 }
 
+void PathRenderer::addEarsPassToTally(const std::vector<PixelSums>& pass, uint32_t samples, double seconds) {
+  earsTally_.addPass(pass, samples, seconds);
+  earsTally_.trainSeconds += earsPassTrainSeconds_;
+  earsTally_.leanSeconds += earsPassLeanSeconds_;
+  earsTally_.trainPixelSamples += earsPassTrainPixelSamples_;
+  earsTally_.leanPixelSamples += earsPassLeanPixelSamples_;
+}
+
+// Each policy's measure from its tally, its variances relative to `scale`: EARS's seconds a sample as in a pass of
+// its later size.
+PolicyPass PathRenderer::earsMeasure(const std::vector<glm::vec4>& scale) const {
+  const uint32_t later = samplesPerPass();
+  return {relativeSampleVariance(earsTally_.sums, scale, gpu::kEarsEpsilon),
+          earsSecondsPerSample(earsTally_, double(settings_.width) * settings_.height, later, earsTrainingPixelSamples(later)),
+          earsTally_.samples};
+}
+PolicyPass PathRenderer::throughputMeasure(const std::vector<glm::vec4>& scale) const {
+  return {relativeSampleVariance(throughputTally_.sums, scale, gpu::kEarsEpsilon),
+          throughputTally_.seconds / throughputTally_.samples, throughputTally_.samples};
+}
+
+// EARS's passes after auto chose it, measured together against throughput roulette's pass, both relative to the
+// latest estimate: where EARS falls behind, throughput roulette renders the rest (EarsGuardOutcome::watched).
+void PathRenderer::watchEars(const std::vector<PixelSums>& pass, uint32_t samples, double seconds, uint32_t nextSample) {
+  addEarsPassToTally(pass, samples, seconds);
+  const PolicyPass ears = earsMeasure(earsEstimate_.smoothed), throughput = throughputMeasure(earsEstimate_.smoothed);
+  if (!(std::isfinite(ears.relativeVariance) && std::isfinite(throughput.relativeVariance))) return;
+  earsGuard_.watchedEars = ears;
+  if (!earsFallsBack(EarsFallback::Auto, ears, throughput)) return;
+  earsGuard_.fellBack = earsGuard_.switchedLater = true;
+  earsGuard_.fromSample = nextSample;
+  earsPhase_ = EarsPhase::Throughput;
+  earsTally_ = throughputTally_ = PolicyTally{};
+}
+
 void PathRenderer::decideEarsGuard(uint32_t nextSample, bool secondLook) {
   earsPhase_ = EarsPhase::Ears;
   // A second look's estimate holds EARS's next pass: as many samples as the first look's scale, or more.
   const std::vector<glm::vec4>& scale = secondLook ? earsEstimate_.smoothed : earsGuardScale_;
-  const double vEars = relativeSampleVariance(earsTally_.sums, scale, gpu::kEarsEpsilon);
-  const double vThroughput = relativeSampleVariance(throughputTally_.sums, scale, gpu::kEarsEpsilon);
-  const uint32_t later = samplesPerPass();
-  const PolicyPass ears{vEars,
-                        earsSecondsPerSample(earsTally_, double(settings_.width) * settings_.height, later,
-                                             earsTrainingPixelSamples(later)),
-                        earsTally_.samples};
-  const PolicyPass throughput{vThroughput, throughputTally_.seconds / throughputTally_.samples, throughputTally_.samples};
+  const PolicyPass ears = earsMeasure(scale), throughput = throughputMeasure(scale);
+  const double vEars = ears.relativeVariance, vThroughput = throughput.relativeVariance;
   const EarsFallback mode = settings_.estimator.earsFallback;
   if (!(std::isfinite(vEars) && std::isfinite(vThroughput))) {
     // Nothing to compare (no pixel with two samples): EARS as chosen, or after a first look that EARS lost, the
@@ -520,7 +547,10 @@ void PathRenderer::decideEarsGuard(uint32_t nextSample, bool secondLook) {
     if (earsGuard_.fellBack) earsPhase_ = EarsPhase::Throughput;
   }
   earsGuardPending_ = false;
-  earsTally_ = throughputTally_ = PolicyTally{};
+  earsTally_ = PolicyTally{};
+  // Chosen under auto, EARS is watched from here on against throughput roulette's pass, which stays.
+  earsGuard_.watched = earsGuard_.compared && !earsGuard_.fellBack && earsGuardWatches(mode);
+  if (!earsGuard_.watched) throughputTally_ = PolicyTally{};
 }
 
 void PathRenderer::refreshPixelEstimate(const Film& film) {
@@ -695,8 +725,10 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
       continue;
     }
     const bool earsPass = ears_->enabled() && !throughputPass();
-    // The guard measures kEarsGuardSamples a pixel of EARS, in passes no larger than the others.
-    uint32_t samples = earsPhase_ == EarsPhase::MeasureEars ? std::min(perPass, kEarsGuardSamples - earsTally_.samples)
+    // The guard measures kEarsGuardSamples a pixel of EARS at each look, in passes no larger than the others: the
+    // cache learns from a pass's first samples only (earsTrainingSamples), so a larger second look learns no more.
+    const bool measuresEars = earsPhase_ == EarsPhase::MeasureEars || earsPhase_ == EarsPhase::MeasureEarsAgain;
+    uint32_t samples = measuresEars ? std::min(perPass, kEarsGuardSamples - earsTally_.samples)
                        : earsPass                           ? std::min(perPass, earsSamples)
                        : shadowRoulette && !ears_->enabled() ? std::min(perPass, s + 1)
                                                              : perPass;

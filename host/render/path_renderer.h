@@ -110,6 +110,12 @@ class PathRenderer {
   std::vector<glm::vec4> earsGuardScale_;  // the first look's variances are relative to it (measureThroughputForGuard)
   // The guard's choice from the tallies, against the estimate after the last measured pass (or a second look).
   void decideEarsGuard(uint32_t nextSample, bool secondLook);
+  // An EARS pass's sums, seconds and training share into earsTally_; each policy's measure from its tally.
+  void addEarsPassToTally(const std::vector<PixelSums>& pass, uint32_t samples, double seconds);
+  PolicyPass earsMeasure(const std::vector<glm::vec4>& scale) const;
+  PolicyPass throughputMeasure(const std::vector<glm::vec4>& scale) const;
+  // After a pass of EARS chosen under auto: its measure so far against throughput roulette's, and the switch.
+  void watchEars(const std::vector<PixelSums>& pass, uint32_t samples, double seconds, uint32_t nextSample);
   EarsGuardOutcome earsGuard_;
   bool earsGuardPending_ = false;  // the comparison is still to come
   uint32_t earsWarmPasses_ = 0;    // EARS passes before it

@@ -287,3 +287,21 @@ TEST(EarsGuard, LearningMustFitInItsShareOfATimeBudget) {
   EXPECT_FALSE(earsLearningFits(4.0, 0.2, kEarsLearningBudgetShare * 4.0 - 0.1));
   EXPECT_FALSE(earsLearningFits(16.0, kEarsLearningBudgetShare * 16.0 + 0.01, 0.0)) << "already past its share";
 }
+
+// Only auto watches the EARS it chose; the report's line says what the watch saw and where it switched.
+TEST(EarsGuard, AutoWatchesTheEarsItChoseAndTheLineSaysWhatItSaw) {
+  EXPECT_TRUE(earsGuardWatches(EarsFallback::Auto));
+  EXPECT_FALSE(earsGuardWatches(EarsFallback::Never));
+  EXPECT_FALSE(earsGuardWatches(EarsFallback::Always));
+  EarsGuardOutcome g;
+  g.compared = g.watched = true;
+  g.ears = PolicyPass{1.0, 0.5, 4};        // efficiency 2
+  g.throughput = PolicyPass{2.0, 1.0, 28};  // 0.5
+  g.fromSample = 13;
+  EXPECT_NE(earsGuardLine(g).find("ears from sample 13"), std::string::npos) << earsGuardLine(g);
+  g.watchedEars = PolicyPass{4.0, 1.0, 60};  // 0.25: behind
+  g.fellBack = g.switchedLater = true;
+  g.fromSample = 73;
+  const std::string line = earsGuardLine(g);
+  EXPECT_NE(line.find("watched over 60 samples a pixel, ears read 0.25: throughput roulette from sample 73"), std::string::npos) << line;
+}
