@@ -118,7 +118,7 @@ constexpr EstimatorParam kParams[] = {
                              "throughput roulette are measured (EARS again on its next pass where it was close); auto: "
                              "the one with the higher efficiency, 1/(variance x seconds) a sample, renders the rest; "
                              "never: EARS throughout; always: throughput roulette after the comparison. Under a time "
-                             "budget, learning and comparing may take a quarter of it: where they would not fit, auto and "
+                             "budget, learning and comparing may take a twentieth of it: where they would not fit, auto and "
                              "always render with throughput roulette uncompared, never with EARS trained that far"),
     count<&C::lightSamples>("light_samples", 1, 1, 4096, SPEC_LIGHT_SAMPLES, "light samples per hit below --split-depth"),
     count<&C::splitDepth>("split_depth", 1, 0, 100000, SPEC_SPLIT_DEPTH,

@@ -52,8 +52,10 @@ double earsSecondsPerSample(const PolicyTally& t, double pixels, double passSamp
 // Under a time budget, EARS's learning (its training passes) and the guard's comparison may take at most this share
 // of it. Where what is left of them would not fit, training stops there, and under auto and always throughput
 // roulette renders the rest without a comparison: learning that cannot pay back within the budget is not done
-// (the stiff furnace at 96x96 spends about a second a sample). The choice depends on time alone: unbiased.
-constexpr double kEarsLearningBudgetShare = 0.25;
+// (the stiff furnace at 96x96 spends about a second a sample). The choice depends on time alone: unbiased. A
+// twentieth: where EARS then loses the comparison, --rr ears stays within about 5% of throughput roulette (with a
+// quarter, the glossy room's comparison cost it 8-10% of a 16-s render; docs/ears.md).
+constexpr double kEarsLearningBudgetShare = 0.05;
 
 // The seconds EARS's learning still needs: `trainingSamples` more samples a pixel of training passes and
 // `earsSamples` of EARS passes before the choice at earsSecondsPerSample (the last training pass's), and

@@ -198,7 +198,7 @@ gpu::PushConstants PathRenderer::passConstants(uint32_t firstPixel, uint32_t pix
   pc.sampleIndex = sampleIndex;
   pc.width = settings_.width;
   pc.height = settings_.height;
-  pc.seed = earsTraining_ ? settings_.seed ^ kEarsTrainingSeed
+  pc.seed = earsTraining_ && !earsTrainingKept_ ? settings_.seed ^ kEarsTrainingSeed
             : earsPhase_ == EarsPhase::MeasureThroughput ? settings_.seed ^ kEarsGuardSeed
                                                          : settings_.seed;
   pc.queueCapacity = pool_;
@@ -341,12 +341,13 @@ uint32_t PathRenderer::renderWavefront(uint32_t firstPixel, uint32_t pixelCount,
   return bounce;
 }
 
-// EARS's training passes (kEarsTrainingPasses of 1, 2, 4... spp): they fill the cache and the pixel estimate and
-// are then dropped, so the image holds only samples whose decisions were learned, not the first passes'
-// outliers. Dropping passes chosen in advance is unbiased; their own seed keeps every image sample's random
+// EARS's training passes (kEarsTrainingPasses of 1, 2, 4... spp): they fill the cache and the pixel estimate. The
+// first, from an empty cache, is throughput roulette's estimator and stays in the image; the later ones are
+// dropped, so the image holds no sample whose decisions came from a barely trained cache (the first passes'
+// outliers). Dropping passes chosen in advance is unbiased; their own seed keeps every image sample's random
 // numbers apart from those that trained its decisions. Their rays and time are the render's cost. Returns the
 // next pass's size.
-uint32_t PathRenderer::trainEarsPasses(const Film& film, RenderStats& stats, Clock::time_point start) {
+uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderStats& stats, Clock::time_point start) {
   const uint32_t pixels = settings_.width * settings_.height;
   uint32_t samples = 1;
   earsTraining_ = true;
@@ -355,11 +356,20 @@ uint32_t PathRenderer::trainEarsPasses(const Film& film, RenderStats& stats, Clo
   for (uint32_t pass = 0; pass < kEarsTrainingPasses; ++pass) {
     const uint64_t raysBefore = stats.rays();
     const auto passStart = Clock::now();
-    renderSamples(0, samples, stats);
+    // The first pass learns from nothing, so it decides everywhere as throughput roulette does: it is an image
+    // pass (the render's seed and next sample) and stays; the later ones decide from what it taught and are dropped.
+    earsTrainingKept_ = pass == 0 && nextSample < settings_.spp;
+    renderSamples(earsTrainingKept_ ? nextSample : 0, samples, stats);
     const double perSample = since(passStart) / samples;
     if (pass == 0) firstPassPerSample = perSample;
     updateEarsStatistics(film, double(stats.rays() - raysBefore) / (double(pixels) * samples));
-    ears_->noteTrainingSamples(samples);
+    if (earsTrainingKept_) {
+      foldFilm(film);
+      nextSample += samples;
+      earsTrainingKept_ = false;
+    } else {
+      ears_->noteTrainingSamples(samples);
+    }
     samples = std::min(2 * samples, samplesPerPass());
     // What learning still needs: the training passes left and, where the guard will compare, a warm-up sample
     // (a budget's first pass takes one), two looks of EARS and throughput roulette's full pass.
@@ -700,7 +710,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
     earsGuardPending_ = settings_.estimator.earsMayFallBack();
     earsWarmPasses_ = 0;
     earsPhase_ = EarsPhase::Ears;
-    earsSamples = trainEarsPasses(state.film, stats, start);
+    earsSamples = trainEarsPasses(state.film, state.nextSample, stats, start);
     if (earsGuardPending_ && kEarsGuardWarmPasses == 0) earsPhase_ = EarsPhase::MeasureEars;
     if (earsOutOfBudget_) {  // no comparison: throughput roulette where the guard may fall back, else EARS
       earsGuardPending_ = false;

@@ -87,8 +87,10 @@ class PathRenderer {
   void trainEars(uint32_t cameras, RenderStats& stats);
   // Under a time budget (from `start`) training stops where it and the guard's comparison would not fit
   // (earsLearningFits): earsOutOfBudget_.
-  uint32_t trainEarsPasses(const Film& film, RenderStats& stats, std::chrono::steady_clock::time_point start);
+  // The first training pass is an image pass (kept: state's film and next sample), the later ones are dropped.
+  uint32_t trainEarsPasses(Film& film, uint32_t& nextSample, RenderStats& stats, std::chrono::steady_clock::time_point start);
   bool earsOutOfBudget_ = false;
+  bool earsTrainingKept_ = false;  // the training pass in progress is kept (its seed: the render's)
   bool earsTraining_ = false;  // a training pass: its own seed, its samples dropped
   // Returns the pass's sums (after - before).
   std::vector<PixelSums> updateEarsStatistics(const Film& film, double raysPerSample);

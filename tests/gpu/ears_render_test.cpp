@@ -39,8 +39,8 @@ TEST(Ears, FurnaceCacheLearnsTheReflectedRadiance) {
   // Each copy costs at least its continuation ray or light sample when it gathers anything.
   EXPECT_GT(e.meanRays, 1.0);
   // Every camera ray hits the sphere: the first row of the histogram counts each sample's first vertex once,
-  // the training passes' (1 + 2 + 4 spp, not in the image) too.
-  EXPECT_EQ(e.trainingSamples, 7u);
+  // the dropped training passes' (2 + 4 spp, not in the image) too; the first (1 spp) is one of the image's 64.
+  EXPECT_EQ(e.trainingSamples, 6u);
   EXPECT_EQ(r.film.totalSamples(), 32u * 32u * 64u);
   uint64_t first = 0;
   for (uint64_t n : e.factors[0]) first += n;
@@ -143,7 +143,7 @@ TEST(Ears, GuardComparesOnePassEachThenRendersTheRestWithItsChoice) {
   EXPECT_EQ(g.firstEars.samples, 4u);
   EXPECT_EQ(g.ears.samples, 4u);
   EXPECT_EQ(g.throughput.samples, 64u);
-  EXPECT_EQ(g.fromSample, 16u);
+  EXPECT_EQ(g.fromSample, 17u);  // after the first training pass, which stays
   EXPECT_EQ(a.film.totalSamples(), 24u * 24u * 128u);
   for (const PolicyPass& p : {g.ears, g.throughput}) {
     EXPECT_GT(p.relativeVariance, 0.0);
@@ -152,10 +152,12 @@ TEST(Ears, GuardComparesOnePassEachThenRendersTheRestWithItsChoice) {
     EXPECT_TRUE(std::isfinite(p.efficiency()));
   }
   // Throughput roulette's passes render the rest: their first vertices (every camera ray hits the sphere) are not
-  // counted in EARS's histogram, which holds the training passes' and EARS's 8 + 4 + 4 samples a pixel.
+  // counted in EARS's histogram, which holds the dropped training passes' (2 + 4), the kept one's (1) and EARS's
+  // 8 + 4 + 4 samples a pixel.
   uint64_t first = 0;
   for (uint64_t n : a.ears->factors[0]) first += n;
-  EXPECT_EQ(first, 24u * 24u * (a.ears->trainingSamples + 16u));
+  EXPECT_EQ(a.ears->trainingSamples, 6u);
+  EXPECT_EQ(first, 24u * 24u * (a.ears->trainingSamples + 17u));
   // Unbiased across the switch (stat/estimator_unbiased_test has the Cornell box's and the quadrants'): L = 2.
   EXPECT_TRUE(regionMatches(whole(a.film), glm::dvec3(2.0), 5.0));
   // Auto compares too; never does not.
@@ -181,13 +183,13 @@ TEST(Ears, GuardMeasuresOverSeveralTiledPasses) {
   RenderOutcome r = runRender(sharedContext(), o);
   ASSERT_TRUE(r.ears);
   ASSERT_TRUE(r.earsGuard.compared);
-  // Training passes of one sample each (3, dropped), the warm-up pass (1), then 4 of EARS and 4 of throughput
-  // roulette (dropped) measured, and EARS's 4 again.
-  EXPECT_EQ(r.ears->trainingSamples, 3u);
+  // Training passes of one sample each (the first kept, 2 dropped), the warm-up pass (1), then 4 of EARS and 4 of
+  // throughput roulette (dropped) measured, and EARS's 4 again.
+  EXPECT_EQ(r.ears->trainingSamples, 2u);
   EXPECT_EQ(r.earsGuard.firstEars.samples, 4u);
   EXPECT_EQ(r.earsGuard.ears.samples, 4u);
   EXPECT_EQ(r.earsGuard.throughput.samples, 4u);
-  EXPECT_EQ(r.earsGuard.fromSample, 9u);
+  EXPECT_EQ(r.earsGuard.fromSample, 10u);
   EXPECT_GT(r.earsGuard.ears.secondsPerSample, 0.0);
   EXPECT_GT(r.earsGuard.throughput.secondsPerSample, 0.0);
   EXPECT_EQ(r.film.totalSamples(), 48u * 48u * 16u);
@@ -213,8 +215,8 @@ TEST(Ears, ABudgetTooShortToLearnIn) {
     EXPECT_TRUE(r.earsGuard.outOfBudget);
     EXPECT_FALSE(r.earsGuard.compared);
     EXPECT_EQ(r.earsGuard.fellBack, mode == EarsFallback::Auto);
-    EXPECT_EQ(r.earsGuard.fromSample, 0u);
-    EXPECT_EQ(r.ears->trainingSamples, 1u) << "training stops after its first pass";
+    EXPECT_EQ(r.earsGuard.fromSample, 1u) << "after the first training pass, which stays";
+    EXPECT_EQ(r.ears->trainingSamples, 0u) << "training stops after its first pass, and that one stays";
     EXPECT_EQ(r.film.totalSamples(), 16u * 16u) << "one pass, as any render whose budget is spent";
     EXPECT_NE(earsGuardLine(r.earsGuard).find("time budget"), std::string::npos);
   }
