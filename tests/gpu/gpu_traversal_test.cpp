@@ -1,6 +1,8 @@
 // The GPU traversal kernel returns the same closest and any hits as brute force on random rays.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <functional>
 #include <random>
 #include <set>
 
@@ -46,6 +48,30 @@ std::pair<int, int> wrongHits(RayTracer& tracer, const std::vector<glm::vec3>& o
     anyWrong += (glm::floatBitsToUint(any[r].w) != gpu::kMissPrimitive) != (want.triangle != gpu::kMissPrimitive);
   }
   return {closestWrong, anyWrong};
+}
+
+// A pile of `count` triangles (corners(i) gives triangle i), one per leaf.
+struct Pile {
+  Scene scene;
+  Bvh bvh;
+};
+Pile pileOfLeaves(uint32_t count, const std::function<std::array<glm::vec3, 3>(uint32_t)>& corners) {
+  Pile p;
+  p.scene.materials.push_back(Material{});
+  std::vector<Aabb> bounds(count);
+  for (uint32_t i = 0; i < count; ++i) {
+    for (glm::vec3 v : corners(i)) {
+      p.scene.positions.push_back(v);
+      p.scene.normals.push_back(glm::vec3(0, 0, 1));
+      p.scene.bounds.grow(v);
+      bounds[i].grow(v);
+    }
+    p.scene.materialIds.push_back(0);
+  }
+  BvhOptions oneTrianglePerLeaf;
+  oneTrianglePerLeaf.maxLeafSize = 1;
+  p.bvh = buildBvh(bounds, oneTrianglePerLeaf);
+  return p;
 }
 }  // namespace
 
@@ -121,23 +147,9 @@ class PileOfLeaves : public ::testing::TestWithParam<uint32_t> {};
 TEST_P(PileOfLeaves, AWalkThroughEveryLeafCompletes) {
   const uint32_t count = GetParam();
   vk::Context& ctx = context();
-  Scene scene;
-  scene.materials.push_back(Material{});
-  std::vector<Aabb> bounds(count);
-  for (uint32_t i = 0; i < count; ++i) {
-    for (glm::vec3 v : {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)}) {
-      scene.positions.push_back(v);
-      scene.normals.push_back(glm::vec3(0, 0, 1));
-      scene.bounds.grow(v);
-      bounds[i].grow(v);
-    }
-    scene.materialIds.push_back(0);
-  }
-  BvhOptions oneTrianglePerLeaf;
-  oneTrianglePerLeaf.maxLeafSize = 1;
-  Bvh bvh = buildBvh(bounds, oneTrianglePerLeaf);
-  ASSERT_EQ(bvh.stats.leaves, count);
-  GpuScene gpuScene(ctx, scene, bvh);
+  Pile pile = pileOfLeaves(count, [](uint32_t) { return std::array{glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)}; });
+  ASSERT_EQ(pile.bvh.stats.leaves, count);
+  GpuScene gpuScene(ctx, pile.scene, pile.bvh);
   RayTracer tracer(ctx, gpuScene);
   // Inside every leaf's box (the unit square), outside every triangle (x + y > 1).
   std::vector<gpu::TestRay> rays(64, gpu::TestRay{glm::vec4(0.9f, 0.9f, 1.0f, 1e30f), glm::vec4(0, 0, -1, 0)});
@@ -170,23 +182,12 @@ TEST(GpuTraversal, AFullRegisterStackLosesNoEntry) {
   std::set<uint32_t> sizes;
   for (uint32_t count : {3u, 12u, 48u}) {
     for (uint32_t found = 0; found < count; ++found) {
-      Scene scene;
-      scene.materials.push_back(Material{});
-      std::vector<Aabb> bounds(count);
-      for (uint32_t i = 0; i < count; ++i) {
-        const float reach = i == found ? 2.0f : 1.0f;  // only the larger triangle covers (0.9, 0.9)
-        for (glm::vec3 v : {glm::vec3(0, 0, i), glm::vec3(reach, 0, i), glm::vec3(0, reach, i)}) {
-          scene.positions.push_back(v);
-          scene.normals.push_back(glm::vec3(0, 0, 1));
-          scene.bounds.grow(v);
-          bounds[i].grow(v);
-        }
-        scene.materialIds.push_back(0);
-      }
-      BvhOptions oneTrianglePerLeaf;
-      oneTrianglePerLeaf.maxLeafSize = 1;
-      Bvh bvh = buildBvh(bounds, oneTrianglePerLeaf);
-      GpuScene gpuScene(ctx, scene, bvh);
+      Pile pile = pileOfLeaves(count, [found](uint32_t i) {
+        const float reach = i == found ? 2.0f : 1.0f, z = float(i);  // only the larger triangle covers (0.9, 0.9)
+        return std::array{glm::vec3(0, 0, z), glm::vec3(reach, 0, z), glm::vec3(0, reach, z)};
+      });
+      const Bvh& bvh = pile.bvh;
+      GpuScene gpuScene(ctx, pile.scene, bvh);
       sizes.insert(gpuScene.info().registerStackEntries);
       EXPECT_LE(bvh.stats.wideMaxPending, gpuScene.info().registerStackEntries) << count << " leaves";
       RayTracer tracer(ctx, gpuScene);
