@@ -493,6 +493,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                           {"watched_ears", r.earsGuard.watched && r.earsGuard.watchedEars.samples > 0 ? pass(r.earsGuard.watchedEars)
                                                                                                        : nlohmann::json(nullptr)},
                           {"switched_later", r.earsGuard.switchedLater},
+                          {"switched_at", r.earsGuard.switchedLater ? nlohmann::json(r.earsGuard.switchedAt) : nlohmann::json(nullptr)},
                           {"out_of_budget", false}};
   }
   if (o.timeBudget > 0.0) j["time_budget"] = o.timeBudget;

@@ -94,17 +94,17 @@ std::string earsGuardLine(const EarsGuardOutcome& g) {
                   g.firstEars.efficiency());
   char watch[200] = "";
   if (g.switchedLater)
-    std::snprintf(watch, sizeof(watch), "; then, watched over %u samples a pixel, ears read %.4g: throughput roulette",
-                  g.watchedEars.samples, g.watchedEars.efficiency());
+    std::snprintf(watch, sizeof(watch), "; watched over %u samples a pixel, ears read %.4g: throughput roulette from sample %u",
+                  g.watchedEars.samples, g.watchedEars.efficiency(), g.switchedAt);
   else if (g.watched && g.watchedEars.samples > 0)
     std::snprintf(watch, sizeof(watch), "; watched over %u more samples a pixel, ears read %.4g", g.watchedEars.samples,
                   g.watchedEars.efficiency());
   char buf[640];
   std::snprintf(buf, sizeof(buf),
                 "ears guard  efficiency 1/(relative variance x seconds) a sample, measured on %u samples a pixel of ears "
-                "and %u of throughput roulette: ears %.4g%s, throughput roulette %.4g; %s%s from sample %u\n",
+                "and %u of throughput roulette: ears %.4g%s, throughput roulette %.4g; %s from sample %u%s\n",
                 g.ears.samples, g.throughput.samples, g.ears.efficiency(), again, g.throughput.efficiency(),
-                g.switchedLater ? "ears" : g.fellBack ? "throughput roulette" : "ears", watch, g.fromSample);
+                g.switchedLater ? "ears" : g.fellBack ? "throughput roulette" : "ears", g.fromSample, watch);
   return buf;
 }
 

@@ -81,7 +81,8 @@ struct EarsGuardOutcome {
   // EARS falls behind, throughput roulette renders the rest from that pass on.
   bool watched = false;       // EARS chosen under auto: its later passes measured
   PolicyPass watchedEars;     // their measure when the guard last looked
-  bool switchedLater = false; // throughput roulette took over while watching (fromSample: where)
+  bool switchedLater = false; // throughput roulette took over while watching
+  uint32_t switchedAt = 0;    // then: from this sample (EARS from fromSample until it)
 };
 
 // EARS's cache keeps learning after its first measured samples: on two_rooms a pass's efficiency rose from about

@@ -353,13 +353,15 @@ uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderS
   earsTraining_ = true;
   earsOutOfBudget_ = false;
   double firstPassPerSample = 0.0;
-  for (uint32_t pass = 0; pass < kEarsTrainingPasses; ++pass) {
+  uint32_t droppedIndex = 0;  // the dropped passes' samples follow each other in their own seed's sequence
+  for (uint32_t pass = 0; pass < kEarsTrainingPasses && nextSample < settings_.spp; ++pass) {
     const uint64_t raysBefore = stats.rays();
     const auto passStart = Clock::now();
     // The first pass learns from nothing, so it decides everywhere as throughput roulette does: it is an image
     // pass (the render's seed and next sample) and stays; the later ones decide from what it taught and are dropped.
-    earsTrainingKept_ = pass == 0 && nextSample < settings_.spp;
-    renderSamples(earsTrainingKept_ ? nextSample : 0, samples, stats);
+    earsTrainingKept_ = pass == 0;
+    renderSamples(earsTrainingKept_ ? nextSample : droppedIndex, samples, stats);
+    if (!earsTrainingKept_) droppedIndex += samples;
     const double perSample = since(passStart) / samples;
     if (pass == 0) firstPassPerSample = perSample;
     updateEarsStatistics(film, double(stats.rays() - raysBefore) / (double(pixels) * samples));
@@ -372,14 +374,16 @@ uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderS
     }
     samples = std::min(2 * samples, samplesPerPass());
     // What learning still needs: the training passes left and, where the guard will compare, a warm-up sample
-    // (a budget's first pass takes one), two looks of EARS and throughput roulette's full pass.
+    // (a budget's first pass takes one), two looks of EARS and throughput roulette's measured passes (whole
+    // passes until 4 samples a pixel: measureThroughputForGuard).
     uint32_t trainingLeft = 0;
     for (uint32_t later = pass + 1, n = samples; later < kEarsTrainingPasses; ++later, n = std::min(2 * n, samplesPerPass()))
       trainingLeft += n;
     const bool compares = earsGuardPending_;
+    const uint32_t throughputSamples = (kEarsGuardSamples + samplesPerPass() - 1) / samplesPerPass() * samplesPerPass();
     const double left = earsLearningSecondsLeft(trainingLeft, compares ? kEarsGuardWarmPasses + 2 * kEarsGuardSamples : 0u,
-                                                perSample, compares ? samplesPerPass() : 0u, firstPassPerSample);
-    if (!earsLearningFits(settings_.timeBudget, since(start), left)) {
+                                                perSample, compares ? throughputSamples : 0u, firstPassPerSample);
+    if ((trainingLeft > 0 || compares) && !earsLearningFits(settings_.timeBudget, since(start), left)) {
       earsOutOfBudget_ = true;
       break;
     }
@@ -515,12 +519,14 @@ PolicyPass PathRenderer::throughputMeasure(const std::vector<glm::vec4>& scale) 
 // latest estimate: where EARS falls behind, throughput roulette renders the rest (EarsGuardOutcome::watched).
 void PathRenderer::watchEars(const std::vector<PixelSums>& pass, uint32_t samples, double seconds, uint32_t nextSample) {
   addEarsPassToTally(pass, samples, seconds);
+  // Judged on no fewer samples a pixel than throughput roulette's measure, nor than the choice's.
+  if (earsTally_.samples < std::max(kEarsGuardSamples, throughputTally_.samples)) return;
   const PolicyPass ears = earsMeasure(earsEstimate_.smoothed), throughput = throughputMeasure(earsEstimate_.smoothed);
   if (!(std::isfinite(ears.relativeVariance) && std::isfinite(throughput.relativeVariance))) return;
   earsGuard_.watchedEars = ears;
   if (!earsFallsBack(EarsFallback::Auto, ears, throughput)) return;
   earsGuard_.fellBack = earsGuard_.switchedLater = true;
-  earsGuard_.fromSample = nextSample;
+  earsGuard_.switchedAt = nextSample;
   earsPhase_ = EarsPhase::Throughput;
   earsTally_ = throughputTally_ = PolicyTally{};
 }

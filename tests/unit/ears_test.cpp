@@ -301,7 +301,9 @@ TEST(EarsGuard, AutoWatchesTheEarsItChoseAndTheLineSaysWhatItSaw) {
   EXPECT_NE(earsGuardLine(g).find("ears from sample 13"), std::string::npos) << earsGuardLine(g);
   g.watchedEars = PolicyPass{4.0, 1.0, 60};  // 0.25: behind
   g.fellBack = g.switchedLater = true;
-  g.fromSample = 73;
+  g.switchedAt = 73;
   const std::string line = earsGuardLine(g);
-  EXPECT_NE(line.find("watched over 60 samples a pixel, ears read 0.25: throughput roulette from sample 73"), std::string::npos) << line;
+  EXPECT_NE(line.find("ears from sample 13; watched over 60 samples a pixel, ears read 0.25: throughput roulette from sample 73"),
+            std::string::npos)
+      << line;
 }
