@@ -60,12 +60,6 @@ glm::vec3 constantReference(const nlohmann::json& v) {
   return glm::vec3(channel(v[0]), channel(v[1]), channel(v[2]));
 }
 
-std::string shortNumber(float x) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%g", double(x));
-  return buf;
-}
-
 }  // namespace
 
 Study loadStudy(const std::string& path) {
@@ -159,7 +153,9 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
     const glm::vec3 c = *study.referenceConstant;
     reference.width = int(study.width), reference.height = int(study.height);
     for (int k = 0; k < 3; ++k) reference.channels[std::string(1, "RGB"[k])].assign(size_t(study.width) * study.height, c[k]);
-    referenceNote = "constant (" + shortNumber(c.r) + ", " + shortNumber(c.g) + ", " + shortNumber(c.b) + ")";
+    char note[96];
+    std::snprintf(note, sizeof(note), "constant (%g, %g, %g)", double(c.r), double(c.g), double(c.b));
+    referenceNote = note;
   } else if (!study.referenceExr.empty()) {
     reference = readExr(study.referenceExr);
     referenceNote = study.referenceExr;
