@@ -42,8 +42,10 @@ EarsCache::EarsCache(vk::Context& ctx, const GpuSceneInfo& scene, uint32_t pathS
   }
   cells_ = kMaxCells;
   const uint64_t texelLimit = ctx.properties().limits.maxTexelBufferElements / gpu::kEarsSamplingTexels;
-  while (uint64_t(tableCells()) * sizeof(gpu::EarsCell) > range || tableCells() > texelLimit) cells_ /= 2;
-  cellBuffer_ = storage(uint64_t(tableCells()) * sizeof(gpu::EarsCell), vk::MemoryKind::DeviceLocal);
+  // The cells, then a key word per copies' cell (ears.h earsKeyWord).
+  auto cellBytes = [&] { return uint64_t(tableCells()) * sizeof(gpu::EarsCell) + uint64_t(cells_) * sizeof(uint32_t); };
+  while (cellBytes() > range || tableCells() > texelLimit) cells_ /= 2;
+  cellBuffer_ = storage(cellBytes(), vk::MemoryKind::DeviceLocal);
   sampling_ = texels(uint64_t(tableCells()) * gpu::kEarsSamplingTexels * sizeof(glm::vec4));
   sampling_.zero();
   const uint64_t recordBytes = sizeof(gpu::EarsRecord) + (learnsLight_ ? gpu::kEarsLightRecordBytes : 0);

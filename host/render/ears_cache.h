@@ -18,7 +18,7 @@ namespace vkmc {
 struct EarsSummary {
   uint32_t cells = 0;           // in the hash table
   uint32_t occupiedCells = 0;   // with any training sample
-  uint32_t trustedCells = 0;    // with enough to decide (kEarsMinCellCopies), at any level
+  uint32_t trustedCells = 0;    // finest cells whose levels have enough to decide (kEarsMinCellCopies)
   uint64_t deviceBytes = 0;     // cells, records, slots and header
   uint32_t learningPasses = 0;  // passes whose factors came from the cache
   uint32_t trainingSamples = 0; // per pixel, in the training passes (not in the image)

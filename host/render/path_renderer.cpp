@@ -404,7 +404,7 @@ void PathRenderer::trainEars(uint32_t cameras, RenderStats& stats) {
   pc.pathCount = cameras;
   vk::dispatch(cmd, *layout_, *kernels_.earsGather, &pc, sizeof(pc), groupsFor(slots), timer_.get());
   vk::dispatch(cmd, *layout_, *kernels_.earsTrain, &pc, sizeof(pc), groupsFor(ears_->trainingRecords() + slots), timer_.get());
-  pc.pathCount = ears_->tableCells();
+  pc.pathCount = ears_->cellCount();
   vk::dispatch(cmd, *layout_, *kernels_.earsFold, &pc, sizeof(pc), groupsFor(pc.pathCount), timer_.get());
   ctx_.submitAndWait(cmd);
   timer_->collect(stats.stageSeconds);

@@ -96,6 +96,9 @@ layout(binding = BINDING_DEPTH_STATS, std430) buffer DepthStats { vec2 depthStat
 layout(binding = BINDING_QUEUE_STATS, std430) buffer QueueStats { uvec2 queueStats[]; };
 layout(binding = BINDING_EARS_HEADER, std430) buffer EarsHeaderBuffer { EarsHeader earsHeader; };
 layout(binding = BINDING_EARS_CELLS, std430) buffer EarsCells { EarsCell earsCells[]; };
+// The same buffer as words: the finest cells' keys after the table's cells (ears.h earsKeyWord).
+layout(binding = BINDING_EARS_CELLS, std430) buffer EarsCellWords { uint earsCellWords[]; };
+uint earsTableCells() { return (kEarsLightMax > 0.0 ? 2u : 1u) * (earsHeader.cellMask + 1u); }
 layout(binding = BINDING_EARS_RECORDS, std430) buffer EarsRecords { EarsRecord earsRecords[]; };
 // The same buffer as vec4s: the light records after the pool's records (ears.h, ears_light_max > 0).
 layout(binding = BINDING_EARS_RECORDS, std430) buffer EarsRecordTexels { vec4 earsRecordVec4s[]; };

@@ -12,8 +12,8 @@ layout(binding = BINDING_EARS_SAMPLING, TEXEL_FORMAT_EARS_SAMPLING) uniform read
 // factor) and hit; its radiance field, unused by a split child, carries (q, copy index bits, parent slot bits, qL).
 uint copyQueueBase() { return 2u * pc.queueCapacity; }
 
-// What a vertex's cells learned, each level shrunk toward the coarser ones (earsShrunk): for its copies (moment,
-// variance: per cost) and for their light samples (the light cells beside them).
+// What a vertex's cell learned, its levels resolved by the fold (ears.h earsResolveLevel): for its copies
+// (moment, variance: per cost) and for their light samples (the light cell beside it).
 struct EarsReading {
   vec3 moment, variance;
   float copies;
@@ -21,23 +21,24 @@ struct EarsReading {
   float lightSamples;
 };
 
-// One cell's learned statistics mixed into those of the coarser levels read before it (earsShrunk).
-void earsReadCell(uint cell, inout vec3 moment, inout vec3 variance, inout float copies) {
-  vec4 m = imageLoad(earsLearned, int(kEarsSamplingTexels * cell));
-  if (!(m.w > 0.0)) return;
-  vec3 v = imageLoad(earsLearned, int(kEarsSamplingTexels * cell + 1u)).rgb;
-  moment = earsShrunk(moment, copies, m.rgb, m.w);
-  variance = earsShrunk(variance, copies, v, m.w);
-  copies = max(copies, m.w);
-}
-
+// A vertex reads one cell, its finest (three hashed reads cost ~30 ns a vertex on lavapipe, docs/ears.md). One
+// the fold has not resolved (no training copy was there) reads zero copies (throughput roulette) and leaves its
+// key, so that the next fold resolves it from its coarser levels; so does one whose slot another key holds.
 EarsReading earsRead(uint key) {
   EarsReading r = EarsReading(vec3(0.0), vec3(0.0), 0.0, vec3(0.0), vec3(0.0), 0.0);
-  for (int level = int(kEarsLevels) - 1; level >= 0 && earsHeader.imageFactor > 0.0; --level) {
-    uint cell = earsCellIndex(key, uint(level), earsHeader.cellMask);
-    earsReadCell(cell, r.moment, r.variance, r.copies);
-    if (kEarsLightMax > 0.0)
-      earsReadCell(earsLightCell(cell, earsHeader.cellMask), r.lightMoment, r.lightVariance, r.lightSamples);
+  if (!(earsHeader.imageFactor > 0.0)) return r;
+  uint cell = earsCellIndex(key, 0u, earsHeader.cellMask);
+  vec4 m = imageLoad(earsLearned, int(kEarsSamplingTexels * cell));
+  vec4 v = imageLoad(earsLearned, int(kEarsSamplingTexels * cell + 1u));
+  if (!(m.w > 0.0)) earsCellWords[earsKeyWord(cell, earsTableCells())] = key + 1u;
+  if (!earsResolvedFor(v, key)) return r;
+  r = EarsReading(m.rgb, v.rgb, m.w, vec3(0.0), vec3(0.0), 0.0);
+  if (kEarsLightMax > 0.0) {
+    uint light = earsLightCell(cell, earsHeader.cellMask);
+    vec4 l = imageLoad(earsLearned, int(kEarsSamplingTexels * light));
+    r.lightMoment = l.rgb;
+    r.lightVariance = imageLoad(earsLearned, int(kEarsSamplingTexels * light + 1u)).rgb;
+    r.lightSamples = l.w;
   }
   return r;
 }

@@ -1,18 +1,30 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// EARS training, step 3 of 3: each cell's sampling statistics from its training sums of every pass so far, for
-// the next pass's factors (ears.h earsSampling). pc.pathCount: the cells.
+// EARS training, step 3 of 3: for each finest-level cell that has trained, what a vertex in it will read in the
+// next pass: its levels' statistics from their training sums of every pass so far, shrunk coarsest first
+// (ears.h earsResolveLevel), and its light cells' alike. pc.pathCount: the copies' cells.
 #include "common.glsl"
 
 layout(binding = BINDING_EARS_SAMPLING, TEXEL_FORMAT_EARS_SAMPLING) uniform writeonly imageBuffer earsLearned;
 
+// The statistics resolved for finest cell `cell` (or its light cell, `light`) into its texels.
+void resolve(uint keyCode, uint cell, bool light) {
+  vec3 moment = vec3(0.0), variance = vec3(0.0);
+  float copies = 0.0;
+  for (int level = int(kEarsLevels) - 1; level >= 0; --level) {
+    uint c = earsCellIndex(keyCode - 1u, uint(level), earsHeader.cellMask);
+    if (light) c = earsLightCell(c, earsHeader.cellMask);
+    earsResolveLevel(earsCells[c].sum, earsCells[c].sumSquares, moment, variance, copies);
+  }
+  imageStore(earsLearned, int(kEarsSamplingTexels * cell), vec4(moment, copies));
+  imageStore(earsLearned, int(kEarsSamplingTexels * cell + 1u), vec4(variance, uintBitsToFloat(keyCode)));
+}
+
 void main() {
   uint i = invocationIndex();
   if (i >= pc.pathCount) return;
-  EarsCell c = earsCells[i];
-  if (!(c.sum.w > 0.0)) return;
-  vec4 moment, variance;
-  earsSampling(c.sum, c.sumSquares, moment, variance);
-  imageStore(earsLearned, int(kEarsSamplingTexels * i), moment);
-  imageStore(earsLearned, int(kEarsSamplingTexels * i + 1u), variance);
+  uint keyCode = earsCellWords[earsKeyWord(i, earsTableCells())];
+  if (keyCode == 0u) return;
+  resolve(keyCode, i, false);
+  if (kEarsLightMax > 0.0) resolve(keyCode, earsLightCell(i, earsHeader.cellMask), true);
 }

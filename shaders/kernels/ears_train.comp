@@ -40,6 +40,7 @@ void main() {
   vec3 v = light.w == kEarsLightUnoccluded ? light.rgb : vec3(0.0);
   float lightRays = light.w >= kEarsLightTraced ? 1.0 : 0.0;
   bool lightSampled = kEarsLightMax > 0.0 && light.w != kEarsLightNone && allFinite(v * v);
+  earsCellWords[earsKeyWord(earsCellIndex(keyCode - 1u, 0u, earsHeader.cellMask), earsTableCells())] = keyCode;
   for (uint level = 0u; level < kEarsLevels; ++level) {
     uint cell = earsCellIndex(keyCode - 1u, level, earsHeader.cellMask);
     if (copyFinite) addToCell(cell, lr, rays);

@@ -72,10 +72,22 @@ struct EarsCell {
   vec4 sum;         // rgb: sum of Lr, w: copies
   vec4 sumSquares;  // rgb: sum of Lr^2, w: sum of rays
 };
-// What the last fold made of a cell, as texels 2 cell and 2 cell + 1 of BINDING_EARS_SAMPLING (read with
-// imageLoad: on lavapipe an inline gather, where a storage-buffer load loops over the lanes).
-VKMC_CONST uint kEarsSamplingTexels = 2u;  // momentPerCost (rgb: E[Lr^2] / E[C], w: copies), variancePerCost
-                                           // (rgb: Var[Lr] / E[C], w: E[C])
+// After the table's cells, the same buffer holds one word per copies' cell: the key + 1 (earsCellKey) of the
+// finest-level cell that last trained there (0: none), so that the fold can find that cell's coarser levels.
+VKMC_CONST uint kEarsCellWords = 8u;  // sizeof(EarsCell) / 4
+VKMC_FN uint earsKeyWord(uint cell, uint tableCells) { return tableCells * kEarsCellWords + cell; }
+
+// What the last fold resolved for a finest-level cell, as texels 2 cell and 2 cell + 1 of BINDING_EARS_SAMPLING
+// (read with imageLoad: on lavapipe an inline gather, where a storage-buffer load loops over the lanes): its three
+// levels' statistics shrunk coarsest first (earsShrunk), so that a vertex reads one cell, not three. Light cells
+// alike, at the light cell beside it.
+VKMC_CONST uint kEarsSamplingTexels = 2u;  // momentPerCost (rgb: E[Lr^2] / E[C], w: the most copies of any
+                                           // level), variancePerCost (rgb: Var[Lr] / E[C], w: the cell's key + 1
+                                           // as float bits)
+// Whether a slot's resolved texels are those of `key`'s finest cell: keys that hash to one slot share its sums,
+// but the fold resolves the coarser levels of one of them only (the last to train there); the others read
+// nothing there (throughput roulette), as merged levels of another part of the scene misled their factors.
+VKMC_FN bool earsResolvedFor(vec4 varianceTexel, uint key) { return floatBitsToUint(varianceTexel.w) == key + 1u; }
 
 // One copy of a training vertex (slot * kEarsDepths + depth): where what its subtree gathers goes.
 struct EarsRecord {
@@ -162,6 +174,17 @@ VKMC_FN void earsSampling(vec4 sum, vec4 sumSquares, INOUT(vec4) momentPerCost, 
 VKMC_FN vec3 earsShrunk(vec3 coarser, float coarserCopies, vec3 level, float copies) {
   if (!(coarserCopies > 0.0f)) return level;
   return mix(coarser, level, copies / (copies + kEarsShrinkCopies));
+}
+
+// One level's cell sums mixed into the statistics resolved from the coarser levels before it (the fold, coarsest
+// first): what a vertex in the finest cell reads.
+VKMC_FN void earsResolveLevel(vec4 sum, vec4 sumSquares, INOUT(vec3) moment, INOUT(vec3) variance, INOUT(float) copies) {
+  vec4 m, v;
+  earsSampling(sum, sumSquares, m, v);
+  if (!(m.w > 0.0f)) return;
+  moment = earsShrunk(moment, copies, vec3(m), m.w);
+  variance = earsShrunk(variance, copies, vec3(v), m.w);
+  copies = copies > m.w ? copies : m.w;
 }
 
 // How many of a pass's samples per pixel train the cache: about kEarsTrainingPaths samples, at least one a

@@ -244,12 +244,12 @@ TEST(Ears, MemoryIsBoundedOnAMillionTriangles) {
   RenderOutcome r = runRender(sharedContext(), o);
   ASSERT_TRUE(r.ears);
   EXPECT_GT(r.sceneInfo.triangles, 500000u);
-  // The cache does not grow with the scene: at most 2^19 cells (sums and learned texels; light cells are off by
-  // default), and each path slot's records, slot sums and training-list entries (a record index per record, a
-  // slot index per slot).
+  // The cache does not grow with the scene: at most 2^19 cells (sums, a key word and learned texels; light cells
+  // are off by default), and each path slot's records, slot sums and training-list entries (a record index per
+  // record, a slot index per slot).
   const uint64_t slots = uint64_t(32 * 32 * 2) * kEarsPoolFactor;
   const uint64_t perSlot = gpu::kEarsDepths * (sizeof(gpu::EarsRecord) + 4) + sizeof(gpu::EarsSlot) + 4;
-  EXPECT_LE(r.ears->deviceBytes, (uint64_t(1) << 19) * (sizeof(gpu::EarsCell) + gpu::kEarsSamplingTexels * 16) +
+  EXPECT_LE(r.ears->deviceBytes, (uint64_t(1) << 19) * (sizeof(gpu::EarsCell) + 4 + gpu::kEarsSamplingTexels * 16) +
                                      slots * perSlot + sizeof(gpu::EarsHeader));
   EXPECT_LE(r.ears->occupiedCells, r.ears->cells);
   EXPECT_EQ(r.film.totalNonfinite(), 0u);

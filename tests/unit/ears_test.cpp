@@ -42,6 +42,26 @@ TEST(EarsShrunk, ALevelCountsByItsCopiesAgainstTheCoarserOnes) {
   EXPECT_GT(earsShrunk(coarse, 5000.0f, fine, 256.0f).x, 3.0f);
 }
 
+TEST(EarsResolve, TheFoldShrinksALevelsSumsAsAVertexReadingThemOneByOneWould) {
+  // Sums of n copies with mean Lr a, mean Lr^2 b, mean rays c: earsSampling gives b / c and (b - a^2) / c.
+  auto sums = [](float n, float a, float b, float c) {
+    return std::make_pair(vec4(vec3(a * n), n), vec4(vec3(b * n), c * n));
+  };
+  const auto coarse = sums(5000.0f, 1.0f, 4.0f, 2.0f), mid = sums(0.0f, 0.0f, 0.0f, 0.0f), fine = sums(300.0f, 0.5f, 1.0f, 2.0f);
+  vec3 moment(0.0f), variance(0.0f);
+  float copies = 0.0f;
+  for (const auto& level : {coarse, mid, fine}) earsResolveLevel(level.first, level.second, moment, variance, copies);
+  // The empty middle level is skipped; the fine one counts 300 copies against kEarsShrinkCopies.
+  EXPECT_FLOAT_EQ(moment.x, earsShrunk(vec3(2.0f), 5000.0f, vec3(0.5f), 300.0f).x);
+  EXPECT_FLOAT_EQ(variance.y, earsShrunk(vec3(1.5f), 5000.0f, vec3(0.375f), 300.0f).y);
+  EXPECT_FLOAT_EQ(copies, 5000.0f);  // the most of any level: trusted though the fine cell alone is not
+  // A slot resolved for another key (the table's slots collide) is not read as this key's.
+  const uint key = earsCellKey(vec3(0.3f, 0.2f, 0.1f), vec3(0.0f, 1.0f, 0.0f), vec4(0.0f, 0.0f, 0.0f, 10.0f));
+  EXPECT_TRUE(earsResolvedFor(vec4(variance, glm::uintBitsToFloat(key + 1u)), key));
+  EXPECT_FALSE(earsResolvedFor(vec4(variance, glm::uintBitsToFloat(key + 2u)), key));
+  EXPECT_FALSE(earsResolvedFor(vec4(variance, 0.0f), key));  // never resolved
+}
+
 TEST(EarsFactor, ClampedToEarsRange) {
   EXPECT_FLOAT_EQ(earsFactor(vec3(1e-6f), vec3(1.0f), vec3(1.0f), 1.0f), kEarsFactorMin);
   EXPECT_FLOAT_EQ(earsFactor(vec3(1e6f), vec3(1.0f), vec3(1.0f), 1.0f), kEarsFactorMax);
