@@ -348,6 +348,52 @@ def glossy_room(path):
     b.camera("camera", [-0.85, 1.1, 0.9], [0.5, 0.9, -0.9], 80.0)
     b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
 
+def soft_shadows(path):
+    """The lecture's splitting example (N image x M light samples): a large square lamp (1.2 x 1.2, facing down,
+    y = 1.4) over an open Lambertian floor (albedo 0.5, x, z in [-2, 2]) with a block, a floating slab and a row of
+    thin posts under it. Most of what the camera sees lies in their wide penumbrae, so a pixel's variance is
+    mostly the visibility of the light sample, and nothing surrounds the scene: a bounce mostly escapes, so the
+    camera ray and the first vertex cost more than a shadow ray. Light-sample splitting should pay here."""
+    b = Builder()
+    floor = b.material("floor", (0.5, 0.5, 0.5))
+    grey = b.material("grey", (0.6, 0.6, 0.6))
+    lamp = b.material("lamp", (0.0, 0.0, 0.0), emission=(1.0, 0.95, 0.9), strength=4.0)
+    b.mesh("floor", quad([-2, 0, -2], [-2, 0, 2], [2, 0, 2], [2, 0, -2]), floor)
+    b.mesh("block", box([-0.55, 0.25, 0.1], [0.5, 0.5, 0.5], 30), grey)
+    b.mesh("slab", box([0.5, 0.55, -0.3], [0.7, 0.04, 0.5], -15), grey)
+    posts = []
+    for i in range(7):
+        posts += box([-0.9 + 0.3 * i, 0.35, 0.75], [0.05, 0.7, 0.05], 0)
+    b.mesh("posts", posts, grey)
+    s = 0.6
+    # Facing -y (down): its front face is where u x v points.
+    b.mesh("lamp", quad([-s, 1.4, -s], [s, 1.4, -s], [s, 1.4, s], [-s, 1.4, s]), lamp)
+    b.camera("camera", [0.0, 2.1, 2.5], [0.0, 0.0, 0.2], 50.0)
+    b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
+
+def desk_lamp(path):
+    """Where roulette should learn (EARS): a small, bright lamp 0.45 above a table in a large, closed white room
+    (8 x 3 x 8, albedo 0.75). The camera frames the table top, lit mostly directly; its paths go on bouncing through
+    the white room (throughput roulette keeps them: their throughput stays high) while what they gather there adds
+    little to these pixels."""
+    b = Builder()
+    white = b.material("white", (0.75, 0.75, 0.75), double_sided=True)
+    wood = b.material("table", (0.55, 0.4, 0.3))
+    blue = b.material("blue", (0.2, 0.3, 0.6))
+    lamp = b.material("lamp", (0.0, 0.0, 0.0), emission=(1.0, 0.9, 0.75), strength=40.0)
+    w, h = 4.0, 3.0
+    b.mesh("floor", quad([-w, 0, -w], [-w, 0, w], [w, 0, w], [w, 0, -w]), white)
+    b.mesh("ceiling", quad([-w, h, -w], [w, h, -w], [w, h, w], [-w, h, w]), white)
+    b.mesh("walls", quad([-w, 0, -w], [w, 0, -w], [w, h, -w], [-w, h, -w]) + quad([-w, 0, w], [-w, h, w], [w, h, w], [w, 0, w])
+           + quad([-w, 0, -w], [-w, h, -w], [-w, h, w], [-w, 0, w]) + quad([w, 0, -w], [w, 0, w], [w, h, w], [w, h, -w]), white)
+    b.mesh("table", box([0, 0.375, 0], [1.6, 0.75, 1.0], 0), wood)
+    b.mesh("book", box([-0.3, 0.79, 0.1], [0.35, 0.08, 0.25], 20), blue)
+    b.mesh("cup", box([0.35, 0.82, -0.05], [0.12, 0.14, 0.12], 0), white)
+    s = 0.08
+    b.mesh("lamp", quad([-s, 1.2, -s], [s, 1.2, -s], [s, 1.2, s], [-s, 1.2, s]), lamp)
+    b.camera("camera", [0.0, 2.0, 0.35], [0.0, 0.75, 0.0], 32.0)
+    b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
+
 def png_rgba(width, height, pixel):
     """An 8-bit RGBA PNG; pixel(x, y) -> (r, g, b, a) in 0-255, y = 0 the top row."""
     rows = b"".join(b"\0" + bytes(c for x in range(width) for c in pixel(x, y)) for y in range(height))
@@ -396,6 +442,8 @@ if __name__ == "__main__":
     many_lights("scenes/many_lights.gltf")
     two_rooms("scenes/two_rooms.gltf")
     glossy_room("scenes/glossy_room.gltf")
+    soft_shadows("scenes/soft_shadows.gltf")
+    desk_lamp("scenes/desk_lamp.gltf")
     os.makedirs("scenes/stiff", exist_ok=True)
     tiny_light("scenes/stiff/tiny_light.gltf")
     furnace("scenes/stiff/furnace_albedo_0999.gltf", 0.999, 1.0, "furnace_albedo_0.999")

@@ -396,6 +396,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.roulette = roulette;
   if (renderer.ears().enabled()) out.ears = renderer.ears().summary();
   out.earsGuard = renderer.earsGuard();
+  if (run.inspect) run.inspect(renderer);
   if (reference) out.error = compareImages(filmToImage(out.film), *reference);
   return out;
 }

@@ -1,5 +1,6 @@
 // One render from options to outputs: load, BVH, upload, pipelines, passes. Shared by the CLI and tests.
 #pragma once
+#include <functional>
 #include <glm/glm.hpp>
 
 #include <nlohmann/json.hpp>
@@ -62,6 +63,8 @@ struct RunControl {
   const std::atomic<int>* stop = nullptr;  // raised (a signal number): stop after the pass in flight
   const nlohmann::json* resumeConfig = nullptr;  // a checkpoint's configuration, with...
   RenderState* resumeState = nullptr;            // ...its state, moved into the render
+  // Called with the renderer once the render is done, before it is destroyed (tests: the device buffers it holds).
+  std::function<void(PathRenderer&)> inspect;
 };
 
 struct SetupTimes {

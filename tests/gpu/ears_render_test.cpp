@@ -49,6 +49,60 @@ TEST(Ears, FurnaceCacheLearnsTheReflectedRadiance) {
       << "learned factors must decide some first vertices";
 }
 
+TEST(Ears, TheFoldResolvesEachCellAsTheHostDoesFromItsLevelsSums) {
+  // What a vertex reads (its finest cell's texels) against the same resolution on the host (ears.h
+  // earsResolveLevel) from the table's sums of that cell's three levels, on the Cornell box (light cells too).
+  RenderOptions o;
+  o.scenePath = scenePath("cornell_box.gltf");
+  o.width = o.height = 32;
+  o.spp = 32;
+  o.seed = 4242;
+  o.estimator = ears();
+  o.estimator.earsLightMax = 4.0f;
+  o.progress = false;
+  std::vector<gpu::EarsCell> cells;
+  std::vector<glm::vec4> texels;
+  uint32_t cellCount = 0, cellMask = 0;
+  RunControl run;
+  run.inspect = [&](PathRenderer& renderer) {
+    cells = renderer.ears().downloadCells();
+    texels = renderer.ears().downloadSampling();
+    cellCount = renderer.ears().cellCount();
+  };
+  runRender(sharedContext(), o, run);
+  ASSERT_GT(cellCount, 0u);
+  ASSERT_EQ(cells.size(), 2u * cellCount);  // the copies' cells, then the light cells
+  cellMask = cellCount - 1;
+  uint32_t resolved = 0, trusted = 0;
+  for (uint32_t slot = 0; slot < cellCount; ++slot) {
+    const glm::vec4 variance = texels[gpu::kEarsSamplingTexels * slot + 1];
+    const uint32_t keyCode = glm::floatBitsToUint(variance.w);
+    if (keyCode == 0) continue;
+    ++resolved;
+    // The key resolved here hashes here at the finest level.
+    ASSERT_EQ(gpu::earsCellIndex(keyCode - 1, 0, cellMask), slot);
+    for (bool light : {false, true}) {
+      glm::vec3 m(0.0f), v(0.0f);
+      float copies = 0.0f;
+      for (int level = int(gpu::kEarsLevels) - 1; level >= 0; --level) {
+        uint32_t c = gpu::earsCellIndex(keyCode - 1, uint32_t(level), cellMask);
+        if (light) c = gpu::earsLightCell(c, cellMask);
+        gpu::earsResolveLevel(cells[c].sum, cells[c].sumSquares, m, v, copies);
+      }
+      const uint32_t at = light ? gpu::earsLightCell(slot, cellMask) : slot;
+      const glm::vec4 dm = texels[gpu::kEarsSamplingTexels * at], dv = texels[gpu::kEarsSamplingTexels * at + 1];
+      EXPECT_EQ(dm.w, copies) << "slot " << slot << (light ? " (light)" : "");
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(dm[c], m[c], 1e-5f * std::max(1.0f, std::abs(m[c]))) << "slot " << slot << " channel " << c;
+        EXPECT_NEAR(dv[c], v[c], 1e-5f * std::max(1.0f, std::abs(v[c]))) << "slot " << slot << " channel " << c;
+      }
+      trusted += !light && copies >= gpu::kEarsMinCellCopies;
+    }
+  }
+  EXPECT_GT(resolved, 100u);
+  EXPECT_GT(trusted, 0u);
+}
+
 TEST(Ears, FurnaceLightCellsLearnTheDirectLight) {
   // Light sampling alone (mis none): one light sample of the emitting sphere, seen from inside, gathers per unit
   // throughput the direct light a Le = 0.5 in every channel, and every sample traces a shadow ray. Records are
