@@ -16,6 +16,7 @@
 #include "error.h"
 #include "render/path_pool.h"
 #include "render/pixel_filter_table.h"
+#include "render/time_budget.h"
 
 namespace vkmc {
 
@@ -689,11 +690,12 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   double lastProgress = 0.0, lastCheckpoint = 0.0;
   // Small images take several samples per pixel per pass, so that a pass fills the wavefront.
   const uint32_t maxPerPass = samplesPerPass();
-  // A time budget is checked between passes: the first pass takes one sample (a slow scene must not overrun
-  // by much), each later one as many as fit in a quarter of the budget at the last pass's rate per sample,
-  // which includes the per-pass overhead, so pass sizes grow geometrically on overhead-bound small images.
+  // A time budget (time_budget.h): the first pass takes one sample (a slow scene must not overrun by much), the
+  // later ones are sized from the last pass's seconds a sample.
   uint32_t perPass = settings_.timeBudget > 0.0 ? 1u : maxPerPass;
   const double budget = settings_.timeBudget;
+  double secondsPerSample = 0.0;  // the last pass's, per sample a pixel
+  auto budgetSpent = [&] { return timeBudgetSpent(budget, since(start), secondsPerSample); };
   const uint32_t firstSample = state.nextSample;
   // EARS and shadow-ray roulette learn between passes (the cache and image statistics; the pixel estimate), so
   // their passes start small and double: what they compare against is known early. Shadow roulette's pass from
@@ -727,7 +729,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
     }
   }
   for (uint32_t s = state.nextSample; s < settings_.spp;) {
-    if (budget > 0.0 && s > firstSample && since(start) >= budget) break;
+    if (s > firstSample && budgetSpent()) break;
     if (stopRequested()) {
       state.interrupted = true;
       break;
@@ -760,11 +762,11 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
     s += samples;
     state.nextSample = s;
     inBatch += samples;
-    if (settings_.timeBudget > 0.0) {
-      double perSample = std::max(since(start) - passStart, 1e-6) / samples;
-      perPass = std::clamp(static_cast<uint32_t>(settings_.timeBudget / 4.0 / perSample), 1u, maxPerPass);
+    if (budget > 0.0) {
+      secondsPerSample = std::max(since(start) - passStart, 1e-6) / samples;
+      perPass = timeBudgetPassSamples(budget, since(start), secondsPerSample, maxPerPass);
     }
-    bool last = s == settings_.spp || (budget > 0.0 && since(start) >= budget);
+    bool last = s == settings_.spp || budgetSpent();
     if (inBatch + maxPerPass > kSamplesPerBatch || last) {
       foldFilm(state.film);
       inBatch = 0;
