@@ -730,6 +730,8 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   }
   for (uint32_t s = state.nextSample; s < settings_.spp;) {
     if (s > firstSample && budgetSpent()) break;
+    // Sized here, after the last pass's fold, checkpoint and any measuring pass, by the time left now.
+    if (secondsPerSample > 0.0) perPass = timeBudgetPassSamples(budget, since(start), secondsPerSample, maxPerPass);
     if (stopRequested()) {
       state.interrupted = true;
       break;
@@ -764,7 +766,6 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
     inBatch += samples;
     if (budget > 0.0) {
       secondsPerSample = std::max(since(start) - passStart, 1e-6) / samples;
-      perPass = timeBudgetPassSamples(budget, since(start), secondsPerSample, maxPerPass);
     }
     bool last = s == settings_.spp || budgetSpent();
     if (inBatch + maxPerPass > kSamplesPerBatch || last) {

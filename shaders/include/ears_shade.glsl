@@ -22,8 +22,9 @@ struct EarsReading {
 };
 
 // A vertex reads one cell, its finest (three hashed reads cost ~30 ns a vertex on lavapipe, docs/ears.md). One
-// the fold has not resolved (no training copy was there) reads zero copies (throughput roulette) and leaves its
-// key, so that the next fold resolves it from its coarser levels; so does one whose slot another key holds.
+// the fold has not resolved (no key had reached it) reads zero copies (throughput roulette) and leaves its key,
+// so that the next fold resolves it from its coarser levels; one whose slot was resolved for another key (the
+// table's slots collide) reads nothing either, and leaves the slot to that key.
 EarsReading earsRead(uint key) {
   EarsReading r = EarsReading(vec3(0.0), vec3(0.0), 0.0, vec3(0.0), vec3(0.0), 0.0);
   if (!(earsHeader.imageFactor > 0.0)) return r;

@@ -1,8 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// EARS training, step 3 of 3: for each finest-level cell that has trained, what a vertex in it will read in the
-// next pass: its levels' statistics from their training sums of every pass so far, shrunk coarsest first
-// (ears.h earsResolveLevel), and its light cells' alike. pc.pathCount: the copies' cells.
+// EARS training, step 3 of 3: for each finest-level cell whose key a slot holds (ears.h earsKeyWord), what a
+// vertex in it reads from now on (the rest of this pass, the next ones): its levels' statistics from their
+// training sums of every pass so far, shrunk coarsest first (earsResolveLevel), and its light cells' alike, with
+// the key they were resolved for. pc.pathCount: the copies' cells.
 #include "common.glsl"
 
 layout(binding = BINDING_EARS_SAMPLING, TEXEL_FORMAT_EARS_SAMPLING) uniform writeonly imageBuffer earsLearned;
@@ -17,7 +18,7 @@ void resolve(uint keyCode, uint cell, bool light) {
     earsResolveLevel(earsCells[c].sum, earsCells[c].sumSquares, moment, variance, copies);
   }
   imageStore(earsLearned, int(kEarsSamplingTexels * cell), vec4(moment, copies));
-  imageStore(earsLearned, int(kEarsSamplingTexels * cell + 1u), vec4(variance, uintBitsToFloat(keyCode)));
+  imageStore(earsLearned, int(kEarsSamplingTexels * cell + 1u), vec4(variance, float(keyCode)));
 }
 
 void main() {

@@ -72,8 +72,9 @@ struct EarsCell {
   vec4 sum;         // rgb: sum of Lr, w: copies
   vec4 sumSquares;  // rgb: sum of Lr^2, w: sum of rays
 };
-// After the table's cells, the same buffer holds one word per copies' cell: the key + 1 (earsCellKey) of the
-// finest-level cell that last trained there (0: none), so that the fold can find that cell's coarser levels.
+// After the table's cells, the same buffer holds one word per copies' cell: the key + 1 (earsCellKey) of a
+// finest-level cell that hashes there, written by its training copies and by vertices that found the slot
+// unresolved (0: none), so that the fold can find that cell's coarser levels.
 VKMC_CONST uint kEarsCellWords = 8u;  // sizeof(EarsCell) / 4
 VKMC_FN uint earsKeyWord(uint cell, uint tableCells) { return tableCells * kEarsCellWords + cell; }
 
@@ -83,11 +84,11 @@ VKMC_FN uint earsKeyWord(uint cell, uint tableCells) { return tableCells * kEars
 // alike, at the light cell beside it.
 VKMC_CONST uint kEarsSamplingTexels = 2u;  // momentPerCost (rgb: E[Lr^2] / E[C], w: the most copies of any
                                            // level), variancePerCost (rgb: Var[Lr] / E[C], w: the cell's key + 1
-                                           // as float bits)
+                                           // as a float: exact below 2^24, and never a denormal)
 // Whether a slot's resolved texels are those of `key`'s finest cell: keys that hash to one slot share its sums,
 // but the fold resolves the coarser levels of one of them only (the last to train there); the others read
 // nothing there (throughput roulette), as merged levels of another part of the scene misled their factors.
-VKMC_FN bool earsResolvedFor(vec4 varianceTexel, uint key) { return floatBitsToUint(varianceTexel.w) == key + 1u; }
+VKMC_FN bool earsResolvedFor(vec4 varianceTexel, uint key) { return varianceTexel.w == float(key + 1u); }
 
 // One copy of a training vertex (slot * kEarsDepths + depth): where what its subtree gathers goes.
 struct EarsRecord {
@@ -111,8 +112,9 @@ struct EarsSlot {
 
 // A vertex's place in the cache: its cell of the finest grid (kEarsGridResolution along the scene's longest side,
 // coordinates clamped to 7 bits) and its geometric normal's dominant signed axis, packed as x | y << 7 | z << 14 |
-// bin << 21. The cache holds kEarsLevels grids, each kEarsLevelShift bits coarser than the one before; a vertex
-// reads its cell at every level (earsShrunk), as EARS's octree refines only cells with enough samples.
+// bin << 21 (below 2^24: exact as a float). The cache holds kEarsLevels grids, each kEarsLevelShift bits coarser
+// than the one before; the fold resolves a finest cell from its cells at every level (earsResolveLevel), as
+// EARS's octree refines only cells with enough samples, and a vertex reads that one cell.
 VKMC_FN uint earsCellKey(vec3 p, vec3 n, vec4 grid) {
   vec3 g = clamp(floor((p - vec3(grid)) * grid.w), vec3(0.0f), vec3(127.0f));
   vec3 a = abs(n);
@@ -205,6 +207,7 @@ VKMC_END_NAMESPACE
 namespace vkmc::gpu {
 static_assert(sizeof(EarsHeader) == 48 + 2 * 4 * kEarsHistogramDepths * kEarsBins);
 static_assert(sizeof(EarsCell) == 32 && sizeof(EarsRecord) == 32 && sizeof(EarsSlot) == 32);
+static_assert(sizeof(EarsCell) == kEarsCellWords * 4);
 static_assert(kEarsDepths <= 4u, "the first-light tag holds a depth in two bits");
 }  // namespace vkmc::gpu
 #endif

@@ -73,10 +73,11 @@ TEST(Ears, TheFoldResolvesEachCellAsTheHostDoesFromItsLevelsSums) {
   ASSERT_GT(cellCount, 0u);
   ASSERT_EQ(cells.size(), 2u * cellCount);  // the copies' cells, then the light cells
   cellMask = cellCount - 1;
-  uint32_t resolved = 0, trusted = 0;
+  uint32_t resolved = 0, trusted = 0, lightLearned = 0;
   for (uint32_t slot = 0; slot < cellCount; ++slot) {
     const glm::vec4 variance = texels[gpu::kEarsSamplingTexels * slot + 1];
-    const uint32_t keyCode = glm::floatBitsToUint(variance.w);
+    ASSERT_EQ(variance.w, std::floor(variance.w));  // a whole key + 1 (0: not resolved)
+    const uint32_t keyCode = uint32_t(variance.w);
     if (keyCode == 0) continue;
     ++resolved;
     // The key resolved here hashes here at the finest level.
@@ -92,15 +93,20 @@ TEST(Ears, TheFoldResolvesEachCellAsTheHostDoesFromItsLevelsSums) {
       const uint32_t at = light ? gpu::earsLightCell(slot, cellMask) : slot;
       const glm::vec4 dm = texels[gpu::kEarsSamplingTexels * at], dv = texels[gpu::kEarsSamplingTexels * at + 1];
       EXPECT_EQ(dm.w, copies) << "slot " << slot << (light ? " (light)" : "");
+      // The variance, a difference of the moments, is as exact as the second moment it cancels from.
       for (int c = 0; c < 3; ++c) {
-        EXPECT_NEAR(dm[c], m[c], 1e-5f * std::max(1.0f, std::abs(m[c]))) << "slot " << slot << " channel " << c;
-        EXPECT_NEAR(dv[c], v[c], 1e-5f * std::max(1.0f, std::abs(v[c]))) << "slot " << slot << " channel " << c;
+        const float tolerance = 1e-5f * std::max(1.0f, std::abs(m[c]));
+        EXPECT_NEAR(dm[c], m[c], tolerance) << "slot " << slot << " channel " << c;
+        EXPECT_NEAR(dv[c], v[c], tolerance) << "slot " << slot << " channel " << c;
       }
+      EXPECT_EQ(dv.w, variance.w) << "the light cell is resolved for the same key";
       trusted += !light && copies >= gpu::kEarsMinCellCopies;
+      lightLearned += light && copies > 0.0f;
     }
   }
   EXPECT_GT(resolved, 100u);
   EXPECT_GT(trusted, 0u);
+  EXPECT_GT(lightLearned, 0u);
 }
 
 TEST(Ears, FurnaceLightCellsLearnTheDirectLight) {

@@ -57,8 +57,8 @@ TEST(EarsResolve, TheFoldShrinksALevelsSumsAsAVertexReadingThemOneByOneWould) {
   EXPECT_FLOAT_EQ(copies, 5000.0f);  // the most of any level: trusted though the fine cell alone is not
   // A slot resolved for another key (the table's slots collide) is not read as this key's.
   const uint key = earsCellKey(vec3(0.3f, 0.2f, 0.1f), vec3(0.0f, 1.0f, 0.0f), vec4(0.0f, 0.0f, 0.0f, 10.0f));
-  EXPECT_TRUE(earsResolvedFor(vec4(variance, glm::uintBitsToFloat(key + 1u)), key));
-  EXPECT_FALSE(earsResolvedFor(vec4(variance, glm::uintBitsToFloat(key + 2u)), key));
+  EXPECT_TRUE(earsResolvedFor(vec4(variance, float(key + 1u)), key));
+  EXPECT_FALSE(earsResolvedFor(vec4(variance, float(key + 2u)), key));
   EXPECT_FALSE(earsResolvedFor(vec4(variance, 0.0f), key));  // never resolved
 }
 
