@@ -695,7 +695,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   uint32_t perPass = settings_.timeBudget > 0.0 ? 1u : maxPerPass;
   const double budget = settings_.timeBudget;
   double secondsPerSample = 0.0;  // the last pass's, per sample a pixel
-  auto budgetSpent = [&] { return timeBudgetSpent(budget, since(start), secondsPerSample); };
+  auto budgetSpent = [&] { return timeBudgetSpent(budget, since(start)); };
   const uint32_t firstSample = state.nextSample;
   // EARS and shadow-ray roulette learn between passes (the cache and image statistics; the pixel estimate), so
   // their passes start small and double: what they compare against is known early. Shadow roulette's pass from

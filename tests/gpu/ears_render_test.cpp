@@ -52,14 +52,9 @@ TEST(Ears, FurnaceCacheLearnsTheReflectedRadiance) {
 TEST(Ears, TheFoldResolvesEachCellAsTheHostDoesFromItsLevelsSums) {
   // What a vertex reads (its finest cell's texels) against the same resolution on the host (ears.h
   // earsResolveLevel) from the table's sums of that cell's three levels, on the Cornell box (light cells too).
-  RenderOptions o;
-  o.scenePath = scenePath("cornell_box.gltf");
-  o.width = o.height = 32;
-  o.spp = 32;
-  o.seed = 4242;
-  o.estimator = ears();
-  o.estimator.earsLightMax = 4.0f;
-  o.progress = false;
+  EstimatorConfig e = ears();
+  e.earsLightMax = 4.0f;
+  const RenderOptions o = optionsFor("cornell_box.gltf", e, 32, 32, 32);
   std::vector<gpu::EarsCell> cells;
   std::vector<glm::vec4> texels;
   uint32_t cellCount = 0, cellMask = 0;

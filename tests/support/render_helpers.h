@@ -56,7 +56,7 @@ struct RendererTexelPlaceholders {
 
 inline std::string scenePath(const std::string& name) { return std::string(VKMC_SOURCE_DIR) + "/scenes/" + name; }
 
-inline RenderOutcome renderWith(const std::string& scene, const EstimatorConfig& e, uint32_t w, uint32_t h, uint32_t spp,
+inline RenderOptions optionsFor(const std::string& scene, const EstimatorConfig& e, uint32_t w, uint32_t h, uint32_t spp,
                                 uint32_t seed = 4242) {
   RenderOptions o;
   o.scenePath = scenePath(scene);
@@ -66,7 +66,12 @@ inline RenderOutcome renderWith(const std::string& scene, const EstimatorConfig&
   o.seed = seed;
   o.estimator = e;
   o.progress = false;
-  return runRender(sharedContext(), o);
+  return o;
+}
+
+inline RenderOutcome renderWith(const std::string& scene, const EstimatorConfig& e, uint32_t w, uint32_t h, uint32_t spp,
+                                uint32_t seed = 4242) {
+  return runRender(sharedContext(), optionsFor(scene, e, w, h, spp, seed));
 }
 
 // Mean over a pixel rectangle [x0, x1) x [y0, y1) and the variance of that mean (pixels are independent).
