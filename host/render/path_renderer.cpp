@@ -355,13 +355,20 @@ uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderS
   earsOutOfBudget_ = false;
   double firstPassPerSample = 0.0;
   uint32_t droppedIndex = 0;  // the dropped passes' samples follow each other in their own seed's sequence
+  // Under a time budget where the guard may fall back, the first pass is throughput roulette's own (its lean
+  // kernels, no training): what it costs says whether learning fits before any training kernel has run (on the
+  // stiff furnace one training pass was a quarter of a 4-s budget).
+  const bool throughputFirst = settings_.timeBudget > 0.0 && settings_.estimator.earsMayFallBack();
   for (uint32_t pass = 0; pass < kEarsTrainingPasses && nextSample < settings_.spp; ++pass) {
     const uint64_t raysBefore = stats.rays();
     const auto passStart = Clock::now();
     // The first pass learns from nothing, so it decides everywhere as throughput roulette does: it is an image
     // pass (the render's seed and next sample) and stays; the later ones decide from what it taught and are dropped.
     earsTrainingKept_ = pass == 0;
+    const EarsPhase phase = earsPhase_;
+    if (pass == 0 && throughputFirst) earsPhase_ = EarsPhase::Throughput;
     renderSamples(earsTrainingKept_ ? nextSample : droppedIndex, samples, stats);
+    earsPhase_ = phase;
     if (!earsTrainingKept_) droppedIndex += samples;
     const double perSample = since(passStart) / samples;
     if (pass == 0) firstPassPerSample = perSample;
