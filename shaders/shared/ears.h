@@ -86,7 +86,7 @@ VKMC_CONST uint kEarsSamplingTexels = 2u;  // momentPerCost (rgb: E[Lr^2] / E[C]
                                            // level), variancePerCost (rgb: Var[Lr] / E[C], w: the cell's key + 1
                                            // as a float: exact below 2^24, and never a denormal)
 // Whether a slot's resolved texels are those of `key`'s finest cell: keys that hash to one slot share its sums,
-// but the fold resolves the coarser levels of one of them only (the last to train there); the others read
+// but the fold resolves the coarser levels of one of them only (the key the slot's word holds); the others read
 // nothing there (throughput roulette), as merged levels of another part of the scene misled their factors.
 VKMC_FN bool earsResolvedFor(vec4 varianceTexel, uint key) { return varianceTexel.w == float(key + 1u); }
 
