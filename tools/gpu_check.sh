@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # vkmc on a lent GPU machine (issue 19): one short, prepared run of `vkmc info`, `vkmc bench-kernels`,
-# `vkmc bench-textures` and a render of every shared scene, with the same commands runnable here on lavapipe for the side-by-side figures.
+# `vkmc bench-textures`, EARS against throughput roulette and the per-depth pilot at equal time (issue 17: whether
+# EARS's vertex, twice throughput roulette's on lavapipe, is cheap on a GPU) and a render of every shared scene, with
+# the same commands runnable here on lavapipe for the side-by-side figures (GPU_CHECK_QUICK=1: about a minute).
 #
 #   bash tools/gpu_check.sh bundle     # here: .gpu/ = vkmc + the shared libraries it needs + ../shared/scenes,
 #                                      #       .gl/ = the Vulkan loader's .deb (the device machine has no loader)
@@ -66,6 +68,21 @@ run_checks() {
   $t 120 $vkmc bench-kernels --runs $runs --specialization --json "$out/reports/bench_spec.json" scenes/cornell_box.gltf "${models[0]}"
   echo "== bench-textures: sampled texture pages against a texel buffer"
   $t 120 $vkmc bench-textures --rounds $runs "${models[0]}"
+  echo "== EARS against throughput roulette and the per-depth pilot at equal time (issue 17: is EARS's vertex cheap here?)"
+  # The wavefront (the megakernel refuses EARS); the report's honest efficiency 1/(mean_relvariance x seconds).
+  local budget=2 rr
+  [[ ${GPU_CHECK_QUICK:-0} == 1 ]] && budget=0.5
+  for s in two_rooms glossy_room cornell_box; do
+    for rr in throughput efficiency "ears --ears-fallback never" ears; do
+      # shellcheck disable=SC2086  # $rr holds the option and its fallback
+      $t 120 $vkmc render scenes/$s.gltf --integrator wavefront --time-budget $budget --spp 1000000 --rr $rr -q \
+        -o "$out/ears.exr" --report "$out/ears.json" || echo "$s --rr $rr failed (exit $?)"
+      [[ -f $out/ears.json ]] && python3 -c "import json,sys; r=json.load(open(sys.argv[1])); \
+print('%-12s %-28s spp %6d  s %6.2f  mean_relvariance %.3g  efficiency %.4g' % (sys.argv[2], sys.argv[3], r['spp'], \
+r['seconds'], r['mean_relvariance'], r['estimated_efficiency']))" "$out/ears.json" "$s" "$rr" 2>/dev/null
+      rm -f "$out/ears.exr" "$out/ears.json"
+    done
+  done
   echo "== renders: every shared scene and the built-in ones, 64 spp at 256 wide"
   local s name
   for s in scenes/cornell_box.gltf scenes/veach_mis.gltf scenes/many_lights.gltf scenes/textures/leaves.gltf $(find "$scenes" -name '*.gltf' -o -name '*.glb' | sort); do
