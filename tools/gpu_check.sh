@@ -70,7 +70,7 @@ run_checks() {
   $t 120 $vkmc bench-textures --rounds $runs "${models[0]}"
   echo "== EARS against throughput roulette and the per-depth pilot at equal time (issue 17: is EARS's vertex cheap here?)"
   # The wavefront (the megakernel refuses EARS); the report's honest efficiency 1/(mean_relvariance x seconds).
-  local budget=2 rr
+  local budget=2 rr s
   [[ ${GPU_CHECK_QUICK:-0} == 1 ]] && budget=0.5
   for s in two_rooms glossy_room cornell_box; do
     for rr in throughput efficiency "ears --ears-fallback never" ears; do
@@ -84,7 +84,7 @@ r['seconds'], r['mean_relvariance'], r['estimated_efficiency']))" "$out/ears.jso
     done
   done
   echo "== renders: every shared scene and the built-in ones, 64 spp at 256 wide"
-  local s name
+  local name
   for s in scenes/cornell_box.gltf scenes/veach_mis.gltf scenes/many_lights.gltf scenes/textures/leaves.gltf $(find "$scenes" -name '*.gltf' -o -name '*.glb' | sort); do
     name=$(basename "${s%.*}")
     echo "-- $name"
