@@ -455,7 +455,9 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["high_range_samples"] = r.film.totalHighRange();
   j["samples"] = r.film.totalSamples();
   j["mean"] = {mean.x, mean.y, mean.z};
-  j["mean_variance"] = {var.x, var.y, var.z};
+  // null where no variance is estimated (one scrambling a pixel: Film::estimatesVariance), never a made-up 0.
+  const bool estimated = r.film.estimatesVariance();
+  j["mean_variance"] = estimated ? json{var.x, var.y, var.z} : json(nullptr);
   j["device"] = r.device;
   j["integrator"] = toString(r.integrator);
   const RenderOutcome::Tuning& t = r.tuning;
@@ -524,16 +526,17 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
       relVar += r.film.varianceOfMean(p, c) / (m * m + kRelMseEpsilon);
     }
   relVar /= 3.0 * std::max<size_t>(1, r.film.pixels());
-  j["mean_relvariance"] = relVar;
-  j["estimated_efficiency"] = relVar > 0.0 && s.seconds > 0.0 ? 1.0 / (relVar * s.seconds) : 0.0;
+  j["mean_relvariance"] = estimated ? json(relVar) : json(nullptr);
+  j["estimated_efficiency"] = !estimated ? json(nullptr) : json(relVar > 0.0 && s.seconds > 0.0 ? 1.0 / (relVar * s.seconds) : 0.0);
   // The same efficiency against each cost: wall time, GPU time (kernel timestamps), rays per pixel (a cost that
   // does not depend on the machine's load); and where the variance came from (sampler.h replicates or samples).
   const double raysPerPixel = double(s.rays()) / double(std::max<size_t>(1, r.film.pixels()));
   auto inverse = [&](double cost) { return relVar > 0.0 && cost > 0.0 ? 1.0 / (relVar * cost) : 0.0; };
-  j["estimated_efficiency_by_cost"] = {{"wall_seconds", inverse(s.seconds)},
-                                       {"gpu_seconds", inverse(s.gpuSeconds)},
-                                       {"rays_per_pixel", inverse(raysPerPixel)}};
-  j["variance_from"] = r.film.replicateVariance ? "replicates" : "samples";
+  j["estimated_efficiency_by_cost"] = !estimated ? json(nullptr)
+                                                 : json{{"wall_seconds", inverse(s.seconds)},
+                                                        {"gpu_seconds", inverse(s.gpuSeconds)},
+                                                        {"rays_per_pixel", inverse(raysPerPixel)}};
+  j["variance_from"] = !estimated ? "none" : r.film.replicateVariance ? "replicates" : "samples";
   // Whether that variance, and so the efficiency, can be trusted (analysis/variance_reliability.h).
   const VarianceReliability reliability = assessVarianceReliability(r.film);
   j["variance_reliability"] = {
@@ -584,6 +587,11 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
   glm::dvec3 mean = r.film.imageMean();
   glm::dvec3 var = r.film.imageMeanVarianceOfMean();
   char buf[2048];
+  std::snprintf(buf, sizeof(buf), "%.3g %.3g %.3g (image mean of the per-pixel variance of the mean)", var.x, var.y, var.z);
+  const std::string varianceText =
+      r.film.estimatesVariance() ? std::string(buf)
+                                 : "not estimated: one scrambling a pixel (--replicates 1) has no unbiased estimate of "
+                                   "its variance (--replicates 2 or more gives one)";
   std::snprintf(buf, sizeof(buf),
                 "scene       %s (%u triangles, %u emissive)\n"
                 "device      %s\n"
@@ -592,14 +600,14 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 "time        %.3f s render (GPU %.3f s), set-up %.3f s (load %.3f, BVH %.3f, upload %.3f, pipelines %.3f)\n"
                 "rays        %llu (camera %llu, extension %llu, shadow %llu; %llu deep walks): %.2f Mrays/s\n"
                 "mean        %.6g %.6g %.6g\n"
-                "variance    %.3g %.3g %.3g (image mean of the per-pixel variance of the mean)\n"
+                "variance    %s\n"
                 "non-finite  %llu samples excluded (%llu finite samples above 2^56 kept in the scaled sums)\n",
                 o.scenePath.c_str(), r.sceneInfo.triangles, r.sceneInfo.emissiveTriangles, r.device.c_str(), r.width, r.height,
                 s.samplesPerPixel, r.cameraName.c_str(), pixelFilterSummary(o.filter).c_str(), o.estimator.summary().c_str(), s.seconds, s.gpuSeconds, r.setup.total(),
                 r.setup.load, r.setup.bvh, r.setup.upload, r.setup.pipelines, (unsigned long long)s.rays(),
                 (unsigned long long)s.cameraRays, (unsigned long long)s.extensionRays, (unsigned long long)s.shadowRays,
-                (unsigned long long)s.deepWalks, s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z, var.x,
-                var.y, var.z, (unsigned long long)r.film.totalNonfinite(),
+                (unsigned long long)s.deepWalks, s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z,
+                varianceText.c_str(), (unsigned long long)r.film.totalNonfinite(),
                 (unsigned long long)r.film.totalHighRange());
   std::string text = buf;
   if (r.ears) text += earsLine(*r.ears) + earsGuardLine(r.earsGuard);
@@ -608,7 +616,10 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
             ", efficiency 1/(relMSE x s) " + std::to_string(r.error->relmse > 0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0) +
             "\n";
   const VarianceReliability reliability = assessVarianceReliability(r.film);
-  if (reliability.pixelsAssessed == 0) {
+  if (!r.film.estimatesVariance()) {
+    text += "reliability no variance estimate, so no estimated efficiency (compare against a reference: "
+            "--reference)\n";
+  } else if (reliability.pixelsAssessed == 0) {
     text += "reliability fewer samples than the " + std::to_string(r.film.replicates) +
             " replicates in every pixel: the variance estimate cannot be assessed, so the estimated efficiency is "
             "unreliable\n";

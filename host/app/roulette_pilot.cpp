@@ -18,6 +18,7 @@ RoulettePilot runRoulettePilot(vk::Context& ctx, const GpuScene& scene, const Re
   pilotSettings.estimator.bsdfSamples = 1.0f;
   pilotSettings.estimator.splitDepth = 1;
   pilotSettings.spp = std::min<uint32_t>(4, settings.spp);
+  pilotSettings.estimator.replicates = std::max(2u, est.replicates);  // the weights below need a variance
   pilotSettings.timeBudget = 0.0;
   pilotSettings.progress = false;
   pilotSettings.recordDepthStats = true;

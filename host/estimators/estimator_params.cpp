@@ -136,10 +136,11 @@ constexpr EstimatorParam kParams[] = {
     choice<&C::sampler>("sampler", Sampler::Sobol, kSamplerNames, SPEC_SAMPLER,
                         "uniform numbers: independent hashes, Owen-scrambled Sobol per pixel, or Morton-ordered "
                         "ZSobol"),
-    count<&C::replicates>("replicates", 2, 2, gpu::kMaxSampleReplicates, SPEC_SAMPLE_REPLICATES,
+    count<&C::replicates>("replicates", 2, 1, gpu::kMaxSampleReplicates, SPEC_SAMPLE_REPLICATES,
                           "independently scrambled replicates per pixel, whose spread is the variance of the pixel "
                           "mean under sobol and zsobol: fewer keep more stratification, more give each pixel's "
-                          "variance more degrees of freedom (replicates - 1)"),
+                          "variance more degrees of freedom (replicates - 1); 1 keeps all of it and estimates no "
+                          "variance"),
 };
 
 std::string number(double v) {

@@ -149,7 +149,7 @@ Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
     c.state.film = Film(width, height);
     c.state.film.replicateVariance = header.at("replicate_variance");
     c.state.film.replicates = header.at("replicates");
-    if (c.state.film.replicates < 2 || c.state.film.replicates > gpu::kMaxSampleReplicates)
+    if (c.state.film.replicates < 1 || c.state.film.replicates > gpu::kMaxSampleReplicates)
       throw fail("has an impossible replicate count");
     c.state.nextSample = header.at("next_sample");
     c.state.batchSamples = header.at("batch_samples");

@@ -48,22 +48,22 @@ ExrImage filmToImage(const Film& film) {
   const char* var[] = {"variance.R", "variance.G", "variance.B"};
   for (int c = 0; c < 3; ++c) {
     auto& m = img.channels[rgb[c]];
-    auto& v = img.channels[var[c]];
     m.resize(film.pixels());
-    v.resize(film.pixels());
-    for (size_t p = 0; p < film.pixels(); ++p) {
-      m[p] = static_cast<float>(film.mean(p, c));
-      v[p] = static_cast<float>(film.varianceOfMean(p, c));
-    }
+    for (size_t p = 0; p < film.pixels(); ++p) m[p] = static_cast<float>(film.mean(p, c));
   }
   auto& s = img.channels["samples"];
-  auto& dof = img.channels["variance.dof"];
   s.resize(film.pixels());
-  dof.resize(film.pixels());
-  for (size_t p = 0; p < film.pixels(); ++p) {
-    s[p] = static_cast<float>(film.count[p]);
-    dof[p] = static_cast<float>(film.varianceDof(p));
+  for (size_t p = 0; p < film.pixels(); ++p) s[p] = static_cast<float>(film.count[p]);
+  // No variance channels where the film estimates none (one scrambling a pixel): a 0 would read as certainty.
+  if (!film.estimatesVariance()) return img;
+  for (int c = 0; c < 3; ++c) {
+    auto& v = img.channels[var[c]];
+    v.resize(film.pixels());
+    for (size_t p = 0; p < film.pixels(); ++p) v[p] = static_cast<float>(film.varianceOfMean(p, c));
   }
+  auto& dof = img.channels["variance.dof"];
+  dof.resize(film.pixels());
+  for (size_t p = 0; p < film.pixels(); ++p) dof[p] = static_cast<float>(film.varianceDof(p));
   return img;
 }
 

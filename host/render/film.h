@@ -25,6 +25,9 @@ struct Film {
   // QMC samplers: a pixel's samples are correlated, so the variance of its mean comes from the spread of the
   // replicate means; the independent sampler's samples are independent, so from the samples (more dof).
   bool replicateVariance = false;
+  // Whether the film estimates a variance at all: one scrambling a pixel (`--replicates 1` under a QMC sampler)
+  // has no independent replicates, and no unbiased variance of its mean exists (its samples' spread overstates it).
+  bool estimatesVariance() const { return !replicateVariance || replicates >= 2; }
 
   Film() = default;
   // Folds one batch of the GPU's float partial sums (at most 64 samples a pixel) into the double sums: the

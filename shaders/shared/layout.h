@@ -109,7 +109,7 @@
 #define SPEC_EARS_MAX 35          // float: rr ears's largest factor q, at most kEarsFactorMax (1: learned roulette alone)
 #define SPEC_EARS_LIGHT_MAX 36    // float: rr ears's largest light factor qL; 0: light samples not learned (ears.h)
 #define SPEC_EARS_TRAINS 37       // 0/1: rr ears: this kernel's paths train the cache (common.glsl earsTrains)
-#define SPEC_SAMPLE_REPLICATES 38 // replicates a pixel's samples are split into, 2..kMaxSampleReplicates (sampler.h)
+#define SPEC_SAMPLE_REPLICATES 38 // replicates a pixel's samples are split into, 1..kMaxSampleReplicates (sampler.h)
 #define SPEC_DEEP_WALKS 39        // 0: the BVH is too shallow for any walk to outgrow the register stack: no deep pass
 #define SPEC_REGISTER_STACK 40    // the walk's register stack entries: 4, 8 or kBvhRegisterStackEntries (bvh.h registerStackEntries)
 

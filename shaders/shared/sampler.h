@@ -7,11 +7,12 @@
 // its sample order shuffled and its values Owen-scrambled with seeds of its own, so pairs are independent of
 // each other and each stays stratified (padding). A 1D sample is one half of a pair.
 //
-// Honest variance: a pixel's samples are split into R independent replicates (`replicates`, 2 to
+// Honest variance: a pixel's samples are split into R independent replicates (`replicates`, 1 to
 // kMaxSampleReplicates; sample index i belongs to replicate i % R and is point i / R of that replicate's own
 // scrambling), so the spread of the R replicate means is an unbiased estimate of the variance of the pixel mean
 // (host/render/film.cpp). Fewer replicates keep more of the sequence's stratification (QMC error falls faster
-// than 1/n inside one); more give the per-pixel variance more degrees of freedom (R - 1).
+// than 1/n inside one); more give the per-pixel variance more degrees of freedom (R - 1). R = 1 is one
+// scrambling, as Cycles and pbrt-v4 sample: the least error, and no variance estimate (Film::estimatesVariance).
 #ifndef VKMC_SAMPLER_H
 #define VKMC_SAMPLER_H
 #include "glsl_cpp.h"

@@ -78,6 +78,40 @@ TEST(Cli, DepthCapIsReportedAsBiased) {
   EXPECT_NE(std::string(j["estimator"]["bias"]).find("truncation"), std::string::npos);
 }
 
+// One scrambling a pixel (--replicates 1) estimates no variance, and nothing pretends it does: the report's
+// variance figures are null, the EXR has no variance channels, and compare says why it runs no per-pixel test.
+TEST(Cli, OneScramblingReportsNoVarianceAndWritesNoVarianceChannels) {
+  fs::path exr = workDir() / "one_scrambling.exr", report = workDir() / "one_scrambling.json";
+  RunResult r = runVkmc("render " + cornell() + " --width 16 --height 16 --spp 8 --replicates 1 -o " + exr.string() +
+                        " --report " + report.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("variance    not estimated"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("no estimated efficiency"), std::string::npos) << r.out;
+  auto j = nlohmann::json::parse(slurp(report));
+  EXPECT_EQ(j["estimator"]["replicates"], 1);
+  EXPECT_EQ(j["variance_from"], "none");
+  for (const char* key : {"mean_relvariance", "estimated_efficiency", "estimated_efficiency_by_cost", "mean_variance"})
+    EXPECT_TRUE(j[key].is_null()) << key;
+  EXPECT_FALSE(j["estimated_efficiency_reliable"]);
+  EXPECT_GT(double(j["mean"][0]), 0.0);
+  vkmc::ExrImage img = vkmc::readExr(exr.string());
+  EXPECT_EQ(img.channels.count("variance.R"), 0u);
+  EXPECT_EQ(img.channels.count("variance.dof"), 0u);
+  EXPECT_EQ(img.channels["samples"][0], 8.0f);
+  RunResult c = runVkmc("compare " + exr.string() + " " + exr.string());
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_NE(c.out.find("relMSE 0"), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("no per-pixel test: the image has no variance channels"), std::string::npos) << c.out;
+  // The independent sampler's samples are independent: one replicate still estimates their variance.
+  RunResult ind = runVkmc("render " + cornell() + " --width 16 --height 16 --spp 8 --replicates 1 --sampler independent -q -o " +
+                          exr.string() + " --report " + report.string());
+  ASSERT_EQ(ind.code, 0) << ind.err;
+  auto k = nlohmann::json::parse(slurp(report));
+  EXPECT_EQ(k["variance_from"], "samples");
+  EXPECT_GT(double(k["mean_relvariance"]), 0.0);
+  EXPECT_EQ(vkmc::readExr(exr.string()).channels.count("variance.R"), 1u);
+}
+
 TEST(Cli, FlagsOverridingAnEstimatorFileAreNamedInTheEcho) {
   fs::path file = workDir() / "named_estimator.json", report = workDir() / "named.json";
   std::ofstream(file) << R"({"name": "fixed q", "rr": "fixed", "rr_q": 0.5})";
@@ -198,8 +232,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"sampler_unknown", "", "--sampler halton", "is not one of independent|sobol|zsobol", 1},
                       BadInput{"zsobol_index_too_long", "", "--sampler zsobol --width 1024 --height 1024 --spp 20000",
                                "Morton index of 34 bits", 1},
-                      BadInput{"replicates_1", "", "--replicates 1", "replicates must be between 2 and 4", 1},
-                      BadInput{"replicates_5", "", "--replicates 5", "replicates must be between 2 and 4", 1},
+                      BadInput{"replicates_0", "", "--replicates 0", "replicates must be between 1 and 4", 1},
+                      BadInput{"replicates_5", "", "--replicates 5", "replicates must be between 1 and 4", 1},
                       BadInput{"workgroup_48", "", "--workgroup 48", "--workgroup must be 32, 64, 128 or 256", 1},
                       BadInput{"workgroup_negative", "", "--workgroup -64", "--workgroup expects auto or", 1},
                       BadInput{"wavefront_too_small", "", "--wavefront 100", "--wavefront must be 1024 to", 1},

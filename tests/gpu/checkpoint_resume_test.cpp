@@ -93,6 +93,7 @@ INSTANTIATE_TEST_SUITE_P(
                       // the last checkpoint at 71.
                       ResumeCase{"shadow_roulette_after_a_fold", 79, 8, with("shadow_rr", 0.5)},
                       ResumeCase{"sobol_replicates", 40, 32, with("sampler", "sobol")},
+                      ResumeCase{"one_scrambling", 40, 32, with("replicates", 1)},
                       ResumeCase{"megakernel", 40, 32, EstimatorConfig{}, Integrator::Megakernel}),
     [](const auto& info) { return std::string(info.param.name); });
 

@@ -90,5 +90,55 @@ TEST(SamplerVariance, ReportedVarianceMatchesTheSpreadOverSeeds) {
   }
 }
 
+// Over seeds: each pixel's mean and the observed variance of it, and the image mean's mean and variance.
+struct SeedSpread {
+  std::vector<double> mean, observed;
+  double imageMean = 0.0, imageMeanVariance = 0.0;
+};
+
+SeedSpread spreadOverSeeds(const std::string& scene, uint32_t replicates, uint32_t seeds, uint32_t size, uint32_t spp) {
+  EstimatorConfig e;
+  e.replicates = replicates;
+  const size_t pixels = size_t(size) * size;
+  std::vector<double> sum(pixels, 0.0), sumSq(pixels, 0.0);
+  double imageSum = 0.0, imageSumSq = 0.0;
+  for (uint32_t s = 0; s < seeds; ++s) {
+    RenderOutcome r = renderWith(scene, e, size, size, spp, 2000 + s);
+    EXPECT_EQ(r.film.estimatesVariance(), replicates >= 2);
+    double image = 0.0;
+    for (size_t p = 0; p < pixels; ++p) {
+      const double m = r.film.mean(p, 0);
+      sum[p] += m, sumSq[p] += m * m, image += m / double(pixels);
+    }
+    imageSum += image, imageSumSq += image * image;
+  }
+  SeedSpread out;
+  for (size_t p = 0; p < pixels; ++p) {
+    out.mean.push_back(sum[p] / seeds);
+    out.observed.push_back((sumSq[p] - sum[p] * sum[p] / seeds) / (seeds - 1.0));
+  }
+  out.imageMean = imageSum / seeds;
+  out.imageMeanVariance = (imageSumSq - imageSum * imageSum / seeds) / (seeds - 1.0) / seeds;
+  return out;
+}
+
+// One scrambling (--replicates 1) reports no variance; over seeds it has the same mean as two replicates and,
+// on a smooth integrand (the tiny light's falloff), far less spread: one 32-point net against two of 16, where
+// Owen-scrambled error falls like n^-3.
+TEST(SamplerVariance, OneScramblingKeepsTheMeanAndSpreadsLessThanTwoReplicates) {
+  const uint32_t seeds = 20, size = 16, spp = 32;
+  SeedSpread one = spreadOverSeeds("stiff/tiny_light.gltf", 1, seeds, size, spp);
+  SeedSpread two = spreadOverSeeds("stiff/tiny_light.gltf", 2, seeds, size, spp);
+  const double z = (one.imageMean - two.imageMean) / std::sqrt(one.imageMeanVariance + two.imageMeanVariance);
+  EXPECT_LT(std::abs(z), 4.0) << "image means " << one.imageMean << " and " << two.imageMean;
+  double a = 0.0, b = 0.0;
+  for (size_t p = 0; p < one.mean.size(); ++p) {
+    const double w = 1.0 / (two.mean[p] * two.mean[p] + 0.01);
+    a += w * one.observed[p], b += w * two.observed[p];
+  }
+  std::printf("tiny light, %u spp: spread over seeds, one scrambling / two replicates = %.3f\n", spp, a / b);
+  EXPECT_LT(a, 0.5 * b) << "one scrambling / two replicates = " << a / b;
+}
+
 }  // namespace
 }  // namespace vkmc::test

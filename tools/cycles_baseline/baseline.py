@@ -37,6 +37,8 @@ def vkmc_render(args, out, spp=None, seconds=None, seed=1, ref=False):
     report = out[:-4] + ".json"
     cmd = [VKMC, "render", args.scene, "-o", out, "--report", report, "--width", str(args.width),
            "--height", str(args.height), "--seed", str(seed), "--rr-depth", str(args.rr_depth), "-q"]
+    if not ref:
+        cmd += args.vkmc_args.split()  # the renders compared, never the reference
     if seconds is not None:
         cmd += ["--time-budget", str(seconds), "--spp", str(1 << 24)]
     else:
@@ -104,7 +106,7 @@ def reference(args, cache):
     path = os.path.join(cache, name)
     if not os.path.exists(path):
         log(f"reference: vkmc at {args.ref_spp} spp (cached as {path}; the first run takes a while)")
-        vkmc_render(args, path, spp=args.ref_spp, seed=REFERENCE_SEED)
+        vkmc_render(args, path, spp=args.ref_spp, seed=REFERENCE_SEED, ref=True)
     with open(path[:-4] + ".json") as f:
         return path, json.load(f)
 
@@ -162,6 +164,8 @@ def print_table(args, rows, ref_path, ref_report):
               f"its own expected relMSE {ref_report.get('mean_relvariance', float('nan')):.3g} (included in every relMSE below)")
     else:
         print(f"reference {ref_path}")
+    if args.vkmc_args:
+        print(f"vkmc's renders also take: {args.vkmc_args}")
     print(f"roulette: vkmc --rr-depth {args.rr_depth}, Cycles min_light_bounces {args.min_bounces} (its first rouletted "
           f"light sample at vertex {args.min_bounces + 2}; vkmc's at vertex {max(args.rr_depth, 1)}; the camera's hit is "
           f"vertex 0)")
@@ -206,6 +210,8 @@ def main():
     p.add_argument("--min-bounces", type=int, help="Cycles' min_light_bounces (default: --rr-depth - 2, the same first "
                    "rouletted light sample; see cycles_min_bounces)")
     p.add_argument("--pattern", default="PROGRESSIVE_MULTI_JITTER", help="Cycles' sampling pattern (or SOBOL)")
+    p.add_argument("--vkmc-args", default="", help="more options for vkmc's compared renders (not the reference), "
+                   "e.g. \"--replicates 1 --light-sampling solid-angle\"")
     p.add_argument("--blender", default="blender")
     p.add_argument("--out", help="folder for the renders (default build/cycles_baseline/<scene>-<hash>)")
     p.add_argument("--json", help="write every run as JSON")
