@@ -43,7 +43,7 @@ int run(const CompareArgs& a) {
   std::printf("MSE %.6g  relMSE %.6g (epsilon %g)  RMSE %.6g  MAE %.6g  mean difference %.6g\n", e.mse, e.relmse, kRelMseEpsilon,
               e.rmse, e.meanAbsoluteError, e.meanDifference);
   if (!e.hasZTest)
-    std::printf("no per-pixel test: %s has no variance channels (rendered with --replicates 1?)\n",
+    std::printf("no per-pixel test: %s has no variance channels (a --replicates 1 render, or not vkmc's)\n",
                 img.channels.count("variance.R") ? "the reference" : "the image");
   else
     std::printf("per-pixel %s (Sidak, alpha 0.01%s%.2f): %.4f of pixels pass\n", e.studentT ? "Welch t-test" : "z-test",

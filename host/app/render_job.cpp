@@ -264,6 +264,10 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
     if (uint32_t most = zsobolMaxSpp(width, height, options.estimator.replicates); most > 0)
       settings.spp = std::min(settings.spp, most);
   settings.estimator = options.estimator;
+  // The independent sampler's samples do not depend on the replicates (sampler.h streamKey); they only group its
+  // samples for the reliability figure, which needs two groups.
+  if (settings.estimator.sampler == Sampler::Independent)
+    settings.estimator.replicates = std::max(2u, settings.estimator.replicates);
   settings.features = pipelineFeatures(scanFeatures(scene), bvh.stats, options.specialize);
   if (options.withoutTextures) settings.features.textures = settings.features.normalMaps = settings.features.alpha = false;
   out.features = settings.features;
@@ -349,6 +353,14 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   if (roulette) out.checkpointConfig["roulette"] = rouletteJson(*roulette), out.checkpointConfig["pilot_seconds"] = pilotSeconds;
   if (options.timeBudget > 0.0)
     settings.timeBudget = std::max(1e-3, options.timeBudget - pilotSeconds - state.stats.seconds);
+  if (options.timeBudget > 0.0 && pilotSeconds > 0.5 * options.timeBudget) {
+    char line[256];
+    std::snprintf(line, sizeof(line),
+                  "efficiency roulette's pilot took %.3g s of the %.3g s time budget, so few samples were left to the "
+                  "render: give a longer budget, or --rr throughput",
+                  pilotSeconds, options.timeBudget);
+    out.warnings.push_back(line);
+  }
   PathRenderer renderer(ctx, gpuScene, settings);
   if (roulette) renderer.setRouletteScales(roulette->scale);
   out.setup.pipelines += renderer.pipelineSeconds();
@@ -382,7 +394,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
     plan.device = out.device;
     plan.width = width, plan.height = height;
     plan.replicateVariance = options.estimator.sampler != Sampler::Independent;
-    plan.replicates = options.estimator.replicates;
+    plan.replicates = settings.estimator.replicates;
     out.ranks = renderDistributed(renderer, group, state, control, plan);
   } else {
     renderer.render(state, control);
@@ -539,7 +551,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["variance_from"] = !estimated ? "none" : r.film.replicateVariance ? "replicates" : "samples";
   // Whether that variance, and so the efficiency, can be trusted (analysis/variance_reliability.h).
   const VarianceReliability reliability = assessVarianceReliability(r.film);
-  j["variance_reliability"] = {
+  j["variance_reliability"] = !estimated ? json(nullptr) : json{
       {"relative_standard_error", std::isfinite(reliability.relativeStandardError) ? nlohmann::json(reliability.relativeStandardError)
                                                                                     : nlohmann::json("unknown")},
       {"reliable_below", VarianceReliability::kReliableBelow},

@@ -14,7 +14,8 @@ struct ExrImage {
 };
 
 // Channels R, G, B (mean), variance.R/G/B (variance of the mean), variance.dof (its degrees of freedom: samples - 1,
-// or replicates - 1 under the QMC samplers; Film::varianceDof), samples. Written all or nothing
+// or replicates - 1 under the QMC samplers; Film::varianceDof), samples; no variance channels where the film
+// estimates none (Film::estimatesVariance: one scrambling a pixel). Written all or nothing
 // (io/output_files.h): a failed run never leaves a partial or clobbered file.
 // The film as an image: mean R, G, B and the variance of each mean (variance.R, .G, .B).
 ExrImage filmToImage(const Film& film);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "../shaders/shared/sampling.h"
 
@@ -73,6 +74,7 @@ std::vector<glm::vec4> runningPixelEstimate(const Film& film, const gpu::FilmPix
 double Film::mean(size_t p, int c) const { return count[p] ? sum[3 * p + c] / static_cast<double>(count[p]) : 0.0; }
 
 double Film::varianceOfMean(size_t p, int c) const {
+  if (!estimatesVariance()) return std::numeric_limits<double>::quiet_NaN();  // never a 0 that reads as certainty
   return replicateVariance ? replicateVarianceOfMean(p, c) : sampleVarianceOfMean(p, c);
 }
 

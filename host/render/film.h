@@ -38,7 +38,8 @@ struct Film {
   size_t pixels() const { return static_cast<size_t>(width) * height; }
   double mean(size_t pixel, int c) const;
   // The variance of the pixel mean, estimated without bias: sample variance / n, or with replicateVariance
-  // the replicate means' sample variance / (number of replicates). 0 below two samples (or replicates).
+  // the replicate means' sample variance / (number of replicates). 0 below two samples (or replicates); NaN
+  // where the film estimates no variance (estimatesVariance).
   double varianceOfMean(size_t pixel, int c) const;
   double sampleVarianceOfMean(size_t pixel, int c) const;     // from the samples, as if independent
   double replicateVarianceOfMean(size_t pixel, int c) const;  // from the replicate means

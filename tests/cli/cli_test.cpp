@@ -92,6 +92,7 @@ TEST(Cli, OneScramblingReportsNoVarianceAndWritesNoVarianceChannels) {
   EXPECT_EQ(j["variance_from"], "none");
   for (const char* key : {"mean_relvariance", "estimated_efficiency", "estimated_efficiency_by_cost", "mean_variance"})
     EXPECT_TRUE(j[key].is_null()) << key;
+  EXPECT_TRUE(j["variance_reliability"].is_null());
   EXPECT_FALSE(j["estimated_efficiency_reliable"]);
   EXPECT_GT(double(j["mean"][0]), 0.0);
   vkmc::ExrImage img = vkmc::readExr(exr.string());
@@ -100,16 +101,35 @@ TEST(Cli, OneScramblingReportsNoVarianceAndWritesNoVarianceChannels) {
   EXPECT_EQ(img.channels["samples"][0], 8.0f);
   RunResult c = runVkmc("compare " + exr.string() + " " + exr.string());
   ASSERT_EQ(c.code, 0) << c.err;
-  EXPECT_NE(c.out.find("relMSE 0"), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("relMSE 0 ("), std::string::npos) << c.out;
   EXPECT_NE(c.out.find("no per-pixel test: the image has no variance channels"), std::string::npos) << c.out;
   // The independent sampler's samples are independent: one replicate still estimates their variance.
-  RunResult ind = runVkmc("render " + cornell() + " --width 16 --height 16 --spp 8 --replicates 1 --sampler independent -q -o " +
+  RunResult ind = runVkmc("render " + cornell() + " --width 16 --height 16 --spp 8 --replicates 1 --sampler independent -o " +
                           exr.string() + " --report " + report.string());
   ASSERT_EQ(ind.code, 0) << ind.err;
   auto k = nlohmann::json::parse(slurp(report));
   EXPECT_EQ(k["variance_from"], "samples");
   EXPECT_GT(double(k["mean_relvariance"]), 0.0);
+  EXPECT_GT(double(k["variance_reliability"]["relative_standard_error"]), 0.0);  // assessed, as with 2
+  EXPECT_EQ(ind.out.find("reliability fewer samples"), std::string::npos) << ind.out;
   EXPECT_EQ(vkmc::readExr(exr.string()).channels.count("variance.R"), 1u);
+}
+
+// A time budget the efficiency pilot spends most of is named in a warning, not only in a low sample count.
+TEST(Cli, AnEfficiencyPilotThatTakesTheBudgetIsWarnedOf) {
+  fs::path report = workDir() / "pilot_budget.json";
+  RunResult r = runVkmc("render " + cornell() + " --width 16 --height 16 --rr efficiency --time-budget 0.0001 -o " +
+                        (workDir() / "pilot_budget.exr").string() + " --report " + report.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("warning     efficiency roulette's pilot took"), std::string::npos) << r.out;
+  auto j = nlohmann::json::parse(slurp(report));
+  ASSERT_EQ(j["warnings"].size(), 1u) << j["warnings"];
+  EXPECT_NE(j["warnings"][0].get<std::string>().find("of the 0.0001 s time budget"), std::string::npos) << j["warnings"];
+  // A budget the pilot does not dominate has no such warning.
+  RunResult plain = runVkmc("render " + cornell() + " --width 16 --height 16 --spp 4 --time-budget 60 --rr efficiency -q -o " +
+                            (workDir() / "pilot_budget.exr").string() + " --report " + report.string());
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_TRUE(nlohmann::json::parse(slurp(report))["warnings"].empty());
 }
 
 TEST(Cli, FlagsOverridingAnEstimatorFileAreNamedInTheEcho) {

@@ -11,6 +11,7 @@ import hashlib
 import json
 import os
 import re
+import shlex
 import statistics
 import subprocess
 import sys
@@ -38,7 +39,7 @@ def vkmc_render(args, out, spp=None, seconds=None, seed=1, ref=False):
     cmd = [VKMC, "render", args.scene, "-o", out, "--report", report, "--width", str(args.width),
            "--height", str(args.height), "--seed", str(seed), "--rr-depth", str(args.rr_depth), "-q"]
     if not ref:
-        cmd += args.vkmc_args.split()  # the renders compared, never the reference
+        cmd += shlex.split(args.vkmc_args)  # the renders compared, never the reference
     if seconds is not None:
         cmd += ["--time-budget", str(seconds), "--spp", str(1 << 24)]
     else:
