@@ -32,8 +32,9 @@ VKMC_FN float safeSqrt(float x) { return sqrt(max(x, 0.0f)); }
 // Angle between unit vectors from half the chord: precise near 0 and pi, where acos of a dot product is not
 // (and GPUs' acos is looser still).
 VKMC_FN float angleBetween(vec3 v1, vec3 v2) {
-  if (dot(v1, v2) < 0.0f) return kPi - 2.0f * safeAsin(0.5f * length(v1 + v2));
-  return 2.0f * safeAsin(0.5f * length(v2 - v1));
+  bool obtuse = dot(v1, v2) < 0.0f;  // one asin of the selected chord: llvmpipe runs both sides of a branch
+  float angle = 2.0f * safeAsin(0.5f * length(obtuse ? v1 + v2 : v2 - v1));
+  return obtuse ? kPi - angle : angle;
 }
 
 VKMC_FN vec3 orthogonalUnit(vec3 v, vec3 w) {
