@@ -394,6 +394,59 @@ def desk_lamp(path):
     b.camera("camera", [0.0, 2.0, 0.35], [0.0, 0.75, 0.0], 32.0)
     b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
 
+def dark_room(path):
+    """Where throughput roulette fails (ADRRS's motivating case, Vorba and Krivanek 2016): the camera's room (x in
+    [-1, 1]) has dark walls (albedo 0.1) and is lit only through a wide doorway in the wall x = 1 from a bright room
+    (x in [1, 3], albedo 0.9) whose lamp faces away from the doorway. Most of the bright room's radiance is its own
+    multi-bounce light, so a camera path gathers most of its value at its fourth vertex and later, after a dark
+    bounce has cut its throughput tenfold: throughput roulette keeps it with probability about 0.1 and weight 10."""
+    b = Builder()
+    dark = b.material("dark", (0.1, 0.1, 0.1), double_sided=True)
+    bright = b.material("bright", (0.9, 0.9, 0.9), double_sided=True)
+    lamp = b.material("lamp", (0.0, 0.0, 0.0), emission=(1.0, 0.9, 0.75), strength=20.0)
+    b.mesh("dark_room", quad([-1, 0, -1], [-1, 0, 1], [1, 0, 1], [1, 0, -1]) + quad([-1, 2, -1], [1, 2, -1], [1, 2, 1], [-1, 2, 1])
+           + quad([-1, 0, -1], [1, 0, -1], [1, 2, -1], [-1, 2, -1]) + quad([-1, 0, 1], [-1, 2, 1], [1, 2, 1], [1, 0, 1])
+           + quad([-1, 0, -1], [-1, 2, -1], [-1, 2, 1], [-1, 0, 1]), dark)
+    door = 0.35
+    b.mesh("bright_room", quad([1, 0, -1], [1, 0, 1], [3, 0, 1], [3, 0, -1]) + quad([1, 2, -1], [3, 2, -1], [3, 2, 1], [1, 2, 1])
+           + quad([1, 0, -1], [3, 0, -1], [3, 2, -1], [1, 2, -1]) + quad([1, 0, 1], [1, 2, 1], [3, 2, 1], [3, 0, 1])
+           + quad([3, 0, -1], [3, 0, 1], [3, 2, 1], [3, 2, -1]), bright)
+    # The dividing wall x = 1: dark on the camera's side, bright on the other; the doorway z in [-door, door], y < 1.6.
+    divider = quad([1, 0, -1], [1, 0, -door], [1, 2, -door], [1, 2, -1]) + quad([1, 0, door], [1, 0, 1], [1, 2, 1], [1, 2, door]) \
+        + quad([1, 1.6, -door], [1, 1.6, door], [1, 2, door], [1, 2, -door])
+    b.mesh("divider_dark_side", divider, dark)
+    offset = lambda tris: [tuple([p[0] + 0.001, p[1], p[2]] for p in t) for t in tris]
+    b.mesh("divider_bright_side", offset(divider), bright)
+    # Facing +x (away from the doorway), towards the bright room's far wall.
+    b.mesh("lamp", quad([2.2, 0.8, -0.2], [2.2, 1.2, -0.2], [2.2, 1.2, 0.2], [2.2, 0.8, 0.2]), lamp)
+    b.camera("camera", [-0.85, 1.2, 0.85], [1.0, 0.8, -0.2], 70.0)
+    b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
+
+def basement(path):
+    """Dark surfaces lit by bright multi-bounce light, a second geometry (beside dark_room): a basement (x, z in
+    [-1, 1], y in [0, 2], albedo 0.15) lit only through a 0.7 x 0.7 hatch in its ceiling from a white room above
+    (y in [2, 4], albedo 0.9) whose only lamp faces that room's ceiling. The light comes down after two bounces at
+    least, and a camera path reaches it after one or more dark bounces."""
+    b = Builder()
+    dark = b.material("dark", (0.15, 0.15, 0.15), double_sided=True)
+    white = b.material("white", (0.9, 0.9, 0.9), double_sided=True)
+    lamp = b.material("lamp", (0.0, 0.0, 0.0), emission=(1.0, 0.9, 0.75), strength=20.0)
+    def walls(y0, y1):
+        return (quad([-1, y0, -1], [1, y0, -1], [1, y1, -1], [-1, y1, -1]) + quad([-1, y0, 1], [-1, y1, 1], [1, y1, 1], [1, y0, 1])
+                + quad([-1, y0, -1], [-1, y1, -1], [-1, y1, 1], [-1, y0, 1]) + quad([1, y0, -1], [1, y0, 1], [1, y1, 1], [1, y1, -1]))
+    b.mesh("basement", quad([-1, 0, -1], [-1, 0, 1], [1, 0, 1], [1, 0, -1]) + walls(0, 2), dark)
+    hx0, hx1, hz0, hz1 = 0.1, 0.8, -0.8, -0.1
+    slab = (quad([-1, 2, -1], [1, 2, -1], [1, 2, hz0], [-1, 2, hz0]) + quad([-1, 2, hz1], [1, 2, hz1], [1, 2, 1], [-1, 2, 1])
+            + quad([-1, 2, hz0], [hx0, 2, hz0], [hx0, 2, hz1], [-1, 2, hz1]) + quad([hx1, 2, hz0], [1, 2, hz0], [1, 2, hz1], [hx1, 2, hz1]))
+    b.mesh("basement_ceiling", slab, dark)
+    b.mesh("upper_floor", [tuple([p[0], p[1] + 0.001, p[2]] for p in t) for t in slab], white)
+    b.mesh("upper_room", quad([-1, 4, -1], [1, 4, -1], [1, 4, 1], [-1, 4, 1]) + walls(2.001, 4), white)
+    s = 0.15
+    # Facing +y (up, onto the upper room's ceiling), in the corner away from the hatch.
+    b.mesh("lamp", quad([-0.6 - s, 2.6, 0.6 - s], [-0.6 - s, 2.6, 0.6 + s], [-0.6 + s, 2.6, 0.6 + s], [-0.6 + s, 2.6, 0.6 - s]), lamp)
+    b.camera("camera", [-0.85, 1.0, 0.85], [0.6, 0.7, -0.6], 75.0)
+    b.write(path, ["KHR_materials_emissive_strength", "KHR_materials_specular"])
+
 def png_rgba(width, height, pixel):
     """An 8-bit RGBA PNG; pixel(x, y) -> (r, g, b, a) in 0-255, y = 0 the top row."""
     rows = b"".join(b"\0" + bytes(c for x in range(width) for c in pixel(x, y)) for y in range(height))
@@ -444,6 +497,8 @@ if __name__ == "__main__":
     glossy_room("scenes/glossy_room.gltf")
     soft_shadows("scenes/soft_shadows.gltf")
     desk_lamp("scenes/desk_lamp.gltf")
+    dark_room("scenes/dark_room.gltf")
+    basement("scenes/basement.gltf")
     os.makedirs("scenes/stiff", exist_ok=True)
     tiny_light("scenes/stiff/tiny_light.gltf")
     furnace("scenes/stiff/furnace_albedo_0999.gltf", 0.999, 1.0, "furnace_albedo_0.999")

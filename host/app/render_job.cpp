@@ -531,13 +531,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   }
   // Without a reference: relative variance (per-pixel variance of the mean over mean^2 + epsilon, averaged
   // over pixels and channels) is the expected relMSE of an unbiased render, so it gives an efficiency too.
-  double relVar = 0.0;
-  for (size_t p = 0; p < r.film.pixels(); ++p)
-    for (int c = 0; c < 3; ++c) {
-      double m = r.film.mean(p, c);
-      relVar += r.film.varianceOfMean(p, c) / (m * m + kRelMseEpsilon);
-    }
-  relVar /= 3.0 * std::max<size_t>(1, r.film.pixels());
+  const double relVar = r.film.meanRelativeVariance(kRelMseEpsilon);
   j["mean_relvariance"] = estimated ? json(relVar) : json(nullptr);
   j["estimated_efficiency"] = !estimated ? json(nullptr) : json(relVar > 0.0 && s.seconds > 0.0 ? 1.0 / (relVar * s.seconds) : 0.0);
   // The same efficiency against each cost: wall time, GPU time (kernel timestamps), rays per pixel (a cost that

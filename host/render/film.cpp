@@ -121,6 +121,16 @@ glm::dvec3 Film::imageMeanVarianceOfMean() const {
   return pixels() ? acc / static_cast<double>(pixels()) : acc;
 }
 
+double Film::meanRelativeVariance(double epsilon) const {
+  double acc = 0.0;
+  for (size_t p = 0; p < pixels(); ++p)
+    for (int c = 0; c < 3; ++c) {
+      const double m = mean(p, c);
+      acc += varianceOfMean(p, c) / (m * m + epsilon);
+    }
+  return acc / (3.0 * static_cast<double>(std::max<size_t>(1, pixels())));
+}
+
 uint64_t Film::totalNonfinite() const {
   uint64_t n = 0;
   for (uint64_t v : nonfinite) n += v;

@@ -49,6 +49,9 @@ struct Film {
 
   glm::dvec3 imageMean() const;
   glm::dvec3 imageMeanVarianceOfMean() const;  // image mean of the per-pixel variance of the mean
+  // The expected relMSE of an unbiased render: each pixel's variance of the mean over mean^2 + epsilon, averaged
+  // over pixels and channels (the report's mean_relvariance); NaN where the film estimates no variance.
+  double meanRelativeVariance(double epsilon) const;
   uint64_t totalNonfinite() const;
   uint64_t totalSamples() const;
   uint64_t totalHighRange() const;
