@@ -103,6 +103,22 @@ ErrorMetrics compareImages(const ExrImage& a, const ExrImage& b, double alpha, b
   return m;
 }
 
+double referenceRelativeVariance(const ExrImage& reference) {
+  const char* rgb[] = {"R", "G", "B"};
+  const char* var[] = {"variance.R", "variance.G", "variance.B"};
+  double acc = 0.0;
+  size_t n = 0;
+  for (int c = 0; c < 3; ++c) {
+    auto value = reference.channels.find(rgb[c]), variance = reference.channels.find(var[c]);
+    if (value == reference.channels.end() || variance == reference.channels.end()) return std::nan("");
+    for (size_t p = 0; p < value->second.size() && p < variance->second.size(); ++p, ++n) {
+      const double y = value->second[p];
+      acc += double(variance->second[p]) / (y * y + kRelMseEpsilon);
+    }
+  }
+  return n ? acc / double(n) : std::nan("");
+}
+
 ExrImage errorHeatmap(const ExrImage& a, const ExrImage& b) {
   ExrImage out;
   out.width = a.width;

@@ -27,6 +27,12 @@ inline constexpr double kRelMseEpsilon = 1e-2;  // keeps near-black reference pi
 // perPixelLevel = true tests each value at level alpha instead (for calibration).
 ErrorMetrics compareImages(const ExrImage& image, const ExrImage& reference, double alpha = 0.01, bool perPixelLevel = false);
 
+// A reference's own noise in relMSE terms: the mean over pixels and channels of its variance of the mean over
+// (its value^2 + epsilon). An image independent of the reference has an expected relMSE against it of its own
+// relative variance plus about this much; NaN where the reference has no variance channels (a constant, or one
+// scrambling a pixel).
+double referenceRelativeVariance(const ExrImage& reference);
+
 // Per-pixel squared error (R, G, B) and relMSE (Y): an EXR heat map.
 ExrImage errorHeatmap(const ExrImage& image, const ExrImage& reference);
 

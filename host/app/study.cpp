@@ -181,6 +181,9 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
       referenceNote = cached.string() + " (rendered)";
     }
   }
+  // What of every relMSE below is the reference's own noise: where a row's relMSE nears it, the row's ratio to the
+  // others is pulled toward 1 (a ratio read from such rows understates the difference).
+  const double referenceNoise = referenceRelativeVariance(reference);
   if (uint32_t(reference.width) != study.width || uint32_t(reference.height) != study.height)
     throw Error("reference is " + std::to_string(reference.width) + "x" + std::to_string(reference.height) +
                 ", the study renders " + std::to_string(study.width) + "x" + std::to_string(study.height));
@@ -249,7 +252,9 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
   outputs.add((fs::path(outDir) / "results.csv").string(), csv.str());
   outputs.add(
       (fs::path(outDir) / "results.json").string(),
-      nlohmann::json{{"study", study.name}, {"device", ctx.deviceName()}, {"reference", referenceNote}, {"rows", jrows}}.dump(2) +
+      nlohmann::json{{"study", study.name}, {"device", ctx.deviceName()}, {"reference", referenceNote},
+                     {"reference_relvariance", std::isfinite(referenceNoise) ? nlohmann::json(referenceNoise) : nlohmann::json(nullptr)},
+                     {"rows", jrows}}.dump(2) +
           "\n");
 
   // Medians per configuration and rung, fits, plot.
@@ -293,7 +298,11 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
   md << "Scene `" << study.scenePath << "`, " << study.width << "x" << study.height << ", " << (study.timeLadder ? "time" : "spp")
      << " ladder, " << study.repeats << " repeats (medians), device " << ctx.deviceName() << ", " << timeText << ".\n";
   md << "Reference: " << referenceNote << ". Efficiency = 1/(relMSE x seconds), from each configuration's log-log fit of relMSE\n"
-     << "against seconds; relative to the first configuration (" << study.configurations[0].name << ").\n\n";
+     << "against seconds; relative to the first configuration (" << study.configurations[0].name << ").\n";
+  if (std::isfinite(referenceNoise))
+    md << "The reference's own relative variance is " << referenceNoise << ": every relMSE below includes about that much,\n"
+       << "so where a row's relMSE is within a few times of it, its ratios to the other rows are pulled toward 1.\n";
+  md << "\n";
   md << "| configuration | relMSE at " << equalTime << " s | efficiency (equal time) | seconds to relMSE " << equalError
      << " | efficiency (equal error) | slope vs log s | slope vs log spp | last rung relMSE (min-max) | non-finite |\n"
      << "|---|---|---|---|---|---|---|---|---|\n";

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "analysis/error_metrics.h"
 #include "analysis/student_t.h"
@@ -32,6 +33,30 @@ TEST(ErrorMetrics, KnownMseAndRelMse) {
   EXPECT_NEAR(m.meanAbsoluteError, 0.1, 1e-6);
   EXPECT_NEAR(m.meanDifference, 0.1, 1e-6);
   EXPECT_FALSE(m.hasZTest);
+}
+
+// The reference's own noise, in relMSE terms: its variance channels over value^2 + epsilon; against a noisy
+// reference an independent image's relMSE is its own relative variance plus that (the bench summary's line).
+TEST(ErrorMetrics, AReferencesOwnNoiseAddsToEveryRelMse) {
+  EXPECT_NEAR(referenceRelativeVariance(constant(4, 4, 0.5f, 0.002f)), 0.002 / (0.25 + kRelMseEpsilon), 1e-9);
+  EXPECT_TRUE(std::isnan(referenceRelativeVariance(constant(4, 4, 0.5f))));
+  const int w = 200, h = 200;
+  const float truth = 0.5f, imageVar = 0.004f, referenceVar = 0.001f;
+  ExrImage img = constant(w, h, truth), ref = constant(w, h, truth, referenceVar);
+  std::mt19937 rng(17);
+  std::normal_distribution<float> noise(0.0f, 1.0f);
+  for (const char* c : {"R", "G", "B"})
+    for (size_t p = 0; p < size_t(w) * h; ++p) {
+      img.channels[c][p] += std::sqrt(imageVar) * noise(rng);
+      ref.channels[c][p] += std::sqrt(referenceVar) * noise(rng);
+    }
+  const double expected = (imageVar + referenceVar) / (truth * truth + kRelMseEpsilon);
+  // 120,000 squared normals: the relMSE's relative standard deviation is about 0.4%, the noisy denominators'
+  // shift about 1.5% (below); 5% is beyond both.
+  EXPECT_NEAR(compareImages(img, ref).relmse, expected, 0.05 * expected);
+  // Noisy values in the denominators shift both by about Var(y^2) / (y^2 + epsilon)^2 = 1.5%.
+  const double own = referenceVar / (truth * truth + kRelMseEpsilon);
+  EXPECT_NEAR(referenceRelativeVariance(ref), own, 0.05 * own);
 }
 
 TEST(ErrorMetrics, ZTestCountsPixelsOutsideTheirNoise) {
