@@ -488,10 +488,12 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                                 {"formula", "survival = min(scale[depth] * max(throughput), 0.999)"}};
   }
   if (r.ears) j["ears"] = earsJson(*r.ears);
+  auto finiteOrNull = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
   if (r.ears && r.earsGuard.outOfBudget)
     j["ears"]["guard"] = {{"out_of_budget", true},
                           {"rest_rendered_by", r.earsGuard.fellBack ? "throughput" : "ears"},
-                          {"from_sample", r.earsGuard.fromSample}};
+                          {"from_sample", r.earsGuard.fromSample},
+                          {"pass_overhead_seconds", finiteOrNull(r.earsGuard.passOverhead)}};
   if (r.ears && r.earsGuard.compared) {
     auto pass = [](const PolicyPass& p) {
       return nlohmann::json{{"samples_measured", p.samples},
@@ -509,6 +511,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                                                                                                        : nlohmann::json(nullptr)},
                           {"switched_later", r.earsGuard.switchedLater},
                           {"switched_at", r.earsGuard.switchedLater ? nlohmann::json(r.earsGuard.switchedAt) : nlohmann::json(nullptr)},
+                          {"pass_overhead_seconds", finiteOrNull(r.earsGuard.passOverhead)},
                           {"out_of_budget", false}};
   }
   if (o.timeBudget > 0.0) j["time_budget"] = o.timeBudget;

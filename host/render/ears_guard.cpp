@@ -2,6 +2,7 @@
 #include "render/ears_guard.h"
 
 #include <algorithm>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -70,8 +71,20 @@ bool earsGuardLooksAgain(EarsFallback mode, const PolicyPass& ears, const Policy
 }
 
 double earsLearningSecondsLeft(uint32_t trainingSamples, uint32_t earsSamples, double earsSecondsPerSample,
-                               uint32_t throughputSamples, double throughputSecondsPerSample) {
-  return double(trainingSamples + earsSamples) * earsSecondsPerSample + double(throughputSamples) * throughputSecondsPerSample;
+                               double throughputSeconds) {
+  return double(trainingSamples + earsSamples) * earsSecondsPerSample + throughputSeconds;
+}
+
+double earsThroughputPassSeconds(double firstSeconds, uint32_t firstSamples, double overhead, uint32_t passes,
+                                 uint32_t samples) {
+  const double perSample = std::max(firstSeconds - overhead, 0.0) / double(std::max(firstSamples, 1u));
+  return double(passes) * overhead + double(samples) * perSample;
+}
+
+double earsPassOverhead(double seconds, uint32_t samples, double laterSeconds, uint32_t laterSamples, double cap) {
+  if (laterSamples <= samples) return 0.0;
+  const double a = (seconds * laterSamples - laterSeconds * samples) / double(laterSamples - samples);
+  return std::clamp(a, 0.0, std::max(cap, 0.0));
 }
 
 bool earsLearningFits(double budget, double elapsed, double secondsLeft) {

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -59,10 +60,19 @@ constexpr double kEarsLearningBudgetShare = 0.05;
 
 // The seconds EARS's learning still needs: `trainingSamples` more samples a pixel of training passes and
 // `earsSamples` of EARS passes before the choice at earsSecondsPerSample (the last training pass's), and
-// `throughputSamples` of throughput roulette's measured pass at throughputSecondsPerSample (the first training
-// pass's, which learned nothing yet and so decided as throughput roulette does, in heavier kernels: an upper bound).
+// throughput roulette's measured passes, `throughputSeconds` (earsThroughputPassSeconds).
 double earsLearningSecondsLeft(uint32_t trainingSamples, uint32_t earsSamples, double earsSecondsPerSample,
-                               uint32_t throughputSamples, double throughputSecondsPerSample);
+                               double throughputSeconds);
+// Throughput roulette's measured passes (`passes` of `samples` a pixel in all), costed from the first training pass
+// (throughput roulette's, `firstSamples` a pixel in `firstSeconds`): each pass's fixed overhead (its bounces'
+// dispatches and round trips, `overhead` seconds a pass) and the rest in proportion to samples. Overhead 0 costs
+// each sample at the first pass's seconds a sample (an upper bound: on dark_room at 96x96 a 1-spp pass took 0.0375
+// s a sample, a 28-spp one 0.0085); overhead = firstSeconds costs each pass as one first pass (a lower bound).
+double earsThroughputPassSeconds(double firstSeconds, uint32_t firstSamples, double overhead, uint32_t passes,
+                                 uint32_t samples);
+// A pass's fixed overhead from two passes of one policy (t = a + b n): a, clamped to [0, cap]; 0 where the two
+// passes are the same size (nothing to tell overhead from samples).
+double earsPassOverhead(double seconds, uint32_t samples, double laterSeconds, uint32_t laterSamples, double cap);
 // Whether it fits in the budget's share (kEarsLearningBudgetShare) after `elapsed` seconds; always without a budget.
 bool earsLearningFits(double budget, double elapsed, double secondsLeft);
 
@@ -70,6 +80,9 @@ bool earsLearningFits(double budget, double elapsed, double secondsLeft);
 struct EarsGuardOutcome {
   bool compared = false;      // both passes ran
   bool outOfBudget = false;   // the learning and the comparison did not fit the time budget (earsLearningFits)
+  // Under a time budget: throughput roulette's fixed seconds a pass, from its first two passes (earsPassOverhead);
+  // NaN where they did not both run.
+  double passOverhead = std::numeric_limits<double>::quiet_NaN();
   bool fellBack = false;      // throughput roulette rendered the rest
   uint32_t fromSample = 0;    // the first sample after the comparison
   PolicyPass ears, throughput;

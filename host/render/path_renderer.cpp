@@ -353,12 +353,33 @@ uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderS
   uint32_t samples = 1;
   earsTraining_ = true;
   earsOutOfBudget_ = false;
-  double firstPassPerSample = 0.0;
+  double firstPassSeconds = 0.0;
+  double throughputOverhead = -1.0;  // a pass's fixed seconds, once two throughput passes have measured it
   uint32_t droppedIndex = 0;  // the dropped passes' samples follow each other in their own seed's sequence
   // Under a time budget where the guard may fall back, the first pass is throughput roulette's own (its lean
   // kernels, no training): what it costs says whether learning fits before any training kernel has run (on the
   // stiff furnace one training pass was a quarter of a 4-s budget).
   const bool throughputFirst = settings_.timeBudget > 0.0 && settings_.estimator.earsMayFallBack();
+  // What learning still needs after a pass of perSample seconds a sample: the training passes left and, where the
+  // guard will compare, a warm-up sample (a budget's first pass takes one), two looks of EARS and throughput
+  // roulette's measured passes (whole passes until 4 samples a pixel: measureThroughputForGuard). Those are costed
+  // from the first pass: its fixed overhead a pass (measured by a second throughput pass; until then each pass is
+  // costed as one first pass, which is optimistic, but every check counts what has elapsed, so the budget's share
+  // holds) and the rest by samples.
+  auto learningFits = [&](uint32_t pass, uint32_t nextPassSamples, double perSample) {
+    uint32_t trainingLeft = 0;
+    for (uint32_t later = pass + 1, n = nextPassSamples; later < kEarsTrainingPasses; ++later, n = std::min(2 * n, samplesPerPass()))
+      trainingLeft += n;
+    const bool compares = earsGuardPending_;
+    const uint32_t throughputPasses = (kEarsGuardSamples + samplesPerPass() - 1) / samplesPerPass();
+    const double overhead = throughputOverhead >= 0.0 ? throughputOverhead : firstPassSeconds;
+    const double throughputSeconds =
+        compares ? earsThroughputPassSeconds(firstPassSeconds, 1u, overhead, throughputPasses, throughputPasses * samplesPerPass())
+                 : 0.0;
+    const double left = earsLearningSecondsLeft(trainingLeft, compares ? kEarsGuardWarmPasses + 2 * kEarsGuardSamples : 0u,
+                                                perSample, throughputSeconds);
+    return !(trainingLeft > 0 || compares) || earsLearningFits(settings_.timeBudget, since(start), left);
+  };
   for (uint32_t pass = 0; pass < kEarsTrainingPasses && nextSample < settings_.spp; ++pass) {
     const uint64_t raysBefore = stats.rays();
     const auto passStart = Clock::now();
@@ -371,7 +392,7 @@ uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderS
     earsPhase_ = phase;
     if (!earsTrainingKept_) droppedIndex += samples;
     const double perSample = since(passStart) / samples;
-    if (pass == 0) firstPassPerSample = perSample;
+    if (pass == 0) firstPassSeconds = since(passStart);
     updateEarsStatistics(film, double(stats.rays() - raysBefore) / (double(pixels) * samples));
     if (earsTrainingKept_) {
       foldFilm(film);
@@ -381,19 +402,32 @@ uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderS
       ears_->noteTrainingSamples(samples);
     }
     samples = std::min(2 * samples, samplesPerPass());
-    // What learning still needs: the training passes left and, where the guard will compare, a warm-up sample
-    // (a budget's first pass takes one), two looks of EARS and throughput roulette's measured passes (whole
-    // passes until 4 samples a pixel: measureThroughputForGuard).
-    uint32_t trainingLeft = 0;
-    for (uint32_t later = pass + 1, n = samples; later < kEarsTrainingPasses; ++later, n = std::min(2 * n, samplesPerPass()))
-      trainingLeft += n;
-    const bool compares = earsGuardPending_;
-    const uint32_t throughputSamples = (kEarsGuardSamples + samplesPerPass() - 1) / samplesPerPass() * samplesPerPass();
-    const double left = earsLearningSecondsLeft(trainingLeft, compares ? kEarsGuardWarmPasses + 2 * kEarsGuardSamples : 0u,
-                                                perSample, compares ? throughputSamples : 0u, firstPassPerSample);
-    if ((trainingLeft > 0 || compares) && !earsLearningFits(settings_.timeBudget, since(start), left)) {
+    if (!learningFits(pass, samples, perSample)) {
       earsOutOfBudget_ = true;
       break;
+    }
+    // A second pass of throughput roulette's own, of 2 samples a pixel and kept: with the first it tells a pass's
+    // fixed overhead from its cost a sample (t = a + b n). A 1-spp pass is mostly overhead (dark_room at 96x96:
+    // 0.0375 s a sample, against 0.0085 in a 28-spp pass), and costing the guard's measured pass at its seconds a
+    // sample stopped learning even under a 32-s budget there (docs/ears.md).
+    if (pass == 0 && throughputFirst && earsGuardPending_ && samplesPerPass() >= 2 && nextSample + 2 <= settings_.spp) {
+      const uint64_t raysBefore2 = stats.rays();
+      const auto secondStart = Clock::now();
+      earsTrainingKept_ = true;
+      earsPhase_ = EarsPhase::Throughput;
+      renderSamples(nextSample, 2, stats);
+      earsPhase_ = phase;
+      const double secondSeconds = since(secondStart);
+      updateEarsStatistics(film, double(stats.rays() - raysBefore2) / (double(pixels) * 2));
+      foldFilm(film);
+      nextSample += 2;
+      earsTrainingKept_ = false;
+      throughputOverhead = earsPassOverhead(firstPassSeconds, 1, secondSeconds, 2, firstPassSeconds);
+      earsGuard_.passOverhead = throughputOverhead;
+      if (!learningFits(pass, samples, perSample)) {
+        earsOutOfBudget_ = true;
+        break;
+      }
     }
   }
   earsTraining_ = false;

@@ -3,6 +3,7 @@
 // stiff furnace) and stiff/stiff_render_test (tiny light).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "analysis/error_metrics.h"
@@ -291,7 +292,32 @@ TEST(Ears, ABudgetTooShortToLearnIn) {
     EXPECT_EQ(r.ears->trainingSamples, 0u) << "training stops after its first pass, and that one stays";
     EXPECT_EQ(r.film.totalSamples(), 16u * 16u) << "one pass, as any render whose budget is spent";
     EXPECT_NE(earsGuardLine(r.earsGuard).find("time budget"), std::string::npos);
+    EXPECT_TRUE(std::isnan(r.earsGuard.passOverhead)) << "no second pass of throughput roulette";
   }
+}
+
+// Under a budget that learning fits (an hour, on a 16x16 furnace), auto's first two passes are throughput
+// roulette's own (1 and 2 samples a pixel, kept): they measure a pass's fixed overhead, which costs the guard's
+// measured pass (ears_guard.h earsThroughputPassSeconds); then EARS trains, the guard compares, and the image
+// stays unbiased.
+TEST(Ears, UnderABudgetTwoThroughputPassesMeasureAPasssOverhead) {
+  RenderOptions o;
+  o.scenePath = scenePath("furnace.gltf");
+  o.width = o.height = 16;
+  o.spp = 64;
+  o.timeBudget = 3600.0;
+  o.estimator = ears();
+  o.estimator.earsFallback = EarsFallback::Auto;
+  o.progress = false;
+  RenderOutcome r = runRender(sharedContext(), o);
+  ASSERT_TRUE(r.ears);
+  EXPECT_FALSE(r.earsGuard.outOfBudget);
+  EXPECT_TRUE(r.earsGuard.compared);
+  ASSERT_TRUE(std::isfinite(r.earsGuard.passOverhead));
+  EXPECT_GE(r.earsGuard.passOverhead, 0.0);
+  EXPECT_GE(r.earsGuard.fromSample, 3u) << "both throughput passes stay in the image";
+  EXPECT_EQ(r.film.totalSamples(), 16u * 16u * 64u);
+  EXPECT_TRUE(regionMatches(whole(r.film), glm::dvec3(2.0), 5.0));
 }
 
 TEST(Ears, GuardWithAlwaysIsReproducible) {

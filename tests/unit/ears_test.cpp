@@ -300,12 +300,26 @@ TEST(EarsGuard, ACloseFirstMeasureOfEarsIsTakenAgain) {
 // Under a time budget, learning (training passes, EARS's looks and throughput roulette's pass, each costed at its
 // proxy's seconds a sample) must fit in kEarsLearningBudgetShare of it; without a budget it always fits.
 TEST(EarsGuard, LearningMustFitInItsShareOfATimeBudget) {
-  EXPECT_DOUBLE_EQ(earsLearningSecondsLeft(6, 9, 0.01, 28, 0.02), 15 * 0.01 + 28 * 0.02);
-  EXPECT_DOUBLE_EQ(earsLearningSecondsLeft(0, 0, 0.5, 0, 0.5), 0.0);
+  EXPECT_DOUBLE_EQ(earsLearningSecondsLeft(6, 9, 0.01, 28 * 0.02), 15 * 0.01 + 28 * 0.02);
+  EXPECT_DOUBLE_EQ(earsLearningSecondsLeft(0, 0, 0.5, 0.0), 0.0);
   EXPECT_TRUE(earsLearningFits(0.0, 100.0, 1e9)) << "no budget";
   EXPECT_TRUE(earsLearningFits(4.0, 0.2, kEarsLearningBudgetShare * 4.0 - 0.2));
   EXPECT_FALSE(earsLearningFits(4.0, 0.2, kEarsLearningBudgetShare * 4.0 - 0.1));
   EXPECT_FALSE(earsLearningFits(16.0, kEarsLearningBudgetShare * 16.0 + 0.01, 0.0)) << "already past its share";
+}
+
+// Throughput roulette's measured passes costed from the first pass: a pass's overhead once a pass, the rest by
+// samples; the overhead from two passes of different sizes (t = a + b n), clamped, 0 where they cannot tell.
+TEST(EarsGuard, ThroughputRoulettesPassIsCostedAsOverheadPlusSamples) {
+  // dark_room at 96x96 (docs/ears.md): 1 spp in 0.0375 s, 28 spp in 0.238 s, so a = 0.030, b = 0.0074.
+  EXPECT_DOUBLE_EQ(earsPassOverhead(0.0375, 1, 0.238, 28, 1.0), (0.0375 * 28 - 0.238) / 27);
+  EXPECT_NEAR(earsThroughputPassSeconds(0.0375, 1, 0.03, 1, 28), 0.03 + 28 * 0.0075, 1e-12);
+  EXPECT_DOUBLE_EQ(earsThroughputPassSeconds(0.0375, 1, 0.0, 1, 28), 28 * 0.0375) << "no overhead: the upper bound";
+  EXPECT_DOUBLE_EQ(earsThroughputPassSeconds(0.0375, 1, 0.0375, 1, 28), 0.0375) << "all overhead: one first pass";
+  EXPECT_DOUBLE_EQ(earsThroughputPassSeconds(0.0375, 1, 0.0375, 4, 4), 4 * 0.0375) << "four passes of one sample";
+  EXPECT_DOUBLE_EQ(earsPassOverhead(0.1, 2, 0.1, 2, 1.0), 0.0) << "same size";
+  EXPECT_DOUBLE_EQ(earsPassOverhead(0.1, 2, 0.3, 4, 1.0), 0.0) << "time growing faster than samples: no overhead";
+  EXPECT_DOUBLE_EQ(earsPassOverhead(0.1, 2, 0.11, 4, 0.05), 0.05) << "capped at the first pass";
 }
 
 // Only auto watches the EARS it chose; the report's line says what the watch saw and where it switched.
