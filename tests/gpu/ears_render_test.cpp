@@ -301,14 +301,10 @@ TEST(Ears, ABudgetTooShortToLearnIn) {
 // measured pass (ears_guard.h earsThroughputPassSeconds); then EARS trains, the guard compares, and the image
 // stays unbiased.
 TEST(Ears, UnderABudgetTwoThroughputPassesMeasureAPasssOverhead) {
-  RenderOptions o;
-  o.scenePath = scenePath("furnace.gltf");
-  o.width = o.height = 16;
-  o.spp = 64;
+  EstimatorConfig guarded = ears();
+  guarded.earsFallback = EarsFallback::Auto;
+  RenderOptions o = optionsFor("furnace.gltf", guarded, 16, 16, 64);
   o.timeBudget = 3600.0;
-  o.estimator = ears();
-  o.estimator.earsFallback = EarsFallback::Auto;
-  o.progress = false;
   RenderOutcome r = runRender(sharedContext(), o);
   ASSERT_TRUE(r.ears);
   EXPECT_FALSE(r.earsGuard.outOfBudget);
