@@ -2,7 +2,6 @@
 #include "render/ears_guard.h"
 
 #include <algorithm>
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>

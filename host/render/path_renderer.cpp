@@ -391,8 +391,9 @@ uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderS
     renderSamples(earsTrainingKept_ ? nextSample : droppedIndex, samples, stats);
     earsPhase_ = phase;
     if (!earsTrainingKept_) droppedIndex += samples;
-    const double perSample = since(passStart) / samples;
-    if (pass == 0) firstPassSeconds = since(passStart);
+    const double passSeconds = since(passStart);
+    const double perSample = passSeconds / samples;
+    if (pass == 0) firstPassSeconds = passSeconds;
     updateEarsStatistics(film, double(stats.rays() - raysBefore) / (double(pixels) * samples));
     if (earsTrainingKept_) {
       foldFilm(film);
