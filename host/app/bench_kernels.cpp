@@ -299,6 +299,7 @@ int runBenchKernels(const BenchOptions& o) {
       ro.workgroupSize = o.workgroupSize;
       ro.wavefrontPaths = o.wavefrontPaths;
       ro.integrator = cases[i].integrator;
+      ro.stageTimes = true;  // the per-kernel table and the primary and bounce Mrays/s (samples/s pays for them)
       RenderOutcome r = runRender(ctx, ro);
       tuning = r.tuning;
       if (run < 0) {
@@ -324,8 +325,8 @@ int runBenchKernels(const BenchOptions& o) {
       s.traceDiffuseBinary.insert(s.traceDiffuseBinary.end(), t.diffuseBinary.begin(), t.diffuseBinary.end());
     }
   }
-  std::printf("device: %s (subgroup %u); %dx%d, %d spp per run, %d runs, workgroup %u%s, wavefront %u paths%s, medians "
-              "[min-max]\n",
+  std::printf("device: %s (subgroup %u); %dx%d, %d spp per run, %d runs, workgroup %u%s, wavefront %u paths%s, every stage "
+              "timed, medians [min-max]\n",
               ctx.deviceName().c_str(), tuning.subgroupSize, o.width, o.height, o.spp, o.runs, tuning.workgroupSize,
               tuning.workgroupAuto ? " (device's)" : "", tuning.wavefrontPaths, tuning.wavefrontAuto ? " (device's)" : "");
   std::printf("%-34s %-10s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s %9s\n", "scene", "integrator", "triangles", "load s",

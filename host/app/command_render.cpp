@@ -39,7 +39,7 @@ struct RenderArgs {
   int spp = 64;
   long long seed = 1;
   int width = -1, height = -1, cameraIndex = -1;
-  std::string integrator = "auto", workgroup = "auto", wavefront = "auto";
+  std::string integrator = "auto", workgroup = "auto", wavefront = "auto", stageTimes = "auto";
   std::string checkpoint, resume;
   double checkpointEvery = 120.0;
 };
@@ -87,6 +87,13 @@ uint32_t parseCountOrAuto(const std::string& text, const char* flag) {
   if (text.empty() || text[0] == '-' || *end != '\0' || errno == ERANGE || v == 0 || v > 0xffffffffull)
     throw Error(std::string(flag) + " expects auto or a positive whole number, got '" + text + "'");
   return static_cast<uint32_t>(v);
+}
+
+std::optional<bool> parseOnOffAuto(const std::string& text, const char* flag) {
+  if (text == "auto") return std::nullopt;
+  if (text == "on") return true;
+  if (text == "off") return false;
+  throw Error(std::string(flag) + " expects on, off or auto, got '" + text + "'");
 }
 
 namespace {
@@ -156,6 +163,7 @@ void fillOptions(RenderArgs& a, const CLI::App& cmd) {
   ro.integrator = integratorFromString(a.integrator);
   ro.workgroupSize = parseCountOrAuto(a.workgroup, "--workgroup");
   ro.wavefrontPaths = parseCountOrAuto(a.wavefront, "--wavefront");
+  ro.stageTimes = parseOnOffAuto(a.stageTimes, "--stage-times");
   if (!std::isfinite(a.exposure) || std::abs(a.exposure) > 100.0f)
     throw Error("--exposure must be a finite number of stops in [-100, 100]");
 }
@@ -164,7 +172,7 @@ void fillOptions(RenderArgs& a, const CLI::App& cmd) {
 // checkpoint's own flags may be given.
 void optionsFromCheckpoint(RenderArgs& a, const CLI::App& cmd, const nlohmann::json& config) {
   static const std::vector<std::string> allowed = {"--resume", "--output", "--png", "--report", "--exposure", "--quiet",
-                                                   "--checkpoint", "--checkpoint-every"};
+                                                   "--checkpoint", "--checkpoint-every", "--stage-times"};
   for (const CLI::Option* opt : cmd.get_options()) {
     if (opt->count() == 0 || opt->get_positional()) continue;
     if (std::find(allowed.begin(), allowed.end(), opt->get_name()) == allowed.end())
@@ -173,6 +181,7 @@ void optionsFromCheckpoint(RenderArgs& a, const CLI::App& cmd, const nlohmann::j
   }
   a.options = renderOptionsFromJson(config.at("options"));
   a.options.progress = !a.quiet;
+  a.options.stageTimes = parseOnOffAuto(a.stageTimes, "--stage-times");
   const nlohmann::json& outputs = config.at("outputs");
   if (!cmd.count("--output")) a.out = outputs.value("output", a.out);
   if (!cmd.count("--png")) a.png = outputs.value("png", a.png);
@@ -289,6 +298,10 @@ Command addRenderCommand(CLI::App& app) {
   render->add_flag("--general-spirv", a->generalSpirv,
                    "create pipelines from the general SPIR-V even where a pre-specialized variant matches (set-up comparisons)");
   render->add_option("--workgroup", a->workgroup, "invocations per workgroup of every kernel: 32, 64, 128, 256, or auto (the device's)")
+      ->capture_default_str();
+  render->add_option("--stage-times", a->stageTimes,
+                     "time every kernel stage (the report's stage_gpu_seconds): on, off, or auto (off on lavapipe, where "
+                     "each timestamp costs about a small dispatch; on on GPUs)")
       ->capture_default_str();
   render->add_option("--wavefront", a->wavefront, "paths in flight per pass at most (1024 to 16777216), or auto (the device's)")
       ->capture_default_str();

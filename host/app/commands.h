@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace CLI {
@@ -25,5 +26,7 @@ Command addBenchTexturesCommand(CLI::App& app);
 
 // A count flag that also takes "auto" (returned as 0: the device chooses, device_tuning.h), e.g. --workgroup.
 uint32_t parseCountOrAuto(const std::string& text, const char* flag);
+// A switch that also takes "auto" (nullopt: the device chooses), e.g. --stage-times.
+std::optional<bool> parseOnOffAuto(const std::string& text, const char* flag);
 
 }  // namespace vkmc

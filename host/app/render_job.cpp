@@ -297,6 +297,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   settings.workgroupSize = resolved.workgroupSize;
   settings.maxPathsPerPass = resolved.wavefrontPaths;
   settings.prespecializedSpirv = options.prespecializedSpirv;
+  settings.stageTimes = options.stageTimes.value_or(tuning.stageTimes);
   out.spirvVariant = planKernels(settings).spirvVariant;
   out.integrator = resolved.integrator;
   out.tuning.subgroupSize = ctx.subgroupSize();
@@ -305,6 +306,8 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.tuning.integratorAuto = options.integrator == Integrator::Auto;
   out.tuning.workgroupAuto = options.workgroupSize == 0;
   out.tuning.wavefrontAuto = options.wavefrontPaths == 0;
+  out.tuning.stageTimes = settings.stageTimes;
+  out.tuning.stageTimesAuto = !options.stageTimes.has_value();
   std::optional<RouletteTable> roulette;
   double pilotSeconds = 0.0;
   // What a checkpoint of this render records; a resumed render's must match it, and its learned state (the
@@ -450,7 +453,8 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["setup_seconds"] = r.setup.total();
   j["setup"] = {{"load", r.setup.load}, {"bvh", r.setup.bvh}, {"upload", r.setup.upload}, {"pipelines", r.setup.pipelines}};
   j["gpu_seconds"] = s.gpuSeconds;
-  j["stage_gpu_seconds"] = s.stageSeconds;
+  // null where the stages were not timed (--stage-times off, the default on lavapipe: device_tuning.h)
+  j["stage_gpu_seconds"] = r.tuning.stageTimes ? json(s.stageSeconds) : json(nullptr);
   j["rays"] = s.rays();
   j["ray_counts"] = {{"camera", s.cameraRays},
                      {"extension", s.extensionRays},
@@ -478,7 +482,10 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                         {"wavefront_paths", t.wavefrontPaths},
                         {"paths_per_pass", t.pathsPerPass},
                         {"path_slots", t.pathSlots},
-                        {"chosen_by_device", {{"integrator", t.integratorAuto}, {"workgroup", t.workgroupAuto}, {"wavefront", t.wavefrontAuto}}}};
+                        {"stage_times", t.stageTimes},
+                        {"chosen_by_device",
+                         {{"integrator", t.integratorAuto}, {"workgroup", t.workgroupAuto}, {"wavefront", t.wavefrontAuto},
+                          {"stage_times", t.stageTimesAuto}}}};
   j["spp_reached"] = s.samplesPerPixel;
   if (r.roulette) {
     nlohmann::json scales = nlohmann::json::array();

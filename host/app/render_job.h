@@ -50,6 +50,9 @@ struct RenderOptions {
   uint32_t workgroupSize = 0;    // invocations per workgroup of every kernel (32, 64, 128, 256); 0: the device's
   uint32_t wavefrontPaths = 0;   // paths in flight per pass at most; 0: the device's (device_tuning.h)
   Integrator integrator = Integrator::Auto;
+  // Every stage's GPU time in the report (stage_gpu_seconds); unset: the device's (device_tuning.h). A
+  // measurement, not part of the render: a checkpoint does not record it.
+  std::optional<bool> stageTimes;
 };
 
 // How a render runs, besides what it renders: checkpoints, a stop flag, and the checkpoint it continues.
@@ -87,7 +90,8 @@ struct RenderOutcome {
   struct Tuning {
     uint32_t subgroupSize = 0, workgroupSize = 0, wavefrontPaths = 0;
     uint32_t pathsPerPass = 0, pathSlots = 0;  // the path pool as sized (path_pool.h): camera paths, all slots
-    bool integratorAuto = false, workgroupAuto = false, wavefrontAuto = false;
+    bool stageTimes = false;
+    bool integratorAuto = false, workgroupAuto = false, wavefrontAuto = false, stageTimesAuto = false;
   } tuning;
   uint32_t width = 0, height = 0;
   std::optional<ErrorMetrics> error;  // against the reference, when one was given

@@ -20,6 +20,7 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 void addCounters(RenderStats& into, const RenderStats& from) {
   into.cameraRays += from.cameraRays, into.extensionRays += from.extensionRays, into.shadowRays += from.shadowRays;
   into.primaryRays += from.primaryRays;
+  into.gpuSeconds += from.gpuSeconds;
   for (const auto& [name, secs] : from.stageSeconds) into.stageSeconds[name] += secs;
   into.passes += from.passes;
   into.maxBounces = std::max(into.maxBounces, from.maxBounces);

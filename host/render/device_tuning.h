@@ -1,5 +1,5 @@
-// What vkmc chooses for a device when the user does not: the integrator, the workgroup size and the wavefront's
-// paths in flight per pass. One rule per row; docs/performance.md has what measured each ("Chosen per device").
+// What vkmc chooses for a device when the user does not: the integrator, the workgroup size, the wavefront's
+// paths in flight per pass and whether every stage is timed. One rule per row; docs/performance.md has what measured each ("Chosen per device").
 #pragma once
 #include <vulkan/vulkan.h>
 
@@ -13,6 +13,7 @@ struct DeviceTuning {
   Integrator integrator = Integrator::Wavefront;  // for estimators that do not split paths (those need the pool)
   uint32_t workgroupSize = 64;
   uint32_t wavefrontPaths = 1u << 18;
+  bool stageTimes = true;  // a timestamp pair around every dispatch (RenderSettings::stageTimes)
 };
 
 // type: the device's VkPhysicalDeviceType; subgroupSize: its subgroup width (8 on lavapipe with AVX2, 32 on

@@ -71,7 +71,7 @@ PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const Render
   auto start = Clock::now();
   control_.zero();
   kernels_ = buildRenderKernels(ctx, *layout_, settings, hasShadowStage_, pool_);
-  timer_ = std::make_unique<vk::GpuTimer>(ctx, 2 * (8 + 5 * kFirstChunkBounces));
+  timer_ = std::make_unique<vk::GpuTimer>(ctx, 2 * (8 + 5 * kFirstChunkBounces), settings_.stageTimes);
   pipelineSeconds_ = since(start);
 }
 
@@ -232,11 +232,13 @@ uint32_t PathRenderer::renderMegakernelPass(const gpu::PushConstants& pc, Render
   VkCommandBuffer cmd = ctx_.beginCommands();
   resetControl(cmd);
   timer_->reset(cmd);
+  timer_->open(cmd);
   vk::dispatch(cmd, *layout_, *kernels_.megakernel, &pc, sizeof(pc), groupsFor(pc.pathCount), timer_.get());
   vk::dispatch(cmd, *layout_, *kernels_.accumulate, &pc, sizeof(pc), groupsFor(pc.pixelCount), timer_.get());
   publishControl(cmd);
+  timer_->close(cmd);
   ctx_.submitAndWait(cmd);
-  timer_->collect(stats.stageSeconds);
+  timer_->collect(stats.stageSeconds, &stats.gpuSeconds);
   collectCounters(stats);
   return 0;
 }
@@ -321,6 +323,7 @@ uint32_t PathRenderer::renderWavefront(uint32_t firstPixel, uint32_t pixelCount,
     VkCommandBuffer cmd = ctx_.beginCommands();
     if (first) resetControl(cmd);
     timer_->reset(cmd);
+    timer_->open(cmd);
     if (first) recordCameraRays(cmd, pc, count);
     for (uint32_t b = bounce; b < bounce + chunk; ++b) {
       pc.bounce = b;
@@ -330,8 +333,9 @@ uint32_t PathRenderer::renderWavefront(uint32_t firstPixel, uint32_t pixelCount,
     pc.bounce = bounce;
     recordAccumulate(cmd, pc);
     publishControl(cmd);
+    timer_->close(cmd);
     ctx_.submitAndWait(cmd);
-    timer_->collect(stats.stageSeconds);
+    timer_->collect(stats.stageSeconds, &stats.gpuSeconds);
     first = false;
     uint32_t alive = controlView().rayQueueCount[bounce & 1u];
     if (alive == 0) break;
@@ -444,13 +448,15 @@ void PathRenderer::trainEars(uint32_t cameras, RenderStats& stats) {
   const uint32_t slots = cameras + ears_->trainingChildren();
   VkCommandBuffer cmd = ctx_.beginCommands();
   timer_->reset(cmd);
+  timer_->open(cmd);
   pc.pathCount = cameras;
   vk::dispatch(cmd, *layout_, *kernels_.earsGather, &pc, sizeof(pc), groupsFor(slots), timer_.get());
   vk::dispatch(cmd, *layout_, *kernels_.earsTrain, &pc, sizeof(pc), groupsFor(ears_->trainingRecords() + slots), timer_.get());
   pc.pathCount = ears_->cellCount();
   vk::dispatch(cmd, *layout_, *kernels_.earsFold, &pc, sizeof(pc), groupsFor(pc.pathCount), timer_.get());
+  timer_->close(cmd);
   ctx_.submitAndWait(cmd);
-  timer_->collect(stats.stageSeconds);
+  timer_->collect(stats.stageSeconds, &stats.gpuSeconds);
   ears_->clearTrainingLists();
 }
 

@@ -37,11 +37,12 @@ struct RenderSettings {
   uint32_t workgroupSize = 64;          // invocations per workgroup of every kernel: 32, 64, 128 or 256
   Integrator integrator = Integrator::Wavefront;
   bool prespecializedSpirv = true;  // false: pipelines from the general SPIR-V even where a variant matches
+  bool stageTimes = true;  // a timestamp pair around every dispatch (RenderStats::stageSeconds); false: one a submission
 };
 
 struct RenderStats {
   double seconds = 0.0;     // wall time of the sample passes
-  double gpuSeconds = 0.0;  // sum of kernel timestamps
+  double gpuSeconds = 0.0;  // the command buffers' GPU time, one timestamp pair each
   uint64_t cameraRays = 0, extensionRays = 0, shadowRays = 0;
   uint64_t primaryRays = 0;        // rays of bounce 0 (= camera rays)
   double primarySeconds = 0.0;     // GPU time of bounce-0 intersection
@@ -58,10 +59,8 @@ struct RenderStats {
   // deeper bounces), over the whole render.
   std::vector<uint64_t> pathsByBounce, shadowRaysByBounce;
   uint64_t rays() const { return cameraRays + extensionRays + shadowRays; }
-  // gpuSeconds, primarySeconds and incoherentSeconds from stageSeconds.
+  // primarySeconds and incoherentSeconds from stageSeconds (0 without stage timestamps).
   void deriveStageTotals() {
-    gpuSeconds = 0.0;
-    for (const auto& [name, secs] : stageSeconds) gpuSeconds += secs;
     auto it = stageSeconds.find("intersect_primary");
     primarySeconds = it == stageSeconds.end() ? 0.0 : it->second;
     it = stageSeconds.find("intersect");

@@ -127,11 +127,12 @@ Kernel::Kernel(Context& ctx, const KernelLayout& layout, std::string name, std::
 
 Kernel::~Kernel() { vkDestroyPipeline(ctx_.device(), pipeline_, nullptr); }
 
-GpuTimer::GpuTimer(Context& ctx, uint32_t maxQueries) : ctx_(ctx), capacity_(maxQueries) {
+GpuTimer::GpuTimer(Context& ctx, uint32_t maxQueries, bool perDispatch)
+    : ctx_(ctx), capacity_(perDispatch ? maxQueries : 0), perDispatch_(perDispatch) {
   if (!ctx.hasTimestamps()) return;
   VkQueryPoolCreateInfo qci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   qci.queryType = VK_QUERY_TYPE_TIMESTAMP;
-  qci.queryCount = maxQueries;
+  qci.queryCount = capacity_ + 2;
   check(vkCreateQueryPool(ctx.device(), &qci, nullptr, &pool_), "vkCreateQueryPool");
 }
 
@@ -141,11 +142,12 @@ GpuTimer::~GpuTimer() {
 
 void GpuTimer::reset(VkCommandBuffer cmd) {
   names_.clear();
-  if (pool_) vkCmdResetQueryPool(cmd, pool_, 0, capacity_);
+  opened_ = closed_ = false;
+  if (pool_) vkCmdResetQueryPool(cmd, pool_, 0, capacity_ + 2);
 }
 
 void GpuTimer::begin(VkCommandBuffer cmd, const std::string& name) {
-  if (!pool_ || 2 * (names_.size() + 1) > capacity_) return;
+  if (!pool_ || !perDispatch_ || 2 * (names_.size() + 1) > capacity_) return;
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_, static_cast<uint32_t>(2 * names_.size()));
   names_.push_back(name);
 }
@@ -155,17 +157,40 @@ void GpuTimer::end(VkCommandBuffer cmd) {
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, static_cast<uint32_t>(2 * names_.size() - 1));
 }
 
-void GpuTimer::collect(std::map<std::string, double>& totals) {
-  if (!pool_ || names_.empty()) return;
-  std::vector<uint64_t> ticks(2 * names_.size());
-  check(vkGetQueryPoolResults(ctx_.device(), pool_, 0, static_cast<uint32_t>(ticks.size()), ticks.size() * sizeof(uint64_t),
-                              ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-        "vkGetQueryPoolResults");
-  for (size_t i = 0; i < names_.size(); ++i) {
-    double ns = static_cast<double>(ticks[2 * i + 1] - ticks[2 * i]) * ctx_.timestampPeriodNs();
-    totals[names_[i]] += ns * 1e-9;
+void GpuTimer::open(VkCommandBuffer cmd) {
+  if (!pool_) return;
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_, capacity_);
+  opened_ = true;
+}
+
+void GpuTimer::close(VkCommandBuffer cmd) {
+  if (!pool_ || !opened_) return;
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, capacity_ + 1);
+  closed_ = true;
+}
+
+void GpuTimer::collect(std::map<std::string, double>& totals, double* bufferSeconds) {
+  if (!pool_) return;
+  auto seconds = [&](uint32_t first) {
+    uint64_t ticks[2] = {0, 0};
+    check(vkGetQueryPoolResults(ctx_.device(), pool_, first, 2, sizeof(ticks), ticks, sizeof(uint64_t),
+                                VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+          "vkGetQueryPoolResults");
+    return static_cast<double>(ticks[1] - ticks[0]) * ctx_.timestampPeriodNs() * 1e-9;
+  };
+  if (!names_.empty()) {
+    std::vector<uint64_t> ticks(2 * names_.size());
+    check(vkGetQueryPoolResults(ctx_.device(), pool_, 0, static_cast<uint32_t>(ticks.size()), ticks.size() * sizeof(uint64_t),
+                                ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+          "vkGetQueryPoolResults");
+    for (size_t i = 0; i < names_.size(); ++i) {
+      double ns = static_cast<double>(ticks[2 * i + 1] - ticks[2 * i]) * ctx_.timestampPeriodNs();
+      totals[names_[i]] += ns * 1e-9;
+    }
   }
+  if (bufferSeconds && opened_ && closed_) *bufferSeconds += seconds(capacity_);
   names_.clear();
+  opened_ = closed_ = false;
 }
 
 void computeBarrier(VkCommandBuffer cmd) {

@@ -69,24 +69,32 @@ class Kernel {
   VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
 
-// Timestamp pairs around named dispatches; collect() sums the seconds per name.
+// Timestamp pairs around named dispatches (ranges), and one pair around a whole command buffer (open/close);
+// collect() sums the seconds per name and the buffer's. Without ranges (perDispatch false) begin and end write
+// nothing: on lavapipe a timestamp costs about as much as a small dispatch, 6-14% of a render's time where
+// passes are small (docs/performance.md, "Stage timestamps").
 class GpuTimer {
  public:
-  GpuTimer(Context& ctx, uint32_t maxQueries);
+  GpuTimer(Context& ctx, uint32_t maxQueries, bool perDispatch = true);
   ~GpuTimer();
   GpuTimer(const GpuTimer&) = delete;
   GpuTimer& operator=(const GpuTimer&) = delete;
   void reset(VkCommandBuffer cmd);
   void begin(VkCommandBuffer cmd, const std::string& name);
   void end(VkCommandBuffer cmd);
-  // After the command buffer completed: adds each range's seconds to totals[name].
-  void collect(std::map<std::string, double>& totals);
+  void open(VkCommandBuffer cmd);   // the command buffer's first timestamp (after reset)
+  void close(VkCommandBuffer cmd);  // its last (before submitting)
+  // After the command buffer completed: adds each range's seconds to totals[name], and the buffer's between open
+  // and close to *bufferSeconds.
+  void collect(std::map<std::string, double>& totals, double* bufferSeconds = nullptr);
   bool enabled() const { return pool_ != VK_NULL_HANDLE; }
 
  private:
   Context& ctx_;
   VkQueryPool pool_ = VK_NULL_HANDLE;
-  uint32_t capacity_ = 0;
+  uint32_t capacity_ = 0;  // of ranges' queries; the buffer's pair follows them
+  bool perDispatch_ = true;
+  bool opened_ = false, closed_ = false;
   std::vector<std::string> names_;
 };
 

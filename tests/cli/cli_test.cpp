@@ -258,6 +258,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"workgroup_negative", "", "--workgroup -64", "--workgroup expects auto or", 1},
                       BadInput{"wavefront_too_small", "", "--wavefront 100", "--wavefront must be 1024 to", 1},
                       BadInput{"wavefront_huge", "", "--wavefront 1e9", "--wavefront expects auto or", 1},
+                      BadInput{"stage_times_yes", "", "--stage-times yes", "--stage-times expects on, off or auto", 1},
                       BadInput{"spp_not_a_number", "", "--spp abc", "spp", 2},
                       BadInput{"unknown_flag", "", "--no-such-flag", "no-such-flag", 2}),
     [](const auto& info) { return std::string(info.param.name); });
@@ -334,6 +335,48 @@ TEST(Cli, WorkgroupAndWavefrontAreTheDevicesUnlessGivenAndAreReported) {
   EXPECT_EQ(j["device_tuning"]["paths_per_pass"], 1024);
   EXPECT_EQ(j["device_tuning"]["workgroup_size"], 256);
   EXPECT_EQ(slurp(workDir() / "tuning_small.exr"), slurp(workDir() / "tuning_auto.exr"));
+}
+
+// --stage-times: every stage's GPU seconds in the report, or (off, lavapipe's default) only the command buffers'
+// GPU time. Timing is a measurement: the image is the same bit for bit either way.
+TEST(Cli, StageTimesAreTheDevicesChoiceAndLeaveTheImageAlone) {
+  fs::path report = workDir() / "stage_times.json";
+  std::string common = "render " + cornell() + " --width 40 --height 30 --spp 4 -q --report " + report.string();
+  ASSERT_EQ(runVkmc(common + " -o " + (workDir() / "stage_times_auto.exr").string()).code, 0);
+  const nlohmann::json a = nlohmann::json::parse(slurp(report));
+  EXPECT_TRUE(a["device_tuning"]["chosen_by_device"]["stage_times"].get<bool>());
+  const bool lavapipe = a["device"].get<std::string>().find("llvmpipe") != std::string::npos;
+  if (lavapipe) {
+    EXPECT_FALSE(a["device_tuning"]["stage_times"].get<bool>());
+  }
+  EXPECT_EQ(a["stage_gpu_seconds"].is_null(), !a["device_tuning"]["stage_times"].get<bool>());
+  EXPECT_GT(a["gpu_seconds"].get<double>(), 0.0);
+  for (const char* mode : {"on", "off"}) {
+    SCOPED_TRACE(mode);
+    const fs::path exr = workDir() / (std::string("stage_times_") + mode + ".exr");
+    RunResult r = runVkmc(common + " --stage-times " + mode + " -o " + exr.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(slurp(exr), slurp(workDir() / "stage_times_auto.exr"));
+    const nlohmann::json j = nlohmann::json::parse(slurp(report));
+    const bool on = std::string(mode) == "on";
+    EXPECT_EQ(j["device_tuning"]["stage_times"].get<bool>(), on);
+    EXPECT_FALSE(j["device_tuning"]["chosen_by_device"]["stage_times"].get<bool>());
+    const double gpu = j["gpu_seconds"];
+    EXPECT_GT(gpu, 0.0);
+    EXPECT_LE(gpu, j["seconds"].get<double>() * 1.05);
+    if (!on) {
+      EXPECT_TRUE(j["stage_gpu_seconds"].is_null());
+      continue;
+    }
+    // The stages lie inside their command buffers: their sum is at most the buffers' time.
+    double stages = 0.0;
+    for (const char* stage : {"camera_rays", "intersect_primary", "shade", "accumulate"}) {
+      ASSERT_TRUE(j["stage_gpu_seconds"].contains(stage)) << stage;
+      EXPECT_GT(j["stage_gpu_seconds"][stage].get<double>(), 0.0) << stage;
+    }
+    for (const auto& [stage, seconds] : j["stage_gpu_seconds"].items()) stages += seconds.get<double>();
+    EXPECT_LE(stages, gpu * (1.0 + 1e-9) + 1e-6);
+  }
 }
 
 TEST(Cli, MissingOutputFolderFailsBeforeRendering) {

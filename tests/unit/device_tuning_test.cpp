@@ -11,6 +11,7 @@ TEST(DeviceTuning, LavapipeKeepsTheMeasuredWavefrontDefaults) {
   EXPECT_EQ(t.integrator, Integrator::Wavefront);
   EXPECT_EQ(t.workgroupSize, 64u);
   EXPECT_EQ(t.wavefrontPaths, 1u << 18);
+  EXPECT_FALSE(t.stageTimes) << "a timestamp costs lavapipe about a small dispatch";
 }
 
 TEST(DeviceTuning, ADiscreteGpuRunsTheMegakernelWithMorePathsInFlight) {
@@ -19,6 +20,8 @@ TEST(DeviceTuning, ADiscreteGpuRunsTheMegakernelWithMorePathsInFlight) {
   EXPECT_EQ(t.workgroupSize, 64u);
   EXPECT_EQ(t.wavefrontPaths, 1u << 20);
   EXPECT_EQ(deviceTuning(VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU, 32).integrator, Integrator::Wavefront);
+  EXPECT_TRUE(t.stageTimes);
+  EXPECT_TRUE(deviceTuning(VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU, 32).stageTimes);
 }
 
 TEST(DeviceTuning, EveryChoiceIsAWorkgroupSizeTheRendererAcceptsAndHoldsASubgroup) {
