@@ -106,6 +106,7 @@ KernelPlan planKernels(const RenderSettings& s) {
     for (const char* k : {"prepare_copies", "ears_copies", "ears_gather", "ears_train", "ears_fold"}) plan.kernels.push_back(k);
     plan.kernels.push_back("shade and ears_copies again without training code (a pass's later samples)");
     if (est.earsMayFallBack()) plan.kernels.push_back("shade with throughput roulette (ears_fallback's comparison pass)");
+    if (est.earsMayFallBack() && shadows) plan.kernels.push_back("shadow with throughput roulette (the same)");
   }
   plan.specs = {{SPEC_WORKGROUP_SIZE, s.workgroupSize},
                 {SPEC_HAS_LIGHTS, s.features.lights() ? 1u : 0u},
@@ -179,6 +180,13 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
     planned.push_back({&k.shadeLean, "shade", VKMC_SPIRV(shade_atomic), true});
     planned.push_back({&k.earsCopiesLean, "ears_copies", VKMC_SPIRV(ears_copies), true});
     if (est.earsMayFallBack()) planned.push_back({&k.shadeThroughput, "shade", VKMC_SPIRV(shade), false, true});
+    if (est.earsMayFallBack() && hasShadowStage) {  // float atomics only where a path has several light samples
+      const bool atomics = est.lightSamples > 1;
+      planned.push_back({&k.shadowThroughput, "shadow", atomics ? VKMC_SPIRV(shadow_atomic) : VKMC_SPIRV(shadow), false, true});
+      if (settings.features.deepWalks)
+        planned.push_back({&k.shadowDeepThroughput, "shadow_deep",
+                           atomics ? VKMC_SPIRV(shadow_atomic_deep) : VKMC_SPIRV(shadow_deep), false, true});
+    }
   }
   std::vector<vk::SpecConstant> leanSpecs = specs;
   leanSpecs.push_back({SPEC_EARS_TRAINS, 0u});
@@ -249,7 +257,9 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
 }
 
 RenderKernels::BounceKernels RenderKernels::bounceKernels(bool earsTrains, bool throughput) const {
-  if (throughput && shadeThroughput) return {shadeThroughput.get(), nullptr, shadow.get(), shadowDeep.get()};
+  if (throughput && shadeThroughput)
+    return {shadeThroughput.get(), nullptr, shadowThroughput ? shadowThroughput.get() : shadow.get(),
+            shadowThroughput ? shadowDeepThroughput.get() : shadowDeep.get()};
   if (!earsTrains && shadeLean) return {shadeLean.get(), earsCopiesLean.get(), shadow.get(), shadowDeep.get()};
   return {shade.get(), earsCopies.get(), shadow.get(), shadowDeep.get()};
 }

@@ -20,8 +20,9 @@ struct RenderKernels {
   // EARS: shade and the copy stage once more without the training code (SPEC_EARS_TRAINS 0), for a pass's
   // samples after its training ones (common.glsl earsTrains).
   std::unique_ptr<vk::Kernel> shadeLean, earsCopiesLean;
-  // EARS's guard (ears_guard.h): shade with throughput roulette, for the comparison pass and a fallback.
-  std::unique_ptr<vk::Kernel> shadeThroughput;
+  // EARS's guard (ears_guard.h): shade and the shadow stage with throughput roulette, for the comparison pass and
+  // a fallback (EARS's own shadow stage adds with float atomics and carries its training code: 14% slower).
+  std::unique_ptr<vk::Kernel> shadeThroughput, shadowThroughput, shadowDeepThroughput;
 
   // The kernels of a bounce's shading and shadow stages: those that train EARS's cache, or (where built) those
   // that do not, or (throughput, where built) those of EARS's guard. earsCopies is null unless the rr is ears (and

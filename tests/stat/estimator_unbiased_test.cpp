@@ -57,6 +57,12 @@ std::vector<Variant> variants() {
     c.rr = RouletteMode::Ears;
     c.earsFallback = EarsFallback::Always;
   });
+  // The fallback's shadow stage adds a path's several light samples with float atomics (render_kernels.cpp).
+  add("rr ears, fallen back, 3 light samples", [](EstimatorConfig& c) {
+    c.rr = RouletteMode::Ears;
+    c.earsFallback = EarsFallback::Always;
+    c.lightSamples = 3;
+  });
   add("light samples 4", [](EstimatorConfig& c) { c.lightSamples = 4; });
   add("light samples 3, split depth 3", [](EstimatorConfig& c) {
     c.lightSamples = 3;
