@@ -453,8 +453,9 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["setup_seconds"] = r.setup.total();
   j["setup"] = {{"load", r.setup.load}, {"bvh", r.setup.bvh}, {"upload", r.setup.upload}, {"pipelines", r.setup.pipelines}};
   j["gpu_seconds"] = s.gpuSeconds;
-  // null where the stages were not timed (--stage-times off, the default on lavapipe: device_tuning.h)
-  j["stage_gpu_seconds"] = r.tuning.stageTimes ? json(s.stageSeconds) : json(nullptr);
+  // null where any part of the render (a resumed one's earlier part, another rank) ran without stage timestamps
+  // (--stage-times off, the default on lavapipe: device_tuning.h)
+  j["stage_gpu_seconds"] = s.stagesUntimed ? json(nullptr) : json(s.stageSeconds);
   j["rays"] = s.rays();
   j["ray_counts"] = {{"camera", s.cameraRays},
                      {"extension", s.extensionRays},

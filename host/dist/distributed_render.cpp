@@ -21,6 +21,7 @@ void addCounters(RenderStats& into, const RenderStats& from) {
   into.cameraRays += from.cameraRays, into.extensionRays += from.extensionRays, into.shadowRays += from.shadowRays;
   into.primaryRays += from.primaryRays;
   into.gpuSeconds += from.gpuSeconds;
+  into.stagesUntimed = into.stagesUntimed || from.stagesUntimed;
   for (const auto& [name, secs] : from.stageSeconds) into.stageSeconds[name] += secs;
   into.passes += from.passes;
   into.maxBounces = std::max(into.maxBounces, from.maxBounces);

@@ -30,6 +30,7 @@ nlohmann::json renderStatsJson(const RenderStats& s) {
           {"primary_seconds", s.primarySeconds},
           {"incoherent_seconds", s.incoherentSeconds},
           {"stage_seconds", s.stageSeconds},
+          {"stages_untimed", s.stagesUntimed},
           {"passes", s.passes},
           {"max_bounces", s.maxBounces},
           {"samples_per_pixel", s.samplesPerPixel},
@@ -54,6 +55,7 @@ RenderStats renderStatsFromJson(const nlohmann::json& j) {
   j.at("primary_seconds").get_to(s.primarySeconds);
   j.at("incoherent_seconds").get_to(s.incoherentSeconds);
   j.at("stage_seconds").get_to(s.stageSeconds);
+  s.stagesUntimed = j.value("stages_untimed", false);  // absent in checkpoints before it existed: timed
   j.at("passes").get_to(s.passes);
   j.at("max_bounces").get_to(s.maxBounces);
   j.at("samples_per_pixel").get_to(s.samplesPerPixel);

@@ -20,7 +20,7 @@ DeviceTuning deviceTuning(VkPhysicalDeviceType type, uint32_t subgroupSize) {
   // bounce-stage round trips each. 2^20 quarters the passes (unmeasured: tools/gpu_check.sh sweeps it).
   t.wavefrontPaths = discrete ? 1u << 20 : 1u << 18;
   // Stage timestamps: on lavapipe each costs about what a small dispatch does (~70 us), 6% of a 256x256 Cornell
-  // box render and 12-14% at 96x96, where a pass's near-empty bounces are most of its dispatches; GPUs write
+  // box render and 11-18% at 96x96, where a pass's near-empty bounces are most of its dispatches; GPUs write
   // them in the command stream.
   t.stageTimes = type != VK_PHYSICAL_DEVICE_TYPE_CPU;
   return t;

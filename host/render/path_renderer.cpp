@@ -71,7 +71,8 @@ PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const Render
   auto start = Clock::now();
   control_.zero();
   kernels_ = buildRenderKernels(ctx, *layout_, settings, hasShadowStage_, pool_);
-  timer_ = std::make_unique<vk::GpuTimer>(ctx, 2 * (8 + 5 * kFirstChunkBounces), settings_.stageTimes);
+  // Ranges of a first chunk at most: the camera rays, 7 a bounce (EARS's copy stage included), the chunk's end.
+  timer_ = std::make_unique<vk::GpuTimer>(ctx, 2 * (3 + 7 * kFirstChunkBounces), settings_.stageTimes);
   pipelineSeconds_ = since(start);
 }
 
@@ -662,6 +663,7 @@ uint32_t PathRenderer::samplesPerBatch() const { return kSamplesPerBatch / sampl
 void PathRenderer::renderSamples(uint32_t s, uint32_t samples, RenderStats& stats) {
   const uint32_t pixels = settings_.width * settings_.height;
   earsPassTrainSeconds_ = earsPassLeanSeconds_ = earsPassTrainPixelSamples_ = earsPassLeanPixelSamples_ = 0.0;
+  if (!settings_.stageTimes) stats.stagesUntimed = true;
   for (uint32_t first = 0; first < pixels; first += capacity_) {
     uint32_t bounces = renderPass(first, std::min(capacity_, pixels - first), s, samples, stats);
     stats.maxBounces = std::max(stats.maxBounces, bounces);

@@ -48,6 +48,7 @@ struct RenderStats {
   double primarySeconds = 0.0;     // GPU time of bounce-0 intersection
   double incoherentSeconds = 0.0;  // GPU time of later closest-hit intersections
   std::map<std::string, double> stageSeconds;
+  bool stagesUntimed = false;  // some pass ran without stage timestamps (--stage-times off): stageSeconds is partial
   uint32_t passes = 0;
   uint32_t maxBounces = 0;
   uint32_t samplesPerPixel = 0;  // reached (equals spp unless a time budget ended the render)

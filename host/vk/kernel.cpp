@@ -142,7 +142,7 @@ GpuTimer::~GpuTimer() {
 
 void GpuTimer::reset(VkCommandBuffer cmd) {
   names_.clear();
-  opened_ = closed_ = false;
+  opened_ = closed_ = rangeOpen_ = false;
   if (pool_) vkCmdResetQueryPool(cmd, pool_, 0, capacity_ + 2);
 }
 
@@ -150,11 +150,13 @@ void GpuTimer::begin(VkCommandBuffer cmd, const std::string& name) {
   if (!pool_ || !perDispatch_ || 2 * (names_.size() + 1) > capacity_) return;
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_, static_cast<uint32_t>(2 * names_.size()));
   names_.push_back(name);
+  rangeOpen_ = true;
 }
 
 void GpuTimer::end(VkCommandBuffer cmd) {
-  if (!pool_ || names_.empty()) return;
+  if (!pool_ || !rangeOpen_) return;
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, static_cast<uint32_t>(2 * names_.size() - 1));
+  rangeOpen_ = false;
 }
 
 void GpuTimer::open(VkCommandBuffer cmd) {

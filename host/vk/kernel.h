@@ -71,8 +71,8 @@ class Kernel {
 
 // Timestamp pairs around named dispatches (ranges), and one pair around a whole command buffer (open/close);
 // collect() sums the seconds per name and the buffer's. Without ranges (perDispatch false) begin and end write
-// nothing: on lavapipe a timestamp costs about as much as a small dispatch, 6-14% of a render's time where
-// passes are small (docs/performance.md, "Stage timestamps").
+// nothing: on lavapipe a timestamp costs about as much as a small dispatch, 6-18% of a render's time, most
+// where passes are small (docs/performance.md, "Stage timestamps").
 class GpuTimer {
  public:
   GpuTimer(Context& ctx, uint32_t maxQueries, bool perDispatch = true);
@@ -95,6 +95,7 @@ class GpuTimer {
   uint32_t capacity_ = 0;  // of ranges' queries; the buffer's pair follows them
   bool perDispatch_ = true;
   bool opened_ = false, closed_ = false;
+  bool rangeOpen_ = false;  // the last begin() wrote its stamp (a full pool writes none)
   std::vector<std::string> names_;
 };
 

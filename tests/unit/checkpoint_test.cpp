@@ -31,6 +31,8 @@ Checkpoint sample(bool withBatch) {
   s.stats.seconds = 1.25;
   s.stats.cameraRays = 1ull << 40;
   s.stats.stageSeconds["shade"] = 0.5;
+  s.stats.stagesUntimed = true;  // a part without stage timestamps: a resumed report must not call the stages whole
+  s.stats.gpuSeconds = 0.75;
   s.stats.pathsByBounce = {7, 8, 9};
   return c;
 }
@@ -68,6 +70,8 @@ TEST(Checkpoint, RoundTripsEveryArrayAndCounterExactly) {
     EXPECT_EQ(d.state.stats.seconds, 1.25);
     EXPECT_EQ(d.state.stats.cameraRays, 1ull << 40);
     EXPECT_EQ(d.state.stats.stageSeconds.at("shade"), 0.5);
+    EXPECT_TRUE(d.state.stats.stagesUntimed);
+    EXPECT_EQ(d.state.stats.gpuSeconds, 0.75);
     EXPECT_EQ(d.state.stats.pathsByBounce, (std::vector<uint64_t>{7, 8, 9}));
   }
 }
