@@ -358,6 +358,7 @@ uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderS
   uint32_t samples = 1;
   earsTraining_ = true;
   earsOutOfBudget_ = false;
+  earsLastPassSecondsPerSample_ = 0.0;
   double firstPassSeconds = 0.0;
   double throughputOverhead = -1.0;  // a pass's fixed seconds, once two throughput passes have measured it
   uint32_t droppedIndex = 0;  // the dropped passes' samples follow each other in their own seed's sequence
@@ -398,6 +399,7 @@ uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderS
     if (!earsTrainingKept_) droppedIndex += samples;
     const double passSeconds = since(passStart);
     const double perSample = passSeconds / samples;
+    earsLastPassSecondsPerSample_ = perSample;
     if (pass == 0) firstPassSeconds = passSeconds;
     updateEarsStatistics(film, double(stats.rays() - raysBefore) / (double(pixels) * samples));
     if (earsTrainingKept_) {
@@ -424,6 +426,7 @@ uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderS
       renderSamples(nextSample, 2, stats);
       earsPhase_ = phase;
       const double secondSeconds = since(secondStart);
+      earsLastPassSecondsPerSample_ = secondSeconds / 2.0;
       updateEarsStatistics(film, double(stats.rays() - raysBefore2) / (double(pixels) * 2));
       foldFilm(film);
       nextSample += 2;
@@ -769,6 +772,9 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
     earsWarmPasses_ = 0;
     earsPhase_ = EarsPhase::Ears;
     earsSamples = trainEarsPasses(state.film, state.nextSample, stats, start);
+    // Under a budget the next pass is sized from the training's last, as the loop's own passes are from theirs (it
+    // would otherwise start over at 1 sample a pixel: one more pass of fixed cost).
+    if (budget > 0.0) secondsPerSample = earsLastPassSecondsPerSample_;
     if (earsGuardPending_ && kEarsGuardWarmPasses == 0) earsPhase_ = EarsPhase::MeasureEars;
     if (earsOutOfBudget_) {  // no comparison: throughput roulette where the guard may fall back, else EARS
       earsGuardPending_ = false;

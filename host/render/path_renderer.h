@@ -90,6 +90,7 @@ class PathRenderer {
   // The first training pass is an image pass (kept: state's film and next sample), the later ones are dropped.
   uint32_t trainEarsPasses(Film& film, uint32_t& nextSample, RenderStats& stats, std::chrono::steady_clock::time_point start);
   bool earsOutOfBudget_ = false;
+  double earsLastPassSecondsPerSample_ = 0.0;  // the training passes' last, which sizes the next pass under a budget
   bool earsTrainingKept_ = false;  // the training pass in progress is kept (its seed: the render's)
   bool earsTraining_ = false;  // a training pass: its own seed, its samples dropped
   // Returns the pass's sums (after - before).
