@@ -228,18 +228,22 @@ void PathRenderer::collectCounters(RenderStats& stats) {
   stats.deepWalksTraced += control->deepWalksTraced;
 }
 
+// Submits a command buffer begun with timer_->reset and waits: its GPU time and (where timed) its stages' to stats.
+void PathRenderer::submitTimed(VkCommandBuffer cmd, RenderStats& stats) {
+  timer_->close(cmd);
+  ctx_.submitAndWait(cmd);
+  timer_->collect(stats.stageSeconds, &stats.gpuSeconds);
+}
+
 // Megakernel: one dispatch follows every path of the pass to its end, then accumulate; one submit.
 uint32_t PathRenderer::renderMegakernelPass(const gpu::PushConstants& pc, RenderStats& stats) {
   VkCommandBuffer cmd = ctx_.beginCommands();
   resetControl(cmd);
   timer_->reset(cmd);
-  timer_->open(cmd);
   vk::dispatch(cmd, *layout_, *kernels_.megakernel, &pc, sizeof(pc), groupsFor(pc.pathCount), timer_.get());
   vk::dispatch(cmd, *layout_, *kernels_.accumulate, &pc, sizeof(pc), groupsFor(pc.pixelCount), timer_.get());
   publishControl(cmd);
-  timer_->close(cmd);
-  ctx_.submitAndWait(cmd);
-  timer_->collect(stats.stageSeconds, &stats.gpuSeconds);
+  submitTimed(cmd, stats);
   collectCounters(stats);
   return 0;
 }
@@ -324,7 +328,6 @@ uint32_t PathRenderer::renderWavefront(uint32_t firstPixel, uint32_t pixelCount,
     VkCommandBuffer cmd = ctx_.beginCommands();
     if (first) resetControl(cmd);
     timer_->reset(cmd);
-    timer_->open(cmd);
     if (first) recordCameraRays(cmd, pc, count);
     for (uint32_t b = bounce; b < bounce + chunk; ++b) {
       pc.bounce = b;
@@ -334,9 +337,7 @@ uint32_t PathRenderer::renderWavefront(uint32_t firstPixel, uint32_t pixelCount,
     pc.bounce = bounce;
     recordAccumulate(cmd, pc);
     publishControl(cmd);
-    timer_->close(cmd);
-    ctx_.submitAndWait(cmd);
-    timer_->collect(stats.stageSeconds, &stats.gpuSeconds);
+    submitTimed(cmd, stats);
     first = false;
     uint32_t alive = controlView().rayQueueCount[bounce & 1u];
     if (alive == 0) break;
@@ -452,15 +453,12 @@ void PathRenderer::trainEars(uint32_t cameras, RenderStats& stats) {
   const uint32_t slots = cameras + ears_->trainingChildren();
   VkCommandBuffer cmd = ctx_.beginCommands();
   timer_->reset(cmd);
-  timer_->open(cmd);
   pc.pathCount = cameras;
   vk::dispatch(cmd, *layout_, *kernels_.earsGather, &pc, sizeof(pc), groupsFor(slots), timer_.get());
   vk::dispatch(cmd, *layout_, *kernels_.earsTrain, &pc, sizeof(pc), groupsFor(ears_->trainingRecords() + slots), timer_.get());
   pc.pathCount = ears_->cellCount();
   vk::dispatch(cmd, *layout_, *kernels_.earsFold, &pc, sizeof(pc), groupsFor(pc.pathCount), timer_.get());
-  timer_->close(cmd);
-  ctx_.submitAndWait(cmd);
-  timer_->collect(stats.stageSeconds, &stats.gpuSeconds);
+  submitTimed(cmd, stats);
   ears_->clearTrainingLists();
 }
 

@@ -82,6 +82,7 @@ class PathRenderer {
   void resetControl(VkCommandBuffer cmd);
   void publishControl(VkCommandBuffer cmd);
   void collectCounters(RenderStats& stats);
+  void submitTimed(VkCommandBuffer cmd, RenderStats& stats);
   void foldFilm(Film& film);
   // EARS after a training wavefront of `cameras` camera paths: their sums into the cache.
   void trainEars(uint32_t cameras, RenderStats& stats);

@@ -143,7 +143,10 @@ GpuTimer::~GpuTimer() {
 void GpuTimer::reset(VkCommandBuffer cmd) {
   names_.clear();
   opened_ = closed_ = rangeOpen_ = false;
-  if (pool_) vkCmdResetQueryPool(cmd, pool_, 0, capacity_ + 2);
+  if (!pool_) return;
+  vkCmdResetQueryPool(cmd, pool_, 0, capacity_ + 2);
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_, capacity_);
+  opened_ = true;
 }
 
 void GpuTimer::begin(VkCommandBuffer cmd, const std::string& name) {
@@ -159,12 +162,6 @@ void GpuTimer::end(VkCommandBuffer cmd) {
   rangeOpen_ = false;
 }
 
-void GpuTimer::open(VkCommandBuffer cmd) {
-  if (!pool_) return;
-  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_, capacity_);
-  opened_ = true;
-}
-
 void GpuTimer::close(VkCommandBuffer cmd) {
   if (!pool_ || !opened_) return;
   vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, capacity_ + 1);
@@ -173,24 +170,22 @@ void GpuTimer::close(VkCommandBuffer cmd) {
 
 void GpuTimer::collect(std::map<std::string, double>& totals, double* bufferSeconds) {
   if (!pool_) return;
-  auto seconds = [&](uint32_t first) {
-    uint64_t ticks[2] = {0, 0};
-    check(vkGetQueryPoolResults(ctx_.device(), pool_, first, 2, sizeof(ticks), ticks, sizeof(uint64_t),
-                                VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-          "vkGetQueryPoolResults");
-    return static_cast<double>(ticks[1] - ticks[0]) * ctx_.timestampPeriodNs() * 1e-9;
-  };
-  if (!names_.empty()) {
-    std::vector<uint64_t> ticks(2 * names_.size());
-    check(vkGetQueryPoolResults(ctx_.device(), pool_, 0, static_cast<uint32_t>(ticks.size()), ticks.size() * sizeof(uint64_t),
+  // Seconds between query first + 2i and first + 2i + 1, for each of `pairs` pairs.
+  auto pairSeconds = [&](uint32_t first, size_t pairs) {
+    std::vector<uint64_t> ticks(2 * pairs);
+    check(vkGetQueryPoolResults(ctx_.device(), pool_, first, static_cast<uint32_t>(ticks.size()), ticks.size() * sizeof(uint64_t),
                                 ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
           "vkGetQueryPoolResults");
-    for (size_t i = 0; i < names_.size(); ++i) {
-      double ns = static_cast<double>(ticks[2 * i + 1] - ticks[2 * i]) * ctx_.timestampPeriodNs();
-      totals[names_[i]] += ns * 1e-9;
-    }
+    std::vector<double> seconds(pairs);
+    for (size_t i = 0; i < pairs; ++i)
+      seconds[i] = static_cast<double>(ticks[2 * i + 1] - ticks[2 * i]) * ctx_.timestampPeriodNs() * 1e-9;
+    return seconds;
+  };
+  if (!names_.empty()) {
+    const std::vector<double> seconds = pairSeconds(0, names_.size());
+    for (size_t i = 0; i < names_.size(); ++i) totals[names_[i]] += seconds[i];
   }
-  if (bufferSeconds && opened_ && closed_) *bufferSeconds += seconds(capacity_);
+  if (bufferSeconds && opened_ && closed_) *bufferSeconds += pairSeconds(capacity_, 1)[0];
   names_.clear();
   opened_ = closed_ = false;
 }

@@ -69,7 +69,7 @@ class Kernel {
   VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
 
-// Timestamp pairs around named dispatches (ranges), and one pair around a whole command buffer (open/close);
+// Timestamp pairs around named dispatches (ranges), and one pair around a whole command buffer (reset/close);
 // collect() sums the seconds per name and the buffer's. Without ranges (perDispatch false) begin and end write
 // nothing: on lavapipe a timestamp costs about as much as a small dispatch, 6-18% of a render's time, most
 // where passes are small (docs/performance.md, "Stage timestamps").
@@ -79,12 +79,11 @@ class GpuTimer {
   ~GpuTimer();
   GpuTimer(const GpuTimer&) = delete;
   GpuTimer& operator=(const GpuTimer&) = delete;
-  void reset(VkCommandBuffer cmd);
+  void reset(VkCommandBuffer cmd);  // and the command buffer's first timestamp
   void begin(VkCommandBuffer cmd, const std::string& name);
   void end(VkCommandBuffer cmd);
-  void open(VkCommandBuffer cmd);   // the command buffer's first timestamp (after reset)
-  void close(VkCommandBuffer cmd);  // its last (before submitting)
-  // After the command buffer completed: adds each range's seconds to totals[name], and the buffer's between open
+  void close(VkCommandBuffer cmd);  // the command buffer's last timestamp (before submitting)
+  // After the command buffer completed: adds each range's seconds to totals[name], and the buffer's between reset
   // and close to *bufferSeconds.
   void collect(std::map<std::string, double>& totals, double* bufferSeconds = nullptr);
   bool enabled() const { return pool_ != VK_NULL_HANDLE; }
