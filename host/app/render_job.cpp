@@ -501,7 +501,9 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
     j["ears"]["guard"] = {{"out_of_budget", true},
                           {"rest_rendered_by", r.earsGuard.fellBack ? "throughput" : "ears"},
                           {"from_sample", r.earsGuard.fromSample},
-                          {"pass_overhead_seconds", finiteOrNull(r.earsGuard.passOverhead)}};
+                          {"pass_overhead_seconds", finiteOrNull(r.earsGuard.passOverhead)},
+                          {"decided_at_seconds", finiteOrNull(r.earsGuard.decidedAtSeconds)},
+                          {"learning_cost_seconds", finiteOrNull(r.earsGuard.learningCostSeconds)}};
   if (r.ears && r.earsGuard.compared) {
     auto pass = [](const PolicyPass& p) {
       return nlohmann::json{{"samples_measured", p.samples},
@@ -520,6 +522,8 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                           {"switched_later", r.earsGuard.switchedLater},
                           {"switched_at", r.earsGuard.switchedLater ? nlohmann::json(r.earsGuard.switchedAt) : nlohmann::json(nullptr)},
                           {"pass_overhead_seconds", finiteOrNull(r.earsGuard.passOverhead)},
+                          {"decided_at_seconds", finiteOrNull(r.earsGuard.decidedAtSeconds)},
+                          {"learning_cost_seconds", finiteOrNull(r.earsGuard.learningCostSeconds)},
                           {"out_of_budget", false}};
   }
   if (o.timeBudget > 0.0) j["time_budget"] = o.timeBudget;

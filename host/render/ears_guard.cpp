@@ -86,17 +86,31 @@ double earsPassOverhead(double seconds, uint32_t samples, double laterSeconds, u
   return std::clamp(a, 0.0, std::max(cap, 0.0));
 }
 
+double earsLearningCostSeconds(double decidedAt, uint32_t samplesBefore, double endSeconds, uint32_t samplesAfter) {
+  if (!std::isfinite(decidedAt) || samplesAfter == 0) return std::numeric_limits<double>::quiet_NaN();
+  return decidedAt - double(samplesBefore) * (endSeconds - decidedAt) / double(samplesAfter);
+}
+
 bool earsLearningFits(double budget, double elapsed, double secondsLeft) {
   return !(budget > 0.0) || elapsed + secondsLeft <= kEarsLearningBudgetShare * budget;
 }
+
+namespace {
+std::string earsLearningCostText(const EarsGuardOutcome& g) {
+  if (!std::isfinite(g.learningCostSeconds)) return "";
+  char buf[120];
+  std::snprintf(buf, sizeof(buf), "; choosing cost %.3g s (decided at %.3g s)", g.learningCostSeconds, g.decidedAtSeconds);
+  return buf;
+}
+}  // namespace
 
 std::string earsGuardLine(const EarsGuardOutcome& g) {
   if (g.outOfBudget) {
     char buf[240];
     std::snprintf(buf, sizeof(buf),
-                  "ears guard  learning and comparing would take more than %g of the time budget: %s from sample %u\n",
+                  "ears guard  learning and comparing would take more than %g of the time budget: %s from sample %u%s\n",
                   kEarsLearningBudgetShare, g.fellBack ? "throughput roulette, not compared," : "ears, training cut short,",
-                  g.fromSample);
+                  g.fromSample, earsLearningCostText(g).c_str());
     return buf;
   }
   if (!g.compared) return "";
@@ -114,9 +128,10 @@ std::string earsGuardLine(const EarsGuardOutcome& g) {
   char buf[640];
   std::snprintf(buf, sizeof(buf),
                 "ears guard  efficiency 1/(relative variance x seconds) a sample, measured on %u samples a pixel of ears "
-                "and %u of throughput roulette: ears %.4g%s, throughput roulette %.4g; %s from sample %u%s\n",
+                "and %u of throughput roulette: ears %.4g%s, throughput roulette %.4g; %s from sample %u%s%s\n",
                 g.ears.samples, g.throughput.samples, g.ears.efficiency(), again, g.throughput.efficiency(),
-                g.switchedLater ? "ears" : g.fellBack ? "throughput roulette" : "ears", g.fromSample, watch);
+                g.switchedLater ? "ears" : g.fellBack ? "throughput roulette" : "ears", g.fromSample, watch,
+                earsLearningCostText(g).c_str());
   return buf;
 }
 

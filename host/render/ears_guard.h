@@ -96,7 +96,20 @@ struct EarsGuardOutcome {
   PolicyPass watchedEars;     // their measure when the guard last looked
   bool switchedLater = false; // throughput roulette took over while watching
   uint32_t switchedAt = 0;    // then: from this sample (EARS from fromSample until it)
+  // What choosing cost, measured in the render itself (earsLearningCostSeconds): the seconds of this render's passes
+  // when the rest's policy was fixed (compared or out of budget), and those seconds less what the samples kept by
+  // then would have taken at the rest's seconds a sample. NaN where nothing was decided or nothing followed.
+  double decidedAtSeconds = std::numeric_limits<double>::quiet_NaN();
+  double learningCostSeconds = std::numeric_limits<double>::quiet_NaN();
 };
+
+// The guard's cost: `decidedAt` seconds into the render, `samplesBefore` samples a pixel were in the image; the
+// rest, `samplesAfter` of them, took until `endSeconds`. The training passes, the dropped throughput pass and the
+// dearer EARS samples are what decidedAt holds beyond samplesBefore at the rest's rate. Measured within one render,
+// so this machine's swings between processes (±30%) do not enter it, as they do an equal-time comparison of two
+// renders. NaN without samples after (no rate to cost by). Negative where the kept samples were cheaper than the
+// rest's (EARS chosen and dearer a sample).
+double earsLearningCostSeconds(double decidedAt, uint32_t samplesBefore, double endSeconds, uint32_t samplesAfter);
 
 // EARS's cache keeps learning after its first measured samples: on two_rooms a pass's efficiency rose from about
 // 0.6x throughput roulette's at the first measure to 1.1-1.2x in later passes (docs/ears.md, "The guard").

@@ -596,6 +596,7 @@ void PathRenderer::decideEarsGuard(uint32_t nextSample, bool secondLook) {
       earsGuard_.ears = earsGuard_.firstEars;
       earsGuard_.compared = earsGuard_.fellBack = true;
       earsGuard_.fromSample = nextSample;
+      earsGuard_.decidedAtSeconds = since(passesStart_);
       earsPhase_ = EarsPhase::Throughput;
     }
   } else if (!secondLook && earsGuardLooksAgain(mode, ears, throughput)) {
@@ -611,6 +612,7 @@ void PathRenderer::decideEarsGuard(uint32_t nextSample, bool secondLook) {
     earsGuard_.compared = true;
     earsGuard_.fellBack = earsFallsBack(mode, ears, throughput);
     earsGuard_.fromSample = nextSample;
+    earsGuard_.decidedAtSeconds = since(passesStart_);
     if (earsGuard_.fellBack) earsPhase_ = EarsPhase::Throughput;
   }
   earsGuardPending_ = false;
@@ -738,6 +740,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   state.batch.clear();
   state.batchSamples = 0;
   auto start = Clock::now();
+  passesStart_ = start;
   double lastProgress = 0.0, lastCheckpoint = 0.0;
   // Small images take several samples per pixel per pass, so that a pass fills the wavefront.
   const uint32_t maxPerPass = samplesPerPass();
@@ -778,6 +781,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
       earsGuardPending_ = false;
       earsGuard_.outOfBudget = true;
       earsGuard_.fromSample = state.nextSample;
+      earsGuard_.decidedAtSeconds = since(start);
       earsGuard_.fellBack = settings_.estimator.earsFallback != EarsFallback::Never;
       earsPhase_ = earsGuard_.fellBack ? EarsPhase::Throughput : EarsPhase::Ears;
     }
@@ -841,6 +845,9 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
     }
   }
   if (showProgress) std::fprintf(stderr, "\n");
+  if (ears_->enabled())
+    earsGuard_.learningCostSeconds = earsLearningCostSeconds(earsGuard_.decidedAtSeconds, earsGuard_.fromSample - firstSample,
+                                                             since(start), state.nextSample - earsGuard_.fromSample);
   snapshot(state, inBatch, secondsBefore + since(start), before);
 }
 

@@ -121,6 +121,7 @@ class PathRenderer {
   // After a pass of EARS chosen under auto: its measure so far against throughput roulette's, and the switch.
   void watchEars(const std::vector<PixelSums>& pass, uint32_t samples, double seconds, uint32_t nextSample);
   EarsGuardOutcome earsGuard_;
+  std::chrono::steady_clock::time_point passesStart_;  // render()'s passes began: the guard's decidedAtSeconds count from it
   bool earsGuardPending_ = false;  // the comparison is still to come
   uint32_t earsWarmPasses_ = 0;    // EARS passes before it
   PolicyTally earsTally_, throughputTally_;  // the measured passes of each policy

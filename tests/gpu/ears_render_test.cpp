@@ -218,6 +218,10 @@ TEST(Ears, GuardComparesOnePassEachThenRendersTheRestWithItsChoice) {
   EXPECT_EQ(g.throughput.samples, 64u);
   EXPECT_EQ(g.fromSample, 17u);  // after the first training pass, which stays
   EXPECT_EQ(a.film.totalSamples(), 24u * 24u * 128u);
+  // What choosing cost, on the render's own clock: its 17 kept samples count at the rest's rate.
+  EXPECT_GT(g.decidedAtSeconds, 0.0);
+  ASSERT_TRUE(std::isfinite(g.learningCostSeconds));
+  EXPECT_LT(g.learningCostSeconds, g.decidedAtSeconds);
   for (const PolicyPass& p : {g.ears, g.throughput}) {
     EXPECT_GT(p.relativeVariance, 0.0);
     EXPECT_GT(p.secondsPerSample, 0.0);
@@ -293,6 +297,8 @@ TEST(Ears, ABudgetTooShortToLearnIn) {
     EXPECT_EQ(r.film.totalSamples(), 16u * 16u) << "one pass, as any render whose budget is spent";
     EXPECT_NE(earsGuardLine(r.earsGuard).find("time budget"), std::string::npos);
     EXPECT_TRUE(std::isnan(r.earsGuard.passOverhead)) << "no second pass of throughput roulette";
+    EXPECT_GE(r.earsGuard.decidedAtSeconds, 0.0);
+    EXPECT_TRUE(std::isnan(r.earsGuard.learningCostSeconds)) << "no pass after the decision to cost it by";
   }
 }
 

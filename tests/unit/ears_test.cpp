@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "../shaders/shared/ears.h"
 #include "../shaders/shared/roulette.h"
@@ -340,4 +341,23 @@ TEST(EarsGuard, AutoWatchesTheEarsItChoseAndTheLineSaysWhatItSaw) {
   EXPECT_NE(line.find("ears from sample 13; watched over 60 samples a pixel, ears read 0.25: throughput roulette from sample 73"),
             std::string::npos)
       << line;
+}
+
+// The guard's cost, from one render's own clock: the seconds to the decision less its kept samples at the rest's
+// seconds a sample; NaN where nothing was decided or nothing followed. The report's line gives it.
+TEST(EarsGuard, ChoosingCostsWhatItsSecondsHoldBeyondItsKeptSamplesAtTheRestsRate) {
+  // Decided 2 s in, with 10 samples a pixel kept; 90 more took 9 s (0.1 s each): the 10 would have taken 1 s.
+  EXPECT_DOUBLE_EQ(earsLearningCostSeconds(2.0, 10, 11.0, 90), 1.0);
+  EXPECT_DOUBLE_EQ(earsLearningCostSeconds(0.5, 0, 4.5, 40), 0.5) << "nothing kept: all of it";
+  EXPECT_LT(earsLearningCostSeconds(1.0, 10, 3.0, 10), 0.0) << "kept samples cheaper than the rest's";
+  EXPECT_TRUE(std::isnan(earsLearningCostSeconds(2.0, 10, 2.0, 0))) << "no rest to cost by";
+  EXPECT_TRUE(std::isnan(earsLearningCostSeconds(std::numeric_limits<double>::quiet_NaN(), 10, 5.0, 10))) << "no decision";
+  EarsGuardOutcome g;
+  g.outOfBudget = g.fellBack = true;
+  g.fromSample = 3;
+  EXPECT_EQ(earsGuardLine(g).find("choosing cost"), std::string::npos) << "nothing measured, nothing said";
+  g.decidedAtSeconds = 0.25;
+  g.learningCostSeconds = 0.125;
+  const std::string line = earsGuardLine(g);
+  EXPECT_NE(line.find("from sample 3; choosing cost 0.125 s (decided at 0.25 s)"), std::string::npos) << line;
 }
