@@ -126,6 +126,12 @@ Study loadStudy(const std::string& path) {
   return s;
 }
 
+std::vector<size_t> studyRunOrder(size_t configurations, uint32_t repeat) {
+  std::vector<size_t> order(configurations);
+  for (size_t k = 0; k < configurations; ++k) order[k] = repeat % 2 == 0 ? k : configurations - 1 - k;
+  return order;
+}
+
 std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
   std::error_code ec;
   fs::create_directories(outDir, ec);
@@ -198,11 +204,12 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
     runRender(ctx, o, scene);
   }
 
-  std::vector<StudyRow> rows;
+  const size_t configurations = study.configurations.size();
+  std::vector<StudyRow> rows(study.ladder.size() * study.repeats * configurations);  // in the listed order
   std::map<std::pair<size_t, size_t>, ExrImage> images;  // (configuration, rung) -> repeat 0's image
   for (size_t rung = 0; rung < study.ladder.size(); ++rung)
     for (uint32_t rep = 0; rep < study.repeats; ++rep)
-      for (size_t c = 0; c < study.configurations.size(); ++c) {
+      for (size_t c : studyRunOrder(configurations, rep)) {
         RenderOptions o = options(study.configurations[c].estimator, study.seed + rep * 7919u + uint32_t(rung) * 104729u);
         if (study.timeLadder)
           o.timeBudget = study.ladder[rung], o.spp = 1u << 24;
@@ -223,7 +230,7 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
         row.relmse = e.relmse;
         row.efficiency = e.relmse > 0 && row.seconds > 0 ? 1.0 / (e.relmse * row.seconds) : 0.0;
         row.nonfinite = r.film.totalNonfinite();
-        rows.push_back(row);
+        rows[(rung * study.repeats + rep) * configurations + c] = row;
         if (rep == 0) images[{c, rung}] = std::move(img);
         std::fprintf(stderr, "vkmc bench: %-24s rung %-6g repeat %u: %u spp, %.3f s, relMSE %.4g\n", row.configuration.c_str(),
                      row.rung, rep, row.spp, row.seconds, row.relmse);

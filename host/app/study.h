@@ -59,6 +59,11 @@ struct StudyRow {
   uint64_t nonfinite = 0;
 };
 
+// The order in which one repeat renders the configurations: as listed on even repeats, reversed on odd ones, so
+// that no configuration always runs first or last (on this machine a render's speed drifts with its neighbours and
+// the minutes; the seeds do not depend on the order). Rows are reported in the listed order whatever the run order.
+std::vector<size_t> studyRunOrder(size_t configurations, uint32_t repeat);
+
 // Runs the study and writes results.csv, results.json, error_vs_time.svg, summary.md and equal_time.png
 // into outDir. Returns the rows.
 std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir);

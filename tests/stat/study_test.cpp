@@ -158,3 +158,12 @@ TEST(Study, RejectsBadConstantReferences) {
                  Error)
         << bad;
 }
+
+// Each repeat renders the configurations in turn, reversed every other repeat (no configuration always first).
+TEST(Study, RepeatsAlternateTheOrderOfTheirConfigurations) {
+  EXPECT_EQ(studyRunOrder(3, 0), (std::vector<size_t>{0, 1, 2}));
+  EXPECT_EQ(studyRunOrder(3, 1), (std::vector<size_t>{2, 1, 0}));
+  EXPECT_EQ(studyRunOrder(3, 2), (std::vector<size_t>{0, 1, 2}));
+  EXPECT_EQ(studyRunOrder(1, 1), (std::vector<size_t>{0}));
+  EXPECT_TRUE(studyRunOrder(0, 0).empty());
+}
