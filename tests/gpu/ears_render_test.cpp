@@ -302,6 +302,32 @@ TEST(Ears, ABudgetTooShortToLearnIn) {
   }
 }
 
+// Where the guard falls back, its image holds throughput roulette's own samples: the fallback's kernels (shade and
+// the shadow stage built with throughput roulette beside EARS's) draw the same random numbers with the same seed,
+// so its equal-time ratio to throughput roulette is its ratio of samples reached, and what it costs is its choosing
+// (ears.guard.learning_cost_seconds). Out of budget, the guard's one pass is that fallback's first; the Cornell box's
+// area light gives it a shadow stage, so both of the fallback's own kernels run.
+TEST(Ears, FallenBackItRendersThroughputRoulettesOwnSamples) {
+  EstimatorConfig guarded = ears();
+  guarded.earsFallback = EarsFallback::Auto;
+  RenderOptions withGuard = optionsFor("cornell_box.gltf", guarded, 24, 24, 64);
+  RenderOptions throughput = optionsFor("cornell_box.gltf", EstimatorConfig{}, 24, 24, 64);
+  withGuard.timeBudget = throughput.timeBudget = 1e-6;  // one pass of one sample a pixel, on any device
+  RenderOutcome g = runRender(sharedContext(), withGuard);
+  RenderOutcome t = runRender(sharedContext(), throughput);
+  ASSERT_TRUE(g.ears);
+  ASSERT_TRUE(g.earsGuard.outOfBudget);
+  ASSERT_TRUE(g.earsGuard.fellBack);
+  ASSERT_EQ(g.film.totalSamples(), t.film.totalSamples());
+  ASSERT_EQ(g.film.sum.size(), t.film.sum.size());
+  size_t nonzero = 0;
+  for (size_t i = 0; i < g.film.sum.size(); ++i) {
+    ASSERT_EQ(g.film.sum[i], t.film.sum[i]) << "value " << i;
+    nonzero += g.film.sum[i] != 0.0 ? 1 : 0;
+  }
+  EXPECT_GT(nonzero, g.film.sum.size() / 2) << "an image, not two empty films";
+}
+
 // Under a budget that learning fits (an hour, on a 16x16 furnace), auto's first two passes are throughput
 // roulette's own (1 and 2 samples a pixel, kept): they measure a pass's fixed overhead, which costs the guard's
 // measured pass (ears_guard.h earsThroughputPassSeconds); then EARS trains, the guard compares, and the image
