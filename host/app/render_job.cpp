@@ -19,6 +19,7 @@
 #include "io/environment_image.h"
 #include "io/output_files.h"
 #include "render/device_tuning.h"
+#include "vk/lavapipe_environment.h"
 #include "render/gpu_scene.h"
 #include "render/render_kernels.h"
 #include "scene/camera_rig.h"
@@ -308,6 +309,8 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.tuning.wavefrontAuto = options.wavefrontPaths == 0;
   out.tuning.stageTimes = settings.stageTimes;
   out.tuning.stageTimesAuto = !options.stageTimes.has_value();
+  out.tuning.cpuVectorBits = ctx.cpuVectorBits();
+  out.tuning.cpuVectorAuto = out.tuning.cpuVectorBits > 0 && vk::prepareLavapipeEnvironment().vectorChosen;
   std::optional<RouletteTable> roulette;
   double pilotSeconds = 0.0;
   // What a checkpoint of this render records; a resumed render's must match it, and its learned state (the
@@ -484,9 +487,10 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                         {"paths_per_pass", t.pathsPerPass},
                         {"path_slots", t.pathSlots},
                         {"stage_times", t.stageTimes},
+                        {"cpu_vector_bits", t.cpuVectorBits > 0 ? json(t.cpuVectorBits) : json(nullptr)},
                         {"chosen_by_device",
                          {{"integrator", t.integratorAuto}, {"workgroup", t.workgroupAuto}, {"wavefront", t.wavefrontAuto},
-                          {"stage_times", t.stageTimesAuto}}}};
+                          {"stage_times", t.stageTimesAuto}, {"cpu_vector", t.cpuVectorAuto}}}};
   j["spp_reached"] = s.samplesPerPixel;
   if (r.roulette) {
     nlohmann::json scales = nlohmann::json::array();

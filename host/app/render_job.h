@@ -92,6 +92,8 @@ struct RenderOutcome {
     uint32_t pathsPerPass = 0, pathSlots = 0;  // the path pool as sized (path_pool.h): camera paths, all slots
     bool stageTimes = false;
     bool integratorAuto = false, workgroupAuto = false, wavefrontAuto = false, stageTimesAuto = false;
+    uint32_t cpuVectorBits = 0;  // lavapipe's SIMD width (0 on a GPU); chosen by vkmc or the environment
+    bool cpuVectorAuto = false;
   } tuning;
   uint32_t width = 0, height = 0;
   std::optional<ErrorMetrics> error;  // against the reference, when one was given

@@ -7,6 +7,7 @@
 
 #include "error.h"
 #include "vk/device_requirements.h"
+#include "vk/lavapipe_environment.h"
 
 namespace vkmc::vk {
 
@@ -16,6 +17,7 @@ void check(VkResult result, const char* what) {
 }
 
 Context::Context(const ContextOptions& options) {
+  prepareLavapipeEnvironment();  // before lavapipe reads it at the first instance
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "vkmc";
   app.apiVersion = VK_API_VERSION_1_2;

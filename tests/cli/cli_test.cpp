@@ -337,6 +337,49 @@ TEST(Cli, WorkgroupAndWavefrontAreTheDevicesUnlessGivenAndAreReported) {
   EXPECT_EQ(slurp(workDir() / "tuning_small.exr"), slurp(workDir() / "tuning_auto.exr"));
 }
 
+// lavapipe's SIMD width: 512 bits (16 lanes) where the CPU has AVX-512 and the user set none, the user's where set
+// (vk/lavapipe_environment.h), reported; and Mesa's shader cache kept per width, so that a run at another width
+// compiles its own kernels instead of loading the other width's (Mesa 22.3 keys them without it). The image is
+// the same bit for bit at either width: a sample's random numbers never depend on its lane.
+TEST(Cli, LavapipesVectorWidthIsChosenPerCpuAndCachedPerWidth) {
+  const fs::path cache = workDir() / "width_cache", report = workDir() / "width.json";
+  fs::remove_all(cache);
+  const std::string common = "render " + cornell() + " --width 40 --height 30 --spp 4 -q --report " + report.string();
+  const std::string env = "env -u LP_NATIVE_VECTOR_WIDTH -u MESA_SHADER_CACHE_DIR -u MESA_SHADER_CACHE_DISABLE XDG_CACHE_HOME=" + cache.string() + " ";
+  RunResult chosen = vkmc::test::runShell(env + VKMC_BINARY + " " + common + " -o " + (workDir() / "width_auto.exr").string());
+  ASSERT_EQ(chosen.code, 0) << chosen.err;
+  const nlohmann::json a = nlohmann::json::parse(slurp(report));
+  if (a["device"].get<std::string>().find("llvmpipe") == std::string::npos) {
+    EXPECT_TRUE(a["device_tuning"]["cpu_vector_bits"].is_null());
+    GTEST_SKIP() << "not lavapipe";
+  }
+  const bool avx512 = __builtin_cpu_supports("avx512f");
+  const int bits = a["device_tuning"]["cpu_vector_bits"].get<int>();
+  EXPECT_EQ(bits, 32 * a["device_tuning"]["subgroup_size"].get<int>());
+  EXPECT_EQ(a["device_tuning"]["chosen_by_device"]["cpu_vector"].get<bool>(), avx512);
+  if (avx512) {
+    EXPECT_EQ(bits, 512);
+  }
+  auto filesIn = [](const fs::path& d) {
+    size_t n = 0;
+    if (fs::exists(d))
+      for (const auto& f : fs::recursive_directory_iterator(d)) n += f.is_regular_file();
+    return n;
+  };
+  EXPECT_GT(filesIn(cache / "vkmc" / ("mesa-lp" + std::to_string(bits))), 0u) << "kernels cached under their width";
+
+  const int other = bits == 256 ? 128 : 256;
+  RunResult given = vkmc::test::runShell(env + "LP_NATIVE_VECTOR_WIDTH=" + std::to_string(other) + " " + VKMC_BINARY + " " +
+                                         common + " -o " + (workDir() / "width_given.exr").string());
+  ASSERT_EQ(given.code, 0) << given.err;
+  const nlohmann::json g = nlohmann::json::parse(slurp(report));
+  EXPECT_EQ(g["device_tuning"]["cpu_vector_bits"].get<int>(), other);
+  EXPECT_EQ(g["device_tuning"]["subgroup_size"].get<int>(), other / 32);
+  EXPECT_FALSE(g["device_tuning"]["chosen_by_device"]["cpu_vector"].get<bool>());
+  EXPECT_GT(filesIn(cache / "vkmc" / ("mesa-lp" + std::to_string(other))), 0u);
+  EXPECT_EQ(slurp(workDir() / "width_given.exr"), slurp(workDir() / "width_auto.exr"));
+}
+
 // --stage-times: every stage's GPU seconds in the report, or (off, lavapipe's default) only the command buffers'
 // GPU time. Timing is a measurement: the image is the same bit for bit either way.
 TEST(Cli, StageTimesAreTheDevicesChoiceAndLeaveTheImageAlone) {
