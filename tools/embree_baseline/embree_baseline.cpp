@@ -190,8 +190,8 @@ int main(int argc, char** argv) {
         RayTracer counting(ctx, gpuScene, false, true);
         counting.trace(rays, false);
         RayTracer::WalkStats w = counting.walkStats();
-        std::printf("  walk per ray: %.2f iterations (%.2f node steps, %.2f triangle tests); slowest lane of 8: %.2f\n",
-                    w.iterations, w.nodeSteps, w.triangleTests, w.slowestLaneIterations);
+        std::printf("  walk per ray: %.2f iterations (%.2f node steps, %.2f triangle tests); slowest lane of %u: %.2f\n",
+                    w.iterations, w.nodeSteps, w.triangleTests, ctx.subgroupSize(), w.slowestLaneIterations);
         out.back()["walk_per_ray"] = {{"iterations", w.iterations},
                                       {"node_steps", w.nodeSteps},
                                       {"triangle_tests", w.triangleTests},

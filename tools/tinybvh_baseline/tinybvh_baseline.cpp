@@ -104,14 +104,14 @@ std::vector<Peer> makePeers(vk::Context& ctx, const Scene& scene, const Options&
   return peers;
 }
 
-// One more, untimed trace of each counting variant: steps per ray, and what a subgroup of 8 pays (its slowest lane).
+// One more, untimed trace of each counting variant: steps per ray, and what a subgroup pays (its slowest lane).
 void printWalkStats(vk::Context& ctx, const GpuScene& gpuScene, const std::vector<gpu::TestRay>& rays, std::vector<Peer>& peers,
                     nlohmann::json& out) {
   RayTracer counting(ctx, gpuScene, false, true);
   counting.trace(rays, false);
   RayTracer::WalkStats v = counting.walkStats();
-  std::printf("  walk per ray, vkmc: %.2f iterations (%.2f node steps, %.2f triangle tests); slowest lane of 8: %.2f\n",
-              v.iterations, v.nodeSteps, v.triangleTests, v.slowestLaneIterations);
+  std::printf("  walk per ray, vkmc: %.2f iterations (%.2f node steps, %.2f triangle tests); slowest lane of %u: %.2f\n",
+              v.iterations, v.nodeSteps, v.triangleTests, ctx.subgroupSize(), v.slowestLaneIterations);
   out["vkmc_walk_per_ray"] = {{"iterations", v.iterations},
                               {"node_steps", v.nodeSteps},
                               {"triangle_tests", v.triangleTests},
@@ -119,8 +119,8 @@ void printWalkStats(vk::Context& ctx, const GpuScene& gpuScene, const std::vecto
   for (size_t k = 0; k < peers.size(); ++k) {
     peers[k].counting->trace(rays);
     TinybvhTracer::WalkStats w = peers[k].counting->walkStats();
-    std::printf("  walk per ray, %s: %.2f iterations (%.2f triangle tests); slowest lane of 8: %.2f (%.2f triangle tests)\n",
-                peers[k].label.c_str(), w.iterations, w.triangleTests, w.slowestLaneIterations, w.slowestLaneTriangleTests);
+    std::printf("  walk per ray, %s: %.2f iterations (%.2f triangle tests); slowest lane of %u: %.2f (%.2f triangle tests)\n",
+                peers[k].label.c_str(), w.iterations, w.triangleTests, ctx.subgroupSize(), w.slowestLaneIterations, w.slowestLaneTriangleTests);
     out["tinybvh"][k]["walk_per_ray"] = {{"iterations", w.iterations},
                                          {"triangle_tests", w.triangleTests},
                                          {"slowest_lane_iterations", w.slowestLaneIterations},
