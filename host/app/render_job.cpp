@@ -19,7 +19,6 @@
 #include "io/environment_image.h"
 #include "io/output_files.h"
 #include "render/device_tuning.h"
-#include "vk/lavapipe_environment.h"
 #include "render/gpu_scene.h"
 #include "render/render_kernels.h"
 #include "scene/camera_rig.h"
@@ -27,6 +26,7 @@
 #include "scene/content_hash.h"
 #include "scene/scene_fingerprint.h"
 #include "scene/thin_ribbons.h"
+#include "vk/lavapipe_environment.h"
 
 namespace vkmc {
 namespace {

@@ -34,7 +34,7 @@ class Context {
   // each pass are mapped in place; a discrete GPU keeps them device-local and copies (PathRenderer).
   VkPhysicalDeviceType deviceType() const { return properties_.deviceType; }
   uint32_t subgroupSize() const { return subgroupSize_; }
-  // lavapipe's SIMD width in bits and whether vkmc chose it (lavapipe_environment.h); 0 on other devices.
+  // lavapipe's SIMD width in bits (its subgroup x 32; lavapipe_environment.h); 0 on other devices.
   unsigned cpuVectorBits() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? subgroupSize_ * 32u : 0u; }
   bool unifiedMemory() const {
     return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU || properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU;

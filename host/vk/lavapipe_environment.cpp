@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 #include <system_error>
 
 namespace vkmc::vk {
@@ -46,7 +47,7 @@ LavapipeEnvironment decide() {
       const std::string dir = base + "/vkmc/mesa-lp" + std::to_string(e.vectorBits);
       std::error_code ec;
       std::filesystem::create_directories(dir, ec);  // Mesa makes only the last level
-      if (!ec && setenv("MESA_SHADER_CACHE_DIR", dir.c_str(), 0) == 0) e.shaderCache = dir;
+      if (!ec) setenv("MESA_SHADER_CACHE_DIR", dir.c_str(), 0);
     }
   }
   return e;

@@ -1,14 +1,12 @@
 // What lavapipe (Mesa's CPU Vulkan driver) reads from the environment when its first instance is made: the SIMD
 // width of its kernels, and where it caches their machine code. Chosen once per process, before any Vulkan call.
 #pragma once
-#include <string>
 
 namespace vkmc::vk {
 
 struct LavapipeEnvironment {
   unsigned vectorBits = 0;  // LP_NATIVE_VECTOR_WIDTH as lavapipe will use it: 128, 256 or 512 (its subgroup x 32)
   bool vectorChosen = false;  // vkmc set it (the CPU has AVX-512: docs/performance.md, "Sixteen lanes"), not the user
-  std::string shaderCache;    // MESA_SHADER_CACHE_DIR as set for lavapipe ("" where the user set it or disabled it)
 };
 
 // On a CPU with AVX-512 and no LP_NATIVE_VECTOR_WIDTH given, sets it to 512 (16-lane kernels, measured faster
