@@ -18,8 +18,11 @@ void main() {
   SurfacePoint s = surfaceAt(floatBitsToUint(hit.w), hit.yz, wo);
   GltfMaterial gm = shadeSurface(loadMaterial(s.material), s, wo);
   vec3 poisoned;
+  // qL is 0 unless the light cells decide (kEarsLightMax > 0): as a constant it folds the copy's light-sample loop
+  // into straight code, which llvmpipe otherwise runs as a loop with its live state spilled around it.
+  float qL = kEarsLightMax > 0.0 ? path.radiance.w : 0.0;
   float rays = shadeEarsCopy(path, target, floatBitsToUint(path.radiance.z), s, gm, wo, wo * s.frame, path.radiance.x,
-                             path.radiance.w, floatBitsToUint(path.radiance.y), earsCellKey(s.p, s.ng, earsHeader.grid),
+                             qL, floatBitsToUint(path.radiance.y), earsCellKey(s.p, s.ng, earsHeader.grid),
                              vec3(0.0), poisoned);
   addToEarsSample(target, path.rootPath, poisoned, vec3(0.0), rays);
 }
