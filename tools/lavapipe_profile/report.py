@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Per JIT region (a compiled kernel): its share of perf's samples, and the share of its samples inside
-llvmpipe's per-lane loops (`inc; cmp $0x8; jae` around a body that extracts one lane's address from a spilled
+llvmpipe's per-lane loops (`inc; cmp $LANES; jae`, LANES 4, 8 or 16 by LP_NATIVE_VECTOR_WIDTH, around a body that extracts one lane's address from a spilled
 vector, checks it against the buffer's size and loads or stores): the price of storage-buffer accesses. Lists a
 region's costliest such loops with their length (instructions per lane) and whether they store.
 Usage: report.py OUT (as written by lavapipe_profile.sh)."""
@@ -28,7 +28,7 @@ def instructions(path):
 def lane_loops(code):
     loops = []
     for i in range(1, len(code) - 1):
-        if re.match(r"cmp\s+\$0x8,%e", code[i][1]):
+        if re.match(r"cmp\s+\$0x(4|8|10),%e", code[i][1]):  # 4, 8 or 16 lanes
             m = re.match(r"jae\s+0x([0-9a-f]+)", code[i + 1][1])
             if m:
                 end = int(m.group(1), 16)
