@@ -463,7 +463,9 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["ray_counts"] = {{"camera", s.cameraRays},
                      {"extension", s.extensionRays},
                      {"shadow", s.shadowRays},
-                     {"deep_walks", s.deepWalks}};  // rays whose walk outgrew the register stack (deep pass)
+                     {"deep_walks", s.deepWalks},   // rays whose walk outgrew the register stack (deep pass)
+                     // vertices whose split (BSDF splitting, EARS) found the path pool full and went on whole
+                     {"splits_refused", s.splitsRefused}};
   j["mrays_per_second"] = s.seconds > 0.0 ? static_cast<double>(s.rays()) / s.seconds * 1e-6 : 0.0;
   j["nonfinite_samples"] = r.film.totalNonfinite();
   j["nonfinite_by_stage"] = {{"shade_emission", s.nonfiniteEmission},
@@ -635,6 +637,9 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 varianceText.c_str(), (unsigned long long)r.film.totalNonfinite(),
                 (unsigned long long)r.film.totalHighRange());
   std::string text = buf;
+  if (s.splitsRefused > 0)
+    text += "splits      " + std::to_string(s.splitsRefused) +
+            " vertices found the path pool full and went on unsplit (unbiased: q = 1 there; fewer splits than asked)\n";
   if (r.ears) text += earsLine(*r.ears) + earsGuardLine(r.earsGuard);
   if (r.error)
     text += "error       relMSE " + std::to_string(r.error->relmse) + ", MSE " + std::to_string(r.error->mse) +

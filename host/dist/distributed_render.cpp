@@ -28,6 +28,7 @@ void addCounters(RenderStats& into, const RenderStats& from) {
   into.nonfiniteEmission += from.nonfiniteEmission, into.nonfiniteLightSamples += from.nonfiniteLightSamples;
   into.nonfiniteThroughput += from.nonfiniteThroughput, into.traversalsCut += from.traversalsCut;
   into.deepWalks += from.deepWalks, into.deepWalksTraced += from.deepWalksTraced;
+  into.splitsRefused += from.splitsRefused;
   into.pathsByBounce.resize(std::max(into.pathsByBounce.size(), from.pathsByBounce.size()), 0);
   into.shadowRaysByBounce.resize(std::max(into.shadowRaysByBounce.size(), from.shadowRaysByBounce.size()), 0);
   for (size_t b = 0; b < from.pathsByBounce.size(); ++b) into.pathsByBounce[b] += from.pathsByBounce[b];

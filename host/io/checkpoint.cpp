@@ -40,6 +40,7 @@ nlohmann::json renderStatsJson(const RenderStats& s) {
           {"traversals_cut", s.traversalsCut},
           {"deep_walks", s.deepWalks},
           {"deep_walks_traced", s.deepWalksTraced},
+          {"splits_refused", s.splitsRefused},
           {"paths_by_bounce", s.pathsByBounce},
           {"shadow_rays_by_bounce", s.shadowRaysByBounce}};
 }
@@ -65,6 +66,7 @@ RenderStats renderStatsFromJson(const nlohmann::json& j) {
   j.at("traversals_cut").get_to(s.traversalsCut);
   j.at("deep_walks").get_to(s.deepWalks);
   j.at("deep_walks_traced").get_to(s.deepWalksTraced);
+  s.splitsRefused = j.value("splits_refused", uint64_t(0));  // absent in checkpoints before it was counted
   j.at("paths_by_bounce").get_to(s.pathsByBounce);
   j.at("shadow_rays_by_bounce").get_to(s.shadowRaysByBounce);
   return s;

@@ -226,6 +226,7 @@ void PathRenderer::collectCounters(RenderStats& stats) {
   stats.traversalsCut += control->walksCut;
   stats.deepWalks += control->deepWalksDeferred;
   stats.deepWalksTraced += control->deepWalksTraced;
+  stats.splitsRefused += control->splitsRefused;
 }
 
 // Submits a command buffer begun with timer_->reset and waits: its GPU time and (where timed) its stages' to stats.

@@ -56,6 +56,8 @@ struct RenderStats {
   uint64_t traversalsCut = 0;    // rays whose BVH walk the device's loop limit ended (their samples excluded)
   uint64_t deepWalks = 0;        // walks that outgrew the register stack, deferred to a trace stage's deep pass
   uint64_t deepWalksTraced = 0;  // of those, walks the deep passes traced (all of them, unless a pass was skipped)
+  uint64_t splitsRefused = 0;    // vertices that drew a split (BSDF splitting, EARS) when the path pool was full: kept
+                                 // whole (q = 1), unbiased, but with less splitting than asked for
   // Queue occupancy: paths queued for intersection and shadow rays queued, per bounce (the last entry sums
   // deeper bounces), over the whole render.
   std::vector<uint64_t> pathsByBounce, shadowRaysByBounce;

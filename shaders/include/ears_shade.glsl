@@ -179,6 +179,7 @@ void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMate
     if (spare > 0u) {
       uint base = atomicAdd(control.splitChildren, spare);
       if (pc.pathCount + base + spare > pc.queueCapacity) {
+        atomicAdd(control.splitsRefused, 1u);
         q = 1.0;
         spare = 0u;
       } else {

@@ -59,6 +59,7 @@ void main() {
   if (children > 1u) {
     uint base = atomicAdd(control.splitChildren, children - 1u);
     if (pc.pathCount + base + children - 1u > pc.queueCapacity) {
+      atomicAdd(control.splitsRefused, 1u);
       children = 1u;
       q = 1.0;
     } else {

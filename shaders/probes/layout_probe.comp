@@ -44,7 +44,7 @@ void echoStructs() {
   put(control.cameraRays); put(control.extensionRays); put(control.shadowRays); put(control.copyQueueCount);
   put(control.nonfiniteEmission); put(control.nonfiniteLightSamples); put(control.nonfiniteThroughput); put(control.walksCut);
   put4u(control.deepArgs);
-  put(control.deepWalksDeferred); put(control.deepWalksTraced); put(control.extraShadowRays); put(control.unusedDeep1);
+  put(control.deepWalksDeferred); put(control.deepWalksTraced); put(control.extraShadowRays); put(control.splitsRefused);
   put(control.walkIterations); put(control.walkNodeSteps); put(control.walkTriangleTests); put(control.walkSlowestLaneIterations);
   put4u(control.copyArgs);
   put(pc.pathCount); put(pc.firstPixel); put(pc.sampleIndex); put(pc.bounce);

@@ -259,7 +259,7 @@ struct Control {
   uint deepWalksDeferred;      // in all (one that finds the deep queue full is cut short: walksCut)
   uint deepWalksTraced;        // by the deep passes (equals deepWalksDeferred once every deep pass has run)
   uint extraShadowRays;        // EARS: shadow-queue slots reserved past light_samples a copy this bounce (ears_shade.glsl)
-  uint unusedDeep1;
+  uint splitsRefused;          // vertices whose split found the path pool full this pass (kept whole: q = 1, unbiased)
   // SPEC_WALK_STATS, summed over rays: loop iterations, node steps, triangle tests, and the iterations of each
   // subgroup's slowest lane (summed over subgroups, times the subgroup size).
   uint walkIterations, walkNodeSteps, walkTriangleTests, walkSlowestLaneIterations;

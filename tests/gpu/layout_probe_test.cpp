@@ -70,7 +70,7 @@ Words echoedByName(const gpu::PathState& p, const gpu::ShadowRay& r, const gpu::
   e.put(c.cameraRays), e.put(c.extensionRays), e.put(c.shadowRays), e.put(c.copyQueueCount);
   e.put(c.nonfiniteEmission), e.put(c.nonfiniteLightSamples), e.put(c.nonfiniteThroughput), e.put(c.walksCut);
   e.put4u(c.deepArgs);
-  e.put(c.deepWalksDeferred), e.put(c.deepWalksTraced), e.put(c.extraShadowRays), e.put(c.unusedDeep1);
+  e.put(c.deepWalksDeferred), e.put(c.deepWalksTraced), e.put(c.extraShadowRays), e.put(c.splitsRefused);
   e.put(c.walkIterations), e.put(c.walkNodeSteps), e.put(c.walkTriangleTests), e.put(c.walkSlowestLaneIterations);
   e.put4u(c.copyArgs);
   e.put(pc.pathCount), e.put(pc.firstPixel), e.put(pc.sampleIndex), e.put(pc.bounce);

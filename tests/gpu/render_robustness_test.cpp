@@ -328,3 +328,25 @@ INSTANTIATE_TEST_SUITE_P(RenderRobustness, DeepWalkPasses,
                          [](const auto& info) {
                            return info.param.name + (info.param.integrator == Integrator::Megakernel ? "_megakernel" : "");
                          });
+
+// Splitting draws its slots from the path pool, which fills within a pass (slots are handed out over all of its
+// bounces). A vertex that finds it full goes on unsplit (q = 1: unbiased, fewer splits than asked), and is counted:
+// none without splitting, none where the pool holds every split (two ways at the first vertex), many where it
+// cannot (16 ways at three vertices), and the image keeps its mean.
+TEST(RenderRobustness, SplitsAFullPathPoolRefusesAreCountedAndKeepTheMean) {
+  EstimatorConfig none, fits, overflows;
+  fits.bsdfSamples = 2.0f;
+  fits.splitDepth = 1;
+  overflows.bsdfSamples = 16.0f;
+  overflows.splitDepth = 3;
+  RenderOutcome plain = test::renderWith("cornell_box.gltf", none, 16, 16, 64, 7);
+  RenderOutcome fitted = test::renderWith("cornell_box.gltf", fits, 16, 16, 64, 8);
+  RenderOutcome refused = test::renderWith("cornell_box.gltf", overflows, 16, 16, 64, 9);
+  EXPECT_EQ(plain.stats.splitsRefused, 0u);
+  EXPECT_EQ(fitted.stats.splitsRefused, 0u);
+  EXPECT_GT(refused.stats.splitsRefused, 0u);
+  const test::RegionStats a = test::whole(plain.film), b = test::whole(refused.film);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_TRUE(withinSigmas(zTest2(a.mean[c], a.variance[c], b.mean[c], b.variance[c]), 4.5))
+        << "channel " << c << ": " << a.mean[c] << " against " << b.mean[c];
+}
