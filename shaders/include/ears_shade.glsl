@@ -176,15 +176,9 @@ void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMate
     // Slots for every copy but the first are taken before the copies are drawn, so whether the pool was full
     // (then q = 1: the vertex as it is) never depends on the draw: unbiased.
     uint spare = uint(ceil(q)) - 1u, firstChild = 0u;
-    if (spare > 0u) {
-      uint base = atomicAdd(control.splitChildren, spare);
-      if (pc.pathCount + base + spare > pc.queueCapacity) {
-        atomicAdd(control.splitsRefused, 1u);
-        q = 1.0;
-        spare = 0u;
-      } else {
-        firstChild = pc.pathCount + base;
-      }
+    if (spare > 0u && !reserveChildSlots(spare, firstChild)) {
+      q = 1.0;
+      spare = 0u;
     }
     uint copies = min(splitCount(q, sampleU(pathStream(path), bounceDim(depth, kDimSplit))), spare + 1u);
     countEarsDecision(kEarsFactorHistogram, depth, earsBin(trained, q));

@@ -44,6 +44,20 @@ void addToSample(uint id, uint root, vec3 value) {
   storeRadiance(id, vec4(radiance.rgb + value, radiance.w));
 }
 
+// Takes n path slots for split children from the pool (all of a pass's bounces share it): true and the first,
+// or false, counted, when the pool cannot hold them; the caller then goes on unsplit (q = 1: decided before the
+// draw, so unbiased).
+bool reserveChildSlots(uint n, out uint first) {
+  uint base = atomicAdd(control.splitChildren, n);
+  first = 0u;
+  if (pc.pathCount + base + n > pc.queueCapacity) {
+    atomicAdd(control.splitsRefused, 1u);
+    return false;
+  }
+  first = pc.pathCount + base;
+  return true;
+}
+
 // Queue appends take one atomic per subgroup: an active lane's slot is the subgroup's base plus its rank among
 // the active lanes. (llvmpipe runs a subgroup's atomics one lane after another, on counters its threads share.)
 // Call where the appending lanes are exactly the active ones.

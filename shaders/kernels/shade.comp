@@ -56,15 +56,9 @@ void main() {
   float q = splitFactorAt(depth, kSplitDepth, kBsdfSamples);
   uint children = continuationIsUseful(depth) ? (q > 1.0 ? splitCount(q, sampleU(pathStream(path), bounceDim(depth, kDimSplit))) : 1u) : 0u;
   uint firstChild = 0u;
-  if (children > 1u) {
-    uint base = atomicAdd(control.splitChildren, children - 1u);
-    if (pc.pathCount + base + children - 1u > pc.queueCapacity) {
-      atomicAdd(control.splitsRefused, 1u);
-      children = 1u;
-      q = 1.0;
-    } else {
-      firstChild = pc.pathCount + base;
-    }
+  if (children > 1u && !reserveChildSlots(children - 1u, firstChild)) {
+    children = 1u;
+    q = 1.0;
   }
   for (uint c = 0u; c < children; ++c) {
     PathState next;
