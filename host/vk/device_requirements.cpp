@@ -18,6 +18,9 @@ std::vector<std::string> missingRequirements(const DeviceCapabilities& caps) {
       VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT;
   if (!(caps.subgroupStages & VK_SHADER_STAGE_COMPUTE_BIT) || (caps.subgroupOperations & ops) != ops)
     missing.push_back("subgroup basic, arithmetic and ballot operations in compute shaders");
+  // The rare counters' and EARS histogram's flush (common.glsl flushRareCounts) gives each of its lanes one counter.
+  if (caps.subgroupSize < gpu::kRareCounters)
+    missing.push_back("subgroups of at least " + std::to_string(gpu::kRareCounters) + " invocations");
   for (const auto& [format, features] : caps.texelFormats)
     if (!(features & VK_FORMAT_FEATURE_STORAGE_TEXEL_BUFFER_BIT))
       missing.push_back("storage texel buffers of format " + std::to_string(int(format)));

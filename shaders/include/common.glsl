@@ -87,6 +87,20 @@ layout(binding = BINDING_FILM, std430) buffer FilmPairs { u64vec2 filmPairs[]; }
 u64vec2 wordPairs(uvec4 v) { return u64vec2(packUint2x32(v.xy), packUint2x32(v.zw)); }
 u64vec2 wordPairs(vec4 v) { return wordPairs(floatBitsToUint(v)); }
 layout(binding = BINDING_CONTROL, std430) buffer ControlBuffer { Control control; };
+// The same block as words, for the rare counters' one site (layout.h kControlWord*).
+layout(binding = BINDING_CONTROL, std430) buffer ControlWords { uint controlWords[]; };
+
+// Rare events counted per invocation (x: non-finite emission, y: light samples, z: throughput; w: refused splits)
+// and added once at the kernel's end by flushRareCounts, which every kernel that counts calls from main's top
+// level, where all of its subgroup's lanes are active (lane k adds counter k: layout.h kRareCounters).
+uvec4 rareCounts = uvec4(0u);
+void flushRareCounts() {
+  const uvec4 words = uvec4(kControlWordNonfiniteEmission, kControlWordNonfiniteLightSamples,
+                            kControlWordNonfiniteThroughput, kControlWordSplitsRefused);
+  uvec4 total = subgroupAdd(rareCounts);
+  uint lane = gl_SubgroupInvocationID;
+  if (lane < kRareCounters && total[lane] > 0u) atomicAdd(controlWords[words[lane]], total[lane]);
+}
 layout(binding = BINDING_FILM, std430) buffer Film { FilmPixel film[]; };
 // Read per vertex (EARS) or per light sample (shadow roulette): a texel load, not a storage-buffer lane loop.
 layout(binding = BINDING_PIXEL_ESTIMATE, TEXEL_FORMAT_PIXEL_ESTIMATE) uniform readonly imageBuffer pixelEstimates;

@@ -9,8 +9,16 @@
 layout(binding = BINDING_EARS_SAMPLING, TEXEL_FORMAT_EARS_SAMPLING) uniform readonly imageBuffer earsLearned;
 
 // The copy queue: the third region of BINDING_RAY_QUEUES. A queued slot holds the vertex's path (before its
-// factor) and hit; its radiance field, unused by a split child, carries (q, copy index bits, parent slot bits, qL).
+// factor); its radiance field, unused by a split child, carries (q, copy index bits, parent slot bits, qL). The
+// copy reads the vertex's hit from the parent's slot, which no stage rewrites before the next bounce's intersect.
 uint copyQueueBase() { return 2u * pc.queueCapacity; }
+
+// Takes n entries of the copy queue for a vertex's copies: one atomic per subgroup, outside the copy loop.
+uint copyQueueSlots(uint n) {
+  uint total = subgroupAdd(n), base = 0u;
+  if (subgroupElect()) base = atomicAdd(control.copyQueueCount, total);
+  return copyQueueBase() + subgroupBroadcastFirst(base) + subgroupExclusiveAdd(n);
+}
 
 // What a vertex's cell learned, its levels resolved by the fold (ears.h earsResolveLevel): for its copies
 // (moment, variance: per cost) and for their light samples (the light cell beside it).
@@ -82,8 +90,22 @@ uint appendTrainingChild() {
   return earsChildList() + appendSlot(base);
 }
 
-// A decision into its histogram (kEarsFactorHistogram, kEarsLightHistogram) by depth: one atomic per subgroup
-// and bin (a bounce's paths all have the same depth).
+// The vertex's factor into its histogram (kEarsFactorHistogram) by depth, added at the kernel's end by
+// flushEarsDecisions: a subgroup's four bins in one atomic site, lane b adding bin b (a bounce's paths all have the
+// same depth; the subgroup has at least kEarsBins = kRareCounters lanes). Called from main's top level.
+uint earsDecisionBin = kEarsBins, earsDecisionRow = 0u;  // kEarsBins: no decision
+void countEarsFactor(uint depth, uint bin) {
+  earsDecisionRow = (kEarsFactorHistogram * kEarsHistogramDepths + min(depth, kEarsHistogramDepths - 1u)) * kEarsBins;
+  earsDecisionBin = bin;
+}
+void flushEarsDecisions() {
+  uvec4 n = subgroupAdd(uvec4(equal(uvec4(earsDecisionBin), uvec4(0u, 1u, 2u, 3u))));
+  uint row = subgroupMax(earsDecisionBin < kEarsBins ? earsDecisionRow : 0u);
+  uint lane = gl_SubgroupInvocationID;
+  if (lane < kEarsBins && n[lane] > 0u) atomicAdd(earsHeader.histograms[row + lane], n[lane]);
+}
+
+// A copy's light factor into its histogram (kEarsLightHistogram) by depth: one atomic per subgroup and bin.
 void countEarsDecision(uint histogram, uint depth, uint bin) {
   uint row = (histogram * kEarsHistogramDepths + min(depth, kEarsHistogramDepths - 1u)) * kEarsBins;
   for (uint b = 0u; b < kEarsBins; ++b) {
@@ -158,9 +180,9 @@ float shadeEarsCopy(PathState path, uint target, uint parent, SurfacePoint s, Gl
   return float(rays);
 }
 
-// The vertex of `path` (slot id) at hit `hit`: its factor, its copies queued, copy 0 shaded here; its results and
+// The vertex of `path` (slot id) at surface point s: its factor, its copies queued, copy 0 shaded here; its results and
 // the hit's emission added to the sample once.
-void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMaterial gm, vec3 wo, vec3 woLocal,
+void shadeEarsVertex(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3 wo, vec3 woLocal,
                      vec3 emission) {
   uint depth = path.depth;
   vec3 poisoned = vec3(0.0);
@@ -181,15 +203,15 @@ void shadeEarsVertex(PathState path, uint id, vec4 hit, SurfacePoint s, GltfMate
       spare = 0u;
     }
     uint copies = min(splitCount(q, sampleU(pathStream(path), bounceDim(depth, kDimSplit))), spare + 1u);
-    countEarsDecision(kEarsFactorHistogram, depth, earsBin(trained, q));
+    countEarsFactor(depth, earsBin(trained, q));
     float qL = earsLightFactor(reading, t, q);
+    uint queued = copyQueueSlots(copies > 1u ? copies - 1u : 0u);
     for (uint c = 1u; c < copies; ++c) {
       uint target = firstChild + c - 1u;
       PathState child = path;
       child.radiance = vec4(q, uintBitsToFloat(c), uintBitsToFloat(id), qL);
       storePath(target, child);
-      storeHit(target, hit);
-      rayQueues[copyQueueBase() + atomicAdd(control.copyQueueCount, 1u)] = target;
+      rayQueues[queued + c - 1u] = target;
     }
     if (copies > 0u) rays = shadeEarsCopy(path, id, id, s, gm, wo, woLocal, q, qL, 0u, key, emission, poisoned);
   }

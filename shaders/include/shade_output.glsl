@@ -13,7 +13,7 @@ void atomicAddToRoot(uint root, vec3 value) {
 
 void addToEarsSample(uint id, uint root, vec3 value, vec3 trained, float rays) {
   bool finite = allFinite(value);
-  if (!finite) atomicAdd(control.nonfiniteEmission, 1u);
+  if (!finite) ++rareCounts.x;
   if (earsTrains()) earsSlots[id].gathered += vec4(allFinite(trained) ? trained : vec3(0.0), rays);
   if (finite && !(maxComponent(abs(value)) > 0.0)) return;
   atomicAddToRoot(root, value);
@@ -32,7 +32,7 @@ void addToSample(uint id, uint root, vec3 value) {
     return;
   }
 #endif
-  if (!allFinite(value)) atomicAdd(control.nonfiniteEmission, 1u);
+  if (!allFinite(value)) ++rareCounts.x;
   else if (!(maxComponent(abs(value)) > 0.0)) return;
 #ifdef VKMC_FLOAT_ATOMICS
   if (kBsdfSamples > 1.0) {
@@ -51,7 +51,7 @@ bool reserveChildSlots(uint n, out uint first) {
   uint base = atomicAdd(control.splitChildren, n);
   first = 0u;
   if (pc.pathCount + base + n > pc.queueCapacity) {
-    atomicAdd(control.splitsRefused, 1u);
+    ++rareCounts.w;
     return false;
   }
   first = pc.pathCount + base;

@@ -332,7 +332,7 @@ bool prepareLightSample(PathState path, uint slot, SurfacePoint s, GltfMaterial 
   // MIS over one BSDF sample and `samples` light samples: the light technique's pdf counts samples times.
   float weight = kMis == kMisNone || ls.delta ? 1.0 : misWeight(kMis, float(samples) * ls.pdf, techniquePdf(gm, woLocal, wiLocal));
   vec3 contribution = path.throughput.rgb * f * ls.arriving * (abs(wiLocal.z) * weight * share / ls.pdf);
-  if (!allFinite(contribution)) atomicAdd(control.nonfiniteLightSamples, 1u);  // still queued: it poisons the sample
+  if (!allFinite(contribution)) ++rareCounts.y;  // still queued: it poisons the sample
   else if (!(maxComponent(contribution) > 0.0)) return false;
   if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * loadPixelEstimate(path.pixel).w) {
     RouletteStep rr = fixedRoulette(kShadowRouletteQ, sampleU(stream, lightDim(depth, j, 3u)));
@@ -404,7 +404,7 @@ bool continuePath(PathState path, uint id, SurfacePoint s, GltfMaterial gm, vec3
   bool continues = onConsistentSide(s, gm, wi, bs.wi);
   vec3 beta = continues ? path.throughput.rgb * bs.weight / q : vec3(0.0);
   if (!allFinite(beta)) {
-    atomicAdd(control.nonfiniteThroughput, 1u);
+    ++rareCounts.z;
     gathered += beta;
     return false;
   }

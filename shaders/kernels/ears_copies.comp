@@ -8,12 +8,10 @@
 #include "shade_output.glsl"
 #include "ears_shade.glsl"
 
-void main() {
-  uint i = invocationIndex();
-  if (i >= control.copyQueueCount) return;
+void shadeCopy(uint i) {
   uint target = loadQueued(copyQueueBase() + i);
   PathState path = loadPath(target);
-  vec4 hit = loadHit(target);
+  vec4 hit = loadHit(floatBitsToUint(path.radiance.z));  // the parent's: no stage writes hits before the next intersect
   vec3 wo = -path.direction.xyz;
   SurfacePoint s = surfaceAt(floatBitsToUint(hit.w), hit.yz, wo);
   GltfMaterial gm = shadeSurface(loadMaterial(s.material), s, wo);
@@ -25,4 +23,10 @@ void main() {
                              qL, floatBitsToUint(path.radiance.y), earsCellKey(s.p, s.ng, earsHeader.grid),
                              vec3(0.0), poisoned);
   addToEarsSample(target, path.rootPath, poisoned, vec3(0.0), rays);
+}
+
+void main() {
+  uint i = invocationIndex();
+  if (i < control.copyQueueCount) shadeCopy(i);
+  flushRareCounts();
 }

@@ -16,9 +16,7 @@
 // One walk per loop iteration, the path's next ray or its vertex's next light sample, through one traceRay call
 // site: the kernel holds one copy of the walk (and of its inline deep walk) instead of two, which is what its
 // first-dispatch compile on llvmpipe costs. Rays, random numbers and sums are those of the two-loop form.
-void main() {
-  uint id = invocationIndex();
-  if (id >= pc.pathCount) return;
+void tracePath(uint id) {
   PathState path = cameraPath(id);
   vec3 radiance = vec3(0.0);
   uint camera = 0u, extension = 0u, shadow = 0u, cut = 0u;
@@ -81,7 +79,7 @@ void main() {
     if (!tracingLightSample) {
       PathState next;
       alive = continuationIsUseful(path.depth) && continuePath(path, id, s, gm, woLocal, 0u, 1.0, gathered, next);
-      if (!allFinite(gathered)) atomicAdd(control.nonfiniteEmission, 1u);
+      if (!allFinite(gathered)) ++rareCounts.x;
       radiance += gathered;
       if (alive) {
         path = next;
@@ -95,4 +93,10 @@ void main() {
   if (extension > 0u) atomicAdd(control.extensionRays, extension);
   if (shadow > 0u) atomicAdd(control.shadowRays, shadow);
   if (cut > 0u) atomicAdd(control.walksCut, cut);
+}
+
+void main() {
+  uint id = invocationIndex();
+  if (id < pc.pathCount) tracePath(id);
+  flushRareCounts();
 }

@@ -14,9 +14,7 @@
 #include "shade_output.glsl"
 #include "ears_shade.glsl"
 
-void main() {
-  uint slot = invocationIndex();
-  if (slot >= inQueueCount()) return;
+void shadeQueued(uint slot) {
   uint id = loadQueued(inQueueBase() + slot);
   PathState path = loadPath(id);
   vec4 hit = loadHit(id);
@@ -39,7 +37,7 @@ void main() {
   vec3 woLocal = wo * s.frame;
 #ifdef VKMC_FLOAT_ATOMICS  // EARS's copies add to shared roots: only the atomic variant runs it
   if (kRouletteMode == kRouletteEars) {
-    shadeEarsVertex(path, id, hit, s, gm, wo, woLocal, gathered);  // the hit's emission: the vertex before gathered it
+    shadeEarsVertex(path, id, s, gm, wo, woLocal, gathered);  // the hit's emission: the vertex before gathered it
     return;
   }
 #endif
@@ -66,4 +64,13 @@ void main() {
     queueContinuation(c == 0u ? id : firstChild + c - 1u, next, c > 0u);
   }
   addToSample(id, root, gathered);
+}
+
+void main() {
+  uint slot = invocationIndex();
+  if (slot < inQueueCount()) shadeQueued(slot);
+  flushRareCounts();
+#ifdef VKMC_FLOAT_ATOMICS
+  if (kRouletteMode == kRouletteEars) flushEarsDecisions();
+#endif
 }

@@ -266,6 +266,15 @@ struct Control {
   uvec4 copyArgs;  // dispatch of EARS's copy stage
 };
 
+// Control's counters of rare events (non-finite values, refused splits), as word indices: a kernel counts them per
+// invocation and adds its subgroup's sums in one atomic site at its end, one lane a counter (common.glsl
+// flushRareCounts), since llvmpipe runs every atomic site as a loop over its lanes, whether a lane takes it or not.
+VKMC_CONST uint kRareCounters = 4u;  // lanes the flush uses: the device's subgroup must have as many
+VKMC_CONST uint kControlWordNonfiniteEmission = 20u;
+VKMC_CONST uint kControlWordNonfiniteLightSamples = 21u;
+VKMC_CONST uint kControlWordNonfiniteThroughput = 22u;
+VKMC_CONST uint kControlWordSplitsRefused = 31u;
+
 struct TestRay {
   vec4 origin;     // xyz, w: tmax
   vec4 direction;  // xyz
@@ -344,6 +353,10 @@ static_assert(sizeof(Control) == 160 && offsetof(Control, copyArgs) == 144);
 static_assert(offsetof(Control, deepArgs) == 96);
 static_assert(offsetof(Control, rayArgs) == 16 && offsetof(Control, accumulateArgs) == 48);
 static_assert(offsetof(Control, cameraRays) == 64 && offsetof(Control, walksCut) == 92);
+static_assert(offsetof(Control, nonfiniteEmission) == 4 * kControlWordNonfiniteEmission &&
+              offsetof(Control, nonfiniteLightSamples) == 4 * kControlWordNonfiniteLightSamples &&
+              offsetof(Control, nonfiniteThroughput) == 4 * kControlWordNonfiniteThroughput &&
+              offsetof(Control, splitsRefused) == 4 * kControlWordSplitsRefused);
 static_assert(offsetof(Control, deepWalksDeferred) == 112 && offsetof(Control, walkIterations) == 128);
 static_assert(sizeof(TestRay) == 32);
 static_assert(sizeof(PushConstants) == 128);

@@ -14,6 +14,7 @@ namespace {
 vk::DeviceCapabilities capable() {
   vk::DeviceCapabilities c;
   c.subgroupStages = VK_SHADER_STAGE_COMPUTE_BIT;
+  c.subgroupSize = 32;
   c.subgroupOperations = VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT;
   for (VkFormat f : vk::requiredTexelFormats()) c.texelFormats.emplace_back(f, VK_FORMAT_FEATURE_STORAGE_TEXEL_BUFFER_BIT);
   c.maxWorkgroupSizeX = c.maxWorkgroupInvocations = 1024;
@@ -40,6 +41,9 @@ TEST(DeviceRequirements, EachShortfallIsNamed) {
   c = capable();
   c.subgroupStages = VK_SHADER_STAGE_FRAGMENT_BIT;
   EXPECT_TRUE(names(vk::missingRequirements(c), "in compute shaders"));
+  c = capable();
+  c.subgroupSize = 2;
+  EXPECT_TRUE(names(vk::missingRequirements(c), "subgroups of at least 4 invocations"));
   c = capable();
   c.texelFormats[1].second = 0;
   EXPECT_TRUE(names(vk::missingRequirements(c), "storage texel buffers of format " + std::to_string(int(c.texelFormats[1].first))));
