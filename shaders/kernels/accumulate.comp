@@ -22,8 +22,10 @@ void main() {
       f.sumSq.rgb += low * low;
       f.sumHigh += vec4(scaled, any(high) ? 1.0 : 0.0);  // w: samples kept in the high sums
       f.sumSqHigh.rgb += scaled * scaled;
+      // Constant indices: a dynamically indexed private array is scratch memory on llvmpipe.
       uint replicate = (pc.sampleIndex + s) % kSampleReplicates;
-      if (replicate + 1u < kSampleReplicates) f.replicate[replicate] += vec4(L, 1.0);
+      for (uint r = 0u; r + 1u < kMaxSampleReplicates; ++r)
+        if (replicate == r && r + 1u < kSampleReplicates) f.replicate[r] += vec4(L, 1.0);
     } else {
       f.sumSq.w += 1.0;
     }
