@@ -8,10 +8,12 @@
 #include <unistd.h>
 
 #include "app/commands.h"
+#include "app/malloc_tuning.h"
 #include "dist/rank_group.h"
 #include "error.h"
 
 int main(int argc, char** argv) {
+  vkmc::tuneMallocByReexecuting(argv);  // first: glibc reads its tunables only at start
   CLI::App app{"vkmc: a Vulkan compute Monte Carlo path tracer whose efficiency is measured"};
   app.require_subcommand(1);
   const std::vector<vkmc::Command> commands = {vkmc::addRenderCommand(app), vkmc::addInfoCommand(app), vkmc::addBenchCommand(app),

@@ -11,6 +11,7 @@
 #include "../shaders/shared/geometry.h"
 #include "../shaders/shared/sampling.h"
 #include "analysis/variance_reliability.h"
+#include "app/malloc_tuning.h"
 #include "app/render_options_json.h"
 #include "app/roulette_pilot.h"
 #include "bvh/bvh.h"
@@ -490,6 +491,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                         {"path_slots", t.pathSlots},
                         {"stage_times", t.stageTimes},
                         {"cpu_vector_bits", t.cpuVectorBits > 0 ? json(t.cpuVectorBits) : json(nullptr)},
+                        {"malloc_tunables", mallocTunablesAdded().empty() ? json(nullptr) : json(mallocTunablesAdded())},
                         {"chosen_by_device",
                          {{"integrator", t.integratorAuto}, {"workgroup", t.workgroupAuto}, {"wavefront", t.wavefrontAuto},
                           {"stage_times", t.stageTimesAuto}, {"cpu_vector", t.cpuVectorAuto}}}};

@@ -380,6 +380,36 @@ TEST(Cli, LavapipesVectorWidthIsChosenPerCpuAndCachedPerWidth) {
   EXPECT_EQ(slurp(workDir() / "width_given.exr"), slurp(workDir() / "width_auto.exr"));
 }
 
+// glibc's malloc tuning (app/malloc_tuning.h): vkmc starts itself once more with huge-page tunables added, never
+// overrides a key the user set, never starts a third time, stays off with VKMC_MALLOC_TUNING=off, and the image
+// does not depend on it.
+TEST(Cli, MallocIsTunedByOneRestartUnlessTheUserSaysOtherwise) {
+  const fs::path report = workDir() / "malloc.json";
+  const std::string common = " render " + cornell() + " --width 40 --height 30 --spp 4 -q --report " + report.string() + " -o ";
+  auto run = [&](const std::string& env, const std::string& name) {
+    RunResult r = vkmc::test::runShell("env -u GLIBC_TUNABLES -u VKMC_MALLOC_TUNING -u VKMC_MALLOC_TUNED " + env + " " +
+                                       VKMC_BINARY + common + (workDir() / name).string());
+    EXPECT_EQ(r.code, 0) << r.err;
+    const nlohmann::json tunables = nlohmann::json::parse(slurp(report))["device_tuning"]["malloc_tunables"];
+    return tunables.is_null() ? std::string() : tunables.get<std::string>();
+  };
+  const std::string tuned = run("", "malloc_tuned.exr");
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 35))
+  EXPECT_NE(tuned.find("glibc.malloc.hugetlb=1"), std::string::npos) << tuned;
+  EXPECT_NE(tuned.find("glibc.malloc.mmap_threshold="), std::string::npos) << tuned;
+  const std::string userKey = run("GLIBC_TUNABLES=glibc.malloc.hugetlb=0", "malloc_user.exr");
+  EXPECT_EQ(userKey.find("hugetlb"), std::string::npos) << "the user's key stands: " << userKey;
+  EXPECT_NE(userKey.find("glibc.malloc.top_pad="), std::string::npos) << userKey;
+  EXPECT_EQ(slurp(workDir() / "malloc_user.exr"), slurp(workDir() / "malloc_tuned.exr"));
+#else
+  EXPECT_EQ(tuned, "") << "no glibc.malloc.hugetlb before glibc 2.35: nothing to add";
+#endif
+  EXPECT_EQ(run("VKMC_MALLOC_TUNING=off", "malloc_off.exr"), "");
+  EXPECT_EQ(slurp(workDir() / "malloc_off.exr"), slurp(workDir() / "malloc_tuned.exr"));
+  // A marker the process did not set (its tunables are not in GLIBC_TUNABLES): no restart, nothing claimed.
+  EXPECT_EQ(run("VKMC_MALLOC_TUNED=glibc.malloc.hugetlb=1", "malloc_marker.exr"), "");
+}
+
 // --stage-times: every stage's GPU seconds in the report, or (off, lavapipe's default) only the command buffers'
 // GPU time. Timing is a measurement: the image is the same bit for bit either way.
 TEST(Cli, StageTimesAreTheDevicesChoiceAndLeaveTheImageAlone) {
