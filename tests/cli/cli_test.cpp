@@ -1,6 +1,7 @@
 // The vkmc binary end to end: a render with its report, and every bad input ending in one clear line on
 // stderr, a non-zero exit and no output file (a good existing output is never clobbered).
 #include <gtest/gtest.h>
+#include <gnu/libc-version.h>
 #include <sys/wait.h>
 
 #include <fstream>
@@ -381,33 +382,52 @@ TEST(Cli, LavapipesVectorWidthIsChosenPerCpuAndCachedPerWidth) {
 }
 
 // glibc's malloc tuning (app/malloc_tuning.h): vkmc starts itself once more with huge-page tunables added, never
-// overrides a key the user set, never starts a third time, stays off with VKMC_MALLOC_TUNING=off, and the image
-// does not depend on it.
+// overrides a key the user set (in GLIBC_TUNABLES or an older MALLOC_*_ variable), keeps its name, claims nothing
+// for a marker it did not set, stays off with VKMC_MALLOC_TUNING=off, and the image does not depend on it.
 TEST(Cli, MallocIsTunedByOneRestartUnlessTheUserSaysOtherwise) {
   const fs::path report = workDir() / "malloc.json";
   const std::string common = " render " + cornell() + " --width 40 --height 30 --spp 4 -q --report " + report.string() + " -o ";
   auto run = [&](const std::string& env, const std::string& name) {
-    RunResult r = vkmc::test::runShell("env -u GLIBC_TUNABLES -u VKMC_MALLOC_TUNING -u VKMC_MALLOC_TUNED " + env + " " +
-                                       VKMC_BINARY + common + (workDir() / name).string());
+    fs::remove(report);
+    RunResult r = vkmc::test::runShell("env -u GLIBC_TUNABLES -u VKMC_MALLOC_TUNING -u VKMC_MALLOC_TUNED -u MALLOC_TOP_PAD_ " +
+                                       env + " " + VKMC_BINARY + common + (workDir() / name).string());
     EXPECT_EQ(r.code, 0) << r.err;
+    if (!fs::exists(report)) return std::string("no report");
     const nlohmann::json tunables = nlohmann::json::parse(slurp(report))["device_tuning"]["malloc_tunables"];
     return tunables.is_null() ? std::string() : tunables.get<std::string>();
   };
   const std::string tuned = run("", "malloc_tuned.exr");
-#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 35))
+  EXPECT_EQ(run("VKMC_MALLOC_TUNING=off", "malloc_off.exr"), "");
+  EXPECT_EQ(slurp(workDir() / "malloc_off.exr"), slurp(workDir() / "malloc_tuned.exr"));
+  // A marker the process did not set (its tunables not in GLIBC_TUNABLES): no restart, nothing claimed.
+  EXPECT_EQ(run("VKMC_MALLOC_TUNED=glibc.malloc.hugetlb=1", "malloc_marker.exr"), "");
+  int major = 0, minor = 0;
+  std::sscanf(gnu_get_libc_version(), "%d.%d", &major, &minor);
+  if (major < 2 || (major == 2 && minor < 35)) {
+    EXPECT_EQ(tuned, "") << "no glibc.malloc.hugetlb before glibc 2.35: nothing to add";
+    return;
+  }
   EXPECT_NE(tuned.find("glibc.malloc.hugetlb=1"), std::string::npos) << tuned;
-  EXPECT_NE(tuned.find("glibc.malloc.mmap_threshold="), std::string::npos) << tuned;
-  const std::string userKey = run("GLIBC_TUNABLES=glibc.malloc.hugetlb=0", "malloc_user.exr");
+  EXPECT_NE(tuned.find("glibc.malloc.top_pad="), std::string::npos) << tuned;
+  const std::string userKey = run("GLIBC_TUNABLES=glibc.malloc.arena_max=4:glibc.malloc.hugetlb=0", "malloc_user.exr");
   EXPECT_EQ(userKey.find("hugetlb"), std::string::npos) << "the user's key stands: " << userKey;
   EXPECT_NE(userKey.find("glibc.malloc.top_pad="), std::string::npos) << userKey;
   EXPECT_EQ(slurp(workDir() / "malloc_user.exr"), slurp(workDir() / "malloc_tuned.exr"));
-#else
-  EXPECT_EQ(tuned, "") << "no glibc.malloc.hugetlb before glibc 2.35: nothing to add";
-#endif
-  EXPECT_EQ(run("VKMC_MALLOC_TUNING=off", "malloc_off.exr"), "");
-  EXPECT_EQ(slurp(workDir() / "malloc_off.exr"), slurp(workDir() / "malloc_tuned.exr"));
-  // A marker the process did not set (its tunables are not in GLIBC_TUNABLES): no restart, nothing claimed.
-  EXPECT_EQ(run("VKMC_MALLOC_TUNED=glibc.malloc.hugetlb=1", "malloc_marker.exr"), "");
+  const std::string oldVariable = run("MALLOC_TOP_PAD_=131072", "malloc_old_variable.exr");
+  EXPECT_EQ(oldVariable.find("top_pad"), std::string::npos) << "MALLOC_TOP_PAD_ is the user's key: " << oldVariable;
+  EXPECT_NE(oldVariable.find("glibc.malloc.hugetlb=1"), std::string::npos) << oldVariable;
+  // Every key the user's: nothing to add, no restart.
+  EXPECT_EQ(run("GLIBC_TUNABLES=glibc.malloc.hugetlb=0:glibc.malloc.top_pad=0:glibc.malloc.mmap_threshold=131072",
+                "malloc_all_users.exr"), "");
+  // Restarted by its own path, the process keeps its name (exec names it after the path it was given): read once
+  // its environment holds the added tunables (the restarted image's), then the render is killed.
+  const std::string script =
+      "env -u GLIBC_TUNABLES -u VKMC_MALLOC_TUNING " + std::string(VKMC_BINARY) + " render " + cornell() +
+      " --width 8 --height 8 --spp 100000000 -q -o " + (workDir() / "malloc_name.exr").string() +
+      " & pid=$!; for i in $(seq 1 3000); do tr '\\0' '\\n' < /proc/$pid/environ 2>/dev/null | grep -q "
+      "'^GLIBC_TUNABLES=.*hugetlb=1' && break; sleep 0.01; done; cat /proc/$pid/comm; kill -9 $pid; wait $pid";
+  RunResult name = vkmc::test::runShell(script);
+  EXPECT_EQ(name.out, "vkmc\n") << name.err;
 }
 
 // --stage-times: every stage's GPU seconds in the report, or (off, lavapipe's default) only the command buffers'
