@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "app/malloc_tuning.h"
 #include "error.h"
 #include "io/exr.h"
 #include "io/output_files.h"
@@ -106,6 +107,7 @@ double traceEmbree(const EmbreeScene& es, const std::vector<gpu::TestRay>& rays,
 }  // namespace
 
 int main(int argc, char** argv) {
+  vkmc::tuneMallocByReexecuting(argv);  // as vkmc itself runs (app/malloc_tuning.h): both walks under it
   CLI::App app{"vkmc traversal against Embree 3 rtcIntersect1 on the same rays"};
   std::vector<std::string> scenes;
   std::string raysPath, dumpDir, jsonPath;

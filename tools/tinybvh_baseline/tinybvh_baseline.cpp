@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "app/malloc_tuning.h"
 #include "analysis/summary_statistics.h"
 #include "bench/benchmark_rays.h"
 #include "bench/ray_tracer.h"
@@ -204,6 +205,7 @@ nlohmann::json runScene(vk::Context& ctx, const std::string& path, const Options
 }  // namespace
 
 int main(int argc, char** argv) {
+  vkmc::tuneMallocByReexecuting(argv);  // as vkmc itself runs (app/malloc_tuning.h): both walks under it
   CLI::App app{"vkmc traversal against tinybvh's GPU traversal kernels, on the same device and rays"};
   Options o;
   app.add_option("scenes", o.scenes, "glTF scenes (default: Cornell box, DamagedHelmet, MetalRoughSpheresNoTextures)");
