@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "../shaders/shared/layout.h"
+#include "app/malloc_tuning.h"
 #include "bvh/bvh.h"
 #include "estimators/estimator_params.h"
 #include "render/gpu_scene.h"
@@ -120,6 +121,9 @@ int runInfo(const RenderOptions& options) {
   }
   std::printf("\n              render buffers (%ux%u): %.2f MiB; total %.2f MiB\n", settings.width, settings.height,
               renderer.deviceBytes() / 1048576.0, (total + renderer.deviceBytes()) / 1048576.0);
+  const std::string& tunables = mallocTunablesAdded();
+  std::printf("malloc       %s\n", tunables.empty() ? "glibc's defaults (no tunables added: app/malloc_tuning.h says when)"
+                                                   : ("GLIBC_TUNABLES added " + tunables + " (VKMC_MALLOC_TUNING=off: none)").c_str());
   for (const std::string& w : scene.warnings) std::printf("warning      %s\n", w.c_str());
   for (const std::string& u : f.unsupported()) std::printf("unsupported  %s\n", u.c_str());
   return 0;

@@ -419,6 +419,11 @@ TEST(Cli, MallocIsTunedByOneRestartUnlessTheUserSaysOtherwise) {
   // Every key the user's: nothing to add, no restart.
   EXPECT_EQ(run("GLIBC_TUNABLES=glibc.malloc.hugetlb=0:glibc.malloc.top_pad=0:glibc.malloc.mmap_threshold=131072",
                 "malloc_all_users.exr"), "");
+  // `vkmc info` says the same.
+  RunResult info = vkmc::test::runShell("env -u GLIBC_TUNABLES -u VKMC_MALLOC_TUNING " + std::string(VKMC_BINARY) + " info " + cornell());
+  EXPECT_NE(info.out.find("malloc       GLIBC_TUNABLES added glibc.malloc.hugetlb=1"), std::string::npos) << info.out;
+  RunResult infoOff = vkmc::test::runShell("VKMC_MALLOC_TUNING=off " + std::string(VKMC_BINARY) + " info " + cornell());
+  EXPECT_NE(infoOff.out.find("malloc       glibc's defaults"), std::string::npos) << infoOff.out;
   // Restarted by its own path, the process keeps its name (exec names it after the path it was given): read once
   // its environment holds the added tunables (the restarted image's), then the render is killed.
   const std::string script =
