@@ -12,8 +12,8 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "app/malloc_tuning.h"
 #include "analysis/summary_statistics.h"
+#include "app/malloc_tuning.h"
 #include "bench/benchmark_rays.h"
 #include "bench/ray_tracer.h"
 #include "error.h"
