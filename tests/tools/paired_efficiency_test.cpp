@@ -1,0 +1,61 @@
+// tools/paired_efficiency.py end to end on the furnace, whose analytic reference the tool writes itself: both
+// renders of a pair ran and were compared with that reference, a control pair (A against A, one seed) reads 1
+// within what its two renders' sample counts explain, and a --json path that is not a regular file is refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_run.h"
+
+namespace fs = std::filesystem;
+using namespace vkmc::test;
+
+namespace {
+
+std::string tool(const std::string& args) {
+  return "VKMC=" + std::string(VKMC_BINARY) + " python3 " + std::string(VKMC_SOURCE_DIR) + "/tools/paired_efficiency.py " +
+         std::string(VKMC_SOURCE_DIR) + "/scenes/furnace.gltf --reference-constant 2 --width 16 --height 16 " + args;
+}
+
+bool toolRuns() { return runShell("command -v python3 && nproc | grep -qv '^1$'").code == 0; }
+
+}  // namespace
+
+TEST(PairedEfficiency, AControlPairOfTheFurnaceReadsItsSampleCountsRatio) {
+  if (!toolRuns()) GTEST_SKIP() << "needs python3 and two cores";
+  fs::path out = workDir() / "paired_control.json";
+  std::string est = std::string(VKMC_SOURCE_DIR) + "/scenes/estimators/baseline.json";
+  RunResult r = runShell(tool("--seconds 0.3 --pairs 2 --a " + est + " --b " + est + " --json " + out.string()));
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json j = nlohmann::json::parse(slurp(out));
+  ASSERT_EQ(j.at("pairs").size(), 2u);
+  for (const auto& p : j.at("pairs")) {
+    const auto &a = p.at("a"), &b = p.at("b");
+    EXPECT_EQ(a.at("seed"), b.at("seed"));  // common random numbers
+    EXPECT_GE(a.at("spp").get<int>(), 1);
+    // Against the analytic 2: the furnace's error is its noise alone, so relMSE ~ variance / spp.
+    EXPECT_GT(a.at("relmse").get<double>(), 0.0);
+    EXPECT_LT(a.at("relmse").get<double>(), 1.0);
+    // One seed, one estimator: the same samples, so the images differ only by the samples the two reached; B's
+    // efficiency against A's is then A's relMSE x time over B's, within a factor the spp counts bound.
+    double ratio = p.at("ratio").get<double>();
+    double sppRatio = double(b.at("spp").get<int>()) / double(a.at("spp").get<int>());
+    EXPECT_TRUE(std::isfinite(ratio));
+    EXPECT_GT(ratio, 0.5 * std::min(1.0, sppRatio));
+    EXPECT_LT(ratio, 2.0 * std::max(1.0, sppRatio));
+    if (a.at("spp") == b.at("spp")) EXPECT_NEAR(ratio / (a.at("seconds").get<double>() / b.at("seconds").get<double>()), 1.0, 1e-4);
+  }
+  EXPECT_LE(j.at("interval95")[0].get<double>(), j.at("geometric_mean").get<double>());
+  EXPECT_GE(j.at("interval95")[1].get<double>(), j.at("geometric_mean").get<double>());
+}
+
+TEST(PairedEfficiency, RefusesToReplaceAJsonPathThatIsNotARegularFile) {
+  if (!toolRuns()) GTEST_SKIP() << "needs python3 and two cores";
+  fs::path folder = workDir() / "paired_json_folder";
+  fs::create_directories(folder);
+  RunResult r = runShell(tool("--seconds 0.2 --pairs 1 --json " + folder.string()));
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_directory(folder));
+}
