@@ -19,7 +19,9 @@ A and B default to scenes/estimators/baseline.json (throughput roulette) and rr_
 it runs by default); --b the same file as --a is the method's control. Without --reference, a reference is
 rendered with A (--reference-spp samples, both threads) and cached by what determines it in
 $VKMC_CACHE_DIR/paired (else ~/.cache/vkmc/paired). Prints each pair and the geometric mean of the ratios with a
-95% interval from their measured spread (Student t on the log-ratios), and the median.
+95% interval from their measured spread (Student t on the log-ratios), and the median. Each relMSE has the
+reference's own relative variance (its render's mean_relvariance; 0 for an analytic one) taken out: left in, it
+would pull every ratio toward 1.
 """
 import argparse
 import hashlib
@@ -35,12 +37,12 @@ import tempfile
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # Two-sided 95% Student t quantiles by degrees of freedom (beyond the table: the normal's 1.96 is close enough).
 T95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306, 9: 2.262, 10: 2.228,
-       12: 2.179, 15: 2.131, 20: 2.086, 30: 2.042}
+       12: 2.179, 15: 2.131, 20: 2.086, 30: 2.042, 40: 2.021, 60: 2.000, 120: 1.980}
 
 
 def t95(dof):
     keys = sorted(k for k in T95 if k <= dof)
-    return T95[keys[-1]] if dof <= 30 else 1.96
+    return T95[keys[-1]]  # the next smaller tabled dof: a slightly wider interval, never a narrower one
 
 
 def fail(message):
@@ -77,10 +79,25 @@ def render(args, estimator, out_exr, report, extra, threads=None):
     return subprocess.Popen(cmd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
 
 
-def finish(proc, what):
+def finish(proc, what, others=()):
     _, err = proc.communicate()
     if proc.returncode != 0:
+        for other in others:  # the pair's other render: not left running into a removed folder
+            other.kill()
+            other.wait()
         fail(f"{what} failed (exit {proc.returncode}): {err.strip().splitlines()[-1] if err.strip() else 'no message'}")
+
+
+def number(value):
+    return value if isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value) else None
+
+
+def read_report(path, what):
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        fail(f"{what}: no readable report ({e})")
 
 
 def write_constant_exr(path, width, height, rgb):
@@ -105,26 +122,26 @@ def write_constant_exr(path, width, height, rgb):
 
 
 def reference_for(args, tmp):
+    """The reference EXR and its own relative variance (what it adds to every relMSE: None where unknown)."""
     if args.reference_constant is not None:
         path = os.path.join(tmp, "constant_reference.exr")
         write_constant_exr(path, args.width, args.height, [args.reference_constant] * 3)
-        return path
+        return path, 0.0
     if args.reference:
         if not os.path.isfile(args.reference):
             fail(f"no reference {args.reference}")
-        return args.reference
+        return args.reference, None
     key = digest(file_bytes(args.scene), file_bytes(args.a), args.width, args.height, args.reference_spp,
                  file_bytes(args.vkmc))
     path = os.path.join(cache_dir(), key + ".exr")
-    if os.path.isfile(path):
-        return path
-    os.makedirs(cache_dir(), exist_ok=True)
-    print(f"rendering the reference ({args.reference_spp} spp with {os.path.basename(args.a)}) to {path}",
-          file=sys.stderr)
-    proc = render(args, args.a, path, os.path.join(tmp, "reference.json"),
-                  ["--spp", str(args.reference_spp), "--seed", str(0x5eed)])
-    finish(proc, "the reference render")
-    return path
+    report = os.path.join(cache_dir(), key + ".json")  # its report: mean_relvariance is the reference's own noise
+    if not (os.path.isfile(path) and os.path.isfile(report)):
+        os.makedirs(cache_dir(), exist_ok=True)
+        print(f"rendering the reference ({args.reference_spp} spp with {os.path.basename(args.a)}) to {path}",
+              file=sys.stderr)
+        proc = render(args, args.a, path, report, ["--spp", str(args.reference_spp), "--seed", str(0x5eed)])
+        finish(proc, "the reference render")
+    return path, number(read_report(report, "the reference render").get("mean_relvariance"))
 
 
 def main():
@@ -146,17 +163,25 @@ def main():
     args = p.parse_args()
     if not (0 < args.seconds <= 86400) or not (1 <= args.pairs <= 1000):
         fail("--seconds must be in (0, 86400] and --pairs in [1, 1000]")
+    if not (1 <= args.width <= 8192 and 1 <= args.height <= 8192 and 1 <= args.reference_spp <= 1 << 24):
+        fail("--width and --height must be in [1, 8192], --reference-spp in [1, 16777216]")
+    if args.reference_constant is not None and not (math.isfinite(args.reference_constant) and args.reference_constant > 0):
+        fail("--reference-constant must be a finite radiance above 0")
     for path in (args.scene, args.a, args.b, args.vkmc):
         if not os.path.isfile(path):
             fail(f"no such file: {path}")
-    if args.json and os.path.lexists(args.json) and not os.path.isfile(args.json):
+    json_path = os.path.realpath(args.json) if args.json else None  # a symlink keeps pointing at its replaced target
+    if json_path and os.path.lexists(json_path) and not os.path.isfile(json_path):
         fail(f"{args.json} is not a regular file; not replaced")
     if len(os.sched_getaffinity(0)) < 2:
         fail("needs two cores (one render on each)")
 
     pairs = []
     with tempfile.TemporaryDirectory(prefix="vkmc-paired-") as tmp:
-        reference = reference_for(args, tmp)
+        reference, reference_noise = reference_for(args, tmp)
+        if reference_noise is None:
+            print("paired_efficiency: the reference's own variance is unknown: every relMSE includes it, which pulls "
+                  "the ratios toward 1", file=sys.stderr)
         for k in range(args.pairs):
             runs = {}
             procs = []
@@ -169,15 +194,24 @@ def main():
                 extra = ["--time-budget", str(args.seconds), "--seed", str(seed), "--reference", reference]
                 procs.append((name, rep, render(args, est, exr, rep, extra, threads=1)))
             for name, rep, proc in procs:
-                finish(proc, f"pair {k}'s render {name.upper()}")
-                with open(rep) as f:
-                    r = json.load(f)
-                relmse, seconds = r.get("relmse"), r.get("seconds")
+                what = f"pair {k}'s render {name.upper()}"
+                finish(proc, what, [p for _, _, p in procs if p is not proc])
+                r = read_report(rep, what)
+                relmse, seconds = number(r.get("relmse")), number(r.get("seconds"))
                 if not relmse or not seconds or relmse <= 0 or seconds <= 0:
-                    fail(f"pair {k}'s render {name.upper()} reports no relMSE or time")
+                    fail(f"{what} reports no relMSE or time")
+                # The reference's own noise is in every relMSE (independent of the render's); taken out, what is
+                # left is the render's own error.
+                own = relmse - (reference_noise or 0.0)
+                if own <= 0:
+                    fail(f"{what}: relMSE {relmse:.4g} is within the reference's own noise {reference_noise:.4g} "
+                         "(a longer reference, or a shorter render)")
+                nonfinite = number(r.get("nonfinite_samples")) or 0
+                if nonfinite:
+                    print(f"paired_efficiency: {what} excluded {nonfinite:g} non-finite samples", file=sys.stderr)
                 runs[name] = {"seed": r.get("seed"), "spp": r.get("spp_reached"), "seconds": seconds,
-                              "relmse": relmse, "efficiency": 1.0 / (relmse * seconds),
-                              "nonfinite_samples": r.get("nonfinite_samples", 0)}
+                              "relmse": relmse, "relmse_own": own, "efficiency": 1.0 / (own * seconds),
+                              "nonfinite_samples": nonfinite}
             ratio = runs["b"]["efficiency"] / runs["a"]["efficiency"]
             pairs.append({"a": runs["a"], "b": runs["b"], "ratio": ratio})
             print(f"pair {k}: A {runs['a']['spp']} spp relMSE {runs['a']['relmse']:.4g}, "
@@ -185,19 +219,27 @@ def main():
 
     logs = [math.log(pr["ratio"]) for pr in pairs]
     mean = statistics.fmean(logs)
-    half = t95(len(logs) - 1) * statistics.stdev(logs) / math.sqrt(len(logs)) if len(logs) > 1 else float("inf")
     median = statistics.median(pr["ratio"] for pr in pairs)
-    low, high = math.exp(mean - half), math.exp(mean + half)
+    interval = None  # one pair: no spread to measure
+    if len(logs) > 1:
+        half = t95(len(logs) - 1) * statistics.stdev(logs) / math.sqrt(len(logs))
+        interval = [math.exp(mean - half), math.exp(mean + half)]
+    shown = f"95% {interval[0]:.3f}-{interval[1]:.3f}" if interval else "one pair: no interval"
     print(f"{os.path.basename(args.scene)}: B/A efficiency, {len(pairs)} concurrent pairs at {args.seconds:g} s: "
-          f"geometric mean {math.exp(mean):.3f} (95% {low:.3f}-{high:.3f}), median {median:.3f}")
-    if args.json:
+          f"geometric mean {math.exp(mean):.3f} ({shown}), median {median:.3f}")
+    if json_path:
         out = {"scene": args.scene, "a": args.a, "b": args.b, "seconds": args.seconds, "width": args.width,
-               "height": args.height, "reference": reference, "pairs": pairs, "geometric_mean": math.exp(mean),
-               "interval95": [low, high], "median": median}
-        tmp_json = args.json + ".tmp"
-        with open(tmp_json, "w") as f:
-            json.dump(out, f, indent=2)
-        os.replace(tmp_json, args.json)
+               "height": args.height, "reference": reference, "reference_relvariance": reference_noise,
+               "independent_seeds": args.independent_seeds, "pairs": pairs, "geometric_mean": math.exp(mean),
+               "interval95": interval, "median": median}
+        fd, tmp_json = tempfile.mkstemp(prefix=".paired-", dir=os.path.dirname(json_path) or ".")
+        try:
+            with os.fdopen(fd, "w") as f:
+                json.dump(out, f, indent=2)
+            os.replace(tmp_json, json_path)
+        except BaseException:
+            os.unlink(tmp_json)
+            raise
 
 
 if __name__ == "__main__":
