@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Issue 17's floor, scene by scene: `--rr ears` (its guard, the default) against throughput roulette by concurrent
 # pairs (tools/paired_efficiency.py) on every scene of scenes/ whose image has variance to compare, and the method's
-# control (throughput roulette against itself) beside it. Prints one row a scene; docs/ears.md, "Concurrent pairs".
+# control (throughput roulette against itself, one seed a pair as in the comparison) beside it. Prints one row a scene; docs/ears.md, "Concurrent pairs".
 #   bash tools/ears_floor.sh [--seconds S] [--pairs N] [--out DIR] [--control off] [scene ...]
 # Default: 16 s, 4 pairs, every scene below; references are rendered once (8192 spp, cached) or analytic.
 set -euo pipefail
@@ -25,6 +25,11 @@ scenes=("$@")
   textures/leaves)
 # The furnaces' analytic radiance, Le / (1 - albedo).
 declare -A constant=([furnace]=2 [furnace_stiff]=100 [stiff/furnace_albedo_0999]=1000)
+# A result file's row: geometric mean (95% interval), median.
+summary() {
+  python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); i=j["interval95"] or [float("nan")] * 2
+print("%.3f (%.3f-%.3f), %.3f" % (j["geometric_mean"], *i, j["median"]))' "$1"
+}
 mkdir -p "$out"
 printf '%-28s %-34s %-34s\n' scene "ears / throughput (95%, median)" "control (95%, median)"
 for s in "${scenes[@]}"; do
@@ -33,12 +38,12 @@ for s in "${scenes[@]}"; do
   name=${s//\//_}
   python3 tools/paired_efficiency.py "scenes/$s.gltf" --seconds "$seconds" --pairs "$pairs" "${ref[@]}" \
     --json "$out/$name.ears.json" >"$out/$name.ears.log"
-  row=$(python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); print("%.3f (%.3f-%.3f), %.3f" % (j["geometric_mean"], *j["interval95"], j["median"]))' "$out/$name.ears.json")
+  row=$(summary "$out/$name.ears.json")
   crow=-
   if [[ $control == on ]]; then
     python3 tools/paired_efficiency.py "scenes/$s.gltf" --seconds "$seconds" --pairs "$pairs" "${ref[@]}" \
       --b scenes/estimators/baseline.json --json "$out/$name.control.json" >"$out/$name.control.log"
-    crow=$(python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); print("%.3f (%.3f-%.3f), %.3f" % (j["geometric_mean"], *j["interval95"], j["median"]))' "$out/$name.control.json")
+    crow=$(summary "$out/$name.control.json")
   fi
   printf '%-28s %-34s %-34s\n' "$s" "$row" "$crow"
 done
