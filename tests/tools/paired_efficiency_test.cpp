@@ -49,7 +49,9 @@ TEST(PairedEfficiency, AControlPairOfTheFurnaceReadsItsSampleCountsRatio) {
     const double sppRatio = double(b.at("spp").get<int>()) / double(a.at("spp").get<int>());
     EXPECT_GT(relA / relB, sppRatio / 3.0);
     EXPECT_LT(relA / relB, sppRatio * 3.0);
-    if (a.at("spp") == b.at("spp")) EXPECT_NEAR(relA / relB, 1.0, 1e-4);
+    if (a.at("spp") == b.at("spp")) {
+      EXPECT_NEAR(relA / relB, 1.0, 1e-4);
+    }
   }
   ASSERT_TRUE(j.at("interval95").is_array());
   const double low = j.at("interval95")[0].get<double>(), high = j.at("interval95")[1].get<double>();
