@@ -57,7 +57,7 @@ double earsSecondsPerSample(const PolicyTally& t, double pixels, double passSamp
 bool earsFallsBack(EarsFallback mode, const PolicyPass& ears, const PolicyPass& throughput) {
   if (mode == EarsFallback::Never) return false;
   if (mode == EarsFallback::Always) return true;
-  return !(ears.efficiency() > throughput.efficiency());
+  return !(ears.efficiency() > kEarsGuardMargin * throughput.efficiency());
 }
 
 bool earsGuardWatches(EarsFallback mode) { return mode == EarsFallback::Auto; }
@@ -66,7 +66,7 @@ bool earsGuardLooksAgain(EarsFallback mode, const PolicyPass& ears, const Policy
   if (mode == EarsFallback::Never) return false;
   if (mode == EarsFallback::Always) return true;
   const double e = ears.efficiency(), t = throughput.efficiency();
-  return e < t && e >= kEarsSecondLookRatio * t;
+  return e <= kEarsGuardMargin * t && e >= kEarsSecondLookRatio * t;
 }
 
 double earsLearningSecondsLeft(uint32_t trainingSamples, uint32_t earsSamples, double earsSecondsPerSample,

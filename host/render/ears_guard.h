@@ -113,16 +113,26 @@ double earsLearningCostSeconds(double decidedAt, uint32_t samplesBefore, double 
 
 // EARS's cache keeps learning after its first measured samples: on two_rooms a pass's efficiency rose from about
 // 0.6x throughput roulette's at the first measure to 1.1-1.2x in later passes (docs/ears.md, "The guard").
-// So a first measure of EARS at kEarsSecondLookRatio or more of throughput roulette's efficiency, but below it,
-// is taken again on a later EARS pass (throughput roulette's measure is kept) before the choice.
+// So a first measure of EARS at kEarsSecondLookRatio or more of throughput roulette's efficiency, but below the
+// margin (kEarsGuardMargin) times it, is taken again on a later EARS pass (throughput roulette's measure is kept)
+// before the choice.
 constexpr double kEarsSecondLookRatio = 0.6;
+
+// Auto keeps EARS only where it reads at least this many times throughput roulette's efficiency. The reading is
+// biased toward EARS: a sample's variance leaves out what Sobol stratification takes off the image's error, and
+// that is more for throughput roulette, whose cheaper samples reach a larger count (16-s renders at 96x96, both
+// policies run to the end, docs/ears.md "What the guard reads": a sample's variance over the image's was 1.1-7.2x
+// for throughput roulette against 1.4-4.7x for EARS; the watched reading over the equal-time ratio 1.22 on leaves,
+// 1.41-1.62 on the Cornell box, soft_shadows and many_lights, 0.76-1.01 where EARS pays most). Below the margin the
+// choice goes to throughput roulette, whose loss where EARS truly won is at most that win.
+constexpr double kEarsGuardMargin = 1.25;
 
 // Whether EARS is measured again before the choice: under auto where the first measure was close (above), and
 // always under always, which then still switches (so its tests take the same path); never under never.
 bool earsGuardLooksAgain(EarsFallback mode, const PolicyPass& ears, const PolicyPass& throughput);
 
-// Whether throughput roulette renders the rest: Always, or under Auto when its efficiency is at least EARS's (a tie
-// goes to the cheaper kernels). Never: false.
+// Whether throughput roulette renders the rest: Always, or under Auto unless EARS's efficiency is above
+// kEarsGuardMargin times its own (at the margin the choice goes to the cheaper kernels). Never: false.
 bool earsFallsBack(EarsFallback mode, const PolicyPass& ears, const PolicyPass& throughput);
 
 // Whether EARS, once chosen, is watched (EarsGuardOutcome::watched): under auto only (always has switched; never

@@ -99,6 +99,10 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
   // Room for every item of the larger trace stage, so a deferred walk is never turned away in practice.
   const bool deep = !megakernel && settings_.features.deepWalks;
   deepWalks_ = storage(deep ? std::max<uint64_t>(pool_, size.shadowSlots) * sizeof(uint32_t) : 16);
+  // Touched now, not in the first full pass: on lavapipe a buffer's pages are first written by a kernel, and the
+  // first pass to fill the pool paid for it (the guard's throughput pass, the first of 28 samples, read 17% slower
+  // than the same process's later ones on the Cornell box, which made EARS look better; docs/ears.md).
+  for (vk::Buffer* b : {&paths_, &hits_, &queues_, &shadowQueue_, &deepWalks_}) b->zero();
   // What the host reads or writes every pass: mapped in place on unified memory; on a discrete GPU device-local
   // (the kernels' atomics and the film's read-modify-write stay off the bus), copied at chunk ends and folds.
   const vk::MemoryKind exchange = ctx_.unifiedMemory() ? vk::MemoryKind::HostVisible : vk::MemoryKind::DeviceLocal;

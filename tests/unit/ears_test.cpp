@@ -278,6 +278,9 @@ TEST(EarsGuard, TheMoreEfficientPolicyRendersTheRest) {
   EXPECT_FALSE(earsFallsBack(EarsFallback::Auto, PolicyPass{1.0, 0.5}, throughput));  // 2 against 1.25
   // A tie goes to the cheaper kernels; never and always decide alone.
   EXPECT_TRUE(earsFallsBack(EarsFallback::Auto, PolicyPass{4.0, 0.2}, throughput));
+  // Within the margin EARS's reading is not trusted (kEarsGuardMargin): 1.2x is not enough, 1.3x is.
+  EXPECT_TRUE(earsFallsBack(EarsFallback::Auto, PolicyPass{1.0, 1.0 / (1.2 * 1.25)}, throughput));
+  EXPECT_FALSE(earsFallsBack(EarsFallback::Auto, PolicyPass{1.0, 1.0 / (1.3 * 1.25)}, throughput));
   EXPECT_FALSE(earsFallsBack(EarsFallback::Never, ears, throughput));
   EXPECT_TRUE(earsFallsBack(EarsFallback::Always, PolicyPass{1.0, 0.01}, throughput));
   // A noiseless pass is infinitely efficient; a non-finite one (poisoned sums) never wins.
@@ -294,6 +297,7 @@ TEST(EarsGuard, ACloseFirstMeasureOfEarsIsTakenAgain) {
   EXPECT_TRUE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 1.0 / kEarsSecondLookRatio}, throughput));
   EXPECT_FALSE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 2.0}, throughput));   // 0.5: clearly worse
   EXPECT_FALSE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 0.5}, throughput));   // 2: EARS wins
+  EXPECT_TRUE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 0.9}, throughput));    // 1.11: within the margin
   EXPECT_FALSE(earsGuardLooksAgain(EarsFallback::Never, PolicyPass{1.0, 1.25}, throughput));
   EXPECT_TRUE(earsGuardLooksAgain(EarsFallback::Always, PolicyPass{1.0, 0.5}, throughput));  // its tests' path
 }
