@@ -88,7 +88,7 @@ std::string EstimatorConfig::summary() const {
   if (rr == RouletteMode::Ears) {
     s << " (learned roulette and splitting at every vertex";
     if (earsLightMax > 0) s << ", and of its light samples up to " << earsLightMax;
-    if (earsFallback == EarsFallback::Auto) s << "; throughput roulette instead if it measures more efficient";
+    if (earsFallback == EarsFallback::Auto) s << "; throughput roulette instead unless ears measures " << kEarsGuardMargin << "x as efficient";
     if (earsFallback == EarsFallback::Always) s << "; throughput roulette once the guard has measured both (ears_fallback always)";
     s << "; throughput roulette from depth " << rrDepth << " where nothing is learned yet)";
   } else if (rr != RouletteMode::None) s << " from depth " << rrDepth;

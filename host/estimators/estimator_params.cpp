@@ -116,7 +116,8 @@ constexpr EstimatorParam kParams[] = {
     choice<&C::earsFallback>("ears_fallback", EarsFallback::Auto, kEarsFallbackNames, -1,
                              "rr ears: after a warm-up pass of EARS, 4 samples a pixel of EARS and a full pass of "
                              "throughput roulette are measured (EARS again on its next pass where it was close); auto: "
-                             "the one with the higher efficiency, 1/(variance x seconds) a sample, renders the rest; "
+                             "EARS renders the rest where its efficiency, 1/(variance x seconds) a sample, reads above 1.25x throughput "
+                             "roulette's, else throughput roulette; "
                              "never: EARS throughout; always: throughput roulette after the comparison. Under a time "
                              "budget, learning and comparing may take a twentieth of it: where they would not fit, auto and "
                              "always render with throughput roulette uncompared, never with EARS trained that far"),

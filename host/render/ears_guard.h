@@ -1,7 +1,8 @@
 // rr ears's guard: after the training passes and a warm-up pass of EARS, 4 samples a pixel of EARS
 // (kEarsGuardSamples, path_renderer.cpp) and a pass of throughput roulette as large as its later ones (at least
 // 4 samples, in more passes where passes are smaller) are measured, each by its
-// efficiency per sample, 1 / (relative variance of a sample x seconds of a sample); the better renders the rest
+// efficiency per sample, 1 / (relative variance of a sample x seconds of a sample); EARS renders the rest where it
+// reads above kEarsGuardMargin (estimator_config.h) times throughput roulette's, else throughput roulette
 // (ears_fallback auto). The measured passes are in the image, and the choice depends on earlier passes only:
 // unbiased.
 #pragma once
@@ -117,15 +118,6 @@ double earsLearningCostSeconds(double decidedAt, uint32_t samplesBefore, double 
 // margin (kEarsGuardMargin) times it, is taken again on a later EARS pass (throughput roulette's measure is kept)
 // before the choice.
 constexpr double kEarsSecondLookRatio = 0.6;
-
-// Auto keeps EARS only where it reads at least this many times throughput roulette's efficiency. The reading is
-// biased toward EARS: a sample's variance leaves out what Sobol stratification takes off the image's error, and
-// that is more for throughput roulette, whose cheaper samples reach a larger count (16-s renders at 96x96, both
-// policies run to the end, docs/ears.md "What the guard reads": a sample's variance over the image's was 1.1-7.2x
-// for throughput roulette against 1.4-4.7x for EARS; the watched reading over the equal-time ratio 1.22 on leaves,
-// 1.41-1.62 on the Cornell box, soft_shadows and many_lights, 0.76-1.01 where EARS pays most). Below the margin the
-// choice goes to throughput roulette, whose loss where EARS truly won is at most that win.
-constexpr double kEarsGuardMargin = 1.25;
 
 // Whether EARS is measured again before the choice: under auto where the first measure was close (above), and
 // always under always, which then still switches (so its tests take the same path); never under never.
