@@ -35,12 +35,13 @@ enum class Sampler : uint32_t {
   ZSobol = gpu::kSamplerZSobol
 };
 // rr ears's guard (path_renderer.cpp): after EARS's first pass, one pass of throughput roulette, then EARS where it
-// measures kEarsGuardMargin times as efficient, else throughput roulette (Auto), EARS throughout (Never), or throughput roulette (Always: the switch, reproducibly).
+// measures kEarsGuardMargin times as efficient, else throughput roulette (Auto), EARS throughout (Never), or
+// throughput roulette (Always: the switch, reproducibly).
 enum class EarsFallback : uint32_t { Auto, Never, Always };  // host only
 
 // ears_fallback auto keeps EARS only where it reads above this many times throughput roulette's efficiency. The
-// reading is biased toward EARS: a sample's variance leaves out what Sobol stratification takes off the image's error, and
-// that is more for throughput roulette, whose cheaper samples reach a larger count (16-s renders at 96x96, both
+// reading is biased toward EARS: a sample's variance leaves out what Sobol stratification takes off the image's
+// error, and that is more for throughput roulette, whose cheaper samples reach a larger count (16-s renders at 96x96, both
 // policies run to the end, docs/ears.md "What the guard reads": a sample's variance over the image's was 1.1-7.2x
 // for throughput roulette against 1.4-4.7x for EARS; the watched reading over the equal-time ratio 1.22 on leaves,
 // 1.41-1.62 on the Cornell box, soft_shadows and many_lights, 0.76-1.01 where EARS pays most). Below the margin the

@@ -102,7 +102,9 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
   // Touched now, not in the first full pass: on lavapipe a buffer's pages are first written by a kernel, and the
   // first pass to fill the pool paid for it (the guard's throughput pass, the first of 28 samples, read 17% slower
   // than the same process's later ones on the Cornell box, which made EARS look better; docs/ears.md).
-  for (vk::Buffer* b : {&paths_, &hits_, &queues_, &shadowQueue_, &deepWalks_}) b->zero();
+  ctx_.runCommands([&](VkCommandBuffer cmd) {  // one submit for the five
+    for (const vk::Buffer* b : {&paths_, &hits_, &queues_, &shadowQueue_, &deepWalks_}) b->recordZero(cmd);
+  });
   // What the host reads or writes every pass: mapped in place on unified memory; on a discrete GPU device-local
   // (the kernels' atomics and the film's read-modify-write stay off the bus), copied at chunk ends and folds.
   const vk::MemoryKind exchange = ctx_.unifiedMemory() ? vk::MemoryKind::HostVisible : vk::MemoryKind::DeviceLocal;

@@ -279,8 +279,8 @@ TEST(EarsGuard, TheMoreEfficientPolicyRendersTheRest) {
   // A tie goes to the cheaper kernels; never and always decide alone.
   EXPECT_TRUE(earsFallsBack(EarsFallback::Auto, PolicyPass{4.0, 0.2}, throughput));
   // Within the margin EARS's reading is not trusted (kEarsGuardMargin): 1.2x is not enough, 1.3x is.
-  EXPECT_TRUE(earsFallsBack(EarsFallback::Auto, PolicyPass{1.0, 1.0 / (1.2 * 1.25)}, throughput));
-  EXPECT_FALSE(earsFallsBack(EarsFallback::Auto, PolicyPass{1.0, 1.0 / (1.3 * 1.25)}, throughput));
+  EXPECT_TRUE(earsFallsBack(EarsFallback::Auto, PolicyPass{1.0, 1.0 / (1.2 * kEarsGuardMargin)}, throughput));
+  EXPECT_FALSE(earsFallsBack(EarsFallback::Auto, PolicyPass{1.0, 1.0 / (1.3 * kEarsGuardMargin)}, throughput));
   EXPECT_FALSE(earsFallsBack(EarsFallback::Never, ears, throughput));
   EXPECT_TRUE(earsFallsBack(EarsFallback::Always, PolicyPass{1.0, 0.01}, throughput));
   // A noiseless pass is infinitely efficient; a non-finite one (poisoned sums) never wins.
