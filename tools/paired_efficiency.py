@@ -17,8 +17,9 @@ machine; side by side they read within a few percent.
 
 A and B default to scenes/estimators/baseline.json (throughput roulette) and rr_ears_guard.json (`--rr ears` as
 it runs by default); --b the same file as --a is the method's control. Without --reference, a reference is
-rendered with A (--reference-spp samples, both threads) and cached by what determines it in
-$VKMC_CACHE_DIR/paired (else ~/.cache/vkmc/paired). Prints each pair and the geometric mean of the ratios with a
+rendered with A (--reference-spp samples, both threads) and cached in $VKMC_CACHE_DIR/paired (else
+~/.cache/vkmc/paired) under the scene, A, the size, the samples and a 2-spp probe render's bytes (not the binary's:
+a rebuild that renders A's image bit for bit the same keeps it). Prints each pair and the geometric mean of the ratios with a
 95% interval from their measured spread (Student t on the log-ratios), and the median. Each relMSE has the
 reference's own relative variance (its render's mean_relvariance; 0 for an analytic one) taken out: left in, it
 would pull every ratio toward 1.
@@ -121,6 +122,16 @@ def write_constant_exr(path, width, height, rgb):
         f.write(header + offsets + blocks)
 
 
+def probe_image(args, tmp):
+    """A 2-spp render of the scene with A at the reference's size and seed, as bytes: what keys the cached reference
+    instead of the vkmc binary, so a rebuild that leaves A's image alone (bit for bit, as a fixed seed renders it)
+    keeps its reference, and one that changes it (or the scene's buffers, which the .gltf's bytes leave out) does
+    not. An A whose image depends on time (a guard, a budget) misses the cache every time: correct, only slow."""
+    exr, report = os.path.join(tmp, "probe.exr"), os.path.join(tmp, "probe.json")
+    finish(render(args, args.a, exr, report, ["--spp", "2", "--seed", str(0x5eed)]), "the reference's probe render")
+    return file_bytes(exr)
+
+
 def reference_for(args, tmp):
     """The reference EXR and its own relative variance (what it adds to every relMSE: None where unknown)."""
     if args.reference_constant is not None:
@@ -132,7 +143,7 @@ def reference_for(args, tmp):
             fail(f"no reference {args.reference}")
         return args.reference, None
     key = digest(file_bytes(args.scene), file_bytes(args.a), args.width, args.height, args.reference_spp,
-                 file_bytes(args.vkmc))
+                 probe_image(args, tmp))
     path = os.path.join(cache_dir(), key + ".exr")
     report = os.path.join(cache_dir(), key + ".json")  # its report: mean_relvariance is the reference's own noise
     if not (os.path.isfile(path) and os.path.isfile(report)):

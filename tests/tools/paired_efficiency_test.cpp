@@ -1,9 +1,11 @@
 // tools/paired_efficiency.py end to end on the furnace, whose analytic reference the tool writes itself: both
 // renders of a pair ran and were compared with that reference, a control pair (A against A, one seed) differs by
-// what its two renders' sample counts explain, and a --json path that is not a regular file is refused.
+// what its two renders' sample counts explain, a --json path that is not a regular file is refused, and a rendered
+// reference is kept across a binary that renders A's image the same and rendered again by one that does not.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "support/cli_run.h"
@@ -68,4 +70,43 @@ TEST(PairedEfficiency, RefusesToReplaceAJsonPathThatIsNotARegularFile) {
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::is_directory(folder));
+}
+
+// The cached reference is keyed on a probe render's bytes, not on the binary: a wrapper that runs the same vkmc (a
+// rebuild that changed nothing A renders) finds it; a wrapper that changes A's image (here by capping the depth)
+// renders its own.
+TEST(PairedEfficiency, KeepsItsReferenceForABinaryThatRendersTheSameImageOnly) {
+  if (!toolRuns()) GTEST_SKIP() << "needs python3 and two cores";
+  fs::path cache = workDir() / "paired_reference_cache";
+  fs::remove_all(cache);
+  auto wrapper = [&](const std::string& name, const std::string& extra) {
+    fs::path path = workDir() / name;
+    {
+      std::ofstream f(path);
+      f << "#!/bin/sh\nexec " << VKMC_BINARY << " \"$@\"" << extra << "\n";
+    }
+    fs::permissions(path, fs::perms::owner_all);
+    return path.string();
+  };
+  const std::string same = wrapper("vkmc_same.sh", ""), deeper = wrapper("vkmc_capped.sh", " --max-depth 1");
+  auto run = [&](const std::string& vkmc, const std::string& json) {
+    return runShell("VKMC_CACHE_DIR=" + cache.string() + " python3 " + std::string(VKMC_SOURCE_DIR) +
+                    "/tools/paired_efficiency.py " + std::string(VKMC_SOURCE_DIR) +
+                    "/scenes/furnace.gltf --width 8 --height 8 --reference-spp 8192 --seconds 0.2 --pairs 1 --vkmc " +
+                    vkmc + " --json " + (workDir() / json).string());
+  };
+  auto reference = [&](const std::string& json) {
+    return nlohmann::json::parse(slurp(workDir() / json)).at("reference").get<std::string>();
+  };
+  RunResult first = run(VKMC_BINARY, "paired_ref_first.json");
+  ASSERT_EQ(first.code, 0) << first.err;
+  EXPECT_NE(first.err.find("rendering the reference"), std::string::npos) << first.err;
+  RunResult again = run(same, "paired_ref_same.json");
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_EQ(again.err.find("rendering the reference"), std::string::npos) << again.err;
+  EXPECT_EQ(reference("paired_ref_same.json"), reference("paired_ref_first.json"));
+  RunResult capped = run(deeper, "paired_ref_capped.json");
+  ASSERT_EQ(capped.code, 0) << capped.err;
+  EXPECT_NE(capped.err.find("rendering the reference"), std::string::npos) << capped.err;
+  EXPECT_NE(reference("paired_ref_capped.json"), reference("paired_ref_first.json"));
 }
