@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Equal-time efficiency of estimator B against estimator A by concurrent pairs: each pair renders A and B at the
 same time, each `vkmc render` on one lavapipe thread, so that the machine's swings (its neighbours, its slow and
-fast minutes) reach both renders of a pair alike. They are not pinned: pinned to a core each, two renders of one
-configuration reached 0.75-1.3x each other's samples in 16 s (this VM's cores slow down one at a time); left to
-the scheduler, which moves them between the cores, within 1%. A pair's ratio is
-efficiency(B) / efficiency(A), efficiency = 1 / (relMSE against the reference x seconds). The seeds change from
-pair to pair; a pair's two renders share their seed (common random numbers: where B's samples are
+fast minutes) reach both renders of a pair alike. This VM's two cores do not always run at one speed, so the two renders trade cores every 0.25 s,
+each pinned to one of them in turn (--cores swap, the default): each spends half its time on each core. Pinned for
+good, two renders of one configuration reached 0.75-1.3x each other's samples in 16 s; left to the scheduler
+(--cores free) veach_mis's read 0.79-1.26, swapped 0.92-1.004 (docs/ears.md, "Renders that trade cores"). A
+pair's ratio is efficiency(B) / efficiency(A), efficiency = 1 / (relMSE against the reference x seconds). The seeds
+change from pair to pair; a pair's two renders share their seed (common random numbers: where B's samples are
 A's, as where `--rr ears` falls back to throughput roulette, their errors cancel in the ratio and what is left is
 what B's time bought; --independent-seeds gives each render its own). docs/ears.md, "Concurrent pairs", says
 why: rendered one after the other, two renders of the same configuration read 0.74-1.43x each other on this
@@ -13,14 +14,14 @@ machine; side by side they read within a few percent.
 
   python3 tools/paired_efficiency.py SCENE [--a EST.json] [--b EST.json] [--seconds S] [--pairs N]
       [--width W --height H] [--reference EXR | --reference-spp N | --reference-constant L]
-      [--independent-seeds] [--json OUT] [--vkmc PATH]
+      [--independent-seeds] [--cores swap|free] [--json OUT] [--vkmc PATH]
 
 A and B default to scenes/estimators/baseline.json (throughput roulette) and rr_ears_guard.json (`--rr ears` as
 it runs by default); --b the same file as --a is the method's control. Without --reference, a reference is
 rendered with A (--reference-spp samples, both threads) and cached in $VKMC_CACHE_DIR/paired (else
 ~/.cache/vkmc/paired) under the scene, A, the size, the samples and a 2-spp probe render's bytes (not the binary's:
-a rebuild that renders A's image bit for bit the same keeps it). Prints each pair and the geometric mean of the ratios with a
-95% interval from their measured spread (Student t on the log-ratios), and the median. Each relMSE has the
+a rebuild that renders A's image bit for bit the same keeps it). Prints each pair and the geometric mean of the
+ratios with a 95% interval from their measured spread (Student t on the log-ratios), and the median. Each relMSE has the
 reference's own relative variance (its render's mean_relvariance; 0 for an analytic one) taken out: left in, it
 would pull every ratio toward 1.
 """
@@ -34,6 +35,7 @@ import struct
 import subprocess
 import sys
 import tempfile
+import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # Two-sided 95% Student t quantiles by degrees of freedom (beyond the table: the normal's 1.96 is close enough).
@@ -77,11 +79,38 @@ def render(args, estimator, out_exr, report, extra, threads=None):
     env = dict(os.environ)
     if threads is not None:
         env["LP_NUM_THREADS"] = str(threads)
-    return subprocess.Popen(cmd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    # Its messages to a file, not a pipe: a pair is polled (trade_cores), and a full pipe would stop a render.
+    err = tempfile.TemporaryFile()
+    proc = subprocess.Popen(cmd, env=env, stdout=subprocess.DEVNULL, stderr=err)
+    proc.err_file = err
+    return proc
+
+
+def trade_cores(procs, period=0.25):
+    """Pins every thread of the pair's two renders to one core each and swaps the cores every `period` seconds
+    until both have ended, so that each spends half its time on each core (threads started between two swaps
+    inherit their creator's core)."""
+    cores = sorted(os.sched_getaffinity(0))[:2]
+    flip = 0
+    while any(p.poll() is None for p in procs):
+        for k, p in enumerate(procs):
+            try:
+                for tid in os.listdir(f"/proc/{p.pid}/task"):
+                    try:
+                        os.sched_setaffinity(int(tid), {cores[k ^ flip]})
+                    except OSError:
+                        pass  # the thread ended meanwhile
+            except OSError:
+                pass  # the render ended meanwhile
+        flip ^= 1
+        time.sleep(period)
 
 
 def finish(proc, what, others=()):
-    _, err = proc.communicate()
+    proc.wait()
+    proc.err_file.seek(0)
+    err = proc.err_file.read().decode(errors="replace")
+    proc.err_file.close()
     if proc.returncode != 0:
         for other in others:  # the pair's other render: not left running into a removed folder
             other.kill()
@@ -169,6 +198,8 @@ def main():
     p.add_argument("--reference-constant", type=float, help="an analytic reference: this radiance in every pixel")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--independent-seeds", action="store_true", help="a seed for each render, not one a pair")
+    p.add_argument("--cores", choices=("swap", "free"), default="swap",
+                   help="swap: the two renders trade cores every 0.25 s; free: left to the scheduler")
     p.add_argument("--json")
     p.add_argument("--vkmc", default=os.environ.get("VKMC", os.path.join(ROOT, "build/vkmc")))
     args = p.parse_args()
@@ -204,6 +235,8 @@ def main():
                 exr, rep = os.path.join(tmp, f"{name}{k}.exr"), os.path.join(tmp, f"{name}{k}.json")
                 extra = ["--time-budget", str(args.seconds), "--seed", str(seed), "--reference", reference]
                 procs.append((name, rep, render(args, est, exr, rep, extra, threads=1)))
+            if args.cores == "swap":
+                trade_cores([p for _, _, p in procs])
             for name, rep, proc in procs:
                 what = f"pair {k}'s render {name.upper()}"
                 finish(proc, what, [p for _, _, p in procs if p is not proc])
@@ -241,7 +274,7 @@ def main():
     if json_path:
         out = {"scene": args.scene, "a": args.a, "b": args.b, "seconds": args.seconds, "width": args.width,
                "height": args.height, "reference": reference, "reference_relvariance": reference_noise,
-               "independent_seeds": args.independent_seeds, "pairs": pairs, "geometric_mean": math.exp(mean),
+               "independent_seeds": args.independent_seeds, "cores": args.cores, "pairs": pairs, "geometric_mean": math.exp(mean),
                "interval95": interval, "median": median}
         fd, tmp_json = tempfile.mkstemp(prefix=".paired-", dir=os.path.dirname(json_path) or ".")
         try:

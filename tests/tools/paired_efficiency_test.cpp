@@ -60,6 +60,7 @@ TEST(PairedEfficiency, AControlPairOfTheFurnaceReadsItsSampleCountsRatio) {
   EXPECT_TRUE(std::isfinite(low) && std::isfinite(high));
   EXPECT_LE(low, high);
   EXPECT_EQ(j.at("reference_relvariance").get<double>(), 0.0);
+  EXPECT_EQ(j.at("cores"), "swap");  // the default: the two renders trade cores
 }
 
 TEST(PairedEfficiency, RefusesToReplaceAJsonPathThatIsNotARegularFile) {
