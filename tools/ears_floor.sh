@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Issue 17's floor, scene by scene: `--rr ears` (its guard, the default) against throughput roulette by concurrent
 # pairs (tools/paired_efficiency.py) on every scene of scenes/ whose image has variance to compare, and the method's
-# control (throughput roulette against itself, one seed a pair as in the comparison) beside it. Prints one row a scene; docs/ears.md, "Concurrent pairs".
+# control (throughput roulette against itself, one seed a pair as in the comparison) beside it. Prints one row a
+# scene; docs/ears.md, "Concurrent pairs".
 #   bash tools/ears_floor.sh [--seconds S] [--pairs N] [--seed K] [--out DIR] [--control off] [scene ...]
-# Default: 16 s, 4 pairs, seeds from 1 (pair k: K + 2k), every scene below; references are rendered once (8192 spp, cached) or analytic.
+# Default: 16 s, 4 pairs, seeds from 1 (pair k: K + 2k), every scene below; references are rendered once (8192 spp,
+# cached) or analytic.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=16 pairs=4 seed=1 out=/tmp/vkmc-ears-floor control=on
@@ -14,7 +16,7 @@ while [[ $# -gt 0 ]]; do
     --seed) seed="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --control) control="$2"; shift 2 ;;
-    -h|--help) sed -n 2,6p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,8p "$0"; exit 0 ;;
     -*) echo "ears_floor: unknown option $1" >&2; exit 1 ;;
     *) break ;;
   esac
@@ -37,13 +39,13 @@ for s in "${scenes[@]}"; do
   ref=()
   [[ -n "${constant[$s]:-}" ]] && ref=(--reference-constant "${constant[$s]}")
   name=${s//\//_}
-  python3 tools/paired_efficiency.py "scenes/$s.gltf" --seconds "$seconds" --pairs "$pairs" --seed "$seed" "${ref[@]}" \
-    --json "$out/$name.ears.json" >"$out/$name.ears.log"
+  python3 tools/paired_efficiency.py "scenes/$s.gltf" --seconds "$seconds" --pairs "$pairs" --seed "$seed" \
+    "${ref[@]}" --json "$out/$name.ears.json" >"$out/$name.ears.log"
   row=$(summary "$out/$name.ears.json")
   crow=-
   if [[ $control == on ]]; then
-    python3 tools/paired_efficiency.py "scenes/$s.gltf" --seconds "$seconds" --pairs "$pairs" --seed "$seed" "${ref[@]}" \
-      --b scenes/estimators/baseline.json --json "$out/$name.control.json" >"$out/$name.control.log"
+    python3 tools/paired_efficiency.py "scenes/$s.gltf" --seconds "$seconds" --pairs "$pairs" --seed "$seed" \
+      "${ref[@]}" --b scenes/estimators/baseline.json --json "$out/$name.control.json" >"$out/$name.control.log"
     crow=$(summary "$out/$name.control.json")
   fi
   printf '%-28s %-34s %-34s\n' "$s" "$row" "$crow"

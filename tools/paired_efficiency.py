@@ -1,16 +1,16 @@
 #!/usr/bin/env python3
 """Equal-time efficiency of estimator B against estimator A by concurrent pairs: each pair renders A and B at the
 same time, each `vkmc render` on one lavapipe thread, so that the machine's swings (its neighbours, its slow and
-fast minutes) reach both renders of a pair alike. This VM's two cores do not always run at one speed, so the two renders trade cores every 0.25 s,
-each pinned to one of them in turn (--cores swap, the default): each spends half its time on each core. Pinned for
-good, two renders of one configuration reached 0.75-1.3x each other's samples in 16 s; left to the scheduler
-(--cores free) veach_mis's read 0.79-1.26, swapped 0.92-1.004 (docs/ears.md, "Renders that trade cores"). A
-pair's ratio is efficiency(B) / efficiency(A), efficiency = 1 / (relMSE against the reference x seconds). The seeds
-change from pair to pair; a pair's two renders share their seed (common random numbers: where B's samples are
-A's, as where `--rr ears` falls back to throughput roulette, their errors cancel in the ratio and what is left is
-what B's time bought; --independent-seeds gives each render its own). docs/ears.md, "Concurrent pairs", says
-why: rendered one after the other, two renders of the same configuration read 0.74-1.43x each other on this
-machine; side by side they read within a few percent.
+fast minutes) reach both renders of a pair alike. This VM's two cores do not always run at one speed, so the two
+renders trade cores every 0.25 s, each pinned to one of them in turn (--cores swap, the default): each spends half
+its time on each core. Pinned for good, two renders of one configuration reached 0.75-1.3x each other's samples in
+16 s; left to the scheduler (--cores free) veach_mis's read 0.79-1.26, swapped 0.92-1.004 (docs/ears.md, "Renders
+that trade cores"). A pair's ratio is efficiency(B) / efficiency(A), efficiency = 1 / (relMSE against the
+reference x seconds). The seeds change from pair to pair; a pair's two renders share their seed (common random
+numbers: where B's samples are A's, as where `--rr ears` falls back to throughput roulette, their errors cancel in
+the ratio and what is left is what B's time bought; --independent-seeds gives each render its own). docs/ears.md,
+"Concurrent pairs", says why: rendered one after the other, two renders of the same configuration read 0.74-1.43x
+each other on this machine; side by side they read within a few percent.
 
   python3 tools/paired_efficiency.py SCENE [--a EST.json] [--b EST.json] [--seconds S] [--pairs N]
       [--width W --height H] [--reference EXR | --reference-spp N | --reference-constant L]
@@ -21,9 +21,9 @@ it runs by default); --b the same file as --a is the method's control. Without -
 rendered with A (--reference-spp samples, both threads) and cached in $VKMC_CACHE_DIR/paired (else
 ~/.cache/vkmc/paired) under the scene, A, the size, the samples and a 2-spp probe render's bytes (not the binary's:
 a rebuild that renders A's image bit for bit the same keeps it). Prints each pair and the geometric mean of the
-ratios with a 95% interval from their measured spread (Student t on the log-ratios), and the median. Each relMSE has the
-reference's own relative variance (its render's mean_relvariance; 0 for an analytic one) taken out: left in, it
-would pull every ratio toward 1.
+ratios with a 95% interval from their measured spread (Student t on the log-ratios), and the median. Each relMSE
+has the reference's own relative variance (its render's mean_relvariance; 0 for an analytic one) taken out: left
+in, it would pull every ratio toward 1.
 """
 import argparse
 import hashlib
@@ -274,8 +274,8 @@ def main():
     if json_path:
         out = {"scene": args.scene, "a": args.a, "b": args.b, "seconds": args.seconds, "width": args.width,
                "height": args.height, "reference": reference, "reference_relvariance": reference_noise,
-               "independent_seeds": args.independent_seeds, "cores": args.cores, "pairs": pairs, "geometric_mean": math.exp(mean),
-               "interval95": interval, "median": median}
+               "independent_seeds": args.independent_seeds, "cores": args.cores, "pairs": pairs,
+               "geometric_mean": math.exp(mean), "interval95": interval, "median": median}
         fd, tmp_json = tempfile.mkstemp(prefix=".paired-", dir=os.path.dirname(json_path) or ".")
         try:
             with os.fdopen(fd, "w") as f:
