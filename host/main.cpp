@@ -16,9 +16,9 @@ int main(int argc, char** argv) {
   vkmc::tuneMallocByReexecuting(argv);  // first: glibc reads its tunables only at start
   CLI::App app{"vkmc: a Vulkan compute Monte Carlo path tracer whose efficiency is measured"};
   app.require_subcommand(1);
-  const std::vector<vkmc::Command> commands = {vkmc::addRenderCommand(app), vkmc::addInfoCommand(app), vkmc::addBenchCommand(app),
-                                               vkmc::addCompareCommand(app), vkmc::addBenchKernelsCommand(app),
-                                               vkmc::addBenchTexturesCommand(app)};
+  const std::vector<vkmc::Command> commands = {vkmc::addRenderCommand(app),       vkmc::addInfoCommand(app),
+                                               vkmc::addBenchCommand(app),        vkmc::addCompareCommand(app),
+                                               vkmc::addBenchKernelsCommand(app), vkmc::addBenchTexturesCommand(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

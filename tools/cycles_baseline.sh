@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # vkmc against Blender's Cycles (CPU, headless) on one glTF scene, at equal spp and at equal time, both measured
-# against a cached high-spp vkmc reference (issue 14; docs/cycles.md). Usage:
+# against a cached high-spp vkmc reference (issue 14; docs/journal/cycles.md). Usage:
 #   bash tools/cycles_baseline.sh SCENE [SECONDS] [--width W --height H --spp 1 4 16 64 --repeats R --ref-spp N ...]
 # Installs Debian's blender and python3-numpy if missing (the main build never needs them), builds vkmc, then runs
 # tools/cycles_baseline/baseline.py (--help lists every option). Renders and the reference go to build/cycles_baseline/.

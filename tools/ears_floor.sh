@@ -2,7 +2,7 @@
 # Issue 17's floor, scene by scene: `--rr ears` (its guard, the default) against throughput roulette by concurrent
 # pairs (tools/paired_efficiency.py) on every scene of scenes/ whose image has variance to compare, and the method's
 # control (throughput roulette against itself, one seed a pair as in the comparison) beside it. Prints one row a
-# scene; docs/ears.md, "Concurrent pairs".
+# scene; docs/journal/ears.md, "Concurrent pairs".
 #   bash tools/ears_floor.sh [--seconds S] [--pairs N] [--seed K] [--out DIR] [--control off] [scene ...]
 # Default: 16 s, 4 pairs, seeds from 1 (pair k: K + 2k), every scene below; references are rendered once (8192 spp,
 # cached) or analytic.

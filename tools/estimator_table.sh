@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Equal-time comparison of every estimator in scenes/estimators/ on the test scenes: relMSE against a
 # high-sample reference (cached in build/references/), the seconds and samples reached, and efficiency
-# 1/(relMSE x seconds) relative to the baseline. Writes docs/estimators.md (or $OUT).
+# 1/(relMSE x seconds) relative to the baseline. Writes docs/tables/estimators.md (or $OUT).
 # Usage: tools/estimator_table.sh [SECONDS_PER_RENDER (default 2)] [REFERENCE_SPP (default 4096)]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 budget=${1:-2}
 refspp=${2:-4096}
-out=${OUT:-docs/estimators.md}
+out=${OUT:-docs/tables/estimators.md}
 vkmc=./build/vkmc
 [[ -x $vkmc ]] || bash tools/setup.sh
 mkdir -p build/references build/estimator-table

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Lays out the glTF gallery's models (tools/gltf_models.txt) in MODELS_DIR from a git copy of the sample
-# assets (docs/gltf.md says which repository and commit), and makes the gltfpack variants. Never run it
+# assets (docs/journal/gltf.md says which repository and commit), and makes the gltfpack variants. Never run it
 # inside the repo: the models are not committed.
 # Usage: tools/gltf_fetch.sh ASSETS_GIT_DIR MODELS_DIR
 #   ASSETS_GIT_DIR  a clone (or bare mirror) holding commit $commit below

@@ -2,7 +2,7 @@
 # The glTF gallery (issue #15): render every model of tools/gltf_models.txt with one vkmc binary, one at a
 # time, and write per model the exit code, the first error/warning lines and the seconds, a markdown table
 # and a contact sheet (each render beside the model's reference screenshot). The models are fetched
-# separately and never committed: docs/gltf.md says how.
+# separately and never committed: docs/journal/gltf.md says how.
 #
 # Usage: tools/gltf_gallery.sh VKMC MODELS_DIR OUT_DIR [--width W] [--spp N] [--timeout S] [--list FILE]
 #                              [--only NAME[,NAME...]] [--no-sheet] [-- EXTRA vkmc render ARGS]
@@ -35,7 +35,7 @@ while [[ $# -gt 0 ]]; do
   esac
 done
 [[ -x $vkmc ]] || { echo "gltf_gallery: $vkmc is not an executable" >&2; exit 2; }
-[[ -d $models ]] || { echo "gltf_gallery: no models directory $models (docs/gltf.md says how to fetch it)" >&2; exit 2; }
+[[ -d $models ]] || { echo "gltf_gallery: no models directory $models (docs/journal/gltf.md says how to fetch it)" >&2; exit 2; }
 if [[ $sheet = 1 ]] && ! { convert -version 2>/dev/null | grep -q ImageMagick && command -v montage >/dev/null; }; then
   echo "gltf_gallery: the contact sheet needs ImageMagick (apt-get install imagemagick fonts-dejavu-core)," \
     "or pass --no-sheet" >&2
@@ -145,7 +145,7 @@ if [[ $sheet = 1 && $n -gt 0 ]]; then
   done <"$tsv"
   montage -quiet "${font[@]}" -pointsize 13 "${args[@]}" -tile 5x -geometry +6+6 -background white \
     -depth 8 "$out/contact_sheet.png"
-  # a small copy (half size, 128 colours) that may go into docs/img/
+  # a small copy (half size, 128 colours) that may go into docs/journal/img/
   convert -quiet "$out/contact_sheet.png" -resize 50% +dither -colors 128 "$out/contact_sheet_small.png"
   echo "contact sheet: $out/contact_sheet.png (left: reference screenshot, right: vkmc), small: $out/contact_sheet_small.png"
 fi

@@ -3,7 +3,7 @@
 # tool) for a few seconds, copies its JIT code out of /proc (lavapipe_profile/dump_jit.py) and prints the largest
 # loops with their instructions, spills and selects (lavapipe_profile/loops.py). COMMAND must be the process that
 # runs lavapipe itself (a binary, or a script that execs it), not a wrapper that starts it as a child. Needs
-# objdump; run as root (or with ptrace rights). docs/performance.md, "Traversal against Embree", uses it.
+# objdump; run as root (or with ptrace rights). docs/journal/performance.md, "Traversal against Embree", uses it.
 #   bash tools/jit_loops.sh [--wait S] [--out DIR] -- COMMAND...
 # e.g. bash tools/jit_loops.sh -- ./build/vkmc render scenes/cornell_box.gltf --spp 8192 -o /tmp/r.exr -q
 set -euo pipefail

@@ -2,7 +2,7 @@
 # Where lavapipe spends a render's time, kernel code by kernel code: samples a running `vkmc render` with perf,
 # copies its JIT code regions out of /proc/PID/mem, disassembles them and prints, per region (one compiled kernel
 # each, largest share first), its share of the samples and the share spent in per-lane loops (llvmpipe's
-# storage-buffer loads and stores: one loop over the 8 lanes per access). docs/performance.md, "Reading the
+# storage-buffer loads and stores: one loop over the 8 lanes per access). docs/journal/performance.md, "Reading the
 # kernels' machine code". Needs perf and objdump (linux-perf, binutils); run as root (or with ptrace rights).
 #   bash tools/lavapipe_profile.sh [--warm-up S] [--seconds S] [--out DIR] [--] [render args...]
 # Default render: the Cornell box, 256x256, 4096 spp (long enough to sample; it is stopped when done).

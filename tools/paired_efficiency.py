@@ -4,11 +4,11 @@ same time, each `vkmc render` on one lavapipe thread, so that the machine's swin
 fast minutes) reach both renders of a pair alike. This VM's two cores do not always run at one speed, so the two
 renders trade cores every 0.25 s, each pinned to one of them in turn (--cores swap, the default): each spends half
 its time on each core. Pinned for good, two renders of one configuration reached 0.75-1.3x each other's samples in
-16 s; left to the scheduler (--cores free) veach_mis's read 0.79-1.26, swapped 0.92-1.004 (docs/ears.md, "Renders
+16 s; left to the scheduler (--cores free) veach_mis's read 0.79-1.26, swapped 0.92-1.004 (docs/journal/ears.md, "Renders
 that trade cores"). A pair's ratio is efficiency(B) / efficiency(A), efficiency = 1 / (relMSE against the
 reference x seconds). The seeds change from pair to pair; a pair's two renders share their seed (common random
 numbers: where B's samples are A's, as where `--rr ears` falls back to throughput roulette, their errors cancel in
-the ratio and what is left is what B's time bought; --independent-seeds gives each render its own). docs/ears.md,
+the ratio and what is left is what B's time bought; --independent-seeds gives each render its own). docs/journal/ears.md,
 "Concurrent pairs", says why: rendered one after the other, two renders of the same configuration read 0.74-1.43x
 each other on this machine; side by side they read within a few percent.
 

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Runs the stiff-case tests (ctest -L stiff, plus the robustness tests that cover stability cases) and writes
 # their rows (case, what, expected, measured, sigma,
-# pass) as docs/stability.md (or $OUT). Usage: tools/stability_table.sh
+# pass) as docs/tables/stability.md (or $OUT). Usage: tools/stability_table.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [[ -x build/vkmc ]] || bash tools/setup.sh
-out=${OUT:-docs/stability.md}
+out=${OUT:-docs/tables/stability.md}
 mkdir -p build/stability
 rm -f build/stability/*.json
 for t in build/tests/stiff_*_test build/tests/render_robustness_test; do

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # What stage timestamps cost: each render with --stage-times on, then off, alternated for ROUNDS rounds (default
 # 5); prints each round's wall seconds, then per render the medians and the median of the per-round ratios off/on.
-# Run from the repository root after tools/setup.sh; docs/performance.md, "Stage timestamps".
+# Run from the repository root after tools/setup.sh; docs/journal/performance.md, "Stage timestamps".
 set -euo pipefail
 rounds=${1:-5}
 helmet=../shared/scenes/DamagedHelmet/DamagedHelmet.gltf

@@ -5,7 +5,7 @@
 # statistics), so the long furnace test and the rest share the machine instead of waiting for each other.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash tools/setup.sh
+bash tools/setup.sh --test-tools
 bash tools/fuzz.sh build >/dev/null || true  # the fuzzer is built with the rest where clang is (skipped elsewhere)
 cd build
 ctest --output-on-failure --timeout 1200 -j"$(nproc)" "$@"

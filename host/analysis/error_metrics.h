@@ -15,8 +15,8 @@ struct ErrorMetrics {
   double meanDifference = 0.0;  // mean(a) - mean(b) over pixels and channels
   bool hasZTest = false;
   double zTestPassFraction = 0.0;  // pixels whose every channel passes |a - b| / sqrt(va + vb) < z threshold
-  double zThreshold = 0.0;  // the normal's bound at the test's level
-  bool studentT = false;    // both images gave variance.dof: each pixel is Welch's t at that level instead
+  double zThreshold = 0.0;         // the normal's bound at the test's level
+  bool studentT = false;           // both images gave variance.dof: each pixel is Welch's t at that level instead
   size_t pixels = 0;
 };
 

@@ -52,8 +52,7 @@ VarianceReliability assessVarianceReliability(const Film& film) {
   }
   const double terms = 3.0 * double(std::max<size_t>(1, film.pixels()));
   out.relVariance = sumT / terms;
-  out.relativeStandardError =
-      sumT > 0.0 ? std::sqrt(std::max(0.0, sumVarT)) / sumT : std::numeric_limits<double>::infinity();
+  out.relativeStandardError = sumT > 0.0 ? std::sqrt(std::max(0.0, sumVarT)) / sumT : std::numeric_limits<double>::infinity();
   out.largestPixelShare = sumT > 0.0 ? largestT / sumT : 0.0;
   return out;
 }

@@ -22,10 +22,10 @@
 namespace vkmc {
 
 struct VarianceReliability {
-  double relVariance = 0.0;             // the replicates' estimate of mean_relvariance
-  double relativeStandardError = 0.0;   // of that estimate; infinity when it is 0 or no pixel has every replicate
-  size_t pixelsAssessed = 0;            // pixels with samples in every replicate
-  double largestPixelShare = 0.0;       // the largest single pixel's share of the estimate
+  double relVariance = 0.0;            // the replicates' estimate of mean_relvariance
+  double relativeStandardError = 0.0;  // of that estimate; infinity when it is 0 or no pixel has every replicate
+  size_t pixelsAssessed = 0;           // pixels with samples in every replicate
+  double largestPixelShare = 0.0;      // the largest single pixel's share of the estimate
   // An efficiency figure whose variance is uncertain by more than this (one standard error) cannot rank two
   // estimators that differ by less: the report then marks it unreliable.
   static constexpr double kReliableBelow = 0.1;

@@ -102,8 +102,8 @@ nlohmann::json printKernels(const std::string& name, const Samples& s) {
   for (const auto& [kernel, k] : s.kernels) {
     double secs = median(k.seconds);
     double rate = secs > 0 ? k.items / secs * 1e-6 : 0.0, gbps = secs > 0 ? k.items * k.bytesPerItem / secs * 1e-9 : 0.0;
-    std::printf("  %-18s %10.3f %6.1f%% %12.0f %10.2f %12.2f\n", kernel.c_str(), secs * 1e3, 100.0 * secs / std::max(kernelSeconds, 1e-12),
-                k.items, rate, gbps);
+    std::printf("  %-18s %10.3f %6.1f%% %12.0f %10.2f %12.2f\n", kernel.c_str(), secs * 1e3,
+                100.0 * secs / std::max(kernelSeconds, 1e-12), k.items, rate, gbps);
     kernels.push_back({{"kernel", kernel},
                        {"seconds_per_frame", secs},
                        {"share", secs / std::max(kernelSeconds, 1e-12)},
@@ -200,8 +200,10 @@ int runSahBench(const BenchOptions& o, const std::vector<std::string>& scenes) {
                    {"sweep_build_seconds", sweep.stats.buildSeconds},
                    {"ratio", ratio}});
   }
-  std::printf("SAH cost: expected traversal steps plus triangle tests per ray (cost 1 each); build s: median of --runs, "
-              "binned on %u threads.\n", binnedThreads);
+  std::printf(
+      "SAH cost: expected traversal steps plus triangle tests per ray (cost 1 each); build s: median of --runs, "
+      "binned on %u threads.\n",
+      binnedThreads);
   if (!o.jsonPath.empty()) writeFileAtomically(o.jsonPath, nlohmann::json{{"results", out}}.dump(2) + "\n");
   return 0;
 }
@@ -212,8 +214,7 @@ int runSpecializationBench(const BenchOptions& o, const std::vector<std::string>
   vk::Context ctx;
   std::printf("device: %s; %dx%d, %d spp per run, %d runs; medians [min-max]\n", ctx.deviceName().c_str(), o.width, o.height,
               o.spp, o.runs);
-  std::printf("%-34s %-12s %14s %22s %12s %10s\n", "scene", "pipelines", "us per sample", "[min-max]", "pipelines s",
-              "Mrays/s");
+  std::printf("%-34s %-12s %14s %22s %12s %10s\n", "scene", "pipelines", "us per sample", "[min-max]", "pipelines s", "Mrays/s");
   nlohmann::json out = nlohmann::json::array();
   for (const std::string& scene : scenes) {
     // Rays per second too: without textures a textured scene's paths differ (albedos, emission), so time per
@@ -267,6 +268,97 @@ int runSpecializationBench(const BenchOptions& o, const std::vector<std::string>
   return 0;
 }
 
+namespace {
+
+// One case per scene and integrator; cases are interleaved run by run so machine noise hits them alike.
+struct BenchCase {
+  std::string scene;
+  Integrator integrator;
+  bool traceKernel;  // the traversal-kernel benchmark runs once per scene
+  std::string name() const { return std::filesystem::path(scene).filename().string(); }
+};
+
+RenderOptions benchRenderOptions(const BenchOptions& o, const BenchCase& c) {
+  RenderOptions ro;
+  ro.scenePath = c.scene;
+  ro.width = static_cast<uint32_t>(o.width);
+  ro.height = static_cast<uint32_t>(o.height);
+  ro.spp = static_cast<uint32_t>(o.spp);
+  ro.progress = false;
+  ro.background = glm::vec3(1.0f);  // so scenes without emitters still bounce rays
+  ro.workgroupSize = o.workgroupSize;
+  ro.wavefrontPaths = o.wavefrontPaths;
+  ro.integrator = c.integrator;
+  ro.stageTimes = true;  // the per-kernel table and the primary and bounce Mrays/s (samples/s pays for them)
+  return ro;
+}
+
+// One counted run of a case: its set-up, rates and kernels, and the traversal kernel alone where it runs.
+void recordBenchRun(vk::Context& ctx, const BenchOptions& o, const BenchCase& c, const RenderOutcome& r, Samples& s) {
+  s.triangles = r.sceneInfo.triangles;
+  s.load.push_back(r.setup.load);
+  s.bvh.push_back(r.setup.bvh);
+  s.upload.push_back(r.setup.upload);
+  s.pipelines.push_back(r.setup.pipelines);
+  const RenderStats& st = r.stats;
+  s.sps.push_back(double(r.film.totalSamples()) / st.seconds);
+  s.primary.push_back(st.primarySeconds > 0 ? st.primaryRays / st.primarySeconds * 1e-6 : 0.0);
+  s.incoherent.push_back(st.incoherentSeconds > 0 ? st.extensionRays / st.incoherentSeconds * 1e-6 : 0.0);
+  s.total.push_back(st.rays() / st.seconds * 1e-6);
+  recordKernels(s, st, r.film.totalSamples());
+  if (!c.traceKernel) return;
+  TraceRates t = traceBenchmark(ctx, c.scene, o.width, o.height, 1, s.diffuseRays);
+  s.tracePrimary.insert(s.tracePrimary.end(), t.primary.begin(), t.primary.end());
+  s.traceDiffuse.insert(s.traceDiffuse.end(), t.diffuse.begin(), t.diffuse.end());
+  s.traceDiffuseBinary.insert(s.traceDiffuseBinary.end(), t.diffuseBinary.begin(), t.diffuseBinary.end());
+}
+
+void printBenchHeader(const vk::Context& ctx, const BenchOptions& o, const RenderOutcome::Tuning& tuning) {
+  std::printf(
+      "device: %s (subgroup %u); %dx%d, %d spp per run, %d runs, workgroup %u%s, wavefront %u paths%s, every stage "
+      "timed, medians [min-max]\n",
+      ctx.deviceName().c_str(), tuning.subgroupSize, o.width, o.height, o.spp, o.runs, tuning.workgroupSize,
+      tuning.workgroupAuto ? " (device's)" : "", tuning.wavefrontPaths, tuning.wavefrontAuto ? " (device's)" : "");
+  std::printf("%-34s %-10s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s %9s\n", "scene", "integrator", "triangles", "load s",
+              "bvh s", "upload s", "pipes s", "samples/s", "primary", "bounces", "total", "trace 1st", "trace dif", "dif bvh2");
+  std::printf("%-34s %-10s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s %9s\n", "", "", "", "", "", "", "", "", "Mrays/s",
+              "Mrays/s", "Mrays/s", "Mrays/s", "Mrays/s", "Mrays/s");
+}
+
+// A case's row of the table, and its medians as JSON.
+nlohmann::json printBenchRow(const BenchCase& c, const Samples& s, double firstPipelines, const RenderOutcome::Tuning& tuning) {
+  auto range = [](const std::vector<double>& v) {
+    if (v.empty()) return std::make_pair(0.0, 0.0);
+    auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    return std::make_pair(*lo, *hi);
+  };
+  std::printf("%-34s %-10s %9u %7.3f %7.3f %8.3f %7.3f | %10.0f %9.2f %9.2f %9.2f | %9.2f %9.2f %9.2f  [samples/s %.0f-%.0f]\n",
+              c.name().c_str(), toString(c.integrator), s.triangles, median(s.load), median(s.bvh), median(s.upload),
+              median(s.pipelines), median(s.sps), median(s.primary), median(s.incoherent), median(s.total),
+              median(s.tracePrimary), median(s.traceDiffuse), median(s.traceDiffuseBinary), range(s.sps).first,
+              range(s.sps).second);
+  return {{"scene", c.scene},
+          {"integrator", toString(c.integrator)},
+          {"triangles", s.triangles},
+          {"load_seconds", median(s.load)},
+          {"bvh_seconds", median(s.bvh)},
+          {"upload_seconds", median(s.upload)},
+          {"pipeline_seconds", median(s.pipelines)},
+          {"samples_per_second", median(s.sps)},
+          {"primary_mrays_per_second", median(s.primary)},
+          {"incoherent_mrays_per_second", median(s.incoherent)},
+          {"total_mrays_per_second", median(s.total)},
+          {"trace_primary_mrays_per_second", median(s.tracePrimary)},
+          {"trace_diffuse_mrays_per_second", median(s.traceDiffuse)},
+          {"trace_diffuse_binary_bvh_mrays_per_second", median(s.traceDiffuseBinary)},
+          {"trace_diffuse_rays", s.diffuseRays},
+          {"pipeline_seconds_first_use", firstPipelines},
+          {"workgroup_size", tuning.workgroupSize},
+          {"wavefront_paths", tuning.wavefrontPaths}};
+}
+
+}  // namespace
+
 int runBenchKernels(const BenchOptions& o) {
   if (o.runs < 1 || o.runs > 1000) throw Error("--runs must be between 1 and 1000");
   if (o.spp < 1 || o.width < 1 || o.height < 1 || o.width > 8192 || o.height > 8192)
@@ -276,13 +368,7 @@ int runBenchKernels(const BenchOptions& o) {
   if (o.specialization) return runSpecializationBench(o, scenes);
   if (o.sah) return runSahBench(o, scenes);
   vk::Context ctx;
-  // One case per scene and integrator; cases are interleaved run by run so machine noise hits them alike.
-  struct Case {
-    std::string scene;
-    Integrator integrator;
-    bool traceKernel;  // the traversal-kernel benchmark runs once per scene
-  };
-  std::vector<Case> cases;
+  std::vector<BenchCase> cases;
   for (const std::string& scene : scenes)
     for (size_t k = 0; k < o.integrators.size(); ++k) cases.push_back({scene, integratorFromString(o.integrators[k]), k == 0});
   std::vector<Samples> samples(cases.size());
@@ -290,95 +376,28 @@ int runBenchKernels(const BenchOptions& o) {
   // its pipeline time is reported as the first-use figure.
   std::vector<double> firstPipelines(cases.size(), 0.0);
   RenderOutcome::Tuning tuning;  // as the last run resolved it (the same for every scene)
-  for (int run = -1; run < o.runs; ++run) {
+  for (int run = -1; run < o.runs; ++run)
     for (size_t i = 0; i < cases.size(); ++i) {
-      RenderOptions ro;
-      ro.scenePath = cases[i].scene;
-      ro.width = static_cast<uint32_t>(o.width);
-      ro.height = static_cast<uint32_t>(o.height);
-      ro.spp = static_cast<uint32_t>(o.spp);
-      ro.progress = false;
-      ro.background = glm::vec3(1.0f);  // so scenes without emitters still bounce rays
-      ro.workgroupSize = o.workgroupSize;
-      ro.wavefrontPaths = o.wavefrontPaths;
-      ro.integrator = cases[i].integrator;
-      ro.stageTimes = true;  // the per-kernel table and the primary and bounce Mrays/s (samples/s pays for them)
-      RenderOutcome r = runRender(ctx, ro);
+      RenderOutcome r = runRender(ctx, benchRenderOptions(o, cases[i]));
       tuning = r.tuning;
-      if (run < 0) {
+      if (run < 0)
         firstPipelines[i] = r.setup.pipelines;
-        continue;
-      }
-      Samples& s = samples[i];
-      s.triangles = r.sceneInfo.triangles;
-      s.load.push_back(r.setup.load);
-      s.bvh.push_back(r.setup.bvh);
-      s.upload.push_back(r.setup.upload);
-      s.pipelines.push_back(r.setup.pipelines);
-      const RenderStats& st = r.stats;
-      s.sps.push_back(double(r.film.totalSamples()) / st.seconds);
-      s.primary.push_back(st.primarySeconds > 0 ? st.primaryRays / st.primarySeconds * 1e-6 : 0.0);
-      s.incoherent.push_back(st.incoherentSeconds > 0 ? st.extensionRays / st.incoherentSeconds * 1e-6 : 0.0);
-      s.total.push_back(st.rays() / st.seconds * 1e-6);
-      recordKernels(s, st, r.film.totalSamples());
-      if (!cases[i].traceKernel) continue;
-      TraceRates t = traceBenchmark(ctx, cases[i].scene, o.width, o.height, 1, s.diffuseRays);
-      s.tracePrimary.insert(s.tracePrimary.end(), t.primary.begin(), t.primary.end());
-      s.traceDiffuse.insert(s.traceDiffuse.end(), t.diffuse.begin(), t.diffuse.end());
-      s.traceDiffuseBinary.insert(s.traceDiffuseBinary.end(), t.diffuseBinary.begin(), t.diffuseBinary.end());
+      else
+        recordBenchRun(ctx, o, cases[i], r, samples[i]);
     }
-  }
-  std::printf("device: %s (subgroup %u); %dx%d, %d spp per run, %d runs, workgroup %u%s, wavefront %u paths%s, every stage "
-              "timed, medians [min-max]\n",
-              ctx.deviceName().c_str(), tuning.subgroupSize, o.width, o.height, o.spp, o.runs, tuning.workgroupSize,
-              tuning.workgroupAuto ? " (device's)" : "", tuning.wavefrontPaths, tuning.wavefrontAuto ? " (device's)" : "");
-  std::printf("%-34s %-10s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s %9s\n", "scene", "integrator", "triangles", "load s",
-              "bvh s", "upload s", "pipes s", "samples/s", "primary", "bounces", "total", "trace 1st", "trace dif", "dif bvh2");
-  std::printf("%-34s %-10s %9s %7s %7s %8s %7s | %10s %9s %9s %9s | %9s %9s %9s\n", "", "", "", "", "", "", "", "", "Mrays/s",
-              "Mrays/s", "Mrays/s", "Mrays/s", "Mrays/s", "Mrays/s");
+  printBenchHeader(ctx, o, tuning);
   nlohmann::json out = nlohmann::json::array();
-  auto caseName = [&](size_t i) { return std::filesystem::path(cases[i].scene).filename().string(); };
-  for (size_t i = 0; i < cases.size(); ++i) {
-    const Samples& s = samples[i];
-    auto range = [](const std::vector<double>& v) {
-      if (v.empty()) return std::make_pair(0.0, 0.0);
-      auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-      return std::make_pair(*lo, *hi);
-    };
-    std::printf("%-34s %-10s %9u %7.3f %7.3f %8.3f %7.3f | %10.0f %9.2f %9.2f %9.2f | %9.2f %9.2f %9.2f  [samples/s %.0f-%.0f]\n",
-                caseName(i).c_str(), toString(cases[i].integrator), s.triangles, median(s.load), median(s.bvh), median(s.upload),
-                median(s.pipelines), median(s.sps), median(s.primary), median(s.incoherent), median(s.total),
-                median(s.tracePrimary), median(s.traceDiffuse), median(s.traceDiffuseBinary), range(s.sps).first,
-                range(s.sps).second);
-    out.push_back({{"scene", cases[i].scene},
-                   {"integrator", toString(cases[i].integrator)},
-                   {"triangles", s.triangles},
-                   {"load_seconds", median(s.load)},
-                   {"bvh_seconds", median(s.bvh)},
-                   {"upload_seconds", median(s.upload)},
-                   {"pipeline_seconds", median(s.pipelines)},
-                   {"samples_per_second", median(s.sps)},
-                   {"primary_mrays_per_second", median(s.primary)},
-                   {"incoherent_mrays_per_second", median(s.incoherent)},
-                   {"total_mrays_per_second", median(s.total)},
-                   {"trace_primary_mrays_per_second", median(s.tracePrimary)},
-                   {"trace_diffuse_mrays_per_second", median(s.traceDiffuse)},
-                   {"trace_diffuse_binary_bvh_mrays_per_second", median(s.traceDiffuseBinary)},
-                   {"trace_diffuse_rays", s.diffuseRays},
-                   {"pipeline_seconds_first_use", firstPipelines[i]},
-                   {"workgroup_size", tuning.workgroupSize},
-                   {"wavefront_paths", tuning.wavefrontPaths}});
-  }
+  for (size_t i = 0; i < cases.size(); ++i) out.push_back(printBenchRow(cases[i], samples[i], firstPipelines[i], tuning));
   std::printf(
       "primary/bounces: wavefront intersection stages (GPU time; none in the megakernel); total: all rays over\n"
       "render wall time;\n"
       "trace 1st/dif: the traversal kernel alone (4-wide BVH) on camera rays and on 4 cosine bounce rays per primary\n"
       "hit; dif bvh2: the same bounce rays through the binary BVH, interleaved.\n"
       "pipelines: creation plus first-dispatch compile, median of warm runs; first use in this process: %.3f s\n"
-      "(Mesa's on-disk shader cache may make even that warm; clear ~/.cache/mesa_shader_cache for a cold figure).\n",
+      "(Mesa's on-disk shader cache may make even that warm; clear ~/.cache/vkmc for a cold figure).\n",
       firstPipelines.front());
   for (size_t i = 0; i < cases.size(); ++i)
-    out[i]["per_kernel"] = printKernels(caseName(i) + " [" + toString(cases[i].integrator) + "]", samples[i]);
+    out[i]["per_kernel"] = printKernels(cases[i].name() + " [" + toString(cases[i].integrator) + "]", samples[i]);
   std::printf(
       "\nitems: rays for the tracing kernels and the megakernel, paths for camera_rays and shade, samples for\n"
       "accumulate;\n"

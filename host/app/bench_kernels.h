@@ -12,9 +12,9 @@ struct BenchOptions {
   int width = 256;
   int height = 256;
   std::string jsonPath;
-  bool specialization = false;  // compare specialized with general pipelines instead
-  uint32_t workgroupSize = 0;   // 0: the device's (device_tuning.h)
-  uint32_t wavefrontPaths = 0;  // 0: the device's
+  bool specialization = false;                        // compare specialized with general pipelines instead
+  uint32_t workgroupSize = 0;                         // 0: the device's (device_tuning.h)
+  uint32_t wavefrontPaths = 0;                        // 0: the device's
   bool sah = false;                                   // BVH quality instead: binned against full-sweep SAH cost
   std::vector<std::string> integrators{"wavefront"};  // each is benchmarked, interleaved run by run
 };

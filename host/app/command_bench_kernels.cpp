@@ -6,6 +6,7 @@
 
 #include "app/bench_kernels.h"
 #include "app/commands.h"
+#include "render/path_pool.h"
 
 namespace vkmc {
 
@@ -20,9 +21,9 @@ Command addBenchKernelsCommand(CLI::App& app) {
   bench->add_option("--json", o->jsonPath, "write the results as JSON");
   bench->add_flag("--specialization", o->specialization, "compare specialized with general (all-features) pipelines");
   auto workgroup = std::make_shared<std::string>("auto"), wavefront = std::make_shared<std::string>("auto");
-  bench->add_option("--workgroup", *workgroup, "invocations per workgroup of every kernel: 32, 64, 128, 256, or auto")
+  bench->add_option("--workgroup", *workgroup, "invocations per workgroup of every kernel: " + workgroupSizesText() + ", or auto")
       ->capture_default_str();
-  bench->add_option("--wavefront", *wavefront, "paths in flight per pass at most (1024 to 16777216), or auto")
+  bench->add_option("--wavefront", *wavefront, "paths in flight per pass at most (" + wavefrontRangeText() + "), or auto")
       ->capture_default_str();
   bench->add_flag("--sah", o->sah, "BVH quality: SAH cost of the binned build against a full sweep build");
   bench->add_option("--integrator", o->integrators, "wavefront, megakernel or both (interleaved, side by side)")

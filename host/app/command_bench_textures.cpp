@@ -27,7 +27,8 @@ struct BenchTexturesOptions {
 
 std::vector<std::string> defaultTexturedScenes() {
   std::vector<std::string> out;
-  for (const char* candidate : {"../shared/scenes/DamagedHelmet/DamagedHelmet.gltf", "../shared/scenes/BoxTextured/BoxTextured.gltf"})
+  for (const char* candidate :
+       {"../shared/scenes/DamagedHelmet/DamagedHelmet.gltf", "../shared/scenes/BoxTextured/BoxTextured.gltf"})
     if (std::filesystem::exists(candidate)) out.push_back(candidate);
   if (out.empty()) throw Error("bench-textures: no scenes given and ../shared/scenes has none of the default textured models");
   return out;
@@ -65,9 +66,10 @@ int runBenchTextures(const BenchTexturesOptions& o) {
       }
     }
   }
-  std::printf("forms: sampled image = the renderer's (the texture pages as an array image, filtered and sRGB-decoded\n"
-              "by the sampler); texel buffer = the same pages' RGBA8 texels in a storage texel buffer, bilinear in the\n"
-              "kernel, sRGB by pow per tap (the renderer's form until 2026-11-28)\n");
+  std::printf(
+      "forms: sampled image = the renderer's (the texture pages as an array image, filtered and sRGB-decoded\n"
+      "by the sampler); texel buffer = the same pages' RGBA8 texels in a storage texel buffer, bilinear in the\n"
+      "kernel, sRGB by pow per tap (the renderer's form until 2026-11-28)\n");
   return 0;
 }
 

@@ -16,6 +16,7 @@
 #include <optional>
 
 #include "app/commands.h"
+#include "render/path_pool.h"
 #include "app/render_job.h"
 #include "error.h"
 #include "estimators/estimator_params.h"
@@ -36,7 +37,7 @@ struct RenderArgs {
   std::map<std::string, std::string> estimatorValues;  // by key, as typed after the flag
   float exposure = 0.0f;
   bool quiet = false, noSpecialize = false, generalSpirv = false;
-  int spp = 64;
+  int spp = kDefaultSpp;
   long long seed = 1;
   int width = -1, height = -1, cameraIndex = -1;
   std::string integrator = "auto", workgroup = "auto", wavefront = "auto", stageTimes = "auto";
@@ -55,7 +56,8 @@ extern "C" void requestStop(int sig) {
 
 void catchStopSignals() {
   for (int sig : {SIGINT, SIGTERM}) {
-    struct sigaction now {}, before {};
+    struct sigaction now {
+    }, before{};
     sigaction(sig, nullptr, &before);
     if (before.sa_handler == SIG_IGN) continue;  // nohup and friends: stay ignored
     now.sa_handler = requestStop;
@@ -141,13 +143,13 @@ EstimatorConfig estimatorFrom(const RenderArgs& a, const CLI::App& cmd) {
 // Conversions from the command line's types; the options themselves are validated by runRender.
 void fillOptions(RenderArgs& a, const CLI::App& cmd) {
   RenderOptions& ro = a.options;
-  if (a.spp <= 0) throw Error("--spp must be between 1 and 16777216");
+  if (a.spp <= 0) throw Error("--spp must be between 1 and " + std::to_string(kMaxSpp));
   if ((cmd.count("--width") && a.width <= 0) || (cmd.count("--height") && a.height <= 0))
-    throw Error("--width and --height must be between 1 and 16384");
+    throw Error("--width and --height must be between 1 and " + std::to_string(kMaxImageSide));
   if (a.seed < 0 || a.seed > 0xffffffffLL) throw Error("--seed must be between 0 and 4294967295");
   if (cmd.count("--camera") && a.cameraIndex < 0) throw Error("--camera must be >= 0");
   ro.spp = static_cast<uint32_t>(a.spp);
-  if (ro.timeBudget > 0.0 && !cmd.count("--spp")) ro.spp = 1u << 24;  // the budget decides
+  if (ro.timeBudget > 0.0 && !cmd.count("--spp")) ro.spp = kMaxSpp;  // the budget decides
   ro.estimator = estimatorFrom(a, cmd);
   ro.seed = static_cast<uint32_t>(a.seed);
   if (a.width > 0) ro.width = static_cast<uint32_t>(a.width);
@@ -156,7 +158,8 @@ void fillOptions(RenderArgs& a, const CLI::App& cmd) {
   if (!a.lookFrom.empty()) ro.lookFrom = parseVec3(a.lookFrom, "--look-from");
   if (!a.lookAt.empty()) ro.lookAt = parseVec3(a.lookAt, "--look-at");
   if (!a.background.empty()) ro.background = parseVec3(a.background, "--background");
-  ro.filter = pixelFilterFromName(a.filter, a.filterRadius.empty() ? std::nullopt : std::optional<double>(parseRadius(a.filterRadius)));
+  ro.filter =
+      pixelFilterFromName(a.filter, a.filterRadius.empty() ? std::nullopt : std::optional<double>(parseRadius(a.filterRadius)));
   ro.progress = !a.quiet;
   ro.specialize = !a.noSpecialize;
   ro.prespecializedSpirv = !a.generalSpirv;
@@ -171,7 +174,8 @@ void fillOptions(RenderArgs& a, const CLI::App& cmd) {
 // --resume without a scene: the render's options and outputs come from the checkpoint; only the outputs and the
 // checkpoint's own flags may be given.
 void optionsFromCheckpoint(RenderArgs& a, const CLI::App& cmd, const nlohmann::json& config) {
-  static const std::vector<std::string> allowed = {"--resume", "--output", "--png", "--report", "--exposure", "--quiet",
+  static const std::vector<std::string> allowed = {"--resume",     "--output",           "--png",
+                                                   "--report",     "--exposure",         "--quiet",
                                                    "--checkpoint", "--checkpoint-every", "--stage-times"};
   for (const CLI::Option* opt : cmd.get_options()) {
     if (opt->count() == 0 || opt->get_positional()) continue;
@@ -214,18 +218,27 @@ int run(RenderArgs& a, const CLI::App& cmd) {
   // which writes them).
   if (group.isRoot())
     checkOutputPaths({{"--output", a.out}, {"--png", a.png}, {"--report", a.report}, {"--checkpoint", checkpoint}},
-                   {ro.scenePath, ro.referencePath, a.estimatorFile, ro.environmentPath});
+                     {ro.scenePath, ro.referencePath, a.estimatorFile, ro.environmentPath});
 
   RunControl control;
   control.checkpointPath = checkpoint;
   control.checkpointEvery = a.checkpointEvery;
   if (!cmd.count("--checkpoint-every")) control.checkpointShare = 0.02;  // the default promises at most 2% of the time
-  control.outputs = {{"output", absolutePath(a.out)}, {"png", absolutePath(a.png)}, {"report", absolutePath(a.report)},
+  control.outputs = {{"output", absolutePath(a.out)},
+                     {"png", absolutePath(a.png)},
+                     {"report", absolutePath(a.report)},
                      {"exposure", a.exposure}};
   if (resume) control.resumeConfig = &resume->config, control.resumeState = &resume->state;
   if (!checkpoint.empty()) {
     control.stop = &stopSignal;
     catchStopSignals();
+    // For tests of the graceful stop: after the first checkpoint, announce it and wait for SIGINT or SIGTERM, so
+    // the signal lands in a render that is certainly still running.
+    if (std::getenv("VKMC_HOLD_AFTER_CHECKPOINT"))
+      control.afterCheckpoint = [] {
+        std::fprintf(stderr, "vkmc: checkpoint written; holding until SIGINT or SIGTERM (VKMC_HOLD_AFTER_CHECKPOINT)\n");
+        while (stopSignal.load() == 0) ::usleep(10000);
+      };
   }
   vk::Context ctx;
   RenderOutcome result = runRender(ctx, ro, control);
@@ -242,13 +255,14 @@ int run(RenderArgs& a, const CLI::App& cmd) {
   if (result.interrupted) outputs.add(checkpoint, encodeRenderCheckpoint(result));
   outputs.commit();
   if (!a.quiet) std::cout << summaryText(ro, result) << "output      " << a.out << "\n";
-  for (const auto& w : result.warnings)
-    if (a.quiet) std::fprintf(stderr, "vkmc: warning: %s\n", w.c_str());
+  for (const auto& w : result.warnings) std::fprintf(stderr, "vkmc: warning: %s\n", w.c_str());
   if (result.interrupted) {
     const int sig = stopSignal.load();
-    std::fprintf(stderr, "vkmc: interrupted by %s after %u of %u spp: wrote '%s' and the checkpoint '%s' (resume with: vkmc render --resume %s)\n",
-                 sig == SIGTERM ? "SIGTERM" : "SIGINT", result.stats.samplesPerPixel, ro.spp, a.out.c_str(), checkpoint.c_str(),
-                 checkpoint.c_str());
+    std::fprintf(
+        stderr,
+        "vkmc: interrupted by %s after %u of %u spp: wrote '%s' and the checkpoint '%s' (resume with: vkmc render --resume %s)\n",
+        sig == SIGTERM ? "SIGTERM" : "SIGINT", result.stats.samplesPerPixel, ro.spp, a.out.c_str(), checkpoint.c_str(),
+        checkpoint.c_str());
     return 128 + sig;
   }
   // A finished render needs its checkpoint no more (its outputs hold everything), unless it is not a file.
@@ -260,62 +274,133 @@ int run(RenderArgs& a, const CLI::App& cmd) {
 
 }  // namespace
 
+namespace {
+
+// The option groups of `vkmc render --help`, by what a user is deciding.
+constexpr const char* kOutputGroup = "Output";
+constexpr const char* kSamplingGroup = "Sampling";
+constexpr const char* kCameraGroup = "Camera";
+constexpr const char* kLightsGroup = "Lights and environment";
+constexpr const char* kEstimatorGroup = "Estimators (each flag is also a key of an --estimator file)";
+constexpr const char* kLongRenderGroup = "Long renders";
+constexpr const char* kDeveloperGroup = "Developer switches (measurements and comparisons)";
+
+void addOutputOptions(CLI::App* render, RenderArgs& a) {
+  RenderOptions& ro = a.options;
+  render->add_option("-o,--output", a.out, "OpenEXR output (mean, variance.*, samples)")
+      ->capture_default_str()
+      ->group(kOutputGroup);
+  render->add_option("--report", a.report, "JSON report file")->group(kOutputGroup);
+  render->add_option("--png", a.png, "sRGB PNG preview")->group(kOutputGroup);
+  render->add_option("--exposure", a.exposure, "PNG exposure in stops")->capture_default_str()->group(kOutputGroup);
+  render->add_option("--reference", ro.referencePath, "reference EXR: the report gains mse, relmse, efficiency")
+      ->group(kOutputGroup);
+  render->add_flag("-q,--quiet", a.quiet, "no summary on stdout, no progress line on stderr")->group(kOutputGroup);
+}
+
+void addSamplingOptions(CLI::App* render, RenderArgs& a) {
+  RenderOptions& ro = a.options;
+  render->add_option("--spp", a.spp, "samples per pixel")->capture_default_str()->group(kSamplingGroup);
+  render->add_option("--width", a.width, "image width (default " + std::to_string(kDefaultImageWidth) + ")")
+      ->group(kSamplingGroup);
+  render->add_option("--height", a.height, "image height (default from the camera's aspect ratio)")->group(kSamplingGroup);
+  render->add_option("--seed", a.seed, "random seed")->capture_default_str()->group(kSamplingGroup);
+  render->add_option("--filter", a.filter, pixelFilterHelp())->capture_default_str()->group(kSamplingGroup);
+  render->add_option("--filter-radius", a.filterRadius, "the filter's radius in pixels, per axis (default: the filter's)")
+      ->group(kSamplingGroup);
+  render->add_option("--time-budget", ro.timeBudget, "render whole sample passes until this many seconds are spent (--spp caps)")
+      ->group(kSamplingGroup);
+}
+
+void addCameraAndLightOptions(CLI::App* render, RenderArgs& a) {
+  RenderOptions& ro = a.options;
+  render->add_option("--camera", a.cameraIndex, "index of the glTF camera instance (default: the first)")->group(kCameraGroup);
+  render->add_option("--look-from", a.lookFrom, "camera position x,y,z (overrides the file's camera)")->group(kCameraGroup);
+  render->add_option("--look-at", a.lookAt, "camera target x,y,z")->group(kCameraGroup);
+  render->add_option("--fov", ro.fovDegrees, "vertical field of view in degrees with --look-from")
+      ->capture_default_str()
+      ->group(kCameraGroup);
+  render
+      ->add_option("--background", a.background,
+                   "uniform radiance r,g,b of escaped rays, reached by BSDF sampling only (default black)")
+      ->group(kLightsGroup);
+  render
+      ->add_option("--environment", ro.environmentPath,
+                   "environment light: equirectangular .hdr or .exr, +Y up, the image's centre along -Z (default: none; "
+                   "a constant white environment, with a warning, for a scene with no other light)")
+      ->group(kLightsGroup);
+  render->add_option("--environment-rotation", ro.environmentRotation, "rotation of the environment about +Y in degrees")
+      ->capture_default_str()
+      ->group(kLightsGroup);
+  render->add_option("--environment-strength", ro.environmentStrength, "scale of the environment's radiance")
+      ->capture_default_str()
+      ->group(kLightsGroup);
+}
+
+void addLongRenderOptions(CLI::App* render, RenderArgs& a) {
+  render
+      ->add_option("--checkpoint", a.checkpoint,
+                   "write the render's state here every --checkpoint-every seconds and on SIGINT/SIGTERM (with the "
+                   "outputs of the samples done); removed when the render finishes")
+      ->group(kLongRenderGroup);
+  render->add_option("--checkpoint-every", a.checkpointEvery, "seconds of rendering between checkpoints")
+      ->capture_default_str()
+      ->group(kLongRenderGroup);
+  render
+      ->add_option("--resume", a.resume,
+                   "continue the render a checkpoint holds, to its original target (alone, or with the same scene and "
+                   "options, which are then checked)")
+      ->group(kLongRenderGroup);
+}
+
+void addDeveloperOptions(CLI::App* render, RenderArgs& a) {
+  render->add_flag("--no-specialize", a.noSpecialize, "build general pipelines (every scene feature on), for comparison")
+      ->group(kDeveloperGroup);
+  render
+      ->add_flag("--general-spirv", a.generalSpirv,
+                 "create pipelines from the general SPIR-V even where a pre-specialized variant matches (set-up comparisons)")
+      ->group(kDeveloperGroup);
+  render
+      ->add_option("--workgroup", a.workgroup,
+                   "invocations per workgroup of every kernel: " + workgroupSizesText() + ", or auto (the device's)")
+      ->capture_default_str()
+      ->group(kDeveloperGroup);
+  render
+      ->add_option("--stage-times", a.stageTimes,
+                   "time every kernel stage (the report's stage_gpu_seconds): on, off, or auto (off on lavapipe, where "
+                   "each timestamp costs about a small dispatch; on on GPUs)")
+      ->capture_default_str()
+      ->group(kDeveloperGroup);
+  render
+      ->add_option("--wavefront", a.wavefront,
+                   "paths in flight per pass at most (" + wavefrontRangeText() + "), or auto (the device's)")
+      ->capture_default_str()
+      ->group(kDeveloperGroup);
+  render
+      ->add_option("--integrator", a.integrator,
+                   "auto (megakernel on a discrete GPU, wavefront elsewhere), wavefront (stage by stage) or "
+                   "megakernel (one dispatch per pass)")
+      ->check(CLI::IsMember({"auto", "wavefront", "megakernel"}))
+      ->capture_default_str()
+      ->group(kDeveloperGroup);
+}
+
+}  // namespace
+
 Command addRenderCommand(CLI::App& app) {
   auto a = std::make_shared<RenderArgs>();
-  RenderOptions& ro = a->options;
   CLI::App* render = app.add_subcommand("render", "render a glTF scene to OpenEXR and print the report");
-  render->add_option("scene", ro.scenePath, "scene (.gltf or .glb); optional with --resume");
-  render->add_option("-o,--output", a->out, "OpenEXR output (mean, variance.*, samples)")->capture_default_str();
-  render->add_option("--spp", a->spp, "samples per pixel")->capture_default_str();
-  render->add_option("--width", a->width, "image width (default 256)");
-  render->add_option("--height", a->height, "image height (default from the camera's aspect ratio)");
+  render->add_option("scene", a->options.scenePath, "scene (.gltf or .glb); optional with --resume");
+  addOutputOptions(render, *a);
+  addSamplingOptions(render, *a);
+  addCameraAndLightOptions(render, *a);
   // Flags override the file; both are the keys of host/estimators/estimator_params.cpp.
-  render->add_option("--estimator", a->estimatorFile, "JSON estimator file (the keys of the flags below)");
-  for (const EstimatorParam& p : estimatorParams()) render->add_option(p.flag(), a->estimatorValues[p.key], p.helpText());
-  render->add_option("--seed", a->seed, "random seed")->capture_default_str();
-  render->add_option("--camera", a->cameraIndex, "index of the glTF camera instance (default 0)");
-  render->add_option("--look-from", a->lookFrom, "camera position x,y,z (overrides the file's camera)");
-  render->add_option("--look-at", a->lookAt, "camera target x,y,z");
-  render->add_option("--fov", ro.fovDegrees, "vertical field of view in degrees with --look-from")->capture_default_str();
-  render->add_option("--background", a->background,
-                     "uniform radiance r,g,b of escaped rays, reached by BSDF sampling only (default 0,0,0)");
-  render->add_option("--environment", ro.environmentPath,
-                     "environment light: equirectangular .hdr or .exr, +Y up, the image's centre along -Z (default: none; "
-                     "a constant environment of radiance 1, with a warning, for a scene with no other light)");
-  render->add_option("--environment-rotation", ro.environmentRotation, "rotation of the environment about +Y in degrees")
-      ->capture_default_str();
-  render->add_option("--environment-strength", ro.environmentStrength, "scale of the environment's radiance")
-      ->capture_default_str();
-  render->add_option("--filter", a->filter, pixelFilterHelp())->capture_default_str();
-  render->add_option("--filter-radius", a->filterRadius, "the filter's radius in pixels, per axis (default: the filter's)");
-  render->add_option("--report", a->report, "JSON report file");
-  render->add_option("--png", a->png, "sRGB PNG preview");
-  render->add_option("--exposure", a->exposure, "PNG exposure in stops")->capture_default_str();
-  render->add_flag("-q,--quiet", a->quiet, "no summary on stdout, no progress line");
-  render->add_option("--time-budget", ro.timeBudget, "render whole sample passes until this many seconds are spent (--spp caps)");
-  render->add_option("--reference", ro.referencePath, "reference EXR: the report gains mse, relmse, efficiency");
-  render->add_flag("--no-specialize", a->noSpecialize, "build general pipelines (every scene feature on), for comparison");
-  render->add_flag("--general-spirv", a->generalSpirv,
-                   "create pipelines from the general SPIR-V even where a pre-specialized variant matches (set-up comparisons)");
-  render->add_option("--workgroup", a->workgroup, "invocations per workgroup of every kernel: 32, 64, 128, 256, or auto (the device's)")
-      ->capture_default_str();
-  render->add_option("--stage-times", a->stageTimes,
-                     "time every kernel stage (the report's stage_gpu_seconds): on, off, or auto (off on lavapipe, where "
-                     "each timestamp costs about a small dispatch; on on GPUs)")
-      ->capture_default_str();
-  render->add_option("--wavefront", a->wavefront, "paths in flight per pass at most (1024 to 16777216), or auto (the device's)")
-      ->capture_default_str();
-  render->add_option("--checkpoint", a->checkpoint,
-                     "write the render's state here every --checkpoint-every seconds and on SIGINT/SIGTERM (with the "
-                     "outputs of the samples done); removed when the render finishes");
-  render->add_option("--checkpoint-every", a->checkpointEvery, "seconds of rendering between checkpoints")->capture_default_str();
-  render->add_option("--resume", a->resume,
-                     "continue the render a checkpoint holds, to its original target (alone, or with the same scene and "
-                     "options, which are then checked)");
-  render->add_option("--integrator", a->integrator, "auto (default: megakernel on a discrete GPU, wavefront elsewhere), wavefront (stage by stage) or "
-                  "megakernel (one dispatch per pass)")
-      ->check(CLI::IsMember({"auto", "wavefront", "megakernel"}))
-      ->capture_default_str();
+  render->add_option("--estimator", a->estimatorFile, "JSON estimator file (the keys of the flags below)")
+      ->group(kEstimatorGroup);
+  for (const EstimatorParam& p : estimatorParams())
+    render->add_option(p.flag(), a->estimatorValues[p.key], p.helpText())->group(kEstimatorGroup);
+  addLongRenderOptions(render, *a);
+  addDeveloperOptions(render, *a);
   return {render, [a, render] { return run(*a, *render); }};
 }
 

@@ -70,21 +70,21 @@ int runInfo(const RenderOptions& options) {
       "             transmission %s (volumes %s), clearcoat %s, sheen %s, smooth (delta) lobes %s,\n"
       "             punctual lights %u, environment %s\n",
       f.emitters() ? "yes" : "no", f.emissiveTriangles, f.glossy ? "yes" : "no", f.metallic ? "yes" : "no",
-      f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.singleSided ? "yes" : "no",
-      f.textures ? "yes" : "no", scene.textures.size(),
-      f.normalMaps ? "yes" : "no", f.alpha ? "yes" : "no", f.transmission ? "yes" : "no", f.volumes ? "yes" : "no",
-      f.clearcoat ? "yes" : "no", f.sheen ? "yes" : "no", f.delta ? "yes" : "no", f.punctualLights,
+      f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.singleSided ? "yes" : "no", f.textures ? "yes" : "no",
+      scene.textures.size(), f.normalMaps ? "yes" : "no", f.alpha ? "yes" : "no", f.transmission ? "yes" : "no",
+      f.volumes ? "yes" : "no", f.clearcoat ? "yes" : "no", f.sheen ? "yes" : "no", f.delta ? "yes" : "no", f.punctualLights,
       !options.environmentPath.empty() ? options.environmentPath.c_str()
       : f.environment                  ? "constant (the default light)"
                                        : "none (unless --environment)");
   std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   const BvhStats& b = bvh.stats;
-  std::printf("bvh          %u inner nodes, %u leaves, depth %u (4-wide %u, at most %u entries pending: register stack of %u, %s), "
-              "leaf size avg %.2f max %u, SAH cost %.2f (4-wide %.2f), built in %.3f s on %u threads\n",
-              b.innerNodes, b.leaves, b.maxDepth, b.wideMaxDepth, b.wideMaxPending, registerStackEntries(b),
-              walksCanOutgrowRegisterStack(b) ? "deep passes built" : "no walk outgrows it", b.averageLeafSize,
-              b.maxLeafSize, b.sahCost, b.wideSahCost, b.buildSeconds, b.buildThreads);
+  std::printf(
+      "bvh          %u inner nodes, %u leaves, depth %u (4-wide %u, at most %u entries pending: register stack of %u, %s), "
+      "leaf size avg %.2f max %u, SAH cost %.2f (4-wide %.2f), built in %.3f s on %u threads\n",
+      b.innerNodes, b.leaves, b.maxDepth, b.wideMaxDepth, b.wideMaxPending, registerStackEntries(b),
+      walksCanOutgrowRegisterStack(b) ? "deep passes built" : "no walk outgrows it", b.averageLeafSize, b.maxLeafSize, b.sahCost,
+      b.wideSahCost, b.buildSeconds, b.buildThreads);
   GpuScene gpu(ctx, scene, bvh, options.estimator.lightSelect == LightSelect::Uniform);
   RenderSettings settings;
   settings.estimator = options.estimator;
@@ -122,9 +122,10 @@ int runInfo(const RenderOptions& options) {
   std::printf("\n              render buffers (%ux%u): %.2f MiB; total %.2f MiB\n", settings.width, settings.height,
               renderer.deviceBytes() / 1048576.0, (total + renderer.deviceBytes()) / 1048576.0);
   const std::string& tunables = mallocTunablesAdded();
-  std::printf("malloc       %s\n", tunables.empty() ? "glibc's defaults (no tunables added: app/malloc_tuning.h says when)"
-                                                   : ("GLIBC_TUNABLES added " + tunables + " (VKMC_MALLOC_TUNING=off: none)").c_str());
-  for (const std::string& w : scene.warnings) std::printf("warning      %s\n", w.c_str());
+  std::printf("malloc       %s\n", tunables.empty()
+                                       ? "glibc's defaults (no tunables added: app/malloc_tuning.h says when)"
+                                       : ("GLIBC_TUNABLES added " + tunables + " (VKMC_MALLOC_TUNING=off: none)").c_str());
+  for (const std::string& w : scene.warnings) std::fprintf(stderr, "vkmc: warning: %s\n", w.c_str());
   for (const std::string& u : f.unsupported()) std::printf("unsupported  %s\n", u.c_str());
   return 0;
 }

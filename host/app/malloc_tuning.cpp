@@ -17,15 +17,15 @@ namespace vkmc {
 namespace {
 
 // One row per tunable (glibc.malloc.<name>), with the older variable that also sets it (GLIBC_TUNABLES would win
-// over it, so a user's variable counts as the user's key). Measured together: docs/performance.md, "Page faults".
+// over it, so a user's variable counts as the user's key). Measured together: docs/journal/performance.md, "Page faults".
 struct Tunable {
   const char* name;
   const char* value;
   const char* oldVariable;
 };
 constexpr Tunable kTunables[] = {
-    {"hugetlb", "1", nullptr},                          // madvise(MADV_HUGEPAGE) on the heaps: 2 MiB pages
-    {"top_pad", "67108864", "MALLOC_TOP_PAD_"},         // the heap grows 64 MiB at a time, so its pages can be huge
+    {"hugetlb", "1", nullptr},                                 // madvise(MADV_HUGEPAGE) on the heaps: 2 MiB pages
+    {"top_pad", "67108864", "MALLOC_TOP_PAD_"},                // the heap grows 64 MiB at a time, so its pages can be huge
     {"mmap_threshold", "33554432", "MALLOC_MMAP_THRESHOLD_"},  // blocks under 32 MiB (glibc's largest) from the heap
 };
 constexpr const char* kMarker = "VKMC_MALLOC_TUNED";  // set for the restarted process: what was added

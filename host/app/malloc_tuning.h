@@ -1,5 +1,5 @@
 // glibc's malloc tuned for vkmc's allocations: transparent huge pages for its heaps, which grow in large steps
-// (docs/performance.md, "Page faults"). On this project's virtual machines a page fault costs microseconds; a
+// (docs/journal/performance.md, "Page faults"). On this project's virtual machines a page fault costs microseconds; a
 // 1M-triangle scene's load, BVH build and upload took 166k of them with 4 KiB pages. glibc reads GLIBC_TUNABLES only
 // when a process starts, so vkmc starts itself once more, by its own path (same pid, same name), with them added.
 #pragma once

@@ -33,8 +33,6 @@ namespace vkmc {
 namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-constexpr uint32_t kMaxImageSide = 16384;
-constexpr uint32_t kMaxSpp = 1u << 24;
 }  // namespace
 
 void validateOptions(const RenderOptions& o) {
@@ -78,24 +76,26 @@ nlohmann::json earsJson(const EarsSummary& e) {
   auto byDepth = [](const auto& rows) {
     nlohmann::json depths = nlohmann::json::array();
     for (const auto& row : rows)
-      depths.push_back({{"untrained", row[gpu::kEarsBinFallback]}, {"roulette", row[gpu::kEarsBinRoulette]},
-                        {"kept", row[gpu::kEarsBinOne]}, {"split", row[gpu::kEarsBinSplit]}});
+      depths.push_back({{"untrained", row[gpu::kEarsBinFallback]},
+                        {"roulette", row[gpu::kEarsBinRoulette]},
+                        {"kept", row[gpu::kEarsBinOne]},
+                        {"split", row[gpu::kEarsBinSplit]}});
     return depths;
   };
   nlohmann::json j = {{"cells", e.cells},
-                       {"occupied_cells", e.occupiedCells},
-                       {"trusted_cells", e.trustedCells},
-                       {"device_bytes", e.deviceBytes},
-                       {"learning_passes", e.learningPasses},
-                       {"training_spp", e.trainingSamples},
-                       {"image_factor", e.imageFactor},
-                       {"training_copies", e.copies},
-                       {"mean_lr", {e.meanLr.x, e.meanLr.y, e.meanLr.z}},
-                       {"mean_lr_squared", {e.meanLrSquared.x, e.meanLrSquared.y, e.meanLrSquared.z}},
-                       {"mean_rays", e.meanRays},
-                       {"factors_by_depth", byDepth(e.factors)},
-                       {"learns_light_samples", e.learnsLight},
-                       {"note", "the last depth row counts every deeper vertex"}};
+                      {"occupied_cells", e.occupiedCells},
+                      {"trusted_cells", e.trustedCells},
+                      {"device_bytes", e.deviceBytes},
+                      {"learning_passes", e.learningPasses},
+                      {"training_spp", e.trainingSamples},
+                      {"image_factor", e.imageFactor},
+                      {"training_copies", e.copies},
+                      {"mean_lr", {e.meanLr.x, e.meanLr.y, e.meanLr.z}},
+                      {"mean_lr_squared", {e.meanLrSquared.x, e.meanLrSquared.y, e.meanLrSquared.z}},
+                      {"mean_rays", e.meanRays},
+                      {"factors_by_depth", byDepth(e.factors)},
+                      {"learns_light_samples", e.learnsLight},
+                      {"note", "the last depth row counts every deeper vertex"}};
   if (e.learnsLight) {
     j["light_cells"] = {{"occupied", e.occupiedLightCells}, {"trusted", e.trustedLightCells}};
     j["training_light_samples"] = e.lightSamples;
@@ -103,8 +103,9 @@ nlohmann::json earsJson(const EarsSummary& e) {
     j["mean_light_v_squared"] = {e.meanVSquared.x, e.meanVSquared.y, e.meanVSquared.z};
     j["mean_light_rays"] = e.meanLightRays;
     j["light_factors_by_depth"] = byDepth(e.lightFactors);
-    j["light_note"] = "light factors count copies (untrained: light_samples as without ears; roulette: qL < 1, "
-                      "fewer shadow rays; split: qL > 1)";
+    j["light_note"] =
+        "light factors count copies (untrained: light_samples as without ears; roulette: qL < 1, "
+        "fewer shadow rays; split: qL > 1)";
   }
   return j;
 }
@@ -193,29 +194,34 @@ void writeCheckpoint(const std::string& path, const std::string& bytes) {
   sigprocmask(SIG_SETMASK, &old, nullptr);
 }
 
-RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene scene, const RunControl& run) {
-  std::optional<ExrImage> reference;
-  if (!options.referencePath.empty()) reference = readExr(options.referencePath);
-  RenderOutcome out;
-  out.device = ctx.deviceName();
-  out.degenerateTriangles = scene.degenerateTriangles;
-  out.warnings = scene.warnings;
-
+// The camera the render looks through and the image's size.
+struct Framing {
   Camera camera;
-  std::optional<float> aspect;
+  std::optional<float> aspect;  // the scene camera's, where it has one
+  uint32_t width = 0, height = 0;
+};
+
+// The scene's camera, or --look-from's (the automatic camera needs the image's size: frameScene sets it).
+Framing pickCamera(const RenderOptions& options, const Scene& scene) {
+  Framing f;
   if (options.lookFrom) {
-    camera = lookAtCamera(*options.lookFrom, *options.lookAt, options.fovDegrees);
+    f.camera = lookAtCamera(*options.lookFrom, *options.lookAt, options.fovDegrees);
   } else if (options.cameraIndex || !scene.cameras.empty()) {
     uint32_t index = options.cameraIndex.value_or(0);
     if (index >= scene.cameras.size())
       throw Error("--camera " + std::to_string(index) + " out of range: the scene has " + std::to_string(scene.cameras.size()) +
                   " camera(s)");
-    camera = scene.cameras[index];
-    aspect = camera.aspectRatio;
-    if (camera.name.empty()) camera.name = "camera " + std::to_string(index);
+    f.camera = scene.cameras[index];
+    f.aspect = f.camera.aspectRatio;
+    if (f.camera.name.empty()) f.camera.name = "camera " + std::to_string(index);
   }
-  // Unset sides follow the camera's aspect ratio (square when it has none); 256 pixels wide by default.
-  double a = aspect.value_or(1.0f);
+  return f;
+}
+
+// Unset sides follow the camera's aspect ratio (square when it has none); kDefaultImageWidth wide by default.
+Framing frameScene(const RenderOptions& options, const Scene& scene) {
+  Framing f = pickCamera(options, scene);
+  double a = f.aspect.value_or(1.0f);
   // The derived side in double, checked before it becomes an integer (an extreme aspect ratio would overflow).
   auto derivedSide = [&](double side) {
     side = std::max(1.0, std::round(side));
@@ -224,69 +230,57 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
                   " pixels, over " + std::to_string(kMaxImageSide) + ": set both --width and --height");
     return static_cast<uint32_t>(side);
   };
-  uint32_t width, height;
   if (options.width && options.height) {
-    width = *options.width, height = *options.height;
+    f.width = *options.width, f.height = *options.height;
   } else if (options.height) {
-    height = *options.height, width = derivedSide(height * a);
+    f.height = *options.height, f.width = derivedSide(f.height * a);
   } else {
-    width = options.width.value_or(256), height = derivedSide(width / a);
+    f.width = options.width.value_or(kDefaultImageWidth), f.height = derivedSide(f.width / a);
   }
-  if (!options.lookFrom && scene.cameras.empty()) camera = autoCamera(scene.bounds, float(width) / float(height));
+  if (!options.lookFrom && scene.cameras.empty()) f.camera = autoCamera(scene.bounds, float(f.width) / float(f.height));
   // Ray origins within 10x the coordinate range keep the traversal's slab distances and triangle products finite
   // (an automatic camera for a scene at the range's edge, or at an extreme aspect ratio, could sit further out).
-  if (!glm::all(glm::lessThanEqual(glm::abs(camera.position), glm::vec3(10.0f * gpu::kMaxSceneCoordinate))))
+  if (!glm::all(glm::lessThanEqual(glm::abs(f.camera.position), glm::vec3(10.0f * gpu::kMaxSceneCoordinate))))
     throw Error("the camera would sit beyond +-1e12, where float ray tests overflow: place it with --look-from");
-  if (reference && (uint32_t(reference->width) != width || uint32_t(reference->height) != height))
-    throw Error("reference '" + options.referencePath + "' is " + std::to_string(reference->width) + "x" +
-                std::to_string(reference->height) + ", the render is " + std::to_string(width) + "x" + std::to_string(height));
-  out.cameraName = camera.name;
-  out.width = width;
-  out.height = height;
+  return f;
+}
 
-  addThinRibbons(scene, camera, height);  // points and lines, one pixel wide for this camera and image
-  addEnvironmentLight(options, scene, out);
-  auto t = Clock::now();
-  std::vector<Aabb> bounds = scene.triangleBounds();
-  Bvh bvh = buildBvh(bounds);
-  out.setup.bvh = since(t);
-  out.bvh = bvh.stats;
-
-  t = Clock::now();
-  GpuScene gpuScene(ctx, scene, bvh, options.estimator.lightSelect == LightSelect::Uniform);
-  out.setup.upload = since(t);
-  out.sceneInfo = gpuScene.info();
-
+// What the renderer is asked for, but the device's choices (resolveDeviceChoices).
+RenderSettings renderSettings(const RenderOptions& options, const Scene& scene, const BvhStats& bvh, const Framing& f) {
   RenderSettings settings;
-  settings.width = width;
-  settings.height = height;
+  settings.width = f.width;
+  settings.height = f.height;
   settings.spp = options.spp;
   // A time budget without --spp leaves the count open (kMaxSpp); ZSobol's Morton index bounds it by the image.
   if (options.timeBudget > 0.0 && options.spp == kMaxSpp && options.estimator.sampler == Sampler::ZSobol)
-    if (uint32_t most = zsobolMaxSpp(width, height, options.estimator.replicates); most > 0)
+    if (uint32_t most = zsobolMaxSpp(f.width, f.height, options.estimator.replicates); most > 0)
       settings.spp = std::min(settings.spp, most);
   settings.estimator = options.estimator;
   // The independent sampler's samples do not depend on the replicates (sampler.h streamKey); they only group its
   // samples for the reliability figure, which needs two groups.
   if (settings.estimator.sampler == Sampler::Independent)
     settings.estimator.replicates = std::max(2u, settings.estimator.replicates);
-  settings.features = pipelineFeatures(scanFeatures(scene), bvh.stats, options.specialize);
+  settings.features = pipelineFeatures(scanFeatures(scene), bvh, options.specialize);
   if (options.withoutTextures) settings.features.textures = settings.features.normalMaps = settings.features.alpha = false;
-  out.features = settings.features;
   settings.seed = options.seed;
-  out.background = options.background.value_or(glm::vec3(0.0f));
-  settings.background = out.background;
+  settings.background = options.background.value_or(glm::vec3(0.0f));
   settings.filter = options.filter;
-  settings.camera = makeCameraRig(camera, width, height);
+  settings.camera = makeCameraRig(f.camera, f.width, f.height);
   settings.progress = options.progress;
   settings.timeBudget = options.timeBudget;
-  // auto (the integrator, workgroup and wavefront sizes) becomes the device's choice here, so the report and a
-  // checkpoint name what ran: a resume continues with its checkpoint's, and BSDF splitting keeps the wavefront
-  // (it needs the path pool).
+  return settings;
+}
+
+// auto (the integrator, workgroup and wavefront sizes) becomes the device's choice here, so the report and a
+// checkpoint name what ran: a resume continues with its checkpoint's, and BSDF splitting keeps the wavefront (it
+// needs the path pool). Returns the options with those choices made.
+RenderOptions resolveDeviceChoices(vk::Context& ctx, const RenderOptions& options, const RunControl& run,
+                                   RenderSettings& settings, RenderOutcome& out) {
   RenderOptions resolved = options;
   if (run.resumeConfig) {
     const nlohmann::json& was = run.resumeConfig->at("options");
-    if (resolved.integrator == Integrator::Auto) resolved.integrator = integratorFromString(was.at("integrator").get<std::string>());
+    if (resolved.integrator == Integrator::Auto)
+      resolved.integrator = integratorFromString(was.at("integrator").get<std::string>());
     if (resolved.workgroupSize == 0) resolved.workgroupSize = was.value("workgroup", 0u);
     if (resolved.wavefrontPaths == 0) resolved.wavefrontPaths = was.value("wavefront_paths", 0u);
   }
@@ -302,117 +296,180 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   settings.stageTimes = options.stageTimes.value_or(tuning.stageTimes);
   out.spirvVariant = planKernels(settings).spirvVariant;
   out.integrator = resolved.integrator;
-  out.tuning.subgroupSize = ctx.subgroupSize();
-  out.tuning.workgroupSize = resolved.workgroupSize;
-  out.tuning.wavefrontPaths = resolved.wavefrontPaths;
-  out.tuning.integratorAuto = options.integrator == Integrator::Auto;
-  out.tuning.workgroupAuto = options.workgroupSize == 0;
-  out.tuning.wavefrontAuto = options.wavefrontPaths == 0;
-  out.tuning.stageTimes = settings.stageTimes;
-  out.tuning.stageTimesAuto = !options.stageTimes.has_value();
-  out.tuning.cpuVectorBits = ctx.cpuVectorBits();
-  out.tuning.cpuVectorAuto = out.tuning.cpuVectorBits > 0 && vk::prepareLavapipeEnvironment().vectorChosen;
+  RenderOutcome::Tuning& t = out.tuning;
+  t.subgroupSize = ctx.subgroupSize();
+  t.workgroupSize = resolved.workgroupSize;
+  t.wavefrontPaths = resolved.wavefrontPaths;
+  t.integratorAuto = options.integrator == Integrator::Auto;
+  t.workgroupAuto = options.workgroupSize == 0;
+  t.wavefrontAuto = options.wavefrontPaths == 0;
+  t.stageTimes = settings.stageTimes;
+  t.stageTimesAuto = !options.stageTimes.has_value();
+  t.cpuVectorBits = ctx.cpuVectorBits();
+  t.cpuVectorAuto = t.cpuVectorBits > 0 && vk::prepareLavapipeEnvironment().vectorChosen;
+  return resolved;
+}
+
+// What a render learned before its passes (efficiency roulette's pilot), kept in its checkpoint.
+struct LearnedBeforePasses {
   std::optional<RouletteTable> roulette;
   double pilotSeconds = 0.0;
-  // What a checkpoint of this render records; a resumed render's must match it, and its learned state (the
-  // efficiency pilot's scales) is used instead of a new pilot.
-  const nlohmann::json optionsJson = renderOptionsJson(resolved);
-  ContentHash fingerprint;
-  fingerprint.addValue(sceneFingerprint(scene));
-  out.checkpointConfig = {{"options", optionsJson}, {"scene_fingerprint", fingerprint.hex()}, {"device", out.device},
-                          {"outputs", run.outputs}};
+};
+
+// A new render's empty state, or the checkpoint's after checking that it is this render's.
+RenderState startOrResume(const RunControl& run, const std::string& fingerprint, const Framing& f, RenderOutcome& out,
+                          LearnedBeforePasses& learned) {
   RenderState state;
-  if (run.resumeConfig) {
-    checkResumable(*run.resumeConfig, optionsJson, fingerprint.hex());
-    state = std::move(*run.resumeState);
-    if (state.film.width != width || state.film.height != height)
-      throw Error("the checkpoint's film is " + std::to_string(state.film.width) + "x" + std::to_string(state.film.height) +
-                  ", the render is " + std::to_string(width) + "x" + std::to_string(height));
-    out.resumed = true;
-    if (run.resumeConfig->at("device") != out.device)
-      out.warnings.push_back("resumed on '" + out.device + "', the checkpoint was written on '" +
-                             run.resumeConfig->at("device").get<std::string>() +
-                             "': the image stays unbiased, but is not bit-identical to an uninterrupted render");
-    if (run.resumeConfig->contains("roulette")) {
-      roulette = rouletteFromJson(run.resumeConfig->at("roulette"));
-      pilotSeconds = run.resumeConfig->at("pilot_seconds");
-    }
+  if (!run.resumeConfig) return state;
+  checkResumable(*run.resumeConfig, out.checkpointConfig.at("options"), fingerprint);
+  state = std::move(*run.resumeState);
+  if (state.film.width != f.width || state.film.height != f.height)
+    throw Error("the checkpoint's film is " + std::to_string(state.film.width) + "x" + std::to_string(state.film.height) +
+                ", the render is " + std::to_string(f.width) + "x" + std::to_string(f.height));
+  out.resumed = true;
+  if (run.resumeConfig->at("device") != out.device)
+    out.warnings.push_back("resumed on '" + out.device + "', the checkpoint was written on '" +
+                           run.resumeConfig->at("device").get<std::string>() +
+                           "': the image stays unbiased, but is not bit-identical to an uninterrupted render");
+  if (run.resumeConfig->contains("roulette")) {
+    learned.roulette = rouletteFromJson(run.resumeConfig->at("roulette"));
+    learned.pilotSeconds = run.resumeConfig->at("pilot_seconds");
   }
+  return state;
+}
+
+// Efficiency roulette's pilot. Its time is part of the estimator's cost and counts as render time. Under mpirun
+// rank 0 runs it and tells the others, so every rank renders with the same scales.
+void runEfficiencyPilot(vk::Context& ctx, const GpuScene& gpuScene, const RenderSettings& settings, RenderOutcome& out,
+                        LearnedBeforePasses& learned) {
   const RankGroup& group = RankGroup::world();
-  if (options.estimator.rr == RouletteMode::Efficiency && !roulette) {
-    // Its time is part of the estimator's cost and counts as render time. Under mpirun rank 0 runs it and tells
-    // the others, so every rank renders with the same scales.
-    std::string shared;
-    if (group.isRoot()) {
-      RoulettePilot pilot = runRoulettePilot(ctx, gpuScene, settings);
-      out.setup.pipelines += pilot.pipelineSeconds;
-      roulette = pilot.table;
-      pilotSeconds = pilot.seconds;
-      shared = nlohmann::json{{"roulette", rouletteJson(*roulette)}, {"pilot_seconds", pilotSeconds}}.dump();
-    }
-    group.broadcast(shared);
-    if (!group.isRoot()) {
-      nlohmann::json j = nlohmann::json::parse(shared);
-      roulette = rouletteFromJson(j.at("roulette"));
-      pilotSeconds = j.at("pilot_seconds");
-    }
+  std::string shared;
+  if (group.isRoot()) {
+    RoulettePilot pilot = runRoulettePilot(ctx, gpuScene, settings);
+    out.setup.pipelines += pilot.pipelineSeconds;
+    learned.roulette = pilot.table;
+    learned.pilotSeconds = pilot.seconds;
+    shared = nlohmann::json{{"roulette", rouletteJson(*learned.roulette)}, {"pilot_seconds", learned.pilotSeconds}}.dump();
   }
-  if (roulette) out.checkpointConfig["roulette"] = rouletteJson(*roulette), out.checkpointConfig["pilot_seconds"] = pilotSeconds;
-  if (options.timeBudget > 0.0)
-    settings.timeBudget = std::max(1e-3, options.timeBudget - pilotSeconds - state.stats.seconds);
-  if (options.timeBudget > 0.0 && pilotSeconds > 0.5 * options.timeBudget) {
+  group.broadcast(shared);
+  if (!group.isRoot()) {
+    nlohmann::json j = nlohmann::json::parse(shared);
+    learned.roulette = rouletteFromJson(j.at("roulette"));
+    learned.pilotSeconds = j.at("pilot_seconds");
+  }
+}
+
+// The pilot's seconds come out of a time budget; a pilot that took most of it is worth a warning.
+void chargePilotToBudget(const RenderOptions& options, const RenderState& state, const LearnedBeforePasses& learned,
+                         RenderSettings& settings, RenderOutcome& out) {
+  if (options.timeBudget <= 0.0) return;
+  settings.timeBudget = std::max(1e-3, options.timeBudget - learned.pilotSeconds - state.stats.seconds);
+  if (learned.pilotSeconds > 0.5 * options.timeBudget) {
     char line[256];
     std::snprintf(line, sizeof(line),
                   "efficiency roulette's pilot took %.3g s of the %.3g s time budget, so few samples were left to the "
                   "render: give a longer budget, or --rr throughput",
-                  pilotSeconds, options.timeBudget);
+                  learned.pilotSeconds, options.timeBudget);
     out.warnings.push_back(line);
   }
+}
+
+// Periodic checkpoints (rank 0's). One that cannot be written (a full disk) leaves the last one intact and the
+// render going.
+RenderControl renderControl(const RunControl& run, RenderOutcome& out) {
+  RenderControl control;
+  control.stop = run.stop;
+  if (run.checkpointPath.empty() || !RankGroup::world().isRoot()) return control;
+  control.checkpointEvery = run.checkpointEvery;
+  control.checkpoint = [&run, &out, lastEnd = Clock::now(), lastWrite = 0.0](const RenderState& now) mutable {
+    if (run.checkpointShare > 0.0 && since(lastEnd) * run.checkpointShare < lastWrite) return;
+    auto t = Clock::now();
+    try {
+      writeCheckpoint(run.checkpointPath, encodeCheckpoint({out.checkpointConfig, now}));
+      ++out.checkpointsWritten;
+      lastWrite = since(t);
+      lastEnd = Clock::now();
+      out.checkpointSeconds += lastWrite;
+      if (run.afterCheckpoint) run.afterCheckpoint();
+    } catch (const Error& e) {
+      std::fprintf(stderr, "vkmc: warning: %s (the render goes on; the last checkpoint is kept)\n", e.what());
+      out.warnings.push_back(std::string(e.what()) + " (the render went on)");
+    }
+  };
+  return control;
+}
+
+// The sample passes: in this process, or in batches across the ranks of mpirun.
+void renderPasses(PathRenderer& renderer, RenderState& state, const RenderControl& control, const RenderSettings& settings,
+                  RenderOutcome& out) {
+  const RankGroup& group = RankGroup::world();
+  if (!group.distributed()) return renderer.render(state, control);
+  DistributedPlan plan;
+  plan.spp = settings.spp;
+  plan.timeBudget = settings.timeBudget;
+  plan.refreshPixelEstimate = settings.estimator.shadowRrThreshold > 0.0f;
+  plan.device = out.device;
+  plan.width = settings.width, plan.height = settings.height;
+  plan.replicateVariance = settings.estimator.sampler != Sampler::Independent;
+  plan.replicates = settings.estimator.replicates;
+  out.ranks = renderDistributed(renderer, group, state, control, plan);
+}
+
+RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene scene, const RunControl& run) {
+  std::optional<ExrImage> reference;
+  if (!options.referencePath.empty()) reference = readExr(options.referencePath);
+  RenderOutcome out;
+  out.device = ctx.deviceName();
+  out.degenerateTriangles = scene.degenerateTriangles;
+  out.warnings = scene.warnings;
+  const Framing framing = frameScene(options, scene);
+  if (reference && (uint32_t(reference->width) != framing.width || uint32_t(reference->height) != framing.height))
+    throw Error("reference '" + options.referencePath + "' is " + std::to_string(reference->width) + "x" +
+                std::to_string(reference->height) + ", the render is " + std::to_string(framing.width) + "x" +
+                std::to_string(framing.height));
+  out.cameraName = framing.camera.name, out.width = framing.width, out.height = framing.height;
+  addThinRibbons(scene, framing.camera, framing.height);  // points and lines, one pixel wide for this camera and image
+  addEnvironmentLight(options, scene, out);
+  auto t = Clock::now();
+  Bvh bvh = buildBvh(scene.triangleBounds());
+  out.setup.bvh = since(t);
+  out.bvh = bvh.stats;
+  t = Clock::now();
+  GpuScene gpuScene(ctx, scene, bvh, options.estimator.lightSelect == LightSelect::Uniform);
+  out.setup.upload = since(t);
+  out.sceneInfo = gpuScene.info();
+  RenderSettings settings = renderSettings(options, scene, bvh.stats, framing);
+  out.features = settings.features, out.background = settings.background;
+  // What a checkpoint of this render records; a resumed render's must match it, and its learned state (the
+  // efficiency pilot's scales) is used instead of a new pilot.
+  const RenderOptions resolved = resolveDeviceChoices(ctx, options, run, settings, out);
+  ContentHash fingerprint;
+  fingerprint.addValue(sceneFingerprint(scene));
+  out.checkpointConfig = {{"options", renderOptionsJson(resolved)},
+                          {"scene_fingerprint", fingerprint.hex()},
+                          {"device", out.device},
+                          {"outputs", run.outputs}};
+  LearnedBeforePasses learned;
+  RenderState state = startOrResume(run, fingerprint.hex(), framing, out, learned);
+  if (options.estimator.rr == RouletteMode::Efficiency && !learned.roulette)
+    runEfficiencyPilot(ctx, gpuScene, settings, out, learned);
+  if (learned.roulette)
+    out.checkpointConfig["roulette"] = rouletteJson(*learned.roulette),
+    out.checkpointConfig["pilot_seconds"] = learned.pilotSeconds;
+  chargePilotToBudget(options, state, learned, settings, out);
   PathRenderer renderer(ctx, gpuScene, settings);
-  if (roulette) renderer.setRouletteScales(roulette->scale);
+  if (learned.roulette) renderer.setRouletteScales(learned.roulette->scale);
   out.setup.pipelines += renderer.pipelineSeconds();
   out.tuning.pathsPerPass = renderer.pathsPerPass();
   out.tuning.pathSlots = renderer.pathSlots();
-  RenderControl control;
-  control.stop = run.stop;
-  if (!run.checkpointPath.empty() && group.isRoot()) {
-    control.checkpointEvery = run.checkpointEvery;
-    // A periodic checkpoint that cannot be written (a full disk) leaves the last one intact and the render going.
-    control.checkpoint = [&, lastEnd = Clock::now(), lastWrite = 0.0](const RenderState& now) mutable {
-      if (run.checkpointShare > 0.0 && since(lastEnd) * run.checkpointShare < lastWrite) return;
-      auto t = Clock::now();
-      try {
-        writeCheckpoint(run.checkpointPath, encodeCheckpoint({out.checkpointConfig, now}));
-        ++out.checkpointsWritten;
-        lastWrite = since(t);
-        lastEnd = Clock::now();
-        out.checkpointSeconds += lastWrite;
-      } catch (const Error& e) {
-        std::fprintf(stderr, "vkmc: warning: %s (the render goes on; the last checkpoint is kept)\n", e.what());
-        out.warnings.push_back(std::string(e.what()) + " (the render went on)");
-      }
-    };
-  }
-  if (group.distributed()) {
-    DistributedPlan plan;
-    plan.spp = settings.spp;
-    plan.timeBudget = settings.timeBudget;
-    plan.refreshPixelEstimate = options.estimator.shadowRrThreshold > 0.0f;
-    plan.device = out.device;
-    plan.width = width, plan.height = height;
-    plan.replicateVariance = options.estimator.sampler != Sampler::Independent;
-    plan.replicates = settings.estimator.replicates;
-    out.ranks = renderDistributed(renderer, group, state, control, plan);
-  } else {
-    renderer.render(state, control);
-  }
+  renderPasses(renderer, state, renderControl(run, out), settings, out);
   out.interrupted = state.interrupted;
   out.film = state.image();
   out.stats = state.stats;
   out.finalState = std::move(state);
-  out.stats.seconds += pilotSeconds;
-  out.pilotSeconds = pilotSeconds;
-  out.roulette = roulette;
+  out.stats.seconds += learned.pilotSeconds;
+  out.pilotSeconds = learned.pilotSeconds;
+  out.roulette = learned.roulette;
   if (renderer.ears().enabled()) out.ears = renderer.ears().summary();
   out.earsGuard = renderer.earsGuard();
   if (run.inspect) run.inspect(renderer);
@@ -440,19 +497,16 @@ std::string encodeRenderCheckpoint(const RenderOutcome& outcome) {
   return encodeCheckpoint({outcome.checkpointConfig, outcome.finalState});
 }
 
-nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
-  using nlohmann::json;
+namespace {
+using nlohmann::json;
+
+json finiteOrNull(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+// The rays, the time and the samples: what the render did.
+void addRunFields(json& j, const RenderOutcome& r) {
   const RenderStats& s = r.stats;
-  glm::dvec3 mean = r.film.imageMean();
-  glm::dvec3 var = r.film.imageMeanVarianceOfMean();
-  json j;
-  j["scene"] = o.scenePath;
-  j["width"] = r.width;
-  j["height"] = r.height;
   j["spp"] = s.samplesPerPixel;  // reached; equals the request unless a time budget ended the render
-  if (o.timeBudget == 0.0) j["spp_requested"] = o.spp;
-  j["seed"] = o.seed;
-  j["camera"] = r.cameraName;
+  j["spp_reached"] = s.samplesPerPixel;
   j["seconds"] = s.seconds;
   j["setup_seconds"] = r.setup.total();
   j["setup"] = {{"load", r.setup.load}, {"bvh", r.setup.bvh}, {"upload", r.setup.upload}, {"pipelines", r.setup.pipelines}};
@@ -464,7 +518,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["ray_counts"] = {{"camera", s.cameraRays},
                      {"extension", s.extensionRays},
                      {"shadow", s.shadowRays},
-                     {"deep_walks", s.deepWalks},   // rays whose walk outgrew the register stack (deep pass)
+                     {"deep_walks", s.deepWalks},  // rays whose walk outgrew the register stack (deep pass)
                      // vertices whose split (BSDF splitting, EARS) found the path pool full and went on whole
                      {"splits_refused", s.splitsRefused}};
   j["mrays_per_second"] = s.seconds > 0.0 ? static_cast<double>(s.rays()) / s.seconds * 1e-6 : 0.0;
@@ -477,90 +531,92 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   // Finite samples too bright for float squares (a channel >= 2^56): counted apart, and kept (scaled sums).
   j["high_range_samples"] = r.film.totalHighRange();
   j["samples"] = r.film.totalSamples();
-  j["mean"] = {mean.x, mean.y, mean.z};
-  // null where no variance is estimated (one scrambling a pixel: Film::estimatesVariance), never a made-up 0.
-  const bool estimated = r.film.estimatesVariance();
-  j["mean_variance"] = estimated ? json{var.x, var.y, var.z} : json(nullptr);
-  j["device"] = r.device;
-  j["integrator"] = toString(r.integrator);
-  const RenderOutcome::Tuning& t = r.tuning;
-  j["device_tuning"] = {{"subgroup_size", t.subgroupSize},
-                        {"workgroup_size", t.workgroupSize},
-                        {"wavefront_paths", t.wavefrontPaths},
-                        {"paths_per_pass", t.pathsPerPass},
-                        {"path_slots", t.pathSlots},
-                        {"stage_times", t.stageTimes},
-                        {"cpu_vector_bits", t.cpuVectorBits > 0 ? json(t.cpuVectorBits) : json(nullptr)},
-                        {"malloc_tunables", mallocTunablesAdded().empty() ? json(nullptr) : json(mallocTunablesAdded())},
-                        {"chosen_by_device",
-                         {{"integrator", t.integratorAuto}, {"workgroup", t.workgroupAuto}, {"wavefront", t.wavefrontAuto},
-                          {"stage_times", t.stageTimesAuto}, {"cpu_vector", t.cpuVectorAuto}}}};
-  j["spp_reached"] = s.samplesPerPixel;
+  j["max_bounces"] = s.maxBounces;
+}
+
+json deviceTuningJson(const RenderOutcome::Tuning& t) {
+  return {{"subgroup_size", t.subgroupSize},
+          {"workgroup_size", t.workgroupSize},
+          {"wavefront_paths", t.wavefrontPaths},
+          {"paths_per_pass", t.pathsPerPass},
+          {"path_slots", t.pathSlots},
+          {"stage_times", t.stageTimes},
+          {"cpu_vector_bits", t.cpuVectorBits > 0 ? json(t.cpuVectorBits) : json(nullptr)},
+          {"malloc_tunables", mallocTunablesAdded().empty() ? json(nullptr) : json(mallocTunablesAdded())},
+          {"chosen_by_device",
+           {{"integrator", t.integratorAuto},
+            {"workgroup", t.workgroupAuto},
+            {"wavefront", t.wavefrontAuto},
+            {"stage_times", t.stageTimesAuto},
+            {"cpu_vector", t.cpuVectorAuto}}}};
+}
+
+// The EARS guard's comparison (or that it had no budget for one); null where it did neither.
+json earsGuardJson(const EarsGuardOutcome& g) {
+  auto pass = [](const PolicyPass& p) {
+    return json{{"samples_measured", p.samples},
+                {"relative_variance_per_sample", p.relativeVariance},
+                {"seconds_per_sample", p.secondsPerSample},
+                {"efficiency", finiteOrNull(p.efficiency())}};
+  };
+  json j = {
+      {"rest_rendered_by", g.fellBack ? "throughput" : "ears"},       {"from_sample", g.fromSample},
+      {"pass_overhead_seconds", finiteOrNull(g.passOverhead)},        {"decided_at_seconds", finiteOrNull(g.decidedAtSeconds)},
+      {"learning_cost_seconds", finiteOrNull(g.learningCostSeconds)}, {"out_of_budget", !g.compared}};
+  if (!g.compared) return g.outOfBudget ? j : json(nullptr);
+  j["ears"] = pass(g.ears);
+  j["throughput"] = pass(g.throughput);
+  j["ears_first_look"] = g.secondLook ? pass(g.firstEars) : json(nullptr);
+  j["watched"] = g.watched;
+  j["watched_ears"] = g.watched && g.watchedEars.samples > 0 ? pass(g.watchedEars) : json(nullptr);
+  j["switched_later"] = g.switchedLater;
+  j["switched_at"] = g.switchedLater ? json(g.switchedAt) : json(nullptr);
+  return j;
+}
+
+// What the estimator learned before or during the passes: efficiency roulette's scales, EARS's cache and guard.
+void addLearnedFields(json& j, const RenderOutcome& r) {
   if (r.roulette) {
-    nlohmann::json scales = nlohmann::json::array();
-    for (float k : r.roulette->scale) scales.push_back(std::isfinite(k) ? nlohmann::json(k) : nlohmann::json("none"));
+    json scales = json::array();
+    for (float k : r.roulette->scale) scales.push_back(std::isfinite(k) ? json(k) : json("none"));
     j["efficiency_roulette"] = {{"pilot_seconds", r.pilotSeconds},
                                 {"scale_per_depth", scales},
                                 {"formula", "survival = min(scale[depth] * max(throughput), 0.999)"}};
   }
-  if (r.ears) j["ears"] = earsJson(*r.ears);
-  auto finiteOrNull = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-  if (r.ears && r.earsGuard.outOfBudget)
-    j["ears"]["guard"] = {{"out_of_budget", true},
-                          {"rest_rendered_by", r.earsGuard.fellBack ? "throughput" : "ears"},
-                          {"from_sample", r.earsGuard.fromSample},
-                          {"pass_overhead_seconds", finiteOrNull(r.earsGuard.passOverhead)},
-                          {"decided_at_seconds", finiteOrNull(r.earsGuard.decidedAtSeconds)},
-                          {"learning_cost_seconds", finiteOrNull(r.earsGuard.learningCostSeconds)}};
-  if (r.ears && r.earsGuard.compared) {
-    auto pass = [](const PolicyPass& p) {
-      return nlohmann::json{{"samples_measured", p.samples},
-                            {"relative_variance_per_sample", p.relativeVariance},
-                            {"seconds_per_sample", p.secondsPerSample},
-                            {"efficiency", std::isfinite(p.efficiency()) ? nlohmann::json(p.efficiency()) : nlohmann::json(nullptr)}};
-    };
-    j["ears"]["guard"] = {{"ears", pass(r.earsGuard.ears)},
-                          {"throughput", pass(r.earsGuard.throughput)},
-                          {"rest_rendered_by", r.earsGuard.fellBack ? "throughput" : "ears"},
-                          {"ears_first_look", r.earsGuard.secondLook ? pass(r.earsGuard.firstEars) : nlohmann::json(nullptr)},
-                          {"from_sample", r.earsGuard.fromSample},
-                          {"watched", r.earsGuard.watched},
-                          {"watched_ears", r.earsGuard.watched && r.earsGuard.watchedEars.samples > 0 ? pass(r.earsGuard.watchedEars)
-                                                                                                       : nlohmann::json(nullptr)},
-                          {"switched_later", r.earsGuard.switchedLater},
-                          {"switched_at", r.earsGuard.switchedLater ? nlohmann::json(r.earsGuard.switchedAt) : nlohmann::json(nullptr)},
-                          {"pass_overhead_seconds", finiteOrNull(r.earsGuard.passOverhead)},
-                          {"decided_at_seconds", finiteOrNull(r.earsGuard.decidedAtSeconds)},
-                          {"learning_cost_seconds", finiteOrNull(r.earsGuard.learningCostSeconds)},
-                          {"out_of_budget", false}};
-  }
-  if (o.timeBudget > 0.0) j["time_budget"] = o.timeBudget;
-  // Checkpoints: a resumed render's counters and seconds include the runs before it (pass time only).
-  j["resumed"] = r.resumed;
-  j["interrupted"] = r.interrupted;
-  j["checkpoints_written"] = r.checkpointsWritten;
-  j["checkpoint_seconds"] = r.checkpointSeconds;
-  if (!r.ranks.empty()) {
-    nlohmann::json ranks = nlohmann::json::array();
-    for (const RankReport& k : r.ranks)
-      ranks.push_back({{"rank", k.rank},
+  if (!r.ears) return;
+  j["ears"] = earsJson(*r.ears);
+  if (json guard = earsGuardJson(r.earsGuard); !guard.is_null()) j["ears"]["guard"] = guard;
+}
+
+json mpiJson(const std::vector<RankReport>& ranks) {
+  json perRank = json::array();
+  for (const RankReport& k : ranks)
+    perRank.push_back({{"rank", k.rank},
                        {"host", k.host},
                        {"device", k.device},
                        {"rays", k.rays},
                        {"batches", k.batches},
                        {"busy_seconds", k.busySeconds},
                        {"gpu_seconds", k.gpuSeconds}});
-    j["mpi"] = {{"ranks", r.ranks.size()}, {"per_rank", ranks}};
-  }
+  return {{"ranks", ranks.size()}, {"per_rank", perRank}};
+}
+
+// The variance, the efficiency it gives, and whether to trust it; the error against a reference.
+void addErrorFields(json& j, const RenderOptions& o, const RenderOutcome& r) {
+  const RenderStats& s = r.stats;
+  // null where no variance is estimated (one scrambling a pixel: Film::estimatesVariance), never a made-up 0.
+  const bool estimated = r.film.estimatesVariance();
+  const glm::dvec3 var = r.film.imageMeanVarianceOfMean();
+  j["mean_variance"] = estimated ? json{var.x, var.y, var.z} : json(nullptr);
   // Without a reference: relative variance (per-pixel variance of the mean over mean^2 + epsilon, averaged
   // over pixels and channels) is the expected relMSE of an unbiased render, so it gives an efficiency too.
   const double relVar = r.film.meanRelativeVariance(kRelMseEpsilon);
+  auto inverse = [&](double cost) { return relVar > 0.0 && cost > 0.0 ? 1.0 / (relVar * cost) : 0.0; };
   j["mean_relvariance"] = estimated ? json(relVar) : json(nullptr);
-  j["estimated_efficiency"] = !estimated ? json(nullptr) : json(relVar > 0.0 && s.seconds > 0.0 ? 1.0 / (relVar * s.seconds) : 0.0);
+  j["estimated_efficiency"] = estimated ? json(inverse(s.seconds)) : json(nullptr);
   // The same efficiency against each cost: wall time, GPU time (kernel timestamps), rays per pixel (a cost that
   // does not depend on the machine's load); and where the variance came from (sampler.h replicates or samples).
   const double raysPerPixel = double(s.rays()) / double(std::max<size_t>(1, r.film.pixels()));
-  auto inverse = [&](double cost) { return relVar > 0.0 && cost > 0.0 ? 1.0 / (relVar * cost) : 0.0; };
   j["estimated_efficiency_by_cost"] = !estimated ? json(nullptr)
                                                  : json{{"wall_seconds", inverse(s.seconds)},
                                                         {"gpu_seconds", inverse(s.gpuSeconds)},
@@ -568,45 +624,81 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["variance_from"] = !estimated ? "none" : r.film.replicateVariance ? "replicates" : "samples";
   // Whether that variance, and so the efficiency, can be trusted (analysis/variance_reliability.h).
   const VarianceReliability reliability = assessVarianceReliability(r.film);
-  j["variance_reliability"] = !estimated ? json(nullptr) : json{
-      {"relative_standard_error", std::isfinite(reliability.relativeStandardError) ? nlohmann::json(reliability.relativeStandardError)
-                                                                                    : nlohmann::json("unknown")},
-      {"reliable_below", VarianceReliability::kReliableBelow},
-      {"largest_pixel_share", reliability.largestPixelShare},
-      {"pixels_assessed", reliability.pixelsAssessed}};
+  j["variance_reliability"] =
+      !estimated
+          ? json(nullptr)
+          : json{{"relative_standard_error",
+                  std::isfinite(reliability.relativeStandardError) ? json(reliability.relativeStandardError) : json("unknown")},
+                 {"reliable_below", VarianceReliability::kReliableBelow},
+                 {"largest_pixel_share", reliability.largestPixelShare},
+                 {"pixels_assessed", reliability.pixelsAssessed}};
   j["estimated_efficiency_reliable"] = reliability.reliable();
-  if (r.error) {
-    j["reference"] = o.referencePath;
-    j["mse"] = r.error->mse;
-    j["relmse"] = r.error->relmse;
-    j["efficiency"] = r.error->relmse > 0.0 && s.seconds > 0.0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0;
-  }
+  if (!r.error) return;
+  j["reference"] = o.referencePath;
+  j["mse"] = r.error->mse;
+  j["relmse"] = r.error->relmse;
+  j["efficiency"] = r.error->relmse > 0.0 && s.seconds > 0.0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0;
+}
+
+// The scene as the device holds it: its size, its BVH and the features its kernels were specialized for.
+void addSceneFields(json& j, const RenderOptions& o, const RenderOutcome& r) {
+  j["scene_info"] = {{"triangles", r.sceneInfo.triangles},
+                     {"emissive_triangles", r.sceneInfo.emissiveTriangles},
+                     {"materials", r.sceneInfo.materials},
+                     {"punctual_lights", r.sceneInfo.punctualLights},
+                     {"degenerate_triangles_skipped", r.degenerateTriangles}};
+  j["bvh"] = {{"inner_nodes", r.bvh.innerNodes},
+              {"leaves", r.bvh.leaves},
+              {"max_depth", r.bvh.maxDepth},
+              {"max_leaf_size", r.bvh.maxLeafSize},
+              {"sah_cost", r.bvh.sahCost},
+              {"wide_sah_cost", r.bvh.wideSahCost},
+              {"wide_max_depth", r.bvh.wideMaxDepth},
+              {"wide_max_pending", r.bvh.wideMaxPending},
+              {"register_stack_entries", r.features.registerStackEntries},
+              {"deep_walk_passes", r.features.deepWalks},
+              {"build_seconds", r.bvh.buildSeconds},
+              {"build_threads", r.bvh.buildThreads}};
+  j["specialized_for"] = {{"emitters", r.features.emitters()},     {"punctual_lights", r.features.punctualLights > 0},
+                          {"environment", r.features.environment}, {"glossy", r.features.glossy},
+                          {"specialized", o.specialize},           {"prespecialized_spirv", r.spirvVariant}};
+}
+
+}  // namespace
+
+nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
+  json j;
+  j["scene"] = o.scenePath;
+  j["width"] = r.width;
+  j["height"] = r.height;
+  if (o.timeBudget == 0.0) j["spp_requested"] = o.spp;
+  if (o.timeBudget > 0.0) j["time_budget"] = o.timeBudget;
+  j["seed"] = o.seed;
+  j["camera"] = r.cameraName;
+  const glm::dvec3 mean = r.film.imageMean();
+  j["mean"] = {mean.x, mean.y, mean.z};
+  j["device"] = r.device;
+  j["integrator"] = toString(r.integrator);
+  j["device_tuning"] = deviceTuningJson(r.tuning);
+  addRunFields(j, r);
+  addLearnedFields(j, r);
+  addErrorFields(j, o, r);
+  addSceneFields(j, o, r);
+  // Checkpoints: a resumed render's counters and seconds include the runs before it (pass time only).
+  j["resumed"] = r.resumed;
+  j["interrupted"] = r.interrupted;
+  j["checkpoints_written"] = r.checkpointsWritten;
+  j["checkpoint_seconds"] = r.checkpointSeconds;
+  if (!r.ranks.empty()) j["mpi"] = mpiJson(r.ranks);
   const EstimatorConfig& e = o.estimator;
   j["estimator"] = e.toJson();
   j["estimator"]["unbiased"] = e.unbiased();
   j["estimator"]["bias"] = e.unbiased() ? "none: paths end by Russian roulette only"
                                         : "truncation: paths are cut after " + std::to_string(e.maxDepth) +
                                               " scattering events, so the image is biased low";
-  j["scene_info"] = {{"triangles", r.sceneInfo.triangles},
-                     {"emissive_triangles", r.sceneInfo.emissiveTriangles},
-                     {"materials", r.sceneInfo.materials},
-                     {"degenerate_triangles_skipped", r.degenerateTriangles}};
-  j["bvh"] = {{"inner_nodes", r.bvh.innerNodes},    {"leaves", r.bvh.leaves},    {"max_depth", r.bvh.maxDepth},
-              {"max_leaf_size", r.bvh.maxLeafSize}, {"sah_cost", r.bvh.sahCost}, {"wide_sah_cost", r.bvh.wideSahCost},
-              {"wide_max_depth", r.bvh.wideMaxDepth}, {"wide_max_pending", r.bvh.wideMaxPending},
-              {"register_stack_entries", r.features.registerStackEntries}, {"deep_walk_passes", r.features.deepWalks}, {"build_seconds", r.bvh.buildSeconds},
-              {"build_threads", r.bvh.buildThreads}};
-  j["max_bounces"] = s.maxBounces;
-  j["specialized_for"] = {{"emitters", r.features.emitters()},
-                          {"punctual_lights", r.features.punctualLights > 0},
-                          {"environment", r.features.environment},
-                          {"glossy", r.features.glossy},
-                          {"specialized", o.specialize},
-                          {"prespecialized_spirv", r.spirvVariant}};
   j["background"] = {r.background.x, r.background.y, r.background.z};
   j["filter"] = pixelFilterJson(o.filter);
   j["environment"] = r.environment;
-  j["scene_info"]["punctual_lights"] = r.sceneInfo.punctualLights;
   j["warnings"] = r.warnings;
   return j;
 }
@@ -617,10 +709,10 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
   glm::dvec3 var = r.film.imageMeanVarianceOfMean();
   char buf[2048];
   std::snprintf(buf, sizeof(buf), "%.3g %.3g %.3g (image mean of the per-pixel variance of the mean)", var.x, var.y, var.z);
-  const std::string varianceText =
-      r.film.estimatesVariance() ? std::string(buf)
-                                 : "not estimated: one scrambling a pixel (--replicates 1) has no unbiased estimate of "
-                                   "its variance (--replicates 2 or more gives one)";
+  const std::string varianceText = r.film.estimatesVariance()
+                                       ? std::string(buf)
+                                       : "not estimated: one scrambling a pixel (--replicates 1) has no unbiased estimate of "
+                                         "its variance (--replicates 2 or more gives one)";
   std::snprintf(buf, sizeof(buf),
                 "scene       %s (%u triangles, %u emissive)\n"
                 "device      %s\n"
@@ -632,12 +724,12 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 "variance    %s\n"
                 "non-finite  %llu samples excluded (%llu finite samples above 2^56 kept in the scaled sums)\n",
                 o.scenePath.c_str(), r.sceneInfo.triangles, r.sceneInfo.emissiveTriangles, r.device.c_str(), r.width, r.height,
-                s.samplesPerPixel, r.cameraName.c_str(), pixelFilterSummary(o.filter).c_str(), o.estimator.summary().c_str(), s.seconds, s.gpuSeconds, r.setup.total(),
-                r.setup.load, r.setup.bvh, r.setup.upload, r.setup.pipelines, (unsigned long long)s.rays(),
-                (unsigned long long)s.cameraRays, (unsigned long long)s.extensionRays, (unsigned long long)s.shadowRays,
-                (unsigned long long)s.deepWalks, s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z,
-                varianceText.c_str(), (unsigned long long)r.film.totalNonfinite(),
-                (unsigned long long)r.film.totalHighRange());
+                s.samplesPerPixel, r.cameraName.c_str(), pixelFilterSummary(o.filter).c_str(), o.estimator.summary().c_str(),
+                s.seconds, s.gpuSeconds, r.setup.total(), r.setup.load, r.setup.bvh, r.setup.upload, r.setup.pipelines,
+                (unsigned long long)s.rays(), (unsigned long long)s.cameraRays, (unsigned long long)s.extensionRays,
+                (unsigned long long)s.shadowRays, (unsigned long long)s.deepWalks,
+                s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z, varianceText.c_str(),
+                (unsigned long long)r.film.totalNonfinite(), (unsigned long long)r.film.totalHighRange());
   std::string text = buf;
   if (s.splitsRefused > 0)
     text += "splits      " + std::to_string(s.splitsRefused) +
@@ -649,15 +741,17 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
             "\n";
   const VarianceReliability reliability = assessVarianceReliability(r.film);
   if (!r.film.estimatesVariance()) {
-    text += "reliability no variance estimate, so no estimated efficiency (compare against a reference: "
-            "--reference)\n";
+    text +=
+        "reliability no variance estimate, so no estimated efficiency (compare against a reference: "
+        "--reference)\n";
   } else if (reliability.pixelsAssessed == 0) {
     text += "reliability fewer samples than the " + std::to_string(r.film.replicates) +
             " replicates in every pixel: the variance estimate cannot be assessed, so the estimated efficiency is "
             "unreliable\n";
   } else if (!std::isfinite(reliability.relativeStandardError)) {
-    text += "reliability no pixel's samples varied, so nothing measures the variance (a contribution too rare to "
-            "have been met?): the estimated efficiency is unreliable\n";
+    text +=
+        "reliability no pixel's samples varied, so nothing measures the variance (a contribution too rare to "
+        "have been met?): the estimated efficiency is unreliable\n";
   } else if (!reliability.reliable()) {
     std::snprintf(buf, sizeof(buf),
                   "reliability the variance estimate is uncertain by %.0f%% (one pixel holds %.0f%% of it: heavy tails or "
@@ -665,7 +759,6 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                   100.0 * reliability.relativeStandardError, 100.0 * reliability.largestPixelShare);
     text += buf;
   }
-  for (const auto& w : r.warnings) text += "warning     " + w + "\n";
   return text;
 }
 

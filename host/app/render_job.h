@@ -21,10 +21,16 @@
 
 namespace vkmc {
 
+// Limits and defaults of a render's size, used by validation, the command line's help and the report.
+constexpr uint32_t kMaxImageSide = 16384;
+constexpr uint32_t kMaxSpp = 1u << 24;
+constexpr uint32_t kDefaultImageWidth = 256;
+constexpr uint32_t kDefaultSpp = 64;
+
 struct RenderOptions {
   std::string scenePath;
   std::optional<uint32_t> width, height;  // default 256 wide, height from the camera's aspect (else 256)
-  uint32_t spp = 64;
+  uint32_t spp = kDefaultSpp;
   EstimatorConfig estimator;  // includes the depth cap (max_depth)
   uint32_t seed = 1;
   std::optional<uint32_t> cameraIndex;
@@ -42,13 +48,13 @@ struct RenderOptions {
   float environmentStrength = 1.0f;
   PixelFilter filter;  // pixel reconstruction filter (--filter, --filter-radius; a study's "filter")
   bool progress = true;
-  double timeBudget = 0.0;       // seconds; 0 = render spp samples
-  std::string referencePath;     // EXR to compare with: mse, relmse, efficiency in the report
-  bool specialize = true;        // false: pipelines with every feature on (for comparison)
+  double timeBudget = 0.0;          // seconds; 0 = render spp samples
+  std::string referencePath;        // EXR to compare with: mse, relmse, efficiency in the report
+  bool specialize = true;           // false: pipelines with every feature on (for comparison)
   bool prespecializedSpirv = true;  // false: the general SPIR-V even where a pre-specialized variant matches
-  bool withoutTextures = false;  // textures, vertex colours and alpha compiled out: their cost, by comparison
-  uint32_t workgroupSize = 0;    // invocations per workgroup of every kernel (32, 64, 128, 256); 0: the device's
-  uint32_t wavefrontPaths = 0;   // paths in flight per pass at most; 0: the device's (device_tuning.h)
+  bool withoutTextures = false;     // textures, vertex colours and alpha compiled out: their cost, by comparison
+  uint32_t workgroupSize = 0;       // invocations per workgroup of every kernel (32, 64, 128, 256); 0: the device's
+  uint32_t wavefrontPaths = 0;      // paths in flight per pass at most; 0: the device's (device_tuning.h)
   Integrator integrator = Integrator::Auto;
   // Every stage's GPU time in the report (stage_gpu_seconds); unset: the device's (device_tuning.h). A
   // measurement, not part of the render: a checkpoint does not record it.
@@ -57,17 +63,19 @@ struct RenderOptions {
 
 // How a render runs, besides what it renders: checkpoints, a stop flag, and the checkpoint it continues.
 struct RunControl {
-  std::string checkpointPath;           // periodic checkpoints go here ("": none)
-  double checkpointEvery = 120.0;       // seconds of rendering between checkpoints
+  std::string checkpointPath;      // periodic checkpoints go here ("": none)
+  double checkpointEvery = 120.0;  // seconds of rendering between checkpoints
   // > 0: periodic checkpoints are spaced further, so that writing them takes at most this share of the time (the
   // default interval's promise; a film of 2 MP writes ~600 MB).
   double checkpointShare = 0.0;
-  nlohmann::json outputs;               // the outputs' paths, recorded in checkpoints for --resume
-  const std::atomic<int>* stop = nullptr;  // raised (a signal number): stop after the pass in flight
+  nlohmann::json outputs;                        // the outputs' paths, recorded in checkpoints for --resume
+  const std::atomic<int>* stop = nullptr;        // raised (a signal number): stop after the pass in flight
   const nlohmann::json* resumeConfig = nullptr;  // a checkpoint's configuration, with...
   RenderState* resumeState = nullptr;            // ...its state, moved into the render
   // Called with the renderer once the render is done, before it is destroyed (tests: the device buffers it holds).
   std::function<void(PathRenderer&)> inspect;
+  // Called after each checkpoint is written: a sync point where tests stop a render without racing it.
+  std::function<void()> afterCheckpoint;
 };
 
 struct SetupTimes {

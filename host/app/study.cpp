@@ -132,111 +132,117 @@ std::vector<size_t> studyRunOrder(size_t configurations, uint32_t repeat) {
   return order;
 }
 
-std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
+namespace {
+
+// A study's render of one configuration, seed and rung (a time budget or a sample count).
+RenderOptions studyOptions(const Study& study, const EstimatorConfig& e, uint32_t seed) {
+  RenderOptions o;
+  o.scenePath = study.scenePath;
+  o.width = study.width;
+  o.height = study.height;
+  o.estimator = e;
+  o.seed = seed;
+  o.filter = study.filter;
+  o.integrator = Integrator::Wavefront;  // one integrator for every row (auto could mix them on a GPU)
+  o.progress = false;
+  return o;
+}
+
+void setRung(const Study& study, double rung, RenderOptions& o) {
+  if (study.timeLadder)
+    o.timeBudget = rung, o.spp = kMaxSpp;
+  else
+    o.spp = static_cast<uint32_t>(rung);
+}
+
+struct StudyReference {
+  ExrImage image;
+  std::string note;  // where it came from
+};
+
+// Rendered with the first configuration and cached by a hash of what determines it.
+StudyReference renderedReference(vk::Context& ctx, const Study& study, const Scene& scene) {
+  std::string key = readFile(study.scenePath) + "|" + std::to_string(study.width) + "x" + std::to_string(study.height) + "|" +
+                    std::to_string(study.referenceSpp) + "|" + study.configurations[0].estimator.toJson().dump() +
+                    (study.filter.isPixelBox() ? "" : "|" + pixelFilterJson(study.filter).dump()) + "|vkmc-ref-1";
+  char hex[17];
+  std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(fnv1a(key)));
+  fs::path cached = fs::path(cacheDir()) / "references" / (std::string(hex) + ".exr");
+  if (fs::exists(cached)) return {readExr(cached.string()), cached.string() + " (cached)"};
+  std::fprintf(stderr, "vkmc bench: rendering the reference (%u spp, %s)\n", study.referenceSpp,
+               study.configurations[0].name.c_str());
+  RenderOptions o = studyOptions(study, study.configurations[0].estimator, 0x5eed0000u + study.seed);
+  o.spp = study.referenceSpp;
+  StudyReference ref{filmToImage(runRender(ctx, o, scene).film), cached.string() + " (rendered)"};
   std::error_code ec;
-  fs::create_directories(outDir, ec);
-  if (!fs::is_directory(outDir)) throw Error("cannot create output folder '" + outDir + "'");
-  vk::Context ctx;
-  Scene scene = loadGltf(study.scenePath, deviceLoadLimits(ctx));
+  fs::create_directories(cached.parent_path(), ec);
+  if (fs::is_directory(cached.parent_path())) writeExr(cached.string(), ref.image);
+  return ref;
+}
 
-  auto options = [&](const EstimatorConfig& e, uint32_t seed) {
-    RenderOptions o;
-    o.scenePath = study.scenePath;
-    o.width = study.width;
-    o.height = study.height;
-    o.estimator = e;
-    o.seed = seed;
-    o.filter = study.filter;
-    o.integrator = Integrator::Wavefront;  // one integrator for every row (auto could mix them on a GPU)
-    o.progress = false;
-    return o;
-  };
-
-  // Reference: given, or rendered with the first configuration and cached by a hash of what determines it.
-  ExrImage reference;
-  std::string referenceNote;
+// The reference: a constant, a given EXR, or rendered (and cached).
+StudyReference studyReference(vk::Context& ctx, const Study& study, const Scene& scene) {
+  StudyReference ref;
   if (study.referenceConstant) {
     const glm::vec3 c = *study.referenceConstant;
-    reference.width = int(study.width), reference.height = int(study.height);
-    for (int k = 0; k < 3; ++k) reference.channels[std::string(1, "RGB"[k])].assign(size_t(study.width) * study.height, c[k]);
+    ref.image.width = int(study.width), ref.image.height = int(study.height);
+    for (int k = 0; k < 3; ++k) ref.image.channels[std::string(1, "RGB"[k])].assign(size_t(study.width) * study.height, c[k]);
     char note[96];
     std::snprintf(note, sizeof(note), "constant (%g, %g, %g)", double(c.r), double(c.g), double(c.b));
-    referenceNote = note;
+    ref.note = note;
   } else if (!study.referenceExr.empty()) {
-    reference = readExr(study.referenceExr);
-    referenceNote = study.referenceExr;
+    ref = {readExr(study.referenceExr), study.referenceExr};
   } else {
-    std::string key = readFile(study.scenePath) + "|" + std::to_string(study.width) + "x" + std::to_string(study.height) + "|" +
-                      std::to_string(study.referenceSpp) + "|" + study.configurations[0].estimator.toJson().dump() +
-                      (study.filter.isPixelBox() ? "" : "|" + pixelFilterJson(study.filter).dump()) + "|vkmc-ref-1";
-    char hex[17];
-    std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(fnv1a(key)));
-    fs::path cached = fs::path(cacheDir()) / "references" / (std::string(hex) + ".exr");
-    if (fs::exists(cached)) {
-      reference = readExr(cached.string());
-      referenceNote = cached.string() + " (cached)";
-    } else {
-      std::fprintf(stderr, "vkmc bench: rendering the reference (%u spp, %s)\n", study.referenceSpp,
-                   study.configurations[0].name.c_str());
-      RenderOptions o = options(study.configurations[0].estimator, 0x5eed0000u + study.seed);
-      o.spp = study.referenceSpp;
-      RenderOutcome r = runRender(ctx, o, scene);
-      reference = filmToImage(r.film);
-      fs::create_directories(cached.parent_path(), ec);
-      if (fs::is_directory(cached.parent_path())) writeExr(cached.string(), reference);
-      referenceNote = cached.string() + " (rendered)";
-    }
+    ref = renderedReference(ctx, study, scene);
   }
-  // What of every relMSE below is the reference's own noise: where a row's relMSE nears it, the row's ratio to the
-  // others is pulled toward 1 (a ratio read from such rows understates the difference).
-  const double referenceNoise = referenceRelativeVariance(reference);
-  if (uint32_t(reference.width) != study.width || uint32_t(reference.height) != study.height)
-    throw Error("reference is " + std::to_string(reference.width) + "x" + std::to_string(reference.height) +
+  if (uint32_t(ref.image.width) != study.width || uint32_t(ref.image.height) != study.height)
+    throw Error("reference is " + std::to_string(ref.image.width) + "x" + std::to_string(ref.image.height) +
                 ", the study renders " + std::to_string(study.width) + "x" + std::to_string(study.height));
+  return ref;
+}
 
-  // Warm-up (not recorded): every configuration once at the smallest rung.
-  for (const auto& c : study.configurations) {
-    RenderOptions o = options(c.estimator, study.seed);
-    if (study.timeLadder)
-      o.timeBudget = study.ladder.front(), o.spp = 1u << 24;
-    else
-      o.spp = static_cast<uint32_t>(study.ladder.front());
-    runRender(ctx, o, scene);
-  }
+StudyRow studyRow(const std::string& configuration, double rung, uint32_t repeat, const RenderOutcome& r, const ErrorMetrics& e) {
+  StudyRow row;
+  row.configuration = configuration;
+  row.rung = rung;
+  row.repeat = repeat;
+  row.spp = r.stats.samplesPerPixel;
+  row.seconds = r.stats.seconds;
+  row.gpuSeconds = r.stats.gpuSeconds;
+  row.rays = r.stats.rays();
+  row.mse = e.mse;
+  row.relmse = e.relmse;
+  row.efficiency = e.relmse > 0 && row.seconds > 0 ? 1.0 / (e.relmse * row.seconds) : 0.0;
+  row.nonfinite = r.film.totalNonfinite();
+  return row;
+}
 
+using RungImages = std::map<std::pair<size_t, size_t>, ExrImage>;  // (configuration, rung) -> repeat 0's image
+
+// Every configuration at every rung, repeats alternating the configurations' order; rows in the listed order.
+std::vector<StudyRow> renderStudyRows(vk::Context& ctx, const Study& study, const Scene& scene, const ExrImage& reference,
+                                      RungImages& images) {
   const size_t configurations = study.configurations.size();
-  std::vector<StudyRow> rows(study.ladder.size() * study.repeats * configurations);  // in the listed order
-  std::map<std::pair<size_t, size_t>, ExrImage> images;  // (configuration, rung) -> repeat 0's image
+  std::vector<StudyRow> rows(study.ladder.size() * study.repeats * configurations);
   for (size_t rung = 0; rung < study.ladder.size(); ++rung)
     for (uint32_t rep = 0; rep < study.repeats; ++rep)
       for (size_t c : studyRunOrder(configurations, rep)) {
-        RenderOptions o = options(study.configurations[c].estimator, study.seed + rep * 7919u + uint32_t(rung) * 104729u);
-        if (study.timeLadder)
-          o.timeBudget = study.ladder[rung], o.spp = 1u << 24;
-        else
-          o.spp = static_cast<uint32_t>(study.ladder[rung]);
+        RenderOptions o =
+            studyOptions(study, study.configurations[c].estimator, study.seed + rep * 7919u + uint32_t(rung) * 104729u);
+        setRung(study, study.ladder[rung], o);
         RenderOutcome r = runRender(ctx, o, scene);
         ExrImage img = filmToImage(r.film);
-        ErrorMetrics e = compareImages(img, reference);
-        StudyRow row;
-        row.configuration = study.configurations[c].name;
-        row.rung = study.ladder[rung];
-        row.repeat = rep;
-        row.spp = r.stats.samplesPerPixel;
-        row.seconds = r.stats.seconds;
-        row.gpuSeconds = r.stats.gpuSeconds;
-        row.rays = r.stats.rays();
-        row.mse = e.mse;
-        row.relmse = e.relmse;
-        row.efficiency = e.relmse > 0 && row.seconds > 0 ? 1.0 / (e.relmse * row.seconds) : 0.0;
-        row.nonfinite = r.film.totalNonfinite();
+        const StudyRow row = studyRow(study.configurations[c].name, study.ladder[rung], rep, r, compareImages(img, reference));
         rows[(rung * study.repeats + rep) * configurations + c] = row;
         if (rep == 0) images[{c, rung}] = std::move(img);
         std::fprintf(stderr, "vkmc bench: %-24s rung %-6g repeat %u: %u spp, %.3f s, relMSE %.4g\n", row.configuration.c_str(),
                      row.rung, rep, row.spp, row.seconds, row.relmse);
       }
+  return rows;
+}
 
-  // results.csv / results.json
+// results.csv and results.json.
+void addResultFiles(OutputSet& outputs, const fs::path& outDir, const nlohmann::json& header, const std::vector<StudyRow>& rows) {
   std::ostringstream csv;
   csv << "configuration,rung,repeat,spp,seconds,gpu_seconds,rays,mse,relmse,efficiency,nonfinite_samples\n";
   nlohmann::json jrows = nlohmann::json::array();
@@ -255,23 +261,21 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
                      {"efficiency", r.efficiency},
                      {"nonfinite_samples", r.nonfinite}});
   }
-  OutputSet outputs;  // the study's files are written together, all or none
-  outputs.add((fs::path(outDir) / "results.csv").string(), csv.str());
-  outputs.add(
-      (fs::path(outDir) / "results.json").string(),
-      nlohmann::json{{"study", study.name}, {"device", ctx.deviceName()}, {"reference", referenceNote},
-                     {"reference_relvariance", std::isfinite(referenceNoise) ? nlohmann::json(referenceNoise) : nlohmann::json(nullptr)},
-                     {"rows", jrows}}.dump(2) +
-          "\n");
+  nlohmann::json results = header;
+  results["rows"] = jrows;
+  outputs.add((outDir / "results.csv").string(), csv.str());
+  outputs.add((outDir / "results.json").string(), results.dump(2) + "\n");
+}
 
-  // Medians per configuration and rung, fits, plot.
-  struct Curve {
-    std::vector<double> seconds, relmse, spp;
-    LogFit fit, fitSpp;
-    uint64_t nonfinite = 0;
-  };
+// A configuration's medians over repeats at each rung, and its log-log fits.
+struct Curve {
+  std::vector<double> seconds, relmse, spp;
+  LogFit fit, fitSpp;
+  uint64_t nonfinite = 0;
+};
+
+std::vector<Curve> studyCurves(const Study& study, const std::vector<StudyRow>& rows) {
   std::vector<Curve> curves(study.configurations.size());
-  std::vector<PlotSeries> plot;
   for (size_t c = 0; c < study.configurations.size(); ++c) {
     for (size_t rung = 0; rung < study.ladder.size(); ++rung) {
       std::vector<double> s, e, n;
@@ -286,39 +290,35 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
     }
     curves[c].fit = fitLogLog(curves[c].seconds, curves[c].relmse);
     curves[c].fitSpp = fitLogLog(curves[c].spp, curves[c].relmse);
-    plot.push_back({study.configurations[c].name, curves[c].seconds, curves[c].relmse});
   }
-  outputs.add((fs::path(outDir) / "error_vs_time.svg").string(),
-              logLogSvg(plot, study.name + ": relMSE against render time", "seconds (median of repeats)", "relMSE"));
+  return curves;
+}
 
-  // Equal time: the longest time every configuration reached; equal error: the smallest error all reached.
-  double equalTime = 1e300, equalError = 0.0;
+// Equal time: the longest time every configuration reached; equal error: the smallest error all reached.
+struct EqualPoints {
+  double time = 1e300, error = 0.0;
+};
+EqualPoints equalPoints(const std::vector<Curve>& curves) {
+  EqualPoints p;
   for (const Curve& c : curves) {
-    equalTime = std::min(equalTime, *std::max_element(c.seconds.begin(), c.seconds.end()));
-    equalError = std::max(equalError, *std::min_element(c.relmse.begin(), c.relmse.end()));
+    p.time = std::min(p.time, *std::max_element(c.seconds.begin(), c.seconds.end()));
+    p.error = std::max(p.error, *std::min_element(c.relmse.begin(), c.relmse.end()));
   }
-  std::ostringstream md;
-  char timeText[64];
-  std::time_t now = std::time(nullptr);
-  std::strftime(timeText, sizeof(timeText), "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-  md << "# " << study.name << "\n\n";
-  md << "Scene `" << study.scenePath << "`, " << study.width << "x" << study.height << ", " << (study.timeLadder ? "time" : "spp")
-     << " ladder, " << study.repeats << " repeats (medians), device " << ctx.deviceName() << ", " << timeText << ".\n";
-  md << "Reference: " << referenceNote << ". Efficiency = 1/(relMSE x seconds), from each configuration's log-log fit of relMSE\n"
-     << "against seconds; relative to the first configuration (" << study.configurations[0].name << ").\n";
-  if (std::isfinite(referenceNoise))
-    md << "The reference's own relative variance is " << referenceNoise << ": every relMSE below includes about that much,\n"
-       << "so where a row's relMSE is within a few times of it, its ratios to the other rows are pulled toward 1.\n";
-  md << "\n";
-  md << "| configuration | relMSE at " << equalTime << " s | efficiency (equal time) | seconds to relMSE " << equalError
+  return p;
+}
+
+// summary.md's table: each configuration at equal time and equal error, relative to the first.
+void writeSummaryTable(std::ostringstream& md, const Study& study, const std::vector<StudyRow>& rows,
+                       const std::vector<Curve>& curves, EqualPoints equal) {
+  md << "| configuration | relMSE at " << equal.time << " s | efficiency (equal time) | seconds to relMSE " << equal.error
      << " | efficiency (equal error) | slope vs log s | slope vs log spp | last rung relMSE (min-max) | non-finite |\n"
      << "|---|---|---|---|---|---|---|---|---|\n";
   double baseEt = 0.0, baseEe = 0.0;
   for (size_t c = 0; c < curves.size(); ++c) {
-    double errAt = curves[c].fit.at(equalTime);
-    double timeTo = curves[c].fit.inverse(equalError);
-    double effT = errAt > 0 ? 1.0 / (errAt * equalTime) : 0.0;
-    double effE = timeTo > 0 ? 1.0 / (equalError * timeTo) : 0.0;
+    double errAt = curves[c].fit.at(equal.time);
+    double timeTo = curves[c].fit.inverse(equal.error);
+    double effT = errAt > 0 ? 1.0 / (errAt * equal.time) : 0.0;
+    double effE = timeTo > 0 ? 1.0 / (equal.error * timeTo) : 0.0;
     if (c == 0) baseEt = effT, baseEe = effE;
     double lo = 1e300, hi = 0.0;
     for (const StudyRow& r : rows)
@@ -331,13 +331,35 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
                   static_cast<unsigned long long>(curves[c].nonfinite));
     md << line;
   }
+}
+
+std::string summaryMarkdown(const Study& study, const std::string& device, const StudyReference& reference, double referenceNoise,
+                            const std::vector<StudyRow>& rows, const std::vector<Curve>& curves) {
+  std::ostringstream md;
+  char timeText[64];
+  std::time_t now = std::time(nullptr);
+  std::strftime(timeText, sizeof(timeText), "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  md << "# " << study.name << "\n\n";
+  md << "Scene `" << study.scenePath << "`, " << study.width << "x" << study.height << ", " << (study.timeLadder ? "time" : "spp")
+     << " ladder, " << study.repeats << " repeats (medians), device " << device << ", " << timeText << ".\n";
+  md << "Reference: " << reference.note
+     << ". Efficiency = 1/(relMSE x seconds), from each configuration's log-log fit of relMSE\n"
+     << "against seconds; relative to the first configuration (" << study.configurations[0].name << ").\n";
+  if (std::isfinite(referenceNoise))
+    md << "The reference's own relative variance is " << referenceNoise << ": every relMSE below includes about that much,\n"
+       << "so where a row's relMSE is within a few times of it, its ratios to the other rows are pulled toward 1.\n";
+  md << "\n";
+  writeSummaryTable(md, study, rows, curves, equalPoints(curves));
   md << "\nAn unbiased estimator's error falls as 1/samples: slope -1 against spp, and against time when time grows\n"
         "in proportion to samples (per-render overheads make small renders steeper against time). A flatter slope\n"
         "exposes bias, or a reference too noisy for the error reached. Raw rows: results.csv; plot:\n"
         "error_vs_time.svg; images at equal time: equal_time.png.\n";
-  outputs.add((fs::path(outDir) / "summary.md").string(), md.str());
+  return md.str();
+}
 
-  // Equal-time images: per configuration the rung whose median time is closest to the equal time.
+// Equal-time images: per configuration the rung whose median time is closest to the equal time.
+std::string equalTimeSheet(const Study& study, const std::vector<Curve>& curves, RungImages& images) {
+  const double equalTime = equalPoints(curves).time;
   std::vector<ExrImage> sheet;
   std::vector<std::string> labels;
   for (size_t c = 0; c < curves.size(); ++c) {
@@ -350,7 +372,44 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
     std::snprintf(label, sizeof(label), "%s %.2fs", study.configurations[c].name.c_str(), curves[c].seconds[best]);
     labels.push_back(label);
   }
-  outputs.add((fs::path(outDir) / "equal_time.png").string(), encodeContactSheet(sheet, labels, 0.0f));
+  return encodeContactSheet(sheet, labels, 0.0f);
+}
+
+}  // namespace
+
+std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
+  std::error_code ec;
+  fs::create_directories(outDir, ec);
+  if (!fs::is_directory(outDir)) throw Error("cannot create output folder '" + outDir + "'");
+  vk::Context ctx;
+  Scene scene = loadGltf(study.scenePath, deviceLoadLimits(ctx));
+  const StudyReference reference = studyReference(ctx, study, scene);
+  // What of every relMSE below is the reference's own noise: where a row's relMSE nears it, the row's ratio to the
+  // others is pulled toward 1 (a ratio read from such rows understates the difference).
+  const double referenceNoise = referenceRelativeVariance(reference.image);
+  // Warm-up (not recorded): every configuration once at the smallest rung.
+  for (const auto& c : study.configurations) {
+    RenderOptions o = studyOptions(study, c.estimator, study.seed);
+    setRung(study, study.ladder.front(), o);
+    runRender(ctx, o, scene);
+  }
+  RungImages images;
+  const std::vector<StudyRow> rows = renderStudyRows(ctx, study, scene, reference.image, images);
+  OutputSet outputs;  // the study's files are written together, all or none
+  const nlohmann::json header = {
+      {"study", study.name},
+      {"device", ctx.deviceName()},
+      {"reference", reference.note},
+      {"reference_relvariance", std::isfinite(referenceNoise) ? nlohmann::json(referenceNoise) : nlohmann::json(nullptr)}};
+  addResultFiles(outputs, outDir, header, rows);
+  const std::vector<Curve> curves = studyCurves(study, rows);
+  std::vector<PlotSeries> plot;
+  for (size_t c = 0; c < curves.size(); ++c) plot.push_back({study.configurations[c].name, curves[c].seconds, curves[c].relmse});
+  outputs.add((fs::path(outDir) / "error_vs_time.svg").string(),
+              logLogSvg(plot, study.name + ": relMSE against render time", "seconds (median of repeats)", "relMSE"));
+  outputs.add((fs::path(outDir) / "summary.md").string(),
+              summaryMarkdown(study, ctx.deviceName(), reference, referenceNoise, rows, curves));
+  outputs.add((fs::path(outDir) / "equal_time.png").string(), equalTimeSheet(study, curves, images));
   outputs.commit();
   return rows;
 }

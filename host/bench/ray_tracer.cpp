@@ -16,8 +16,8 @@ RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh, bo
   scene.bindTo(*layout_, binaryBvh);
   // The kernel declares every binding of the shared set; those it never touches still need a buffer.
   dummy_ = vk::Buffer(ctx, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
-  for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_FILM,
-                     BINDING_ROULETTE_TABLE, BINDING_DEPTH_STATS, BINDING_QUEUE_STATS})
+  for (uint32_t b : {BINDING_PATHS, BINDING_HITS, BINDING_RAY_QUEUES, BINDING_SHADOW_QUEUE, BINDING_FILM, BINDING_ROULETTE_TABLE,
+                     BINDING_DEPTH_STATS, BINDING_QUEUE_STATS})
     layout_->bindStorage(b, dummy_);
   for (uint32_t b : gpu::kRendererTexelBindings) {
     texelDummies_.emplace_back(ctx, 256, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
@@ -37,9 +37,13 @@ RayTracer::RayTracer(vk::Context& ctx, const GpuScene& scene, bool binaryBvh, bo
   const uint32_t alpha = scene.info().alphaTested ? 1u : 0u, stack = scene.info().registerStackEntries;
   const uint32_t deep = scene.info().deepWalks ? 1u : 0u;
   auto specs = [alpha, stack, deep](bool anyHit, bool counting) {
-    return std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize}, {SPEC_ANY_HIT, anyHit},
-                                         {SPEC_WALK_STATS, counting}, {SPEC_CULLS_BACK_FACES, 0u}, {SPEC_HAS_ALPHA, alpha},
-                                         {SPEC_REGISTER_STACK, stack}, {SPEC_DEEP_WALKS, deep}};
+    return std::vector<vk::SpecConstant>{{SPEC_WORKGROUP_SIZE, gpu::kWorkgroupSize},
+                                         {SPEC_ANY_HIT, anyHit},
+                                         {SPEC_WALK_STATS, counting},
+                                         {SPEC_CULLS_BACK_FACES, 0u},
+                                         {SPEC_HAS_ALPHA, alpha},
+                                         {SPEC_REGISTER_STACK, stack},
+                                         {SPEC_DEEP_WALKS, deep}};
   };
   closest_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_closest", spirv, specs(false, walkStats));
   any_ = std::make_unique<vk::Kernel>(ctx, *layout_, "trace_any", spirv, specs(true, walkStats));

@@ -62,9 +62,9 @@ std::vector<gpu::TestRay> makeTextureLookups(const Scene& scene, uint32_t count,
     const Material& m = scene.materials[scene.materialIds[t]];
     gpu::TestRay r{};
     r.origin = glm::vec4(uv, 0.0f, 0.0f);
-    r.direction = glm::vec4(std::bit_cast<float>(slotTexture(m.baseColorTexture)),
-                            std::bit_cast<float>(slotTexture(m.metallicRoughnessTexture)),
-                            std::bit_cast<float>(slotTexture(m.normalTexture)), std::bit_cast<float>(slotTexture(m.emissiveTexture)));
+    r.direction = glm::vec4(
+        std::bit_cast<float>(slotTexture(m.baseColorTexture)), std::bit_cast<float>(slotTexture(m.metallicRoughnessTexture)),
+        std::bit_cast<float>(slotTexture(m.normalTexture)), std::bit_cast<float>(slotTexture(m.emissiveTexture)));
     out.push_back({(uint64_t(scene.materialIds[t]) << 32) | mortonOfUv(uv), r});
   }
   if (coherent) std::sort(out.begin(), out.end(), [](const Keyed& a, const Keyed& b) { return a.key < b.key; });
@@ -97,13 +97,15 @@ std::vector<TextureFormTiming> timeTextureForms(vk::Context& ctx, const Scene& s
                               : "";
   vk::Buffer texels;
   if (texelSkip.empty()) {
-    texels = vk::Buffer(ctx, packed.atlas.texels.size() * 4, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
+    texels =
+        vk::Buffer(ctx, packed.atlas.texels.size() * 4, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
     texels.upload(packed.atlas.texels.data(), packed.atlas.texels.size() * 4);
     texels.createView(sceneTexelFormat(BINDING_TEXTURE_TEXELS));
     layout.bindTexel(BINDING_TEXTURE_TEXELS, texels);
   }
   const size_t n = lookups.size();
-  vk::Buffer in(ctx, std::max<size_t>(n, 1) * sizeof(gpu::TestRay), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
+  vk::Buffer in(ctx, std::max<size_t>(n, 1) * sizeof(gpu::TestRay), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                vk::MemoryKind::HostVisible);
   std::memcpy(in.mapped(), lookups.data(), n * sizeof(gpu::TestRay));
   vk::Buffer out(ctx, std::max<size_t>(n, 1) * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::HostVisible);
   layout.bindStorage(BINDING_TEST_RAYS, in);

@@ -177,8 +177,7 @@ class Splitter {
     }
     if (bestAxis < 0) return mustSplit ? t.count / 2 : 0;  // all centroids coincide: split by index
     const double leafCost = double(options_.triangleCost) * t.count;
-    const double splitCost =
-        options_.traversalCost + options_.triangleCost * bestCost / std::max(halfArea(t.box), 1e-300);
+    const double splitCost = options_.traversalCost + options_.triangleCost * bestCost / std::max(halfArea(t.box), 1e-300);
     if (!mustSplit && splitCost >= leafCost) return 0;
     PrimRef* begin = refs_.data() + t.first;
     PrimRef* mid = std::partition(begin, begin + t.count,
@@ -241,8 +240,7 @@ class Splitter {
       if (improved) best = sorted;
     }
     const double leafCost = double(options_.triangleCost) * t.count;
-    const double splitCost =
-        options_.traversalCost + options_.triangleCost * bestCost / std::max(halfArea(t.box), 1e-300);
+    const double splitCost = options_.traversalCost + options_.triangleCost * bestCost / std::max(halfArea(t.box), 1e-300);
     if (!mustSplit && splitCost >= leafCost) return 0;
     std::copy(best.begin(), best.end(), refs_.begin() + t.first);
     return bestLeft;

@@ -143,21 +143,54 @@ void wideDepthAndPending(const std::vector<BvhWideNode>& wide, uint32_t& maxDept
 // with the largest surface opened in turn until there are four (Wald et al. 2008's collapse). The shape is planned
 // in one pass; the boxes, the costly part, are quantized on every thread.
 // wideSahCost: the 4-wide tree's expected wide node steps plus triangle tests per ray (cost 1 each).
-std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary, unsigned threads, double& wideSahCost) {
-  // A child is a slot of a binary node: 2 * node + side. The plan keeps slots, not boxes (it is as many
-  // entries as wide nodes, and its memory is most of this pass's time).
-  auto count = [&](uint32_t slot) { return asUint(binary[slot / 2].texels[2 * (slot % 2) + 1].w); };
-  auto ref = [&](uint32_t slot) { return asUint(binary[slot / 2].texels[2 * (slot % 2)].w); };
-  auto box = [&](uint32_t slot) {
+// A child of the collapse is a slot of a binary node: 2 * node + side. The plan keeps slots, not boxes (it is as
+// many entries as wide nodes, and its memory is most of the collapse's time).
+struct BinarySlots {
+  const std::vector<BvhGpuNode>& binary;
+  uint32_t count(uint32_t slot) const { return asUint(binary[slot / 2].texels[2 * (slot % 2) + 1].w); }
+  uint32_t ref(uint32_t slot) const { return asUint(binary[slot / 2].texels[2 * (slot % 2)].w); }
+  Aabb box(uint32_t slot) const {
     const glm::vec4* t = &binary[slot / 2].texels[2 * (slot % 2)];
     return Aabb{glm::vec3(t[0]), glm::vec3(t[1])};
+  }
+};
+
+// A wide node's plan: its children's slots.
+struct WidePlan {
+  std::array<uint32_t, 4> slot, entry;  // entry: the wide node of an inner child
+  uint32_t size = 0;
+};
+
+// The wide nodes' boxes quantized from their plans, on every thread.
+std::vector<BvhWideNode> quantizeWideNodes(const BinarySlots& slots, const std::vector<WidePlan>& plans, unsigned threads) {
+  struct Child {
+    Aabb box;
   };
-  struct Plan {
-    std::array<uint32_t, 4> slot, entry;  // entry: the wide node of an inner child
-    uint32_t size = 0;
-  };
+  std::vector<BvhWideNode> wide(plans.size());
+  parallelChunks(plans.size(), 4096, threads, [&](size_t begin, size_t end) {
+    for (size_t w = begin; w < end; ++w) {
+      const WidePlan& plan = plans[w];
+      std::array<Child, 4> children;
+      for (uint32_t i = 0; i < plan.size; ++i) children[i].box = slots.box(plan.slot[i]);
+      wide[w] = quantizeBoxes(std::span<const Child>(children.data(), plan.size));
+      for (uint32_t i = 0; i < plan.size; ++i) {
+        const uint32_t slot = plan.slot[i];
+        wide[w].texels[gpu::kBvhWideChildTexel][i] =
+            slots.count(slot) > 0 ? gpu::bvhLeafEntry(slots.ref(slot), slots.count(slot)) : plan.entry[i];
+      }
+    }
+  });
+  return wide;
+}
+
+std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary, unsigned threads, double& wideSahCost) {
+  const BinarySlots slots{binary};
+  auto count = [&](uint32_t slot) { return slots.count(slot); };
+  auto ref = [&](uint32_t slot) { return slots.ref(slot); };
+  auto box = [&](uint32_t slot) { return slots.box(slot); };
+  using Plan = WidePlan;
   std::vector<Plan> plans(1);
-  plans.reserve(binary.size());  // a wide node per binary inner node at most
+  plans.reserve(binary.size());                                // a wide node per binary inner node at most
   std::vector<std::pair<uint32_t, uint32_t>> tasks{{0u, 0u}};  // (binary node, wide node)
   wideSahCost = 0.0;
   double rootArea = 1.0;
@@ -205,24 +238,8 @@ std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary, u
     wideSahCost += nodeBox.halfArea();
     if (w == 0) rootArea = std::max(nodeBox.halfArea(), 1e-300);
   }
-  struct Child {
-    Aabb box;
-  };
   wideSahCost /= rootArea;
-  std::vector<BvhWideNode> wide(plans.size());
-  parallelChunks(plans.size(), 4096, threads, [&](size_t begin, size_t end) {
-    for (size_t w = begin; w < end; ++w) {
-      const Plan& plan = plans[w];
-      std::array<Child, 4> children;
-      for (uint32_t i = 0; i < plan.size; ++i) children[i].box = box(plan.slot[i]);
-      wide[w] = quantizeBoxes(std::span<const Child>(children.data(), plan.size));
-      for (uint32_t i = 0; i < plan.size; ++i) {
-        const uint32_t slot = plan.slot[i];
-        wide[w].texels[gpu::kBvhWideChildTexel][i] = count(slot) > 0 ? gpu::bvhLeafEntry(ref(slot), count(slot)) : plan.entry[i];
-      }
-    }
-  });
-  return wide;
+  return quantizeWideNodes(slots, plans, threads);
 }
 
 }  // namespace

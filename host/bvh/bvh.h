@@ -32,8 +32,8 @@ struct BvhStats {
   uint32_t maxDepth = 0;
   uint32_t maxLeafSize = 0;
   double averageLeafSize = 0.0;
-  double sahCost = 0.0;  // expected cost per ray, inner traversal cost 1, triangle test cost 1
-  double wideSahCost = 0.0;  // the same for the 4-wide tree the kernels walk: wide node steps plus triangle tests
+  double sahCost = 0.0;       // expected cost per ray, inner traversal cost 1, triangle test cost 1
+  double wideSahCost = 0.0;   // the same for the 4-wide tree the kernels walk: wide node steps plus triangle tests
   uint32_t wideMaxDepth = 0;  // inner nodes on the 4-wide tree's longest root-to-leaf path
   // The most entries a walk of the 4-wide tree can hold on its stack: over root-to-node paths, the sum of each
   // inner node's children less the one entered next (what a ray that hits every box pushes).
@@ -69,7 +69,7 @@ bool walksCanOutgrowRegisterStack(const BvhStats& stats);
 // The register stack the kernels are built with (SPEC_REGISTER_STACK): 4 or 8 entries where no walk of the tree
 // can hold more, else gpu::kBvhRegisterStackEntries. A smaller stack is fewer instructions every walk step (the
 // trace loop's 941 -> 886 with 8, 841 with 4); one that walks can outgrow needs the deep passes, which cost more
-// than that (docs/performance.md, "A register stack sized to the tree").
+// than that (docs/journal/performance.md, "A register stack sized to the tree").
 uint32_t registerStackEntries(const BvhStats& stats);
 
 // Host reference traversal over the GPU layout (tests, tools). Returns t < 0 on a miss.

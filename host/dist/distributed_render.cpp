@@ -9,31 +9,13 @@
 
 #include "error.h"
 #include "io/checkpoint.h"
+#include "render/render_stats.h"
 
 namespace vkmc {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-// Counters of one run added to another's; the maximum for maxima.
-void addCounters(RenderStats& into, const RenderStats& from) {
-  into.cameraRays += from.cameraRays, into.extensionRays += from.extensionRays, into.shadowRays += from.shadowRays;
-  into.primaryRays += from.primaryRays;
-  into.gpuSeconds += from.gpuSeconds;
-  into.stagesUntimed = into.stagesUntimed || from.stagesUntimed;
-  for (const auto& [name, secs] : from.stageSeconds) into.stageSeconds[name] += secs;
-  into.passes += from.passes;
-  into.maxBounces = std::max(into.maxBounces, from.maxBounces);
-  into.nonfiniteEmission += from.nonfiniteEmission, into.nonfiniteLightSamples += from.nonfiniteLightSamples;
-  into.nonfiniteThroughput += from.nonfiniteThroughput, into.traversalsCut += from.traversalsCut;
-  into.deepWalks += from.deepWalks, into.deepWalksTraced += from.deepWalksTraced;
-  into.splitsRefused += from.splitsRefused;
-  into.pathsByBounce.resize(std::max(into.pathsByBounce.size(), from.pathsByBounce.size()), 0);
-  into.shadowRaysByBounce.resize(std::max(into.shadowRaysByBounce.size(), from.shadowRaysByBounce.size()), 0);
-  for (size_t b = 0; b < from.pathsByBounce.size(); ++b) into.pathsByBounce[b] += from.pathsByBounce[b];
-  for (size_t b = 0; b < from.shadowRaysByBounce.size(); ++b) into.shadowRaysByBounce[b] += from.shadowRaysByBounce[b];
-}
 
 std::string bytesOf(const std::vector<gpu::FilmPixel>& batch) {
   return std::string(reinterpret_cast<const char*>(batch.data()), batch.size() * sizeof(gpu::FilmPixel));
@@ -54,29 +36,11 @@ void sharePixelEstimate(PathRenderer& renderer, const RankGroup& group, const Fi
   }
 }
 
-}  // namespace
-
-std::vector<RankReport> renderDistributed(PathRenderer& renderer, const RankGroup& group, RenderState& state,
-                                          const RenderControl& control, const DistributedPlan& plan) {
-  if (renderer.ears().enabled())
-    throw Error("rr ears learns between one process's passes; distributed renders (--ranks) do not support it yet");
-  const uint32_t ranks = group.size(), me = group.rank();
-  const uint32_t perPass = renderer.samplesPerPass();
-  const uint32_t batchSamples = plan.timeBudget > 0.0 ? perPass : renderer.samplesPerBatch();
-  const uint32_t slots = batchSamples / perPass;  // sample passes a batch takes (fewer for a short one)
-  const RenderStats before = state.stats;
-  RenderStats mine;
-  RankReport report;
-  report.rank = me;
-  report.device = plan.device;
-  char host[256] = "?";
-  ::gethostname(host, sizeof(host) - 1);
-  report.host = host;
-
+// Where the render stands: rank 0's state (a checkpoint's, perhaps), told to every rank. Returns the next sample.
+uint32_t startingPoint(PathRenderer& renderer, const RankGroup& group, RenderState& state, const DistributedPlan& plan) {
   if (state.film.pixels() == 0) state.film = Film(plan.width, plan.height);
   state.film.replicateVariance = plan.replicateVariance;
   state.film.replicates = plan.replicates;
-  // Where the render stands: rank 0's state (a checkpoint's, perhaps), told to every rank.
   std::string where = group.isRoot() ? std::to_string(state.nextSample) + " " + std::to_string(state.batchSamples) : "";
   group.broadcast(where);
   uint32_t next = 0, partial = 0;
@@ -86,7 +50,71 @@ std::vector<RankReport> renderDistributed(PathRenderer& renderer, const RankGrou
     if (state.film.totalSamples() + state.film.totalNonfinite() > 0) renderer.uploadPixelEstimate(state.film);
   }
   if (plan.refreshPixelEstimate && group.distributed()) sharePixelEstimate(renderer, group, state.film);
+  return next;
+}
 
+// Rank 0 folds a round's batches in batch order.
+void foldRound(PathRenderer& renderer, const std::vector<std::string>& batches, uint32_t next, RenderState& state) {
+  for (const std::string& b : batches)
+    if (!b.empty()) {
+      if (b.size() != state.film.pixels() * sizeof(gpu::FilmPixel))
+        throw Error("internal error: a rank's batch has the wrong size");
+      state.film.addBatch(reinterpret_cast<const gpu::FilmPixel*>(b.data()));
+    }
+  state.nextSample = next;
+  state.batch.clear(), state.batchSamples = 0;
+  renderer.uploadPixelEstimate(state.film);
+}
+
+// Every rank's counters to rank 0, summed over the counters the render started from; rank 0 gets every report.
+std::vector<RankReport> gatherRankReports(PathRenderer& renderer, const RankGroup& group, RenderState& state, RenderStats& mine,
+                                          RankReport report, const RenderStats& before, Clock::time_point start) {
+  renderer.finishStats(mine, RenderStats{});
+  report.rays = mine.rays();
+  report.gpuSeconds = mine.gpuSeconds;
+  nlohmann::json j = {{"stats", renderStatsJson(mine)}, {"rank", report.rank},       {"host", report.host},
+                      {"device", report.device},        {"batches", report.batches}, {"busy_seconds", report.busySeconds}};
+  std::vector<std::string> all = group.gather(j.dump());
+  std::vector<RankReport> reports;
+  if (!group.isRoot()) return reports;
+  state.stats = before;
+  for (const std::string& text : all) {
+    nlohmann::json r = nlohmann::json::parse(text);
+    RenderStats s = renderStatsFromJson(r.at("stats"));
+    mergeRunCounters(state.stats, s);
+    reports.push_back(
+        {r.at("rank"), r.at("host"), r.at("device"), s.rays(), r.at("batches"), r.at("busy_seconds"), s.gpuSeconds});
+  }
+  state.stats.deriveStageTotals();
+  state.stats.seconds = before.seconds + since(start);
+  state.stats.samplesPerPixel = state.nextSample;
+  return reports;
+}
+
+RankReport thisRank(const RankGroup& group, const DistributedPlan& plan) {
+  RankReport report;
+  report.rank = group.rank();
+  report.device = plan.device;
+  char host[256] = "?";
+  ::gethostname(host, sizeof(host) - 1);
+  report.host = host;
+  return report;
+}
+
+}  // namespace
+
+std::vector<RankReport> renderDistributed(PathRenderer& renderer, const RankGroup& group, RenderState& state,
+                                          const RenderControl& control, const DistributedPlan& plan) {
+  if (renderer.ears().enabled())
+    throw Error("rr ears learns between one process's passes; renders under mpirun (more than one rank) do not support it yet");
+  const uint32_t ranks = group.size(), me = group.rank();
+  const uint32_t perPass = renderer.samplesPerPass();
+  const uint32_t batchSamples = plan.timeBudget > 0.0 ? perPass : renderer.samplesPerBatch();
+  const uint32_t slots = batchSamples / perPass;  // sample passes a batch takes (fewer for a short one)
+  const RenderStats before = state.stats;
+  RenderStats mine;
+  RankReport report = thisRank(group, plan);
+  uint32_t next = startingPoint(renderer, group, state, plan);
   const uint32_t firstBatch = next / batchSamples;
   auto range = [&](uint64_t j, uint32_t& lo, uint32_t& hi) {
     uint64_t l = j == 0 ? next : (firstBatch + j) * uint64_t(batchSamples);
@@ -120,55 +148,21 @@ std::vector<RankReport> renderDistributed(PathRenderer& renderer, const RankGrou
     uint32_t roundEnd, unused;
     range(round * ranks + ranks - 1, unused, roundEnd);
     next = std::max(roundEnd, std::min(next, plan.spp));
-    if (group.isRoot()) {
-      for (const std::string& b : batches)
-        if (!b.empty()) {
-          if (b.size() != state.film.pixels() * sizeof(gpu::FilmPixel)) throw Error("internal error: a rank's batch has the wrong size");
-          state.film.addBatch(reinterpret_cast<const gpu::FilmPixel*>(b.data()));
-        }
-      state.nextSample = next;
-      state.batch.clear(), state.batchSamples = 0;
-      renderer.uploadPixelEstimate(state.film);
-    }
+    if (group.isRoot()) foldRound(renderer, batches, next, state);
     if (plan.refreshPixelEstimate && group.distributed()) sharePixelEstimate(renderer, group, state.film);
     bool budgetSpent = plan.timeBudget > 0.0 && since(start) >= plan.timeBudget;
     if (group.maxOver(group.isRoot() && budgetSpent ? 1 : 0) != 0) break;
     if (group.isRoot() && control.checkpoint && control.checkpointEvery > 0.0 && next < plan.spp &&
         since(start) - lastCheckpoint >= control.checkpointEvery) {
       state.stats = before;
-      addCounters(state.stats, mine);  // rank 0's own counters so far: the others' arrive at the end
+      mergeRunCounters(state.stats, mine);  // rank 0's own counters so far: the others' arrive at the end
       state.stats.seconds = before.seconds + since(start);
       state.stats.samplesPerPixel = next;
       control.checkpoint(state);
       lastCheckpoint = since(start);
     }
   }
-
-  // Every rank's counters to rank 0, summed over the counters the render started from.
-  renderer.finishStats(mine, RenderStats{});
-  report.rays = mine.rays();
-  report.gpuSeconds = mine.gpuSeconds;
-  nlohmann::json j = {{"stats", renderStatsJson(mine)},
-                      {"rank", report.rank},
-                      {"host", report.host},
-                      {"device", report.device},
-                      {"batches", report.batches},
-                      {"busy_seconds", report.busySeconds}};
-  std::vector<std::string> all = group.gather(j.dump());
-  std::vector<RankReport> reports;
-  if (group.isRoot()) {
-    state.stats = before;
-    for (const std::string& text : all) {
-      nlohmann::json r = nlohmann::json::parse(text);
-      RenderStats s = renderStatsFromJson(r.at("stats"));
-      addCounters(state.stats, s);
-      reports.push_back({r.at("rank"), r.at("host"), r.at("device"), s.rays(), r.at("batches"), r.at("busy_seconds"), s.gpuSeconds});
-    }
-    state.stats.deriveStageTotals();
-    state.stats.seconds = before.seconds + since(start);
-    state.stats.samplesPerPixel = state.nextSample;
-  }
-  return reports;
+  return gatherRankReports(renderer, group, state, mine, report, before, start);
 }
 
 }  // namespace vkmc

@@ -31,13 +31,13 @@ struct RankReport {
 };
 
 struct DistributedPlan {
-  uint32_t spp = 0;                 // the target (the sample indices below it)
-  double timeBudget = 0.0;          // seconds; > 0: rounds of one pass a rank until rank 0's clock says stop
+  uint32_t spp = 0;                   // the target (the sample indices below it)
+  double timeBudget = 0.0;            // seconds; > 0: rounds of one pass a rank until rank 0's clock says stop
   bool refreshPixelEstimate = false;  // shadow roulette reads the pixel estimate: share rank 0's every round
-  std::string device;               // this rank's device, for the report
-  uint32_t width = 0, height = 0;   // the film's
-  bool replicateVariance = false;   // Film::replicateVariance (QMC samplers)
-  uint32_t replicates = 2;          // Film::replicates (the estimator's)
+  std::string device;                 // this rank's device, for the report
+  uint32_t width = 0, height = 0;     // the film's
+  bool replicateVariance = false;     // Film::replicateVariance (QMC samplers)
+  uint32_t replicates = 2;            // Film::replicates (the estimator's)
 };
 
 // Every rank calls it, in step. On rank 0 `state` is the render's (its film, the next sample, the counters of all

@@ -48,8 +48,9 @@ RankGroup::RankGroup() {
   mpi_ = true;
 #else
   if (launchedByMpi() && std::getenv("OMPI_COMM_WORLD_SIZE") && std::atoi(std::getenv("OMPI_COMM_WORLD_SIZE")) > 1)
-    throw Error("started by mpirun with several ranks, but this vkmc was built without MPI (install libopenmpi-dev and "
-                "rebuild): each rank would render the whole image alone");
+    throw Error(
+        "started by mpirun with several ranks, but this vkmc was built without MPI (install libopenmpi-dev and "
+        "rebuild): each rank would render the whole image alone");
 #endif
 }
 

@@ -88,10 +88,13 @@ std::string EstimatorConfig::summary() const {
   if (rr == RouletteMode::Ears) {
     s << " (learned roulette and splitting at every vertex";
     if (earsLightMax > 0) s << ", and of its light samples up to " << earsLightMax;
-    if (earsFallback == EarsFallback::Auto) s << "; throughput roulette instead unless ears measures " << kEarsGuardMargin << "x as efficient";
-    if (earsFallback == EarsFallback::Always) s << "; throughput roulette once the guard has measured both (ears_fallback always)";
+    if (earsFallback == EarsFallback::Auto)
+      s << "; throughput roulette instead unless ears measures " << kEarsGuardMargin << "x as efficient";
+    if (earsFallback == EarsFallback::Always)
+      s << "; throughput roulette once the guard has measured both (ears_fallback always)";
     s << "; throughput roulette from depth " << rrDepth << " where nothing is learned yet)";
-  } else if (rr != RouletteMode::None) s << " from depth " << rrDepth;
+  } else if (rr != RouletteMode::None)
+    s << " from depth " << rrDepth;
   if (lightSamples > 1) s << ", " << lightSamples << " light samples below depth " << splitDepth;
   if (bsdfSamples > 1) s << ", " << bsdfSamples << " BSDF samples below depth " << splitDepth;
   if (shadowRrThreshold > 0) s << ", shadow rr " << shadowRrThreshold << " (q " << shadowRrQ << ")";

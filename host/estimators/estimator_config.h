@@ -42,7 +42,7 @@ enum class EarsFallback : uint32_t { Auto, Never, Always };  // host only
 // ears_fallback auto keeps EARS only where it reads above this many times throughput roulette's efficiency. The
 // reading is biased toward EARS: a sample's variance leaves out what Sobol stratification takes off the image's
 // error, and that is more for throughput roulette, whose cheaper samples reach a larger count (16-s renders at 96x96, both
-// policies run to the end, docs/ears.md "What the guard reads": a sample's variance over the image's was 1.1-7.2x
+// policies run to the end, docs/journal/ears.md "What the guard reads": a sample's variance over the image's was 1.1-7.2x
 // for throughput roulette against 1.4-4.7x for EARS; the watched reading over the equal-time ratio 1.22 on leaves,
 // 1.41-1.62 on the Cornell box, soft_shadows and many_lights, 0.76-1.01 where EARS pays most). Below the margin the
 // choice goes to throughput roulette, whose loss where EARS truly won is at most that win.
@@ -63,7 +63,7 @@ struct EstimatorConfig {
   float shadowRrThreshold{};
   float shadowRrQ{};
   float cameraRrQ{};
-  float earsMax{};  // rr ears: the largest factor (splitting up to it; 1: learned roulette alone)
+  float earsMax{};       // rr ears: the largest factor (splitting up to it; 1: learned roulette alone)
   float earsLightMax{};  // rr ears: the largest light factor (0: light samples not learned; 1: their roulette alone)
   bool earsLearnsLight() const { return rr == RouletteMode::Ears && earsLightMax > 0.0f; }
   EarsFallback earsFallback{};
@@ -79,14 +79,14 @@ struct EstimatorConfig {
   uint32_t maxDepth{};
   Sampler sampler{};
   uint32_t replicates{};  // independently scrambled replicates a pixel's samples are split into (sampler.h)
-  std::string name;  // free text from the estimator file, echoed in reports
+  std::string name;       // free text from the estimator file, echoed in reports
 
   // Every key's range, then the rules that join keys; throws vkmc::Error naming the offending key.
   void validate() const;
   bool unbiased() const { return maxDepth == 0; }
   bool needsFloatAtomics() const { return lightSamples > 1 || splitsPaths(); }
   bool splitsPaths() const { return bsdfSamples > 1.0f || rr == RouletteMode::Ears; }
-  // Room for split children, as a multiple of the camera paths of a pass: ceil(K)^split_depth, at most 64 (a
+  // Room for split children, as a multiple of the camera paths of a pass: ceil(K)^min(split_depth, 3), at most 64 (a
   // full pool continues paths unsplit with weight 1, which stays unbiased but loses the variance reduction);
   // kEarsPoolFactor under EARS, whose splits the pool bounds the same way.
   uint32_t pathPoolFactor() const;

@@ -85,13 +85,11 @@ constexpr ParamName kLightSelectNames[] = {{"uniform", valueOf(LightSelect::Unif
 constexpr ParamName kMisNames[] = {
     {"none", valueOf(MisHeuristic::None)}, {"balance", valueOf(MisHeuristic::Balance)}, {"power", valueOf(MisHeuristic::Power)}};
 
-constexpr ParamName kEarsFallbackNames[] = {{"auto", valueOf(EarsFallback::Auto)},
-                                           {"never", valueOf(EarsFallback::Never)},
-                                           {"always", valueOf(EarsFallback::Always)}};
+constexpr ParamName kEarsFallbackNames[] = {
+    {"auto", valueOf(EarsFallback::Auto)}, {"never", valueOf(EarsFallback::Never)}, {"always", valueOf(EarsFallback::Always)}};
 
-constexpr ParamName kSamplerNames[] = {{"independent", valueOf(Sampler::Independent)},
-                                       {"sobol", valueOf(Sampler::Sobol)},
-                                       {"zsobol", valueOf(Sampler::ZSobol)}};
+constexpr ParamName kSamplerNames[] = {
+    {"independent", valueOf(Sampler::Independent)}, {"sobol", valueOf(Sampler::Sobol)}, {"zsobol", valueOf(Sampler::ZSobol)}};
 
 using C = EstimatorConfig;
 // In the order of --help. The defaults are the renderer's (EstimatorConfig's constructor applies them).
@@ -113,14 +111,15 @@ constexpr EstimatorParam kParams[] = {
     real<&C::earsLightMax>("ears_light_max", 0.0f, closed(0, gpu::kEarsLightFactorMax), SPEC_EARS_LIGHT_MAX,
                            "rr ears: the largest light factor qL, so at most this many light samples a copy; 0 = light "
                            "samples not learned (light_samples, as without ears), 1 = learned shadow-ray roulette alone"),
-    choice<&C::earsFallback>("ears_fallback", EarsFallback::Auto, kEarsFallbackNames, -1,
-                             "rr ears: after a warm-up pass of EARS, 4 samples a pixel of EARS and a full pass of "
-                             "throughput roulette are measured (EARS again on its next pass where it was close); auto: "
-                             "EARS renders the rest where its efficiency, 1/(variance x seconds) a sample, reads above 1.25x throughput "
-                             "roulette's, else throughput roulette; "
-                             "never: EARS throughout; always: throughput roulette after the comparison. Under a time "
-                             "budget, learning and comparing may take a twentieth of it: where they would not fit, auto and "
-                             "always render with throughput roulette uncompared, never with EARS trained that far"),
+    choice<&C::earsFallback>(
+        "ears_fallback", EarsFallback::Auto, kEarsFallbackNames, -1,
+        "rr ears: after a warm-up pass of EARS, 4 samples a pixel of EARS and a full pass of "
+        "throughput roulette are measured (EARS again on its next pass where it was close); auto: "
+        "EARS renders the rest where its efficiency, 1/(variance x seconds) a sample, reads above 1.25x throughput "
+        "roulette's, else throughput roulette; "
+        "never: EARS throughout; always: throughput roulette after the comparison. Under a time "
+        "budget, learning and comparing may take a twentieth of it: where they would not fit, auto and "
+        "always render with throughput roulette uncompared, never with EARS trained that far"),
     count<&C::lightSamples>("light_samples", 1, 1, 4096, SPEC_LIGHT_SAMPLES, "light samples per hit below --split-depth"),
     count<&C::splitDepth>("split_depth", 1, 0, 100000, SPEC_SPLIT_DEPTH,
                           "splitting applies at depths below this; 1: the first hit"),
@@ -131,7 +130,7 @@ constexpr EstimatorParam kParams[] = {
     choice<&C::lightSampling>("light_sampling", LightSampling::Area, kLightSamplingNames, SPEC_LIGHT_SAMPLING,
                               "a point on the light's area or a direction in its solid angle"),
     choice<&C::lightSelect>("light_select", LightSelect::Power, kLightSelectNames, -1,
-                            "which emissive triangle a light sample picks"),
+                            "how a light sample picks its light (an emissive triangle, a punctual light or the environment)"),
     onOff<&C::nee>("nee", true, SPEC_NEE, "next-event estimation"),
     choice<&C::mis>("mis", MisHeuristic::Power, kMisNames, SPEC_MIS, "MIS heuristic of light and BSDF sampling"),
     choice<&C::sampler>("sampler", Sampler::Sobol, kSamplerNames, SPEC_SAMPLER,

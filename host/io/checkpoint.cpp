@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "error.h"
+#include "render/render_stats.h"
 #include "scene/content_hash.h"
 
 namespace vkmc {
@@ -18,67 +19,11 @@ constexpr size_t kMagicBytes = sizeof(kMagic) - 1;
 constexpr int kFormatVersion = 2;  // 2: the estimator's `replicates` (earlier films had 4)
 static_assert(std::endian::native == std::endian::little, "checkpoints are little-endian");
 
-}  // namespace
-
-nlohmann::json renderStatsJson(const RenderStats& s) {
-  return {{"seconds", s.seconds},
-          {"gpu_seconds", s.gpuSeconds},
-          {"camera_rays", s.cameraRays},
-          {"extension_rays", s.extensionRays},
-          {"shadow_rays", s.shadowRays},
-          {"primary_rays", s.primaryRays},
-          {"primary_seconds", s.primarySeconds},
-          {"incoherent_seconds", s.incoherentSeconds},
-          {"stage_seconds", s.stageSeconds},
-          {"stages_untimed", s.stagesUntimed},
-          {"passes", s.passes},
-          {"max_bounces", s.maxBounces},
-          {"samples_per_pixel", s.samplesPerPixel},
-          {"nonfinite_emission", s.nonfiniteEmission},
-          {"nonfinite_light_samples", s.nonfiniteLightSamples},
-          {"nonfinite_throughput", s.nonfiniteThroughput},
-          {"traversals_cut", s.traversalsCut},
-          {"deep_walks", s.deepWalks},
-          {"deep_walks_traced", s.deepWalksTraced},
-          {"splits_refused", s.splitsRefused},
-          {"paths_by_bounce", s.pathsByBounce},
-          {"shadow_rays_by_bounce", s.shadowRaysByBounce}};
-}
-
-RenderStats renderStatsFromJson(const nlohmann::json& j) {
-  RenderStats s;
-  j.at("seconds").get_to(s.seconds);
-  j.at("gpu_seconds").get_to(s.gpuSeconds);
-  j.at("camera_rays").get_to(s.cameraRays);
-  j.at("extension_rays").get_to(s.extensionRays);
-  j.at("shadow_rays").get_to(s.shadowRays);
-  j.at("primary_rays").get_to(s.primaryRays);
-  j.at("primary_seconds").get_to(s.primarySeconds);
-  j.at("incoherent_seconds").get_to(s.incoherentSeconds);
-  j.at("stage_seconds").get_to(s.stageSeconds);
-  s.stagesUntimed = j.value("stages_untimed", false);  // absent in checkpoints before it existed: timed
-  j.at("passes").get_to(s.passes);
-  j.at("max_bounces").get_to(s.maxBounces);
-  j.at("samples_per_pixel").get_to(s.samplesPerPixel);
-  j.at("nonfinite_emission").get_to(s.nonfiniteEmission);
-  j.at("nonfinite_light_samples").get_to(s.nonfiniteLightSamples);
-  j.at("nonfinite_throughput").get_to(s.nonfiniteThroughput);
-  j.at("traversals_cut").get_to(s.traversalsCut);
-  j.at("deep_walks").get_to(s.deepWalks);
-  j.at("deep_walks_traced").get_to(s.deepWalksTraced);
-  s.splitsRefused = j.value("splits_refused", uint64_t(0));  // absent in checkpoints before it was counted
-  j.at("paths_by_bounce").get_to(s.pathsByBounce);
-  j.at("shadow_rays_by_bounce").get_to(s.shadowRaysByBounce);
-  return s;
-}
-
-namespace {
-
 // The payload's arrays, in order, for a film of `pixels` pixels: one list serves encoding and decoding.
 template <class FilmT, class Visit>
 void forEachArray(FilmT& film, Visit&& visit) {
-  visit(film.sum), visit(film.sumSq), visit(film.count), visit(film.nonfinite), visit(film.highRange),
-      visit(film.replicateSum), visit(film.replicateCount);
+  visit(film.sum), visit(film.sumSq), visit(film.count), visit(film.nonfinite), visit(film.highRange), visit(film.replicateSum),
+      visit(film.replicateCount);
 }
 
 void appendU64(std::string& out, uint64_t v) { out.append(reinterpret_cast<const char*>(&v), 8); }

@@ -21,10 +21,6 @@ struct Checkpoint {
   RenderState state;
 };
 
-// A render's counters as JSON and back (exact: every field, integers and doubles round-trip).
-nlohmann::json renderStatsJson(const RenderStats& stats);
-RenderStats renderStatsFromJson(const nlohmann::json& j);
-
 std::string encodeCheckpoint(const Checkpoint& checkpoint);
 // Throws vkmc::Error naming `name` when the bytes are not a whole, intact checkpoint of this format version.
 Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name);

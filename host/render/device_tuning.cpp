@@ -1,4 +1,4 @@
-// Per-device defaults, each from a measurement where one exists (docs/performance.md).
+// Per-device defaults, each from a measurement where one exists (docs/journal/performance.md).
 #include "render/device_tuning.h"
 
 #include <algorithm>

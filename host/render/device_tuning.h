@@ -1,5 +1,6 @@
 // What vkmc chooses for a device when the user does not: the integrator, the workgroup size, the wavefront's
-// paths in flight per pass and whether every stage is timed. One rule per row; docs/performance.md has what measured each ("Chosen per device").
+// paths in flight per pass and whether every stage is timed. One rule per row; docs/journal/performance.md has what measured each
+// ("Chosen per device").
 #pragma once
 #include <vulkan/vulkan.h>
 

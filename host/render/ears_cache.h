@@ -16,13 +16,13 @@ namespace vkmc {
 
 // What a render's cache learned, for the report.
 struct EarsSummary {
-  uint32_t cells = 0;           // in the hash table
-  uint32_t occupiedCells = 0;   // with any training sample
-  uint32_t trustedCells = 0;    // finest cells whose levels have enough to decide (kEarsMinCellCopies)
-  uint64_t deviceBytes = 0;     // cells, records, slots and header
-  uint32_t learningPasses = 0;  // passes whose factors came from the cache
-  uint32_t trainingSamples = 0; // per pixel, in the training passes (not in the image)
-  double imageFactor = 0.0;     // sqrt(C_img / V_img) of the last pass
+  uint32_t cells = 0;            // in the hash table
+  uint32_t occupiedCells = 0;    // with any training sample
+  uint32_t trustedCells = 0;     // finest cells whose levels have enough to decide (kEarsMinCellCopies)
+  uint64_t deviceBytes = 0;      // cells, records, slots and header
+  uint32_t learningPasses = 0;   // passes whose factors came from the cache
+  uint32_t trainingSamples = 0;  // per pixel, in the training passes (not in the image)
+  double imageFactor = 0.0;      // sqrt(C_img / V_img) of the last pass
   // Over every cell: the training copies, and their mean Lr, Lr^2 (per channel) and rays.
   double copies = 0.0, meanRays = 0.0;
   glm::dvec3 meanLr{0.0}, meanLrSquared{0.0};
@@ -54,10 +54,10 @@ class EarsCache {
   uint32_t trainingRecords() const { return header().trainingRecords; }
   uint32_t trainingChildren() const { return header().trainingChildren; }
   void clearTrainingLists() const { header().trainingRecords = header().trainingChildren = 0; }
-  uint32_t cellCount() const { return cells_; }                // copies' cells (as many light cells follow)
+  uint32_t cellCount() const { return cells_; }                            // copies' cells (as many light cells follow)
   uint32_t tableCells() const { return (learnsLight_ ? 2 : 1) * cells_; }  // both kinds
-  std::vector<gpu::EarsCell> downloadCells();                  // tableCells()
-  std::vector<glm::vec4> downloadSampling();  // kEarsSamplingTexels per cell of tableCells()
+  std::vector<gpu::EarsCell> downloadCells();                              // tableCells()
+  std::vector<glm::vec4> downloadSampling();                               // kEarsSamplingTexels per cell of tableCells()
 
  private:
   gpu::EarsHeader& header() const { return *static_cast<gpu::EarsHeader*>(header_.mapped()); }

@@ -74,8 +74,7 @@ double earsLearningSecondsLeft(uint32_t trainingSamples, uint32_t earsSamples, d
   return double(trainingSamples + earsSamples) * earsSecondsPerSample + throughputSeconds;
 }
 
-double earsThroughputPassSeconds(double firstSeconds, uint32_t firstSamples, double overhead, uint32_t passes,
-                                 uint32_t samples) {
+double earsThroughputPassSeconds(double firstSeconds, uint32_t firstSamples, double overhead, uint32_t passes, uint32_t samples) {
   const double perSample = std::max(firstSeconds - overhead, 0.0) / double(std::max(firstSamples, 1u));
   return double(passes) * overhead + double(samples) * perSample;
 }
@@ -130,8 +129,10 @@ std::string earsGuardLine(const EarsGuardOutcome& g) {
                 "ears guard  efficiency 1/(relative variance x seconds) a sample, measured on %u samples a pixel of ears "
                 "and %u of throughput roulette: ears %.4g%s, throughput roulette %.4g; %s from sample %u%s%s\n",
                 g.ears.samples, g.throughput.samples, g.ears.efficiency(), again, g.throughput.efficiency(),
-                g.switchedLater ? "ears" : g.fellBack ? "throughput roulette" : "ears", g.fromSample, watch,
-                earsLearningCostText(g).c_str());
+                g.switchedLater ? "ears"
+                : g.fellBack    ? "throughput roulette"
+                                : "ears",
+                g.fromSample, watch, earsLearningCostText(g).c_str());
   return buf;
 }
 

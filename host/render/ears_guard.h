@@ -23,7 +23,7 @@ namespace vkmc {
 struct PolicyPass {
   double relativeVariance = 0.0;
   double secondsPerSample = 0.0;
-  uint32_t samples = 0;  // a pixel, measured
+  uint32_t samples = 0;       // a pixel, measured
   double efficiency() const;  // 1 / (variance x seconds); +inf for a noiseless pass, 0 for a non-finite one
 };
 
@@ -56,7 +56,7 @@ double earsSecondsPerSample(const PolicyTally& t, double pixels, double passSamp
 // roulette renders the rest without a comparison: learning that cannot pay back within the budget is not done
 // (the stiff furnace at 96x96 spends about a second a sample). The choice depends on time alone: unbiased. A
 // twentieth: where EARS then loses the comparison, --rr ears stays within about 5% of throughput roulette (with a
-// quarter, the glossy room's comparison cost it 8-10% of a 16-s render; docs/ears.md).
+// quarter, the glossy room's comparison cost it 8-10% of a 16-s render; docs/journal/ears.md).
 constexpr double kEarsLearningBudgetShare = 0.05;
 
 // The seconds EARS's learning still needs: `trainingSamples` more samples a pixel of training passes and
@@ -69,8 +69,7 @@ double earsLearningSecondsLeft(uint32_t trainingSamples, uint32_t earsSamples, d
 // dispatches and round trips, `overhead` seconds a pass) and the rest in proportion to samples. Overhead 0 costs
 // each sample at the first pass's seconds a sample (an upper bound: on dark_room at 96x96 a 1-spp pass took 0.0375
 // s a sample, a 28-spp one 0.0085); overhead = firstSeconds costs each pass as one first pass (a lower bound).
-double earsThroughputPassSeconds(double firstSeconds, uint32_t firstSamples, double overhead, uint32_t passes,
-                                 uint32_t samples);
+double earsThroughputPassSeconds(double firstSeconds, uint32_t firstSamples, double overhead, uint32_t passes, uint32_t samples);
 // A pass's fixed overhead from two passes of one policy (t = a + b n): a, clamped to [0, cap]; 0 where the two
 // passes are the same size (nothing to tell overhead from samples).
 double earsPassOverhead(double seconds, uint32_t samples, double laterSeconds, uint32_t laterSamples, double cap);
@@ -79,24 +78,24 @@ bool earsLearningFits(double budget, double elapsed, double secondsLeft);
 
 // The guard's outcome, for the report.
 struct EarsGuardOutcome {
-  bool compared = false;      // both passes ran
-  bool outOfBudget = false;   // the learning and the comparison did not fit the time budget (earsLearningFits)
+  bool compared = false;     // both passes ran
+  bool outOfBudget = false;  // the learning and the comparison did not fit the time budget (earsLearningFits)
   // Under a time budget: throughput roulette's fixed seconds a pass, from its first two passes (earsPassOverhead);
   // NaN where they did not both run.
   double passOverhead = std::numeric_limits<double>::quiet_NaN();
-  bool fellBack = false;      // throughput roulette rendered the rest
-  uint32_t fromSample = 0;    // the first sample after the comparison
+  bool fellBack = false;    // throughput roulette rendered the rest
+  uint32_t fromSample = 0;  // the first sample after the comparison
   PolicyPass ears, throughput;
-  bool secondLook = false;    // EARS was measured again, on a later pass (earsGuardLooksAgain)
-  PolicyPass firstEars;       // then: its first measure
+  bool secondLook = false;  // EARS was measured again, on a later pass (earsGuardLooksAgain)
+  PolicyPass firstEars;     // then: its first measure
   // Where auto chose EARS, its passes after the choice go on being measured, together, against throughput
   // roulette's pass (earsGuardWatches): a few samples a pixel of a heavy-tailed scene can miss the rare large
   // samples that make EARS the worse (veach_mis: chosen in one of three 4-s renders, then 0.41-0.48x). Where
   // EARS falls behind, throughput roulette renders the rest from that pass on.
-  bool watched = false;       // EARS chosen under auto: its later passes measured
-  PolicyPass watchedEars;     // their measure when the guard last looked
-  bool switchedLater = false; // throughput roulette took over while watching
-  uint32_t switchedAt = 0;    // then: from this sample (EARS from fromSample until it)
+  bool watched = false;        // EARS chosen under auto: its later passes measured
+  PolicyPass watchedEars;      // their measure when the guard last looked
+  bool switchedLater = false;  // throughput roulette took over while watching
+  uint32_t switchedAt = 0;     // then: from this sample (EARS from fromSample until it)
   // What choosing cost, measured in the render itself (earsLearningCostSeconds): the seconds of this render's passes
   // when the rest's policy was fixed (compared or out of budget), and those seconds less what the samples kept by
   // then would have taken at the rest's seconds a sample. NaN where nothing was decided or nothing followed.
@@ -113,7 +112,7 @@ struct EarsGuardOutcome {
 double earsLearningCostSeconds(double decidedAt, uint32_t samplesBefore, double endSeconds, uint32_t samplesAfter);
 
 // EARS's cache keeps learning after its first measured samples: on two_rooms a pass's efficiency rose from about
-// 0.6x throughput roulette's at the first measure to 1.1-1.2x in later passes (docs/ears.md, "The guard").
+// 0.6x throughput roulette's at the first measure to 1.1-1.2x in later passes (docs/journal/ears.md, "The guard").
 // So a first measure of EARS at kEarsSecondLookRatio or more of throughput roulette's efficiency, but below the
 // margin (kEarsGuardMargin) times it, is taken again on a later EARS pass (throughput roulette's measure is kept)
 // before the choice.

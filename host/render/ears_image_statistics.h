@@ -38,7 +38,7 @@ EarsPixelEstimate earsPixelEstimate(std::vector<glm::vec4> mean, uint32_t width,
 // averaged over the pass's samples and channels, with the pixels that hold the largest kEarsOutlierShare of it
 // left out. The earlier passes' mean is independent of the pass's samples, so a firefly counts in full; measured
 // against its own pixel's mean a sample's ratio cannot exceed the pixel's sample count, which made V_img some 80x
-// too small (docs/ears.md). (EARS uses its denoised image for both; the raw mean keeps the numerator free of the
+// too small (docs/journal/ears.md). (EARS uses its denoised image for both; the raw mean keeps the numerator free of the
 // box's blur at edges.) Throws on a size mismatch.
 double earsRelativeVariance(const std::vector<PixelSums>& pass, const EarsPixelEstimate& earlier, double epsilon);
 

@@ -47,8 +47,8 @@ vk::Buffer makeTexelBuffer(vk::Context& ctx, const void* data, size_t bytes, uin
   if (texels > ctx.properties().limits.maxTexelBufferElements)
     throw Error(std::string("scene too big for the device: ") + name + " needs " + std::to_string(texels) +
                 " texels, the device allows " + std::to_string(ctx.properties().limits.maxTexelBufferElements));
-  const size_t allocated = size == TexelSize::Exact ? std::max<size_t>(bytes, 16)
-                                                    : notPowerOfTwoTexelBytes(ctx, bytes, texelBytes);
+  const size_t allocated =
+      size == TexelSize::Exact ? std::max<size_t>(bytes, 16) : notPowerOfTwoTexelBytes(ctx, bytes, texelBytes);
   vk::Buffer b(ctx, allocated, VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT, vk::MemoryKind::DeviceLocal);
   b.upload(data, bytes);
   b.createView(sceneTexelFormat(binding));
@@ -79,7 +79,7 @@ gpu::PunctualLight toGpu(const PunctualLight& l, const glm::vec3& sceneCentre, f
 // (the triangle texels' w), the punctual lights and the environment (its header and radiance, its table).
 struct LightData {
   std::vector<glm::uvec4> entries;
-  std::vector<float> trianglePmf;  // per triangle in BVH order, 0 unless it emits
+  std::vector<float> trianglePmf;      // per triangle in BVH order, 0 unless it emits
   std::vector<float> trianglePartner;  // per triangle: an emitter quad's first half names its second (scene_layout.h)
   std::vector<gpu::PunctualLight> punctual;
   std::vector<glm::vec4> environment{3};  // gpu::EnvironmentHeader's 48 bytes, then the radiance texels
@@ -296,6 +296,40 @@ LoadLimits deviceLoadLimits(const vk::Context& ctx) {
   return limits;
 }
 
+namespace {
+// A material as the kernels read it (gpu::Material, shaders/shared).
+gpu::Material gpuMaterial(const Material& m) {
+  gpu::Material g{};
+  g.baseColor = glm::vec4(m.baseColor, m.alpha);
+  g.emission = m.emission;
+  g.flags = (m.doubleSided ? gpu::kMaterialDoubleSided : 0u) | (m.alphaMode == AlphaMode::Mask ? gpu::kMaterialAlphaMask : 0u) |
+            (m.alphaMode == AlphaMode::Blend ? gpu::kMaterialAlphaBlend : 0u);
+  g.metallic = m.metallic;
+  g.roughness = m.roughness;
+  g.specular = m.specular;
+  g.alphaCutoff = m.alphaCutoff;
+  g.baseColorTexture = textureSlot(m.baseColorTexture);
+  g.metallicRoughnessTexture = textureSlot(m.metallicRoughnessTexture);
+  g.normalTexture = textureSlot(m.normalTexture);
+  g.emissiveTexture = textureSlot(m.emissiveTexture);
+  g.specularColor = glm::vec4(m.specularColor, m.ior);
+  g.attenuation = glm::vec4(m.attenuation, m.transmission);
+  g.sheen = glm::vec4(m.sheenColor, m.sheenRoughness);
+  g.clearcoat = m.clearcoat;
+  g.clearcoatRoughness = m.clearcoatRoughness;
+  g.volumetric = m.volumetric ? 1u : 0u;
+  g.transmissionTexture = textureSlot(m.transmissionTexture);
+  g.clearcoatTexture = textureSlot(m.clearcoatTexture);
+  g.clearcoatRoughnessTexture = textureSlot(m.clearcoatRoughnessTexture);
+  g.clearcoatNormalTexture = textureSlot(m.clearcoatNormalTexture);
+  g.sheenColorTexture = textureSlot(m.sheenColorTexture);
+  g.sheenRoughnessTexture = textureSlot(m.sheenRoughnessTexture);
+  g.specularTexture = textureSlot(m.specularTexture);
+  g.specularColorTexture = textureSlot(m.specularColorTexture);
+  return g;
+}
+}  // namespace
+
 GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool uniformLightSelection, bool keepBinaryBvh) {
   const size_t n = scene.triangleCount();
   info_.triangles = static_cast<uint32_t>(n);
@@ -326,36 +360,7 @@ GpuScene::GpuScene(vk::Context& ctx, const Scene& scene, const Bvh& bvh, bool un
   }
 
   std::vector<gpu::Material> mats;
-  for (const Material& m : scene.materials) {
-    gpu::Material g{};
-    g.baseColor = glm::vec4(m.baseColor, m.alpha);
-    g.emission = m.emission;
-    g.flags = (m.doubleSided ? gpu::kMaterialDoubleSided : 0u) | (m.alphaMode == AlphaMode::Mask ? gpu::kMaterialAlphaMask : 0u) |
-              (m.alphaMode == AlphaMode::Blend ? gpu::kMaterialAlphaBlend : 0u);
-    g.metallic = m.metallic;
-    g.roughness = m.roughness;
-    g.specular = m.specular;
-    g.alphaCutoff = m.alphaCutoff;
-    g.baseColorTexture = textureSlot(m.baseColorTexture);
-    g.metallicRoughnessTexture = textureSlot(m.metallicRoughnessTexture);
-    g.normalTexture = textureSlot(m.normalTexture);
-    g.emissiveTexture = textureSlot(m.emissiveTexture);
-    g.specularColor = glm::vec4(m.specularColor, m.ior);
-    g.attenuation = glm::vec4(m.attenuation, m.transmission);
-    g.sheen = glm::vec4(m.sheenColor, m.sheenRoughness);
-    g.clearcoat = m.clearcoat;
-    g.clearcoatRoughness = m.clearcoatRoughness;
-    g.volumetric = m.volumetric ? 1u : 0u;
-    g.transmissionTexture = textureSlot(m.transmissionTexture);
-    g.clearcoatTexture = textureSlot(m.clearcoatTexture);
-    g.clearcoatRoughnessTexture = textureSlot(m.clearcoatRoughnessTexture);
-    g.clearcoatNormalTexture = textureSlot(m.clearcoatNormalTexture);
-    g.sheenColorTexture = textureSlot(m.sheenColorTexture);
-    g.sheenRoughnessTexture = textureSlot(m.sheenRoughnessTexture);
-    g.specularTexture = textureSlot(m.specularTexture);
-    g.specularColorTexture = textureSlot(m.specularColorTexture);
-    mats.push_back(g);
-  }
+  for (const Material& m : scene.materials) mats.push_back(gpuMaterial(m));
 
   triangles_ = makeTexelBuffer(ctx, triTexels.data(), triTexels.size() * 16, BINDING_TRIANGLES, "triangles");
   triangleInfo_ = makeTexelBuffer(ctx, infoTexels.data(), infoTexels.size() * 16, BINDING_TRIANGLE_INFO, "triangle info");

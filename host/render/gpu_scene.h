@@ -19,11 +19,11 @@ struct GpuSceneInfo {
   uint32_t triangles = 0;
   uint32_t emissiveTriangles = 0;
   uint32_t materials = 0;
-  uint32_t punctualLights = 0;  // in the light table (black ones are left out)
-  bool alphaTested = false;     // some triangle's material is alpha MASK or BLEND (the walks' any-hit test)
-  uint32_t registerStackEntries = 12;  // the walks' register stack for this BVH (registerStackEntries in bvh.h)
-  bool deepWalks = true;               // some walk can outgrow it (walksCanOutgrowRegisterStack): deep passes needed
-  double emittedPower = 0.0;    // sum over emissive triangles of luminance(Le) * area * pi * sides
+  uint32_t punctualLights = 0;                 // in the light table (black ones are left out)
+  bool alphaTested = false;                    // some triangle's material is alpha MASK or BLEND (the walks' any-hit test)
+  uint32_t registerStackEntries = 12;          // the walks' register stack for this BVH (registerStackEntries in bvh.h)
+  bool deepWalks = true;                       // some walk can outgrow it (walksCanOutgrowRegisterStack): deep passes needed
+  double emittedPower = 0.0;                   // sum over emissive triangles of luminance(Le) * area * pi * sides
   glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // the scene's bounding box (EARS lays its cache grid over it)
   std::vector<std::pair<std::string, uint64_t>> bufferBytes;
 };

@@ -9,16 +9,25 @@
 
 namespace vkmc {
 
+std::string workgroupSizesText() {
+  std::string text;
+  for (size_t i = 0; i < kWorkgroupSizes.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == kWorkgroupSizes.size() ? " or " : ", ") + std::to_string(kWorkgroupSizes[i]);
+  return text;
+}
+
+std::string wavefrontRangeText() { return std::to_string(kMinWavefrontPaths) + " to " + std::to_string(kMaxWavefrontPaths); }
+
 void checkDeviceLimits(const RenderSettings& settings, const VkPhysicalDeviceLimits& limits) {
-  // Below 32 the indirect dispatch of a full path pool (~1.7M paths) would pass 65535 workgroups.
   const uint32_t ws = settings.workgroupSize;
-  if (ws != 32 && ws != 64 && ws != 128 && ws != 256)
-    throw Error("--workgroup must be 32, 64, 128 or 256 (got " + std::to_string(ws) + ")");
+  if (std::find(kWorkgroupSizes.begin(), kWorkgroupSizes.end(), ws) == kWorkgroupSizes.end())
+    throw Error("--workgroup must be " + workgroupSizesText() + " (got " + std::to_string(ws) + ")");
   if (ws > limits.maxComputeWorkGroupSize[0] || ws > limits.maxComputeWorkGroupInvocations)
     throw Error("--workgroup " + std::to_string(ws) + " exceeds this device's limit of " +
                 std::to_string(std::min(limits.maxComputeWorkGroupSize[0], limits.maxComputeWorkGroupInvocations)));
-  if (settings.maxPathsPerPass < 1024 || settings.maxPathsPerPass > (1u << 24))
-    throw Error("--wavefront must be 1024 to 16777216 paths per pass (got " + std::to_string(settings.maxPathsPerPass) + ")");
+  if (settings.maxPathsPerPass < kMinWavefrontPaths || settings.maxPathsPerPass > kMaxWavefrontPaths)
+    throw Error("--wavefront must be " + wavefrontRangeText() + " paths per pass (got " +
+                std::to_string(settings.maxPathsPerPass) + ")");
   uint64_t filmBytes = uint64_t(settings.width) * settings.height * sizeof(gpu::FilmPixel);
   if (filmBytes > limits.maxStorageBufferRange)
     throw Error("image " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
@@ -42,8 +51,7 @@ PathPoolSize sizePathPool(const RenderSettings& settings, const VkPhysicalDevice
   const uint32_t poolFactor = est.pathPoolFactor();
   const uint32_t shadowPerSlot = est.lightSamples + (est.earsLearnsLight() && est.earsLightMax > 1.0f ? 1u : 0u);
   capacity = std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::PathState) * poolFactor));
-  capacity =
-      std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::ShadowRay) * shadowPerSlot * poolFactor));
+  capacity = std::min<uint32_t>(capacity, limits.maxStorageBufferRange / (sizeof(gpu::ShadowRay) * shadowPerSlot * poolFactor));
   // The kernels read path states and shadow rays through texel views (common.glsl): their texels must fit too.
   const uint64_t texels = limits.maxTexelBufferElements;
   capacity = std::min<uint64_t>(capacity, texels / (gpu::kPathTexels * poolFactor));

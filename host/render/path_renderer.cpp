@@ -25,14 +25,14 @@ namespace {
 // variance needs two; a short render's budget should not go to the comparison).
 constexpr uint32_t kEarsGuardSamples = 4;
 // EARS's passes before the one the guard measures: the first after training decides from a cache that has learned
-// from a few samples a pixel, and measured 0.6x the efficiency of later passes on two_rooms (docs/ears.md).
+// from a few samples a pixel, and measured 0.6x the efficiency of later passes on two_rooms (docs/journal/ears.md).
 constexpr uint32_t kEarsGuardWarmPasses = 1;
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 constexpr uint32_t kFirstChunkBounces = 24;
 constexpr uint32_t kLaterChunkBounces = 16;
-constexpr uint32_t kSamplesPerBatch = 64;  // samples in a float batch sum before it is folded into double
-constexpr uint32_t kEarsTrainingPasses = 3;        // EARS's passes that only train (1, 2 and 4 spp)
+constexpr uint32_t kSamplesPerBatch = 64;           // samples in a float batch sum before it is folded into double
+constexpr uint32_t kEarsTrainingPasses = 3;         // EARS's passes that only train (1, 2 and 4 spp)
 constexpr uint32_t kEarsTrainingSeed = 0x5bd1e995;  // their seeds: the render's, xor this
 constexpr uint32_t kEarsGuardSeed = 0x27d4eb2f;     // the guard's dropped throughput pass: the render's, xor this
 }  // namespace
@@ -58,7 +58,8 @@ PathRenderer::PathRenderer(vk::Context& ctx, const GpuScene& scene, const Render
   if (settings.integrator == Integrator::Auto) throw Error("internal: the integrator must be resolved before a render");
   const bool megakernel = settings.integrator == Integrator::Megakernel;
   if (megakernel && est.splitsPaths())
-    throw Error("bsdf_samples > 1 and rr ears split paths, which needs the wavefront integrator's path pool; use --integrator wavefront");
+    throw Error(
+        "bsdf_samples > 1 and rr ears split paths, which needs the wavefront integrator's path pool; use --integrator wavefront");
   if (est.needsFloatAtomics() && !ctx.hasFloatAtomics())
     throw Error("light_samples > 1 needs buffer float atomics (VK_EXT_shader_atomic_float), which this device lacks");
   // A scene without emitters has no shadow stage: its queue is not allocated (a placeholder is bound).
@@ -94,14 +95,15 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
   paths_ = readAsTexels(uint64_t(pool_) * sizeof(gpu::PathState), BINDING_PATH_TEXELS);
   hits_ = readAsTexels((megakernel ? 16 : uint64_t(pool_) * 16) + 48, BINDING_HIT_TEXELS);
   const bool ears = settings_.estimator.rr == RouletteMode::Ears;
-  queues_ = readAsTexels((megakernel ? 16 : uint64_t(pool_) * 4 * (ears ? 3 : 2)) + 48, BINDING_QUEUE_TEXELS);  // EARS: a copy queue too
+  queues_ = readAsTexels((megakernel ? 16 : uint64_t(pool_) * 4 * (ears ? 3 : 2)) + 48,
+                         BINDING_QUEUE_TEXELS);  // EARS: a copy queue too
   shadowQueue_ = readAsTexels(hasShadowStage_ ? size.shadowSlots * sizeof(gpu::ShadowRay) : 48, BINDING_SHADOW_TEXELS);
   // Room for every item of the larger trace stage, so a deferred walk is never turned away in practice.
   const bool deep = !megakernel && settings_.features.deepWalks;
   deepWalks_ = storage(deep ? std::max<uint64_t>(pool_, size.shadowSlots) * sizeof(uint32_t) : 16);
   // Touched now, not in the first full pass: on lavapipe a buffer's pages are first written by a kernel, and the
   // first pass to fill the pool paid for it (the guard's throughput pass, the first of 28 samples, read 17% slower
-  // than the same process's later ones on the Cornell box, which made EARS look better; docs/ears.md).
+  // than the same process's later ones on the Cornell box, which made EARS look better; docs/journal/ears.md).
   ctx_.runCommands([&](VkCommandBuffer cmd) {  // one submit for the five
     for (const vk::Buffer* b : {&paths_, &hits_, &queues_, &shadowQueue_, &deepWalks_}) b->recordZero(cmd);
   });
@@ -206,7 +208,7 @@ gpu::PushConstants PathRenderer::passConstants(uint32_t firstPixel, uint32_t pix
   pc.sampleIndex = sampleIndex;
   pc.width = settings_.width;
   pc.height = settings_.height;
-  pc.seed = earsTraining_ && !earsTrainingKept_ ? settings_.seed ^ kEarsTrainingSeed
+  pc.seed = earsTraining_ && !earsTrainingKept_          ? settings_.seed ^ kEarsTrainingSeed
             : earsPhase_ == EarsPhase::MeasureThroughput ? settings_.seed ^ kEarsGuardSeed
                                                          : settings_.seed;
   pc.queueCapacity = pool_;
@@ -309,7 +311,8 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
   earsPassTrainPixelSamples_ += double(pixelCount) * training;
   if (training < samples) {
     const auto leanStart = Clock::now();
-    bounces = std::max(bounces, renderWavefront(firstPixel, pixelCount, sampleIndex + training, samples - training, false, stats));
+    bounces =
+        std::max(bounces, renderWavefront(firstPixel, pixelCount, sampleIndex + training, samples - training, false, stats));
     earsPassLeanSeconds_ += since(leanStart);
     earsPassLeanPixelSamples_ += double(pixelCount) * (samples - training);
   }
@@ -369,7 +372,7 @@ uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderS
   earsLastPassSecondsPerSample_ = 0.0;
   double firstPassSeconds = 0.0;
   double throughputOverhead = -1.0;  // a pass's fixed seconds, once two throughput passes have measured it
-  uint32_t droppedIndex = 0;  // the dropped passes' samples follow each other in their own seed's sequence
+  uint32_t droppedIndex = 0;         // the dropped passes' samples follow each other in their own seed's sequence
   // Under a time budget where the guard may fall back, the first pass is throughput roulette's own (its lean
   // kernels, no training): what it costs says whether learning fits before any training kernel has run (on the
   // stiff furnace one training pass was a quarter of a 4-s budget).
@@ -382,14 +385,15 @@ uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderS
   // holds) and the rest by samples.
   auto learningFits = [&](uint32_t pass, uint32_t nextPassSamples, double perSample) {
     uint32_t trainingLeft = 0;
-    for (uint32_t later = pass + 1, n = nextPassSamples; later < kEarsTrainingPasses; ++later, n = std::min(2 * n, samplesPerPass()))
+    for (uint32_t later = pass + 1, n = nextPassSamples; later < kEarsTrainingPasses;
+         ++later, n = std::min(2 * n, samplesPerPass()))
       trainingLeft += n;
     const bool compares = earsGuardPending_;
     const uint32_t throughputPasses = (kEarsGuardSamples + samplesPerPass() - 1) / samplesPerPass();
     const double overhead = throughputOverhead >= 0.0 ? throughputOverhead : firstPassSeconds;
-    const double throughputSeconds =
-        compares ? earsThroughputPassSeconds(firstPassSeconds, 1u, overhead, throughputPasses, throughputPasses * samplesPerPass())
-                 : 0.0;
+    const double throughputSeconds = compares ? earsThroughputPassSeconds(firstPassSeconds, 1u, overhead, throughputPasses,
+                                                                          throughputPasses * samplesPerPass())
+                                              : 0.0;
     const double left = earsLearningSecondsLeft(trainingLeft, compares ? kEarsGuardWarmPasses + 2 * kEarsGuardSamples : 0u,
                                                 perSample, throughputSeconds);
     return !(trainingLeft > 0 || compares) || earsLearningFits(settings_.timeBudget, since(start), left);
@@ -422,24 +426,9 @@ uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderS
       earsOutOfBudget_ = true;
       break;
     }
-    // A second pass of throughput roulette's own, of 2 samples a pixel and kept: with the first it tells a pass's
-    // fixed overhead from its cost a sample (t = a + b n). A 1-spp pass is mostly overhead (dark_room at 96x96:
-    // 0.0375 s a sample, against 0.0085 in a 28-spp pass), and costing the guard's measured pass at its seconds a
-    // sample stopped learning even under a 32-s budget there (docs/ears.md).
+    // A second throughput pass tells a pass's fixed overhead from its cost a sample (the guard's costing needs it).
     if (pass == 0 && throughputFirst && earsGuardPending_ && samplesPerPass() >= 2 && nextSample + 2 <= settings_.spp) {
-      const uint64_t raysBefore2 = stats.rays();
-      const auto secondStart = Clock::now();
-      earsTrainingKept_ = true;
-      earsPhase_ = EarsPhase::Throughput;
-      renderSamples(nextSample, 2, stats);
-      earsPhase_ = phase;
-      const double secondSeconds = since(secondStart);
-      earsLastPassSecondsPerSample_ = secondSeconds / 2.0;
-      updateEarsStatistics(film, double(stats.rays() - raysBefore2) / (double(pixels) * 2));
-      foldFilm(film);
-      nextSample += 2;
-      earsTrainingKept_ = false;
-      throughputOverhead = earsPassOverhead(firstPassSeconds, 1, secondSeconds, 2, firstPassSeconds);
+      throughputOverhead = measureThroughputPassOverhead(film, nextSample, stats, firstPassSeconds);
       earsGuard_.passOverhead = throughputOverhead;
       if (!learningFits(pass, samples, perSample)) {
         earsOutOfBudget_ = true;
@@ -451,6 +440,29 @@ uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderS
   film_.zero();
   resetEarsBatchSums();
   return samples;
+}
+
+// A second pass of throughput roulette's own, of 2 samples a pixel and kept: with the first it tells a pass's fixed
+// overhead from its cost a sample (t = a + b n). A 1-spp pass is mostly overhead (dark_room at 96x96: 0.0375 s a
+// sample, against 0.0085 in a 28-spp pass), and costing the guard's measured pass at its seconds a sample stopped
+// learning even under a 32-s budget there (docs/journal/ears.md). Returns that overhead in seconds.
+double PathRenderer::measureThroughputPassOverhead(Film& film, uint32_t& nextSample, RenderStats& stats,
+                                                   double firstPassSeconds) {
+  const uint32_t pixels = settings_.width * settings_.height;
+  const uint64_t raysBefore = stats.rays();
+  const auto start = Clock::now();
+  const EarsPhase phase = earsPhase_;
+  earsTrainingKept_ = true;
+  earsPhase_ = EarsPhase::Throughput;
+  renderSamples(nextSample, 2, stats);
+  earsPhase_ = phase;
+  const double seconds = since(start);
+  earsLastPassSecondsPerSample_ = seconds / 2.0;
+  updateEarsStatistics(film, double(stats.rays() - raysBefore) / (double(pixels) * 2));
+  foldFilm(film);
+  nextSample += 2;
+  earsTrainingKept_ = false;
+  return earsPassOverhead(firstPassSeconds, 1, seconds, 2, firstPassSeconds);
 }
 
 void PathRenderer::trainEars(uint32_t cameras, RenderStats& stats) {
@@ -488,7 +500,8 @@ std::vector<PixelSums> PathRenderer::updateEarsStatistics(const Film& film, doub
   std::vector<PixelSums> pass = passPixelSums(after, std::move(earsBatchBefore_));
   // Without earlier samples (the first training pass) there is nothing to measure against: V_img 0, no factor,
   // throughput roulette for the next pass too.
-  ears_->setImageStatistics(raysPerSample, earsHaveEstimate_ ? earsRelativeVariance(pass, earsEstimate_, gpu::kEarsEpsilon) : 0.0);
+  ears_->setImageStatistics(raysPerSample,
+                            earsHaveEstimate_ ? earsRelativeVariance(pass, earsEstimate_, gpu::kEarsEpsilon) : 0.0);
   earsBatchBefore_ = std::move(after);
   earsEstimate_ = earsPixelEstimate(runningPixelEstimate(film, batch), settings_.width, settings_.height);
   earsHaveEstimate_ = true;
@@ -524,8 +537,10 @@ void PathRenderer::afterEarsPass(const Film& film, double raysPerSample, double 
     case EarsPhase::MeasureEarsAgain:
       addEarsPassToTally(updateEarsStatistics(film, raysPerSample), samples, seconds);
       if (earsTally_.samples < kEarsGuardSamples) return;
-      if (earsPhase_ == EarsPhase::MeasureEars) earsPhase_ = EarsPhase::MeasureThroughput;
-      else decideEarsGuard(nextSample, true);
+      if (earsPhase_ == EarsPhase::MeasureEars)
+        earsPhase_ = EarsPhase::MeasureThroughput;
+      else
+        decideEarsGuard(nextSample, true);
       return;
     case EarsPhase::MeasureThroughput:  // measureThroughputForGuard's
       return;
@@ -645,8 +660,10 @@ void PathRenderer::foldFilm(Film& film) {
   }
   // Under EARS the estimate of the passes so far, as updateEarsStatistics computed it from the film this folds
   // (once the guard has fallen back, the film's own, as without EARS).
-  if (ears_->enabled() && earsHaveEstimate_ && earsPhase_ != EarsPhase::Throughput) setPixelEstimate(earsEstimate_.smoothed);
-  else uploadPixelEstimate(film);
+  if (ears_->enabled() && earsHaveEstimate_ && earsPhase_ != EarsPhase::Throughput)
+    setPixelEstimate(earsEstimate_.smoothed);
+  else
+    uploadPixelEstimate(film);
   film_.zero();
   resetEarsBatchSums();
 }
@@ -720,7 +737,8 @@ void PathRenderer::snapshot(RenderState& state, uint32_t inBatch, double seconds
   finishStats(state.stats, before);
 }
 
-void PathRenderer::render(RenderState& state, const RenderControl& control) {
+// The film and the device's batch of a new or a resumed render; returns the samples already in the batch.
+uint32_t PathRenderer::prepareFilm(RenderState& state, bool shadowRoulette) {
   const uint32_t pixels = settings_.width * settings_.height;
   if (state.film.pixels() == 0) {
     state.film = Film(settings_.width, settings_.height);
@@ -730,22 +748,87 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   state.film.replicateVariance = settings_.estimator.sampler != Sampler::Independent;
   state.film.replicates = settings_.estimator.replicates;
   state.interrupted = false;
-  RenderStats& stats = state.stats;
-  const RenderStats before = stats;
-  const double secondsBefore = stats.seconds;
-  bool showProgress = settings_.progress && isatty(STDERR_FILENO);
   queueStats_.zero();
   // A resumed render continues the device's float batch where it stopped, with the estimate of the folded film.
-  uint32_t inBatch = state.batchSamples;
+  const uint32_t inBatch = state.batchSamples;
   if (inBatch > 0) film_.upload(state.batch.data(), size_t(pixels) * sizeof(gpu::FilmPixel));
   // Shadow-ray roulette refreshes its estimate after every pass, from the batch too, where the film is mapped
   // (a discrete GPU would download the film each pass: there, at each fold, as before). A resume does the same.
   // Under EARS both read EARS's smoothed estimate instead (updateEarsStatistics): as unbiased.
-  const bool shadowRoulette = settings_.estimator.shadowRrThreshold > 0.0f && ctx_.unifiedMemory();
-  if (shadowRoulette) refreshPixelEstimate(state.film);
-  else if (state.film.totalSamples() + state.film.totalNonfinite() > 0) uploadPixelEstimate(state.film);
+  if (shadowRoulette)
+    refreshPixelEstimate(state.film);
+  else if (state.film.totalSamples() + state.film.totalNonfinite() > 0)
+    uploadPixelEstimate(state.film);
   state.batch.clear();
   state.batchSamples = 0;
+  return inBatch;
+}
+
+// EARS before the render's own passes: its estimate, its guard's state, and its training passes. Returns the
+// next EARS pass's size; folds the batch (inBatch 0) and, under a budget, sets the next pass's seconds a sample.
+uint32_t PathRenderer::startEars(RenderState& state, uint32_t& inBatch, Clock::time_point start, double& secondsPerSample) {
+  const uint32_t pixels = settings_.width * settings_.height;
+  earsHaveEstimate_ = false;                           // nothing from an earlier render() on this renderer
+  if (inBatch > 0) foldFilm(state.film), inBatch = 0;  // the training passes' samples are dropped from the batch
+  earsBatchBefore_.assign(pixels, PixelSums{});
+  earsHaveEstimate_ = state.film.totalSamples() > 0;  // a resumed render's: the folded film's, smoothed
+  if (earsHaveEstimate_) {
+    earsEstimate_ = earsPixelEstimate(runningPixelEstimate(state.film), settings_.width, settings_.height);
+    setPixelEstimate(earsEstimate_.smoothed);
+  }
+  // The guard starts over (before the training passes, which must run EARS's kernels).
+  earsGuard_ = EarsGuardOutcome{};
+  earsTally_ = throughputTally_ = PolicyTally{};
+  earsGuardPending_ = settings_.estimator.earsMayFallBack();
+  earsWarmPasses_ = 0;
+  earsPhase_ = EarsPhase::Ears;
+  const uint32_t earsSamples = trainEarsPasses(state.film, state.nextSample, state.stats, start);
+  // Under a budget the next pass is sized from the training's last, as the loop's own passes are from theirs (it
+  // would otherwise start over at 1 sample a pixel: one more pass of fixed cost).
+  if (settings_.timeBudget > 0.0) secondsPerSample = earsLastPassSecondsPerSample_;
+  if (earsGuardPending_ && kEarsGuardWarmPasses == 0) earsPhase_ = EarsPhase::MeasureEars;
+  if (earsOutOfBudget_) {  // no comparison: throughput roulette where the guard may fall back, else EARS
+    earsGuardPending_ = false;
+    earsGuard_.outOfBudget = true;
+    earsGuard_.fromSample = state.nextSample;
+    earsGuard_.decidedAtSeconds = since(start);
+    earsGuard_.fellBack = settings_.estimator.earsFallback != EarsFallback::Never;
+    earsPhase_ = earsGuard_.fellBack ? EarsPhase::Throughput : EarsPhase::Ears;
+  }
+  return earsSamples;
+}
+
+// The next pass's samples a pixel from sample s: the guard's measured EARS samples, EARS's doubling passes, shadow
+// roulette's s + 1, or the pass size; never past spp.
+uint32_t PathRenderer::nextPassSamples(uint32_t s, uint32_t perPass, uint32_t earsSamples, bool shadowRoulette) const {
+  // The guard measures kEarsGuardSamples a pixel of EARS at each look, in passes no larger than the others: the
+  // cache learns from a pass's first samples only (earsTrainingSamples), so a larger second look learns no more.
+  const bool measuresEars = earsPhase_ == EarsPhase::MeasureEars || earsPhase_ == EarsPhase::MeasureEarsAgain;
+  const bool earsPass = ears_->enabled() && !throughputPass();
+  uint32_t samples = measuresEars                          ? std::min(perPass, kEarsGuardSamples - earsTally_.samples)
+                     : earsPass                            ? std::min(perPass, earsSamples)
+                     : shadowRoulette && !ears_->enabled() ? std::min(perPass, s + 1)
+                                                           : perPass;
+  return std::min(samples, settings_.spp - s);
+}
+
+void PathRenderer::printProgress(uint32_t s, uint32_t firstSample, double elapsed, double secondsBefore,
+                                 const RenderStats& stats) const {
+  const double budget = settings_.timeBudget;
+  double eta = budget > 0.0 ? std::max(0.0, budget - elapsed) : elapsed / (s - firstSample) * (settings_.spp - s);
+  std::fprintf(stderr, "\rvkmc: %u/%u spp  %.2f Mrays/s  ETA %.1f s   ", s, settings_.spp,
+               stats.rays() / std::max(secondsBefore + elapsed, 1e-9) * 1e-6, eta);
+  std::fflush(stderr);
+}
+
+void PathRenderer::render(RenderState& state, const RenderControl& control) {
+  const uint32_t pixels = settings_.width * settings_.height;
+  RenderStats& stats = state.stats;
+  const RenderStats before = stats;
+  const double secondsBefore = stats.seconds;
+  bool showProgress = settings_.progress && isatty(STDERR_FILENO);
+  const bool shadowRoulette = settings_.estimator.shadowRrThreshold > 0.0f && ctx_.unifiedMemory();
+  uint32_t inBatch = prepareFilm(state, shadowRoulette);
   auto start = Clock::now();
   passesStart_ = start;
   double lastProgress = 0.0, lastCheckpoint = 0.0;
@@ -764,35 +847,8 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   // uninterrupted one did; EARS's passes double from where its training passes left off.
   uint32_t earsSamples = 1;
   auto stopRequested = [&] { return control.stop && control.stop->load() != 0; };
-  if (ears_->enabled() && state.nextSample < settings_.spp && !stopRequested()) {
-    earsHaveEstimate_ = false;  // nothing from an earlier render() on this renderer
-    if (inBatch > 0) foldFilm(state.film), inBatch = 0;  // the training passes' samples are dropped from the batch
-    earsBatchBefore_.assign(pixels, PixelSums{});
-    earsHaveEstimate_ = state.film.totalSamples() > 0;  // a resumed render's: the folded film's, smoothed
-    if (earsHaveEstimate_) {
-      earsEstimate_ = earsPixelEstimate(runningPixelEstimate(state.film), settings_.width, settings_.height);
-      setPixelEstimate(earsEstimate_.smoothed);
-    }
-    // The guard starts over (before the training passes, which must run EARS's kernels).
-    earsGuard_ = EarsGuardOutcome{};
-    earsTally_ = throughputTally_ = PolicyTally{};
-    earsGuardPending_ = settings_.estimator.earsMayFallBack();
-    earsWarmPasses_ = 0;
-    earsPhase_ = EarsPhase::Ears;
-    earsSamples = trainEarsPasses(state.film, state.nextSample, stats, start);
-    // Under a budget the next pass is sized from the training's last, as the loop's own passes are from theirs (it
-    // would otherwise start over at 1 sample a pixel: one more pass of fixed cost).
-    if (budget > 0.0) secondsPerSample = earsLastPassSecondsPerSample_;
-    if (earsGuardPending_ && kEarsGuardWarmPasses == 0) earsPhase_ = EarsPhase::MeasureEars;
-    if (earsOutOfBudget_) {  // no comparison: throughput roulette where the guard may fall back, else EARS
-      earsGuardPending_ = false;
-      earsGuard_.outOfBudget = true;
-      earsGuard_.fromSample = state.nextSample;
-      earsGuard_.decidedAtSeconds = since(start);
-      earsGuard_.fellBack = settings_.estimator.earsFallback != EarsFallback::Never;
-      earsPhase_ = earsGuard_.fellBack ? EarsPhase::Throughput : EarsPhase::Ears;
-    }
-  }
+  if (ears_->enabled() && state.nextSample < settings_.spp && !stopRequested())
+    earsSamples = startEars(state, inBatch, start, secondsPerSample);
   for (uint32_t s = state.nextSample; s < settings_.spp;) {
     if (s > firstSample && budgetSpent()) break;
     // Sized here, after the last pass's fold, checkpoint and any measuring pass, by the time left now.
@@ -810,46 +866,30 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
       continue;
     }
     const bool earsPass = ears_->enabled() && !throughputPass();
-    // The guard measures kEarsGuardSamples a pixel of EARS at each look, in passes no larger than the others: the
-    // cache learns from a pass's first samples only (earsTrainingSamples), so a larger second look learns no more.
-    const bool measuresEars = earsPhase_ == EarsPhase::MeasureEars || earsPhase_ == EarsPhase::MeasureEarsAgain;
-    uint32_t samples = measuresEars ? std::min(perPass, kEarsGuardSamples - earsTally_.samples)
-                       : earsPass                           ? std::min(perPass, earsSamples)
-                       : shadowRoulette && !ears_->enabled() ? std::min(perPass, s + 1)
-                                                             : perPass;
-    samples = std::min(samples, settings_.spp - s);
+    const uint32_t samples = nextPassSamples(s, perPass, earsSamples, shadowRoulette);
     double passStart = since(start);
     const uint64_t raysBefore = stats.rays();
     renderSamples(s, samples, stats);
     if (ears_->enabled())
-      afterEarsPass(state.film, double(stats.rays() - raysBefore) / (double(pixels) * samples), since(start) - passStart,
-                    samples, s + samples);
-    else if (shadowRoulette) refreshPixelEstimate(state.film);
+      afterEarsPass(state.film, double(stats.rays() - raysBefore) / (double(pixels) * samples), since(start) - passStart, samples,
+                    s + samples);
+    else if (shadowRoulette)
+      refreshPixelEstimate(state.film);
     if (earsPass) earsSamples = std::min(2 * earsSamples, maxPerPass);
     s += samples;
     state.nextSample = s;
     inBatch += samples;
-    if (budget > 0.0) {
-      secondsPerSample = std::max(since(start) - passStart, 1e-6) / samples;
-    }
+    if (budget > 0.0) secondsPerSample = std::max(since(start) - passStart, 1e-6) / samples;
     bool last = s == settings_.spp || budgetSpent();
-    if (inBatch + maxPerPass > kSamplesPerBatch || last) {
-      foldFilm(state.film);
-      inBatch = 0;
-    }
+    if (inBatch + maxPerPass > kSamplesPerBatch || last) foldFilm(state.film), inBatch = 0;
     double elapsed = since(start);
     if (control.checkpoint && control.checkpointEvery > 0.0 && elapsed - lastCheckpoint >= control.checkpointEvery && !last) {
       snapshot(state, inBatch, secondsBefore + elapsed, before);
       control.checkpoint(state);
       lastCheckpoint = since(start);
     }
-    if (showProgress && (elapsed - lastProgress > 0.25 || last)) {
-      lastProgress = elapsed;
-      double eta = budget > 0.0 ? std::max(0.0, budget - elapsed) : elapsed / (s - firstSample) * (settings_.spp - s);
-      std::fprintf(stderr, "\rvkmc: %u/%u spp  %.2f Mrays/s  ETA %.1f s   ", s, settings_.spp,
-                   stats.rays() / std::max(secondsBefore + elapsed, 1e-9) * 1e-6, eta);
-      std::fflush(stderr);
-    }
+    if (showProgress && (elapsed - lastProgress > 0.25 || last))
+      lastProgress = elapsed, printProgress(s, firstSample, elapsed, secondsBefore, stats);
   }
   if (showProgress) std::fprintf(stderr, "\n");
   if (ears_->enabled())

@@ -47,7 +47,7 @@ class PathRenderer {
   uint32_t samplesPerPass() const;
   uint32_t samplesPerBatch() const;
   void renderSamples(uint32_t firstSample, uint32_t samples, RenderStats& stats);  // one sample pass
-  std::vector<gpu::FilmPixel> takeBatch();                                       // the device's batch, then zeroed
+  std::vector<gpu::FilmPixel> takeBatch();                                         // the device's batch, then zeroed
   void restoreBatch(const std::vector<gpu::FilmPixel>& batch);
   void uploadPixelEstimate(const Film& film) { setPixelEstimate(runningPixelEstimate(film)); }
   // The running per-pixel estimate (shadow roulette, EARS): the film's means, w their luminance.
@@ -90,10 +90,17 @@ class PathRenderer {
   // (earsLearningFits): earsOutOfBudget_.
   // The first training pass is an image pass (kept: state's film and next sample), the later ones are dropped.
   uint32_t trainEarsPasses(Film& film, uint32_t& nextSample, RenderStats& stats, std::chrono::steady_clock::time_point start);
+  double measureThroughputPassOverhead(Film& film, uint32_t& nextSample, RenderStats& stats, double firstPassSeconds);
+  // render()'s steps: the film before the passes, EARS's start, each pass's size, the progress line.
+  uint32_t prepareFilm(RenderState& state, bool shadowRoulette);
+  uint32_t startEars(RenderState& state, uint32_t& inBatch, std::chrono::steady_clock::time_point start,
+                     double& secondsPerSample);
+  uint32_t nextPassSamples(uint32_t s, uint32_t perPass, uint32_t earsSamples, bool shadowRoulette) const;
+  void printProgress(uint32_t s, uint32_t firstSample, double elapsed, double secondsBefore, const RenderStats& stats) const;
   bool earsOutOfBudget_ = false;
   double earsLastPassSecondsPerSample_ = 0.0;  // the training passes' last, which sizes the next pass under a budget
-  bool earsTrainingKept_ = false;  // the training pass in progress is kept (its seed: the render's)
-  bool earsTraining_ = false;  // a training pass: its own seed, its samples dropped
+  bool earsTrainingKept_ = false;              // the training pass in progress is kept (its seed: the render's)
+  bool earsTraining_ = false;                  // a training pass: its own seed, its samples dropped
   // Returns the pass's sums (after - before).
   std::vector<PixelSums> updateEarsStatistics(const Film& film, double raysPerSample);
   // What V_img measures a pass against: the batch's sums before it (zeroed with the batch), and the pixel
@@ -122,9 +129,9 @@ class PathRenderer {
   void watchEars(const std::vector<PixelSums>& pass, uint32_t samples, double seconds, uint32_t nextSample);
   EarsGuardOutcome earsGuard_;
   std::chrono::steady_clock::time_point passesStart_;  // render()'s passes began: the guard's decidedAtSeconds count from it
-  bool earsGuardPending_ = false;  // the comparison is still to come
-  uint32_t earsWarmPasses_ = 0;    // EARS passes before it
-  PolicyTally earsTally_, throughputTally_;  // the measured passes of each policy
+  bool earsGuardPending_ = false;                      // the comparison is still to come
+  uint32_t earsWarmPasses_ = 0;                        // EARS passes before it
+  PolicyTally earsTally_, throughputTally_;            // the measured passes of each policy
   // The EARS pass in progress, over its tiles: its training part (wavefront and cache update) and the rest.
   double earsPassTrainSeconds_ = 0.0, earsPassLeanSeconds_ = 0.0;
   double earsPassTrainPixelSamples_ = 0.0, earsPassLeanPixelSamples_ = 0.0;

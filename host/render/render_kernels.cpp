@@ -40,7 +40,8 @@ struct NamedSpirv {
   const char* build;
   std::span<const uint32_t> words;
 };
-#define VKMC_SPIRV(kernel) NamedSpirv{#kernel, kSpirv_##kernel}
+#define VKMC_SPIRV(kernel) \
+  NamedSpirv { #kernel, kSpirv_##kernel }
 
 uint32_t log2Ceil(uint64_t v) {
   uint32_t k = 0;
@@ -60,8 +61,8 @@ ZSobolLayout zsobolLayout(const RenderSettings& s) {
   const uint32_t pixelBits = zsobolPixelBits(s.width, s.height);
   z.digits = pixelBits / 2 + (z.log2Spp + 1) / 2;
   if (s.estimator.sampler == Sampler::ZSobol && pixelBits + z.log2Spp > kZSobolIndexBits)
-    throw Error("--sampler zsobol: " + std::to_string(s.width) + "x" + std::to_string(s.height) + " at " +
-                std::to_string(s.spp) + " spp needs a Morton index of " + std::to_string(pixelBits + z.log2Spp) +
+    throw Error("--sampler zsobol: " + std::to_string(s.width) + "x" + std::to_string(s.height) + " at " + std::to_string(s.spp) +
+                " spp needs a Morton index of " + std::to_string(pixelBits + z.log2Spp) +
                 " bits, more than 32: use --sampler sobol, fewer samples or a smaller image");
   return z;
 }
@@ -136,23 +137,44 @@ KernelPlan planKernels(const RenderSettings& s) {
   return plan;
 }
 
-RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, const RenderSettings& settings, bool hasShadowStage,
-                                 uint32_t pathSlots) {
+namespace {
+
+// A kernel this render dispatches, and whether a helper thread compiles it (see BackgroundWarmUp).
+struct PlannedKernel {
+  std::unique_ptr<vk::Kernel>* slot;
+  const char* name;
+  NamedSpirv source;
+  bool lean = false;                     // built with SPEC_EARS_TRAINS 0
+  bool throughput = false;               // built with throughput roulette (EARS's guard)
+  std::span<const uint32_t> spirv = {};  // what the pipeline is created from: the source or a variant of it
+  bool helper = false;
+};
+
+// EARS's kernels: its training stages, the lean ones of a pass's later samples, and the guard's throughput ones.
+void planEarsKernels(const RenderSettings& settings, bool hasShadowStage, RenderKernels& k, std::vector<PlannedKernel>& planned) {
   const EstimatorConfig& est = settings.estimator;
-  const KernelPlan plan = planKernels(settings);
-  const std::vector<vk::SpecConstant>& specs = plan.specs;
-  // Every kernel this render dispatches, and whether a helper thread compiles it (see BackgroundWarmUp).
-  struct Planned {
-    std::unique_ptr<vk::Kernel>* slot;
-    const char* name;
-    NamedSpirv source;
-    bool lean = false;  // built with SPEC_EARS_TRAINS 0
-    bool throughput = false;  // built with throughput roulette (EARS's guard)
-    std::span<const uint32_t> spirv = {};  // what the pipeline is created from: the source or a variant of it
-    bool helper = false;
-  };
-  std::vector<Planned> planned;
-  RenderKernels k;
+  planned.push_back({&k.prepareCopies, "prepare_copies", VKMC_SPIRV(prepare_copies)});
+  planned.push_back({&k.earsCopies, "ears_copies", VKMC_SPIRV(ears_copies)});
+  planned.push_back({&k.earsGather, "ears_gather", VKMC_SPIRV(ears_gather)});
+  planned.push_back({&k.earsTrain, "ears_train", VKMC_SPIRV(ears_train)});
+  planned.push_back({&k.earsFold, "ears_fold", VKMC_SPIRV(ears_fold)});
+  // The same names as the training kernels: the report's stage times add both.
+  planned.push_back({&k.shadeLean, "shade", VKMC_SPIRV(shade_atomic), true});
+  planned.push_back({&k.earsCopiesLean, "ears_copies", VKMC_SPIRV(ears_copies), true});
+  if (est.earsMayFallBack()) planned.push_back({&k.shadeThroughput, "shade", VKMC_SPIRV(shade), false, true});
+  if (est.earsMayFallBack() && hasShadowStage) {  // float atomics only where a path has several light samples
+    const bool atomics = est.lightSamples > 1;
+    planned.push_back({&k.shadowThroughput, "shadow", atomics ? VKMC_SPIRV(shadow_atomic) : VKMC_SPIRV(shadow), false, true});
+    if (settings.features.deepWalks)
+      planned.push_back({&k.shadowDeepThroughput, "shadow_deep",
+                         atomics ? VKMC_SPIRV(shadow_atomic_deep) : VKMC_SPIRV(shadow_deep), false, true});
+  }
+}
+
+// Every kernel the render dispatches, in dispatch order, each with the slot of RenderKernels it fills.
+std::vector<PlannedKernel> planKernelList(const RenderSettings& settings, bool hasShadowStage, RenderKernels& k) {
+  const EstimatorConfig& est = settings.estimator;
+  std::vector<PlannedKernel> planned;
   if (settings.integrator == Integrator::Megakernel) {
     planned.push_back({&k.megakernel, "megakernel", shadingSpirv(settings)});
   } else {
@@ -170,54 +192,27 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
     }
   }
   planned.push_back({&k.accumulate, "accumulate", VKMC_SPIRV(accumulate)});
-  if (est.rr == RouletteMode::Ears) {
-    planned.push_back({&k.prepareCopies, "prepare_copies", VKMC_SPIRV(prepare_copies)});
-    planned.push_back({&k.earsCopies, "ears_copies", VKMC_SPIRV(ears_copies)});
-    planned.push_back({&k.earsGather, "ears_gather", VKMC_SPIRV(ears_gather)});
-    planned.push_back({&k.earsTrain, "ears_train", VKMC_SPIRV(ears_train)});
-    planned.push_back({&k.earsFold, "ears_fold", VKMC_SPIRV(ears_fold)});
-    // The same names as the training kernels: the report's stage times add both.
-    planned.push_back({&k.shadeLean, "shade", VKMC_SPIRV(shade_atomic), true});
-    planned.push_back({&k.earsCopiesLean, "ears_copies", VKMC_SPIRV(ears_copies), true});
-    if (est.earsMayFallBack()) planned.push_back({&k.shadeThroughput, "shade", VKMC_SPIRV(shade), false, true});
-    if (est.earsMayFallBack() && hasShadowStage) {  // float atomics only where a path has several light samples
-      const bool atomics = est.lightSamples > 1;
-      planned.push_back({&k.shadowThroughput, "shadow", atomics ? VKMC_SPIRV(shadow_atomic) : VKMC_SPIRV(shadow), false, true});
-      if (settings.features.deepWalks)
-        planned.push_back({&k.shadowDeepThroughput, "shadow_deep",
-                           atomics ? VKMC_SPIRV(shadow_atomic_deep) : VKMC_SPIRV(shadow_deep), false, true});
-    }
-  }
-  std::vector<vk::SpecConstant> leanSpecs = specs;
-  leanSpecs.push_back({SPEC_EARS_TRAINS, 0u});
-  std::vector<vk::SpecConstant> throughputSpecs = specs;
-  for (vk::SpecConstant& c : throughputSpecs)
-    if (c.id == SPEC_RR_MODE) c.value = uint32_t(RouletteMode::Throughput);
-  auto specsOf = [&](const Planned& p) -> const std::vector<vk::SpecConstant>& {
-    return p.throughput ? throughputSpecs : p.lean ? leanSpecs : specs;
-  };
-  for (Planned& p : planned)
-    p.spirv = settings.prespecializedSpirv ? chooseSpirv(p.source.build, p.source.words, specsOf(p)).spirv : p.source.words;
-  std::vector<Planned*> bySize;
-  for (Planned& p : planned) bySize.push_back(&p);
-  std::stable_sort(bySize.begin(), bySize.end(), [](const Planned* a, const Planned* b) { return a->spirv.size() > b->spirv.size(); });
-  // The first-dispatch compiles, shared by SPIR-V size: this thread takes the largest kernel, each next one goes to
-  // the lighter share. (Sizes stand in for compile times: the pre-specialized variants hold little dead code.) A
-  // kernel past kHelperMaxWords stays here: the helper would create its pipeline a second time, SPIR-V to NIR
-  // before the dead code goes, which costs about what its compile does, and all of it when the cache is warm.
+  if (est.rr == RouletteMode::Ears) planEarsKernels(settings, hasShadowStage, k, planned);
+  return planned;
+}
+
+// The first-dispatch compiles, shared by SPIR-V size: this thread takes the largest kernel, each next one goes to
+// the lighter share. (Sizes stand in for compile times: the pre-specialized variants hold little dead code.) A
+// kernel past kHelperMaxWords stays here: the helper would create its pipeline a second time, SPIR-V to NIR before
+// the dead code goes, which costs about what its compile does, and all of it when the cache is warm.
+void shareCompiles(const std::vector<PlannedKernel*>& bySize) {
   constexpr size_t kHelperMaxWords = 32768;
   size_t ownWords = 0, helperWords = 0;
-  for (Planned* p : bySize) {
+  for (PlannedKernel* p : bySize) {
     p->helper = helperWords < ownWords && p->spirv.size() <= kHelperMaxWords;
     (p->helper ? helperWords : ownWords) += p->spirv.size();
   }
-  std::vector<KernelSource> helperShare;
-  if (compilesAtFirstDispatch(ctx))
-    for (const Planned& p : planned)
-      if (p.helper) helperShare.push_back({p.name, p.spirv, specsOf(p)});
-  BackgroundWarmUp helper(std::move(helperShare));
-  // Creating a pipeline is CPU work of its own on llvmpipe (SPIR-V to NIR, before specialization removes anything:
-  // 0.2 s for the general shade), so two threads create them, the largest first.
+}
+
+// Creating a pipeline is CPU work of its own on llvmpipe (SPIR-V to NIR, before specialization removes anything:
+// 0.2 s for the general shade), so two threads create them, the largest first.
+template <class SpecsOf>
+void createPipelines(vk::Context& ctx, vk::KernelLayout& layout, const std::vector<PlannedKernel*>& bySize, SpecsOf&& specsOf) {
   std::atomic<size_t> next{0};
   auto createSome = [&] {
     for (size_t i = next++; i < bySize.size(); i = next++)
@@ -240,7 +235,37 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
   }
   worker.join();
   if (workerError) std::rethrow_exception(workerError);
+}
 
+}  // namespace
+
+RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, const RenderSettings& settings, bool hasShadowStage,
+                                 uint32_t pathSlots) {
+  const KernelPlan plan = planKernels(settings);
+  const std::vector<vk::SpecConstant>& specs = plan.specs;
+  RenderKernels k;
+  std::vector<PlannedKernel> planned = planKernelList(settings, hasShadowStage, k);
+  std::vector<vk::SpecConstant> leanSpecs = specs;
+  leanSpecs.push_back({SPEC_EARS_TRAINS, 0u});
+  std::vector<vk::SpecConstant> throughputSpecs = specs;
+  for (vk::SpecConstant& c : throughputSpecs)
+    if (c.id == SPEC_RR_MODE) c.value = uint32_t(RouletteMode::Throughput);
+  auto specsOf = [&](const PlannedKernel& p) -> const std::vector<vk::SpecConstant>& {
+    return p.throughput ? throughputSpecs : p.lean ? leanSpecs : specs;
+  };
+  for (PlannedKernel& p : planned)
+    p.spirv = settings.prespecializedSpirv ? chooseSpirv(p.source.build, p.source.words, specsOf(p)).spirv : p.source.words;
+  std::vector<PlannedKernel*> bySize;
+  for (PlannedKernel& p : planned) bySize.push_back(&p);
+  std::stable_sort(bySize.begin(), bySize.end(),
+                   [](const PlannedKernel* a, const PlannedKernel* b) { return a->spirv.size() > b->spirv.size(); });
+  shareCompiles(bySize);
+  std::vector<KernelSource> helperShare;
+  if (compilesAtFirstDispatch(ctx))
+    for (const PlannedKernel& p : planned)
+      if (p.helper) helperShare.push_back({p.name, p.spirv, specsOf(p)});
+  BackgroundWarmUp helper(std::move(helperShare));
+  createPipelines(ctx, layout, bySize, specsOf);
   // Warm-up: every kernel once on empty queues; the helper's share last, once it has compiled them into the cache.
   gpu::PushConstants pc{};
   pc.width = settings.width;
@@ -249,7 +274,7 @@ RenderKernels buildRenderKernels(vk::Context& ctx, vk::KernelLayout& layout, con
   for (bool helperShare : {false, true}) {
     if (helperShare) helper.wait();
     ctx.runCommands([&](VkCommandBuffer cmd) {
-      for (const Planned& p : planned)
+      for (const PlannedKernel& p : planned)
         if (p.helper == helperShare) vk::dispatch(cmd, layout, **p.slot, &pc, sizeof(pc), 1);
     });
   }

@@ -58,7 +58,8 @@ TextureAtlas packTextureAtlas(const std::vector<Texture>& textures, uint32_t max
     atlas.texels.assign(1, 0xffffffffu);
     return atlas;
   }
-  std::stable_sort(boxes.begin(), boxes.end(), [](const Padded& a, const Padded& b) { return a.h != b.h ? a.h > b.h : a.w > b.w; });
+  std::stable_sort(boxes.begin(), boxes.end(),
+                   [](const Padded& a, const Padded& b) { return a.h != b.h ? a.h > b.h : a.w > b.w; });
   // Candidate sides: the largest texture's, its doublings, and the square of the total area. Among those whose
   // pages the device allows, the fewest texels win, then the fewest pages.
   std::vector<uint32_t> sides;
@@ -100,7 +101,8 @@ TextureAtlas packTextureAtlas(const std::vector<Texture>& textures, uint32_t max
     for (int y = -1; y <= h; ++y) {
       const int sy = gpu::wrapNearTexel(y, h, wrapT);
       for (int x = -1; x <= w; ++x)
-        origin[std::ptrdiff_t(y) * std::ptrdiff_t(W) + x] = t.texels[size_t(sy) * t.width + size_t(gpu::wrapNearTexel(x, w, wrapS))];
+        origin[std::ptrdiff_t(y) * std::ptrdiff_t(W) + x] =
+            t.texels[size_t(sy) * t.width + size_t(gpu::wrapNearTexel(x, w, wrapS))];
     }
   }
   return atlas;

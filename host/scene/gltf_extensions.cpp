@@ -22,7 +22,7 @@ constexpr ExtensionRow kExtensions[] = {
     {"KHR_texture_basisu", "KTX2 images are not decoded (a texture with a PNG or JPEG source as well uses that)"},
     {"EXT_texture_webp", "WebP images are not decoded (a texture with a PNG or JPEG source as well uses that)"},
     {"EXT_texture_avif", "AVIF images are not decoded (a texture with a PNG or JPEG source as well uses that)"},
-    {"KHR_materials_transmission", ""},  // bsdf_gltf.h; shadow rays do not pass it (README, Materials)
+    {"KHR_materials_transmission", ""},  // bsdf_gltf.h; shadow rays do not pass it (docs/manual/scenes.md)
     {"KHR_materials_volume", ""},        // refraction and Beer-Lambert attenuation; thicknessTexture is not needed
     {"KHR_materials_ior", ""},
     {"KHR_materials_clearcoat", ""},
@@ -31,7 +31,7 @@ constexpr ExtensionRow kExtensions[] = {
     {"KHR_materials_anisotropy", "anisotropy is ignored"},
     {"KHR_materials_dispersion", "dispersion is ignored"},
     {"KHR_materials_diffuse_transmission", "diffuse transmission is ignored"},
-    {"KHR_materials_unlit", ""},  // an emission shader of the base colour (gltf_loader.cpp, makeUnlit)
+    {"KHR_materials_unlit", ""},                  // an emission shader of the base colour (gltf_loader.cpp, makeUnlit)
     {"KHR_materials_pbrSpecularGlossiness", ""},  // converted to metallic-roughness per texel (scene/spec_gloss.h)
     {"KHR_materials_variants", "only each primitive's default material is used"},
     {"KHR_draco_mesh_compression", ""},  // decoded by scene/gltf_decompress (libdraco)

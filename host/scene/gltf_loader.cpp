@@ -335,8 +335,7 @@ class Flattener {
 
   // The tangent by the node's linear part, Gram-Schmidt against the corner's world normal.
   // `index`: the vertex, or the corner for tangents generated per corner.
-  static glm::vec4 worldTangent(const PrimitiveData& data, size_t index, const glm::mat3& linear, const glm::vec3& n,
-                                bool flip) {
+  static glm::vec4 worldTangent(const PrimitiveData& data, size_t index, const glm::mat3& linear, const glm::vec3& n, bool flip) {
     glm::vec4 local = data.tangents.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : data.tangents[index];
     glm::vec3 t = linear * glm::vec3(local);
     t -= n * glm::dot(n, t);
@@ -598,7 +597,8 @@ Scene flattenModel(const tinygltf::Model& model, const std::string& path, const 
   if (scene.degenerateTriangles > 0)
     scene.warnings.push_back(std::to_string(scene.degenerateTriangles) + " zero-area triangle(s) skipped");
   if (scene.triangleCount() == 0)
-    throw Error("scene '" + path + "' has no triangles" + std::string(scene.thinSegments.empty() ? "" : " (points and lines alone are not drawn)"));
+    throw Error("scene '" + path + "' has no triangles" +
+                std::string(scene.thinSegments.empty() ? "" : " (points and lines alone are not drawn)"));
   return scene;
 }
 

@@ -21,8 +21,7 @@ class ExtensionReader {
   float number(const char* key, double fallback, double lo, double hi) const {
     if (!v_.Has(key)) return float(fallback);
     const tinygltf::Value& x = v_.Get(key);
-    if (!x.IsNumber() || !std::isfinite(x.GetNumberAsDouble()))
-      throw Error(what_ + "." + key + " is not a finite number");
+    if (!x.IsNumber() || !std::isfinite(x.GetNumberAsDouble())) throw Error(what_ + "." + key + " is not a finite number");
     double d = x.GetNumberAsDouble();
     if (d < lo || d > hi)
       throw Error(what_ + "." + key + " = " + std::to_string(d) + " is outside [" + std::to_string(lo) + ", " +

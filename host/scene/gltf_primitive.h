@@ -14,7 +14,7 @@ struct PrimitiveData {
   std::vector<glm::vec3> normals;   // empty when the primitive has no NORMAL
   std::vector<glm::vec2> uv0, uv1;  // empty when absent
   std::vector<glm::vec4> tangents;  // TANGENT, generated ones, or empty (see PrimitiveRequest::generateTangents)
-  bool tangentsPerCorner = false;  // generated (MikkTSpace): one per corner of `triangles`, not per vertex
+  bool tangentsPerCorner = false;   // generated (MikkTSpace): one per corner of `triangles`, not per vertex
   std::vector<glm::vec4> colors;    // COLOR_0 as RGBA, empty when absent
   std::vector<uint32_t> triangles;  // 3 vertex indices per triangle, each checked < positions.size()
   std::vector<uint32_t> segments;   // points and lines: 2 vertex indices per segment (a point: the same twice)

@@ -56,10 +56,9 @@ struct Material {
   TextureRef transmissionTexture, clearcoatTexture, clearcoatRoughnessTexture, clearcoatNormalTexture, sheenColorTexture,
       sheenRoughnessTexture, specularTexture, specularColorTexture;
   std::array<const TextureRef*, 12> textureRefs() const {
-    return {&baseColorTexture,          &metallicRoughnessTexture, &normalTexture,     &emissiveTexture,
-            &transmissionTexture,       &clearcoatTexture,         &clearcoatRoughnessTexture,
-            &clearcoatNormalTexture,    &sheenColorTexture,        &sheenRoughnessTexture,
-            &specularTexture,           &specularColorTexture};
+    return {&baseColorTexture, &metallicRoughnessTexture,  &normalTexture,          &emissiveTexture,   &transmissionTexture,
+            &clearcoatTexture, &clearcoatRoughnessTexture, &clearcoatNormalTexture, &sheenColorTexture, &sheenRoughnessTexture,
+            &specularTexture,  &specularColorTexture};
   }
   bool textured() const {
     for (const TextureRef* t : textureRefs())
@@ -87,7 +86,7 @@ struct Camera {
 };
 
 // A KHR_lights_punctual light instance in world space. vkmc reads the spec's photometric values as radiometric
-// ones, 1:1 (README, Lights): a point or spot light's intensity (cd) is its radiant intensity I in W/sr, a
+// ones, 1:1 (docs/manual/scenes.md): a point or spot light's intensity (cd) is its radiant intensity I in W/sr, a
 // directional light's (lx) its irradiance E in W/m^2 at normal incidence.
 enum class PunctualKind { Point, Spot, Directional };
 
@@ -151,8 +150,8 @@ struct Scene {
   std::vector<Texture> textures;
   std::vector<Camera> cameras;  // camera instances in node order
   Aabb bounds;
-  uint64_t degenerateTriangles = 0;  // zero-area triangles skipped
-  uint64_t skippedPrimitives = 0;    // primitives of an unknown mode, skipped
+  uint64_t degenerateTriangles = 0;       // zero-area triangles skipped
+  uint64_t skippedPrimitives = 0;         // primitives of an unknown mode, skipped
   std::vector<ThinSegment> thinSegments;  // points and lines, not yet triangles
   std::vector<std::string> warnings;
   std::string path;

@@ -23,9 +23,10 @@ uint64_t sceneFingerprint(const Scene& s) {
                          m.emission.z,  m.metallic,    m.roughness,   m.specular, m.alphaCutoff};
     h.add(v, sizeof(v));
     h.addValue(uint64_t(m.doubleSided) | uint64_t(m.alphaMode) << 8);
-    const float ext[16] = {m.specularColor.x, m.specularColor.y, m.specularColor.z, m.ior, m.transmission,
-                           m.attenuation.x,   m.attenuation.y,   m.attenuation.z,   m.clearcoat, m.clearcoatRoughness,
-                           m.sheenColor.x,    m.sheenColor.y,    m.sheenColor.z,    m.sheenRoughness, float(m.volumetric), 0.0f};
+    const float ext[16] = {m.specularColor.x, m.specularColor.y,    m.specularColor.z,   m.ior,
+                           m.transmission,    m.attenuation.x,      m.attenuation.y,     m.attenuation.z,
+                           m.clearcoat,       m.clearcoatRoughness, m.sheenColor.x,      m.sheenColor.y,
+                           m.sheenColor.z,    m.sheenRoughness,     float(m.volumetric), 0.0f};
     h.add(ext, sizeof(ext));
     for (const TextureRef* t : m.textureRefs()) addTextureRef(h, *t);
   }
@@ -35,8 +36,19 @@ uint64_t sceneFingerprint(const Scene& s) {
     h.add(t.texels);
   }
   for (const Camera& c : s.cameras) {
-    const float v[14] = {c.position.x, c.position.y, c.position.z, c.forward.x, c.forward.y, c.forward.z, c.up.x,
-                         c.up.y,       c.up.z,       c.yfov,       c.aspectRatio.value_or(0.0f), c.xmag, c.ymag,
+    const float v[14] = {c.position.x,
+                         c.position.y,
+                         c.position.z,
+                         c.forward.x,
+                         c.forward.y,
+                         c.forward.z,
+                         c.up.x,
+                         c.up.y,
+                         c.up.z,
+                         c.yfov,
+                         c.aspectRatio.value_or(0.0f),
+                         c.xmag,
+                         c.ymag,
                          float(c.kind)};
     h.add(v, sizeof(v));
   }

@@ -38,7 +38,8 @@ uint32_t packRgba(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
 std::vector<double> numbers(const tinygltf::Value& v, const char* key, std::vector<double> fallback) {
   if (!v.Has(key) || !v.Get(key).IsArray()) return fallback;
   const tinygltf::Value& a = v.Get(key);
-  if (a.ArrayLen() != fallback.size()) throw Error(std::string(key) + " must have " + std::to_string(fallback.size()) + " numbers");
+  if (a.ArrayLen() != fallback.size())
+    throw Error(std::string(key) + " must have " + std::to_string(fallback.size()) + " numbers");
   for (size_t i = 0; i < fallback.size(); ++i) {
     if (!a.Get(int(i)).IsNumber()) throw Error(std::string(key) + " must hold numbers");
     fallback[i] = a.Get(int(i)).GetNumberAsDouble();
@@ -81,7 +82,9 @@ void applySpecularGlossiness(const tinygltf::Value& ext, Material& out, const st
                              std::vector<Texture>& baked, const std::string& name, std::vector<std::string>& warnings) {
   const std::string what = name + " KHR_materials_pbrSpecularGlossiness";
   std::vector<double> d = numbers(ext, "diffuseFactor", {1, 1, 1, 1}), s = numbers(ext, "specularFactor", {1, 1, 1});
-  double g = ext.Has("glossinessFactor") && ext.Get("glossinessFactor").IsNumber() ? ext.Get("glossinessFactor").GetNumberAsDouble() : 1.0;
+  double g = ext.Has("glossinessFactor") && ext.Get("glossinessFactor").IsNumber()
+                 ? ext.Get("glossinessFactor").GetNumberAsDouble()
+                 : 1.0;
   glm::vec4 diffuseFactor(d[0], d[1], d[2], d[3]);
   glm::vec3 specularFactor(s[0], s[1], s[2]);
   float glossinessFactor = float(g);
@@ -103,7 +106,9 @@ void applySpecularGlossiness(const tinygltf::Value& ext, Material& out, const st
     return;
   }
   // Bake: every texel of the finer source grid, both textures looked up at its centre.
-  auto texels = [&](const TextureRef& r) { return r.present() ? uint64_t(textures[r.texture].width) * textures[r.texture].height : 0u; };
+  auto texels = [&](const TextureRef& r) {
+    return r.present() ? uint64_t(textures[r.texture].width) * textures[r.texture].height : 0u;
+  };
   const TextureRef& source = texels(diffuse) >= texels(specGloss) ? diffuse : specGloss;
   const Texture& grid = textures[source.texture];
   Texture base, metalRough;

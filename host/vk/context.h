@@ -37,7 +37,8 @@ class Context {
   // lavapipe's SIMD width in bits (its subgroup x 32; lavapipe_environment.h); 0 on other devices.
   unsigned cpuVectorBits() const { return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? subgroupSize_ * 32u : 0u; }
   bool unifiedMemory() const {
-    return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU || properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU;
+    return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ||
+           properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU;
   }
   double timestampPeriodNs() const { return properties_.limits.timestampPeriod; }
   uint64_t maxAllocationBytes() const { return maxAllocationBytes_; }  // maxMemoryAllocationSize
@@ -57,6 +58,7 @@ class Context {
   void runCommands(const std::function<void(VkCommandBuffer)>& record);
 
  private:
+  void readDevice();  // properties, limits, requirements and the compute queue of physical_
   VkInstance instance_ = VK_NULL_HANDLE;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;
   VkDevice device_ = VK_NULL_HANDLE;

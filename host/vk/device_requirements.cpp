@@ -30,14 +30,14 @@ std::vector<std::string> missingRequirements(const DeviceCapabilities& caps) {
     missing.push_back(std::to_string(sizeof(gpu::PushConstants)) + " bytes of push constants");
   uint32_t texel = 0;
   for (uint32_t b : gpu::kTexelBindings) texel += b < BINDING_COUNT ? 1u : 0u;
-  if (caps.maxStorageImagesPerStage < texel)
-    missing.push_back(std::to_string(texel) + " storage texel buffers per shader stage");
+  if (caps.maxStorageImagesPerStage < texel) missing.push_back(std::to_string(texel) + " storage texel buffers per shader stage");
   if (caps.maxStorageBuffersPerStage < BINDING_COUNT - texel - 1)
     missing.push_back(std::to_string(BINDING_COUNT - texel - 1) + " storage buffers per shader stage");
   if (caps.maxSampledImagesPerStage < gpu::kTexturePageViews || caps.maxSamplersPerStage < gpu::kTexturePageViews)
     missing.push_back(std::to_string(gpu::kTexturePageViews) + " sampled images and samplers per shader stage");
   const VkFormatFeatureFlags sampled = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
-  if ((caps.unormImageFeatures & (sampled | VK_FORMAT_FEATURE_TRANSFER_DST_BIT)) != (sampled | VK_FORMAT_FEATURE_TRANSFER_DST_BIT) ||
+  if ((caps.unormImageFeatures & (sampled | VK_FORMAT_FEATURE_TRANSFER_DST_BIT)) !=
+          (sampled | VK_FORMAT_FEATURE_TRANSFER_DST_BIT) ||
       (caps.srgbImageFeatures & sampled) != sampled)
     missing.push_back("linearly filtered R8G8B8A8 UNORM and SRGB sampled images");
   if (!caps.shaderInt64) missing.push_back("64-bit integers in shaders (shaderInt64)");

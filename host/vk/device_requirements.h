@@ -1,6 +1,7 @@
 // What vkmc's kernels need of a Vulkan device, checked once when the device is opened so that a device lacking
 // one stops with a line naming it (not a driver error at the first pipeline): subgroup operations, the storage
-// texel buffer formats, the texture pages' image formats, 64-bit integers, workgroup size, push constants and descriptors per stage.
+// texel buffer formats, the texture pages' image formats, 64-bit integers, workgroup size, push constants and descriptors per
+// stage.
 #pragma once
 #include <vulkan/vulkan.h>
 

@@ -30,7 +30,8 @@ ArrayImage::ArrayImage(Context& ctx, uint32_t width, uint32_t height, uint32_t l
   VkResult r = vkAllocateMemory(ctx.device(), &ai, nullptr, &memory_);
   if (r != VK_SUCCESS) {
     vkDestroyImage(ctx.device(), image_, nullptr);
-    throw Error("textures too big for the device: " + std::to_string(req.size >> 20) + " MiB of texture pages could not be allocated");
+    throw Error("textures too big for the device: " + std::to_string(req.size >> 20) +
+                " MiB of texture pages could not be allocated");
   }
   check(vkBindImageMemory(ctx.device(), image_, memory_, 0), "vkBindImageMemory");
   upload(width, height, layers, texels);

@@ -72,7 +72,7 @@ class Kernel {
 // Timestamp pairs around named dispatches (ranges), and one pair around a whole command buffer (reset/close);
 // collect() sums the seconds per name and the buffer's. Without ranges (perDispatch false) begin and end write
 // nothing: on lavapipe a timestamp costs about as much as a small dispatch, 6-18% of a render's time, most
-// where passes are small (docs/performance.md, "Stage timestamps").
+// where passes are small (docs/journal/performance.md, "Stage timestamps").
 class GpuTimer {
  public:
   GpuTimer(Context& ctx, uint32_t maxQueries, bool perDispatch = true);

@@ -42,7 +42,9 @@ LavapipeEnvironment decide() {
   }
   const bool disabled = set("MESA_SHADER_CACHE_DISABLE") && std::string(std::getenv("MESA_SHADER_CACHE_DISABLE")) != "false";
   if (!set("MESA_SHADER_CACHE_DIR") && !disabled) {
-    std::string base = set("XDG_CACHE_HOME") ? std::getenv("XDG_CACHE_HOME") : set("HOME") ? std::string(std::getenv("HOME")) + "/.cache" : "";
+    std::string base = set("XDG_CACHE_HOME") ? std::getenv("XDG_CACHE_HOME")
+                       : set("HOME")         ? std::string(std::getenv("HOME")) + "/.cache"
+                                             : "";
     if (!base.empty()) {
       const std::string dir = base + "/vkmc/mesa-lp" + std::to_string(e.vectorBits);
       std::error_code ec;

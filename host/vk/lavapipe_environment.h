@@ -5,8 +5,8 @@
 namespace vkmc::vk {
 
 struct LavapipeEnvironment {
-  unsigned vectorBits = 0;  // LP_NATIVE_VECTOR_WIDTH as lavapipe will use it: 128, 256 or 512 (its subgroup x 32)
-  bool vectorChosen = false;  // vkmc set it (the CPU has AVX-512: docs/performance.md, "Sixteen lanes"), not the user
+  unsigned vectorBits = 0;    // LP_NATIVE_VECTOR_WIDTH as lavapipe will use it: 128, 256 or 512 (its subgroup x 32)
+  bool vectorChosen = false;  // vkmc set it (the CPU has AVX-512: docs/journal/performance.md, "Sixteen lanes"), not the user
 };
 
 // On a CPU with AVX-512 and no LP_NATIVE_VECTOR_WIDTH given, sets it to 512 (16-lane kernels, measured faster

@@ -58,8 +58,8 @@ layout(push_constant, std430) uniform Push { PushConstants pc; };
 
 // Read-only scene data lives in storage texel buffers, read with imageLoad: on lavapipe that is an inline
 // vector gather, while a texelFetch is an out-of-line sampler call (every live register spilled around it; the
-// walk was 10-15% slower with it) and an SSBO load is a loop over the lanes (shared/LAVAPIPE.md,
-// docs/performance.md).
+// walk was 10-15% slower with it) and an SSBO load is a loop over the lanes (docs/architecture.md, "What lavapipe does with these kernels",
+// docs/journal/performance.md).
 layout(binding = BINDING_TRIANGLES, TEXEL_FORMAT_TRIANGLES) uniform readonly imageBuffer triangles;
 layout(binding = BINDING_TRIANGLE_INFO, TEXEL_FORMAT_TRIANGLE_INFO) uniform readonly uimageBuffer triangleInfo;
 layout(binding = BINDING_BVH_NODES, TEXEL_FORMAT_BVH_NODES) uniform readonly uimageBuffer bvhNodes;
@@ -79,7 +79,7 @@ layout(binding = BINDING_SHADOW_TEXELS, TEXEL_FORMAT_SHADOW_TEXELS) uniform read
 layout(binding = BINDING_RAY_QUEUES, std430) buffer RayQueues { uint rayQueues[]; };
 // The same memory as 64-bit pairs, for stores: llvmpipe stores a vector one lane at a time, each component
 // behind its own bounds check, so 16 bytes stored as two 64-bit components cost a third less than as four
-// 32-bit ones (docs/performance.md).
+// 32-bit ones (docs/journal/performance.md).
 layout(binding = BINDING_PATHS, std430) buffer PathPairs { u64vec2 pathPairs[]; };
 layout(binding = BINDING_HITS, std430) buffer HitPairs { u64vec2 hitPairs[]; };
 layout(binding = BINDING_SHADOW_QUEUE, std430) buffer ShadowPairs { u64vec2 shadowPairs[]; };

@@ -29,7 +29,7 @@ struct EarsReading {
   float lightSamples;
 };
 
-// A vertex reads one cell, its finest (three hashed reads cost ~30 ns a vertex on lavapipe, docs/ears.md). One
+// A vertex reads one cell, its finest (three hashed reads cost ~30 ns a vertex on lavapipe, docs/journal/ears.md). One
 // the fold has not resolved (no key had reached it) reads zero copies (throughput roulette) and leaves its key,
 // so that the next fold resolves it from its coarser levels; one whose slot was resolved for another key (the
 // table's slots collide) reads nothing either, and leaves the slot to that key.

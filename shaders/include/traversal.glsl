@@ -1,7 +1,7 @@
 // BVH traversal, shaped by what llvmpipe (our CPU device) does with a shader: 8 lanes run as one SIMD program
 // that never skips code, so the walk is one flat loop in which every lane takes one node step and one triangle
 // test per iteration, with its stack in registers and a deep fallback. Why each choice, with the measurements:
-// docs/performance.md, "The traversal kernel's design". `complete` says whether a walk ended on its own (llvmpipe's
+// docs/journal/performance.md, "The traversal kernel's design". `complete` says whether a walk ended on its own (llvmpipe's
 // loop limiter can end a shader loop silently); an incomplete walk never passes for a hit or a miss.
 #include "bvh_layout.h"
 #include "textures.glsl"
@@ -99,7 +99,7 @@ uint hitChildren(uint node, vec3 invDir, vec3 origin, bvec3 nearIsHigh, float tM
 // shifts. `shift` entries of (a, b, c) are pushed (1..3, a on top), or -shift entries popped (1..2), or nothing
 // (0). Pushing past the bottom sets overflow; the walk then restarts with traceRayDeep, or is reported as cut where
 // SPEC_DEEP_WALKS is 0 (the host's bound says no walk of the scene's BVH can overflow). (Why 12, and the smaller
-// stacks: docs/performance.md.)
+// stacks: docs/journal/performance.md.)
 struct RegisterStack {
   uvec4 s0, s1, s2;  // kBvhRegisterStackEntries
 };

@@ -11,7 +11,7 @@
 // ends until it has spent its vertex budget, then finishes the path in flight (dropping it would favour short
 // paths). llvmpipe runs every statement for all 8 lanes of a SIMD program, so the loop's own overhead and the
 // masked path restart are paid per iteration: four vertices an iteration took a vertex from 5.3-5.9 to 3.3 ns
-// (eight: 3.1 ns). Nested loops ran into llvmpipe's silent loop limit (docs/performance.md, "A lavapipe
+// (eight: 3.1 ns). Nested loops ran into llvmpipe's silent loop limit (docs/journal/performance.md, "A lavapipe
 // pitfall"); a lane whose loop is cut still has a path in flight, and says so.
 // Output per invocation: FurnaceProbeLane.
 #include "layout.h"
@@ -26,7 +26,7 @@ layout(binding = BINDING_ROULETTE_TABLE, std430) readonly buffer RouletteTable {
 layout(binding = BINDING_TEST_HITS, std430) writeonly buffer Lanes { FurnaceProbeLane lanes[]; };
 
 // The efficiency scales, read once per lane: a storage-buffer load per vertex made llvmpipe's vertex 1.6x as
-// expensive (LAVAPIPE.md: SSBO loads loop over the lanes). The same values shade reads from rouletteScale.
+// expensive (docs/architecture.md, "What lavapipe does with these kernels": SSBO loads loop over the lanes). The same values shade reads from rouletteScale.
 float scaleRows[kRouletteTableDepths];
 
 // shade.comp's continuation at a Lambertian vertex with cosine (= BSDF) sampling, and its roulette. Written without

@@ -133,7 +133,8 @@ VKMC_FN float coatTransmittance(GltfMaterial m, vec3 wo, vec3 wi) {
 VKMC_FN float sheenTransmittance(GltfMaterial m, vec3 wo, vec3 wi) {
   float s = maxComponent(m.sheenColor);
   if (s <= 0.0f) return 1.0f;
-  return 1.0f - s * max(layerAlbedo(kLayerAlbedoSheen, wo.z, m.sheenAlpha), layerAlbedo(kLayerAlbedoSheen, abs(wi.z), m.sheenAlpha));
+  return 1.0f -
+         s * max(layerAlbedo(kLayerAlbedoSheen, wo.z, m.sheenAlpha), layerAlbedo(kLayerAlbedoSheen, abs(wi.z), m.sheenAlpha));
 }
 
 // The base's reflection without its delta lobes: diffuse, and the dielectric and metal specular when rough.
@@ -142,7 +143,8 @@ VKMC_FN vec3 baseReflectionEval(GltfMaterial m, vec3 wo, vec3 wi) {
   float vh = max(dot(wo, h), 0.0f);
   vec3 fd = interfaceFresnel(m, vh);
   bool isSmooth = isDeltaAlpha(m.alpha);
-  vec3 diffuseWeight = isSmooth ? (vec3(1.0f) - interfaceFresnel(m, wo.z)) * (vec3(1.0f) - interfaceFresnel(m, wi.z)) : vec3(1.0f) - fd;
+  vec3 diffuseWeight =
+      isSmooth ? (vec3(1.0f) - interfaceFresnel(m, wo.z)) * (vec3(1.0f) - interfaceFresnel(m, wi.z)) : vec3(1.0f) - fd;
   vec3 f = ((1.0f - m.metallic) * (1.0f - m.transmission) * kInvPi) * diffuseWeight * m.baseColor;
   if (!isSmooth) {
     float dv = ggxD(h, m.alpha) * smithVisibility(wi.z, wo.z, m.alpha);
@@ -323,8 +325,10 @@ VKMC_FN BsdfSample sampleGltfBsdf(GltfMaterial m, vec3 wo, vec3 u) {
     bool reflects = xr < reflectProbability(m, wo, h);
     if (wi.z <= 0.0f && (reflects || m.thinWalled)) return s;  // a reflection below the surface: no density there
     if (!reflects) {
-      if (m.thinWalled) wi.z = -wi.z;
-      else if (!refractAbout(wo, h, m.eta, wi) || wi.z >= 0.0f) return s;
+      if (m.thinWalled)
+        wi.z = -wi.z;
+      else if (!refractAbout(wo, h, m.eta, wi) || wi.z >= 0.0f)
+        return s;
     }
   } else {
     wi = sampleCosineHemisphere(v);  // the sheen and the diffuse lobe

@@ -19,24 +19,24 @@
 #include "rng.h"  // hashU32
 VKMC_BEGIN_NAMESPACE
 
-VKMC_CONST uint kEarsDepths = 4u;                 // vertices of a path that train the cache (deeper ones read it)
-VKMC_CONST float kEarsFactorMin = 0.05f;          // EARS's clamp of q
+VKMC_CONST uint kEarsDepths = 4u;         // vertices of a path that train the cache (deeper ones read it)
+VKMC_CONST float kEarsFactorMin = 0.05f;  // EARS's clamp of q
 VKMC_CONST float kEarsFactorMax = 20.0f;
-VKMC_CONST float kEarsOutlierShare = 0.001f;      // V_img leaves out this share of its noisiest pixels (EARS: 10 samples)
-VKMC_CONST float kEarsMinCellCopies = 256.0f;     // a vertex decides once one of its cells has learned from this many
-VKMC_CONST float kEarsShrinkCopies = 1024.0f;     // a level's moments count half against the coarser ones' at this many
-VKMC_CONST uint kEarsLevels = 3u;                 // grids of 64, 16 and 4 cells along the longest side
+VKMC_CONST float kEarsOutlierShare = 0.001f;   // V_img leaves out this share of its noisiest pixels (EARS: 10 samples)
+VKMC_CONST float kEarsMinCellCopies = 256.0f;  // a vertex decides once one of its cells has learned from this many
+VKMC_CONST float kEarsShrinkCopies = 1024.0f;  // a level's moments count half against the coarser ones' at this many
+VKMC_CONST uint kEarsLevels = 3u;              // grids of 64, 16 and 4 cells along the longest side
 VKMC_CONST uint kEarsLevelShift = 2u;
-VKMC_CONST uint kEarsNoSplitDepth = 64u;          // from this depth on q <= kRouletteMaxSurvival: every path ends
-VKMC_CONST uint kEarsGridResolution = 64u;        // cells along the scene's longest side
-VKMC_CONST uint kEarsBins = 4u;                   // factor histogram: untrained (fallback), q < 1, q = 1, q > 1
+VKMC_CONST uint kEarsNoSplitDepth = 64u;    // from this depth on q <= kRouletteMaxSurvival: every path ends
+VKMC_CONST uint kEarsGridResolution = 64u;  // cells along the scene's longest side
+VKMC_CONST uint kEarsBins = 4u;             // factor histogram: untrained (fallback), q < 1, q = 1, q > 1
 VKMC_CONST uint kEarsBinFallback = 0u, kEarsBinRoulette = 1u, kEarsBinOne = 2u, kEarsBinSplit = 3u;
-VKMC_CONST float kEarsEpsilon = 0.01f;             // relMSE's epsilon (analysis/error_metrics.h; ears_test checks)
-VKMC_CONST uint kEarsTrainingPaths = 16384u;      // samples of a pass that train the cache (earsTrainingSamples)
-VKMC_CONST uint kEarsHistogramDepths = 8u;        // histogram rows (the last counts every deeper vertex)
+VKMC_CONST float kEarsEpsilon = 0.01f;        // relMSE's epsilon (analysis/error_metrics.h; ears_test checks)
+VKMC_CONST uint kEarsTrainingPaths = 16384u;  // samples of a pass that train the cache (earsTrainingSamples)
+VKMC_CONST uint kEarsHistogramDepths = 8u;    // histogram rows (the last counts every deeper vertex)
 VKMC_CONST uint kEarsFactorHistogram = 0u, kEarsLightHistogram = 1u;  // EarsHeader histograms
-VKMC_CONST float kEarsLightFactorMax = 8.0f;      // light samples a copy takes at most (the SIMD group waits for its
-                                                  // lane with the most)
+VKMC_CONST float kEarsLightFactorMax = 8.0f;  // light samples a copy takes at most (the SIMD group waits for its
+                                              // lane with the most)
 // The first light sample of a training copy tags its shadow ray (ShadowRay origin.w: the copy's slot, its depth in
 // bits 29-30, this bit) so that the shadow stage can fill the copy's light record (earsLightRecord).
 VKMC_CONST uint kEarsFirstLightTag = 0x80000000u;
@@ -50,10 +50,10 @@ VKMC_CONST float kEarsLightUnoccluded = 3.0f;  // traced and unoccluded: rgb is 
 
 // The cache's parameters, written by the host between passes, and the factor histogram the kernels count.
 struct EarsHeader {
-  vec4 grid;          // xyz: the grid's origin, w: cells per unit length
-  uint cellMask;      // cells - 1 (a power of two)
-  float imageFactor;  // sqrt(C_img / V_img) of the passes so far; 0: nothing learned yet (throughput roulette)
-  float epsilon;      // t = beta / sqrt(I^2 + epsilon)
+  vec4 grid;              // xyz: the grid's origin, w: cells per unit length
+  uint cellMask;          // cells - 1 (a power of two)
+  float imageFactor;      // sqrt(C_img / V_img) of the passes so far; 0: nothing learned yet (throughput roulette)
+  float epsilon;          // t = beta / sqrt(I^2 + epsilon)
   uint extraShadowSlots;  // shadow-queue slots beyond light_samples per path slot, for split light samples
   // The training lists of the pass (BINDING_EARS_TRAINING): records written, then slots split off by training
   // paths, so that the training kernels visit those alone; the host empties them after each pass's training.
@@ -136,12 +136,8 @@ VKMC_FN uint earsCellIndex(uint key, uint level, uint cellMask) {
 VKMC_FN uint earsLightCell(uint cell, uint cellMask) { return cell + cellMask + 1u; }
 
 // A training copy's first shadow ray carries its slot and depth (EarsRecord index slot * kEarsDepths + depth).
-VKMC_FN uint earsFirstLightTag(uint slot, uint depth) {
-  return kEarsFirstLightTag | depth << kEarsTagDepthShift | slot;
-}
-VKMC_FN uint earsTaggedRecord(uint tag) {
-  return (tag & kEarsSlotMask) * kEarsDepths + ((tag >> kEarsTagDepthShift) & 3u);
-}
+VKMC_FN uint earsFirstLightTag(uint slot, uint depth) { return kEarsFirstLightTag | depth << kEarsTagDepthShift | slot; }
+VKMC_FN uint earsTaggedRecord(uint tag) { return (tag & kEarsSlotMask) * kEarsDepths + ((tag >> kEarsTagDepthShift) & 3u); }
 
 // EARS's factor (its recursive_path.cpp), t per channel: the second moment decides roulette, the variance
 // splitting; where they disagree (the second moment says split, the variance roulette) the vertex stays as it is.
@@ -171,7 +167,7 @@ VKMC_FN void earsSampling(vec4 sum, vec4 sumSquares, INOUT(vec4) momentPerCost, 
 
 // A level's learned statistic shrunk toward the coarser levels' (taken coarsest first) by how many copies it has
 // learned from: a few hundred copies of a small cell rarely hold the rare bright paths that set its second
-// moment, and a moment too small roulettes them (docs/ears.md, 2026-11-29). The first level with copies is taken
+// moment, and a moment too small roulettes them (docs/journal/ears.md, 2026-11-29). The first level with copies is taken
 // as it is.
 VKMC_FN vec3 earsShrunk(vec3 coarser, float coarserCopies, vec3 level, float copies) {
   if (!(coarserCopies > 0.0f)) return level;

@@ -6,27 +6,30 @@
 #include "roulette.h"  // the roulette modes
 
 // Descriptor bindings of the single set used by every kernel.
-#define BINDING_TRIANGLES 0                  // imageBuffer: triangle vertices and light pmfs (scene_layout.h)
-#define BINDING_TRIANGLE_INFO 1              // uimageBuffer: per-triangle normals and material (scene_layout.h)
-#define BINDING_BVH_NODES 2                  // uimageBuffer: BVH nodes (bvh_layout.h)
-#define BINDING_LIGHTS 3                     // uimageBuffer: light alias table (scene_layout.h)
-#define BINDING_MATERIALS 4                  // uimageBuffer: Material[] as texels (kMaterialTexels each)
-#define BINDING_PATHS 5                      // PathState[]
-#define BINDING_HITS 6                       // vec4[] (t, b1, b2, triangle bits)
-#define BINDING_RAY_QUEUES 7                 // uint[2 * capacity]: path ids, ping-pong by bounce parity (EARS:
-                                             // 3 * capacity, the third EARS's copy queue)
-#define BINDING_SHADOW_QUEUE 8               // ShadowRay[]
-#define BINDING_CONTROL 9                    // Control
-#define BINDING_FILM 10                      // FilmPixel[]
-#define BINDING_TEST_RAYS 11                 // TestRay[] (texture probes; trace_rays reads its rays at BINDING_PATH_TEXELS)
-#define BINDING_TEST_HITS 12                 // vec4[] (trace_rays kernel only)
-#define BINDING_PIXEL_ESTIMATE 13            // imageBuffer: running estimate per pixel, rgb and w its luminance
-                                             // (shadow roulette, EARS)
-#define BINDING_ROULETTE_TABLE 14            // float[kRouletteTableDepths]: efficiency roulette scale per depth
-#define BINDING_DEPTH_STATS 15               // vec2[pool * kRouletteTableDepths]: pilot (beta, gathered) per path and depth
-#define BINDING_QUEUE_STATS 16               // uvec2[kQueueStatsBounces]: per bounce, paths queued (x) and shadow rays (y)
-#define BINDING_DEEP_WALKS 17                // uint[]: items whose walk outgrew the register stack (deferred_walk.glsl)
-#define BINDING_TEXTURE_TEXELS 18            // uimageBuffer: the texture pages' RGBA8 texels, one r32ui each: only
+#define BINDING_TRIANGLES 0      // imageBuffer: triangle vertices and light pmfs (scene_layout.h)
+#define BINDING_TRIANGLE_INFO 1  // uimageBuffer: per-triangle normals and material (scene_layout.h)
+#define BINDING_BVH_NODES 2      // uimageBuffer: BVH nodes (bvh_layout.h)
+#define BINDING_LIGHTS 3         // uimageBuffer: light alias table (scene_layout.h)
+#define BINDING_MATERIALS 4      // uimageBuffer: Material[] as texels (kMaterialTexels each)
+#define BINDING_PATHS 5          // PathState[]
+#define BINDING_HITS 6           // vec4[] (t, b1, b2, triangle bits)
+#define BINDING_RAY_QUEUES \
+  7                             // uint[2 * capacity]: path ids, ping-pong by bounce parity (EARS:
+                                // 3 * capacity, the third EARS's copy queue)
+#define BINDING_SHADOW_QUEUE 8  // ShadowRay[]
+#define BINDING_CONTROL 9       // Control
+#define BINDING_FILM 10         // FilmPixel[]
+#define BINDING_TEST_RAYS 11    // TestRay[] (texture probes; trace_rays reads its rays at BINDING_PATH_TEXELS)
+#define BINDING_TEST_HITS 12    // vec4[] (trace_rays kernel only)
+#define BINDING_PIXEL_ESTIMATE \
+  13                               // imageBuffer: running estimate per pixel, rgb and w its luminance
+                                   // (shadow roulette, EARS)
+#define BINDING_ROULETTE_TABLE 14  // float[kRouletteTableDepths]: efficiency roulette scale per depth
+#define BINDING_DEPTH_STATS 15     // vec2[pool * kRouletteTableDepths]: pilot (beta, gathered) per path and depth
+#define BINDING_QUEUE_STATS 16     // uvec2[kQueueStatsBounces]: per bounce, paths queued (x) and shadow rays (y)
+#define BINDING_DEEP_WALKS 17      // uint[]: items whose walk outgrew the register stack (deferred_walk.glsl)
+#define BINDING_TEXTURE_TEXELS \
+  18                                         // uimageBuffer: the texture pages' RGBA8 texels, one r32ui each: only
                                              // `vkmc bench-textures` reads textures this way (texture_layout.h)
 #define BINDING_TEXTURES 19                  // uimageBuffer: one TextureInfo texel per texture (texture_layout.h)
 #define BINDING_TRIANGLE_ATTRIBUTES 20       // uimageBuffer: per-triangle uvs, tangents, colours (texture_layout.h)
@@ -35,19 +38,21 @@
 #define BINDING_ENVIRONMENT_DISTRIBUTION 23  // float[]: its sampling distribution (environment_map.h)
 #define BINDING_PIXEL_FILTER 24              // PixelFilterHeader + float[]: the pixel filter's table (pixel_filter.h)
 #define BINDING_LAYER_ALBEDO 25              // uimageBuffer: the clearcoat and sheen albedo table as float bits (layer_albedo.h)
-#define BINDING_TEXTURE_PAGES 26           // sampler2DArray[kTexturePageViews]: every texture in one array image (texture_layout.h)
-#define BINDING_EARS_HEADER 27             // EarsHeader (ears.h): the cache's parameters and the factor histogram
-#define BINDING_EARS_CELLS 28              // EarsCell[]: the learned cache
-#define BINDING_EARS_RECORDS 29            // EarsRecord[pool * kEarsDepths]: each slot's training vertices
-#define BINDING_EARS_SLOTS 30              // EarsSlot[pool]
-#define BINDING_EARS_SAMPLING 31           // imageBuffer: per cell, what the factors read (ears.h kEarsSamplingTexels)
-#define BINDING_PATH_TEXELS 32             // uimageBuffer: BINDING_PATHS's PathState[] as texels (kPathTexels a path),
-                                           // read with imageLoad: on lavapipe a gather, not a loop over the lanes
-#define BINDING_HIT_TEXELS 33              // imageBuffer: BINDING_HITS as texels, for reading
-#define BINDING_QUEUE_TEXELS 34            // uimageBuffer: BINDING_RAY_QUEUES as texels, for reading
-#define BINDING_SHADOW_TEXELS 35           // uimageBuffer: BINDING_SHADOW_QUEUE's ShadowRay[] as texels (3 a ray)
-#define BINDING_EARS_TRAINING 36           // uint[pool * (kEarsDepths + 1)]: the records written and the slots split off
-                                           // by training paths this pass (ears.h EarsHeader training*)
+#define BINDING_TEXTURE_PAGES 26  // sampler2DArray[kTexturePageViews]: every texture in one array image (texture_layout.h)
+#define BINDING_EARS_HEADER 27    // EarsHeader (ears.h): the cache's parameters and the factor histogram
+#define BINDING_EARS_CELLS 28     // EarsCell[]: the learned cache
+#define BINDING_EARS_RECORDS 29   // EarsRecord[pool * kEarsDepths]: each slot's training vertices
+#define BINDING_EARS_SLOTS 30     // EarsSlot[pool]
+#define BINDING_EARS_SAMPLING 31  // imageBuffer: per cell, what the factors read (ears.h kEarsSamplingTexels)
+#define BINDING_PATH_TEXELS \
+  32                              // uimageBuffer: BINDING_PATHS's PathState[] as texels (kPathTexels a path),
+                                  // read with imageLoad: on lavapipe a gather, not a loop over the lanes
+#define BINDING_HIT_TEXELS 33     // imageBuffer: BINDING_HITS as texels, for reading
+#define BINDING_QUEUE_TEXELS 34   // uimageBuffer: BINDING_RAY_QUEUES as texels, for reading
+#define BINDING_SHADOW_TEXELS 35  // uimageBuffer: BINDING_SHADOW_QUEUE's ShadowRay[] as texels (3 a ray)
+#define BINDING_EARS_TRAINING \
+  36  // uint[pool * (kEarsDepths + 1)]: the records written and the slots split off
+      // by training paths this pass (ears.h EarsHeader training*)
 #define BINDING_COUNT 37
 
 // Texel formats of the scene bindings as GLSL image-format qualifiers (common.glsl declares the bindings with
@@ -95,23 +100,24 @@
 #define SPEC_HAS_ALPHA 23            // 0: every material opaque; the walks' alpha tests compiled out
 #define SPEC_WALK_STATS 20           // trace_rays: 1 = count the register-stack walk's steps into Control.walkStats
 // 21-23: the textures' spec constants.
-#define SPEC_HAS_PUNCTUAL 24     // 0: no punctual lights, their sampling code removed
-#define SPEC_HAS_ENVIRONMENT 25  // 0: no environment light (escaped rays see pc.background alone)
-#define SPEC_PIXEL_FILTER 26     // kPixelFilterSampling*: the pixel's box (u as is) or a filter from BINDING_PIXEL_FILTER
-#define SPEC_SAMPLER 27           // kSampler* (sampler.h)
-#define SPEC_SAMPLER_LOG2_SPP 28  // zsobol: log2 of a replicate's sample count, rounded up
-#define SPEC_SAMPLER_DIGITS 29    // zsobol: base-4 digits of the Morton index (pixel bits + log2 spp)
-#define SPEC_CULLS_BACK_FACES 30  // 0: every material double-sided; the walks' back-face test compiled out
-#define SPEC_HAS_TRANSMISSION 31  // 0: no KHR_materials_transmission (nor volume): the btdf and attenuation compiled out
-#define SPEC_HAS_CLEARCOAT 32     // 0: no KHR_materials_clearcoat
-#define SPEC_HAS_SHEEN 33         // 0: no KHR_materials_sheen
-#define SPEC_HAS_DELTA 34         // 0: no lobe can be smooth (delta): every BSDF sample is MIS-weighted
-#define SPEC_EARS_MAX 35          // float: rr ears's largest factor q, at most kEarsFactorMax (1: learned roulette alone)
-#define SPEC_EARS_LIGHT_MAX 36    // float: rr ears's largest light factor qL; 0: light samples not learned (ears.h)
-#define SPEC_EARS_TRAINS 37       // 0/1: rr ears: this kernel's paths train the cache (common.glsl earsTrains)
-#define SPEC_SAMPLE_REPLICATES 38 // replicates a pixel's samples are split into, 1..kMaxSampleReplicates (sampler.h)
-#define SPEC_DEEP_WALKS 39        // 0: the BVH is too shallow for any walk to outgrow the register stack: no deep pass
-#define SPEC_REGISTER_STACK 40    // the walk's register stack entries: 4, 8 or kBvhRegisterStackEntries (bvh.h registerStackEntries)
+#define SPEC_HAS_PUNCTUAL 24       // 0: no punctual lights, their sampling code removed
+#define SPEC_HAS_ENVIRONMENT 25    // 0: no environment light (escaped rays see pc.background alone)
+#define SPEC_PIXEL_FILTER 26       // kPixelFilterSampling*: the pixel's box (u as is) or a filter from BINDING_PIXEL_FILTER
+#define SPEC_SAMPLER 27            // kSampler* (sampler.h)
+#define SPEC_SAMPLER_LOG2_SPP 28   // zsobol: log2 of a replicate's sample count, rounded up
+#define SPEC_SAMPLER_DIGITS 29     // zsobol: base-4 digits of the Morton index (pixel bits + log2 spp)
+#define SPEC_CULLS_BACK_FACES 30   // 0: every material double-sided; the walks' back-face test compiled out
+#define SPEC_HAS_TRANSMISSION 31   // 0: no KHR_materials_transmission (nor volume): the btdf and attenuation compiled out
+#define SPEC_HAS_CLEARCOAT 32      // 0: no KHR_materials_clearcoat
+#define SPEC_HAS_SHEEN 33          // 0: no KHR_materials_sheen
+#define SPEC_HAS_DELTA 34          // 0: no lobe can be smooth (delta): every BSDF sample is MIS-weighted
+#define SPEC_EARS_MAX 35           // float: rr ears's largest factor q, at most kEarsFactorMax (1: learned roulette alone)
+#define SPEC_EARS_LIGHT_MAX 36     // float: rr ears's largest light factor qL; 0: light samples not learned (ears.h)
+#define SPEC_EARS_TRAINS 37        // 0/1: rr ears: this kernel's paths train the cache (common.glsl earsTrains)
+#define SPEC_SAMPLE_REPLICATES 38  // replicates a pixel's samples are split into, 1..kMaxSampleReplicates (sampler.h)
+#define SPEC_DEEP_WALKS 39         // 0: the BVH is too shallow for any walk to outgrow the register stack: no deep pass
+#define SPEC_REGISTER_STACK \
+  40  // the walk's register stack entries: 4, 8 or kBvhRegisterStackEntries (bvh.h registerStackEntries)
 
 VKMC_BEGIN_NAMESPACE
 
@@ -314,9 +320,9 @@ struct FurnaceProbePush {
 
 // What one lane of the furnace probe returns.
 struct FurnaceProbeLane {
-  float sum, sumSq;         // Kahan sums of L and L^2 over its finished paths
-  uint vertices;            // vertices traced
-  uint paths;               // paths finished; top bit: llvmpipe's loop limiter ended the lane with a path in flight
+  float sum, sumSq;  // Kahan sums of L and L^2 over its finished paths
+  uint vertices;     // vertices traced
+  uint paths;        // paths finished; top bit: llvmpipe's loop limiter ended the lane with a path in flight
 };
 
 VKMC_END_NAMESPACE
@@ -325,10 +331,9 @@ VKMC_END_NAMESPACE
 namespace vkmc::gpu {
 // The bindings read as storage texel buffers (the others are storage buffers).
 inline constexpr uint32_t kTexelBindings[] = {
-    BINDING_TRIANGLES,      BINDING_TRIANGLE_INFO, BINDING_BVH_NODES,          BINDING_LIGHTS,
-    BINDING_TEXTURE_TEXELS, BINDING_TEXTURES,      BINDING_TRIANGLE_ATTRIBUTES, BINDING_LAYER_ALBEDO,
-    BINDING_EARS_SAMPLING,  BINDING_MATERIALS,     BINDING_PATH_TEXELS,   BINDING_HIT_TEXELS,         BINDING_QUEUE_TEXELS,
-    BINDING_SHADOW_TEXELS,  BINDING_PIXEL_ESTIMATE};
+    BINDING_TRIANGLES,   BINDING_TRIANGLE_INFO,       BINDING_BVH_NODES,    BINDING_LIGHTS,        BINDING_TEXTURE_TEXELS,
+    BINDING_TEXTURES,    BINDING_TRIANGLE_ATTRIBUTES, BINDING_LAYER_ALBEDO, BINDING_EARS_SAMPLING, BINDING_MATERIALS,
+    BINDING_PATH_TEXELS, BINDING_HIT_TEXELS,          BINDING_QUEUE_TEXELS, BINDING_SHADOW_TEXELS, BINDING_PIXEL_ESTIMATE};
 // The texel bindings that hold the renderer's own state (not the scene's): standalone kernels bind placeholders.
 inline constexpr uint32_t kRendererTexelBindings[] = {BINDING_PATH_TEXELS, BINDING_HIT_TEXELS, BINDING_QUEUE_TEXELS,
                                                       BINDING_SHADOW_TEXELS, BINDING_PIXEL_ESTIMATE};

@@ -58,7 +58,8 @@ VKMC_FN float mitchell1D(float x, float b, float c) {
     return ((12.0f - 9.0f * b - 6.0f * c) * x * x * x + (-18.0f + 12.0f * b + 6.0f * c) * x * x + (6.0f - 2.0f * b)) *
            (1.0f / 6.0f);
   if (x <= 2.0f)
-    return ((-b - 6.0f * c) * x * x * x + (6.0f * b + 30.0f * c) * x * x + (-12.0f * b - 48.0f * c) * x + (8.0f * b + 24.0f * c)) *
+    return ((-b - 6.0f * c) * x * x * x + (6.0f * b + 30.0f * c) * x * x + (-12.0f * b - 48.0f * c) * x +
+            (8.0f * b + 24.0f * c)) *
            (1.0f / 6.0f);
   return 0.0f;
 }
@@ -75,7 +76,9 @@ VKMC_FN float pixelFilter1D(PixelFilterHeader h, float x) {
   }
   return 1.0f;  // box
 }
-VKMC_FN float pixelFilterValue(PixelFilterHeader h, vec2 offset) { return pixelFilter1D(h, offset.x) * pixelFilter1D(h, offset.y); }
+VKMC_FN float pixelFilterValue(PixelFilterHeader h, vec2 offset) {
+  return pixelFilter1D(h, offset.x) * pixelFilter1D(h, offset.y);
+}
 
 // The table interval of u: the last node i < intervals with cdf[i] <= u (so never an interval of zero mass).
 VKMC_FN uint pixelFilterFindInterval(VKMC_FILTER_TABLE float u) {
@@ -121,7 +124,8 @@ VKMC_FN float invertPixelFilter1DSample(VKMC_FILTER_TABLE PixelFilterHeader h, f
 // A filtered camera sample: the point drawn per axis, weighted f / (p * integral of f) (0 where p is 0).
 VKMC_FN FilterSample samplePixelFilterTable(VKMC_FILTER_TABLE PixelFilterHeader h, vec2 u) {
   float px = 0.0f, py = 0.0f;
-  vec2 offset = vec2(samplePixelFilter1D(VKMC_FILTER_TABLE_ARG h, u.x, px), samplePixelFilter1D(VKMC_FILTER_TABLE_ARG h, u.y, py));
+  vec2 offset =
+      vec2(samplePixelFilter1D(VKMC_FILTER_TABLE_ARG h, u.x, px), samplePixelFilter1D(VKMC_FILTER_TABLE_ARG h, u.y, py));
   float p = px * py;
   float weight = p > 0.0f ? pixelFilterValue(h, offset) / p * (h.invIntegral * h.invIntegral) : 0.0f;
   return filterSample(vec2(0.5f) + offset, weight);
@@ -131,7 +135,8 @@ VKMC_FN float pixelFilterPdf(VKMC_FILTER_TABLE PixelFilterHeader h, vec2 offset)
 }
 VKMC_FN vec2 invertPixelFilterSample(VKMC_FILTER_TABLE PixelFilterHeader h, vec2 point) {
   vec2 offset = point - vec2(0.5f);
-  return vec2(invertPixelFilter1DSample(VKMC_FILTER_TABLE_ARG h, offset.x), invertPixelFilter1DSample(VKMC_FILTER_TABLE_ARG h, offset.y));
+  return vec2(invertPixelFilter1DSample(VKMC_FILTER_TABLE_ARG h, offset.x),
+              invertPixelFilter1DSample(VKMC_FILTER_TABLE_ARG h, offset.y));
 }
 
 VKMC_END_NAMESPACE

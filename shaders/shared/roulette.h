@@ -14,8 +14,7 @@ VKMC_CONST float kRouletteMaxSurvival = 0.999f;
 
 // Roulette modes (SPEC_RR_MODE): none, fixed q, throughput (the sqrt rule below), efficiency (scaled max beta),
 // ears (roulette and splitting by a learned cache, ears.h).
-VKMC_CONST uint kRouletteNone = 0u, kRouletteFixed = 1u, kRouletteThroughput = 2u, kRouletteEfficiency = 3u,
-                kRouletteEars = 4u;
+VKMC_CONST uint kRouletteNone = 0u, kRouletteFixed = 1u, kRouletteThroughput = 2u, kRouletteEfficiency = 3u, kRouletteEars = 4u;
 
 // One roulette decision: whether the path survives, and the probability a survivor's throughput is divided by.
 struct RouletteStep {
@@ -56,7 +55,7 @@ VKMC_FN RouletteStep throughputRoulette(float unsplitThroughput, float scale, fl
 
 // The default throughput rule judges a path by sqrt(max beta), as Cycles does: a path of throughput 0.04 survives
 // with 0.2, not 0.04. On the Cornell box it cut the per-sample relMSE by 1.19x (0.223 -> 0.188 at 64 spp) for
-// 8% more rays (docs/estimators.md); the efficiency rule keeps k_d * max(beta), which its pilot models.
+// 8% more rays (docs/tables/estimators.md); the efficiency rule keeps k_d * max(beta), which its pilot models.
 VKMC_FN RouletteStep sqrtThroughputRoulette(float unsplitThroughput, float r) {
   return throughputRoulette(sqrt(unsplitThroughput), 1.0f, r);
 }

@@ -90,8 +90,12 @@ VKMC_FN uint mortonCode(uint x, uint y) { return spreadBits16(x) | (spreadBits16
 // sequence. `digits`: base-4 digits of the Morton index (pixel bits + log2Spp, rounded up to even).
 VKMC_FN uint permutationDigit(uint p, uint digit) {
   // The 24 permutations of {0,1,2,3} in lexicographic order, one byte each (two bits per image), four a word.
-  uint word = p < 12u ? (p < 4u ? 0x78d8b4e4u : p < 8u ? 0xb1e16c9cu : 0x2d8d39c9u)
-                      : (p < 16u ? 0x36c672d2u : p < 20u ? 0x63931e4eu : 0x1b4b2787u);
+  uint word = p < 12u ? (p < 4u   ? 0x78d8b4e4u
+                         : p < 8u ? 0xb1e16c9cu
+                                  : 0x2d8d39c9u)
+                      : (p < 16u   ? 0x36c672d2u
+                         : p < 20u ? 0x63931e4eu
+                                   : 0x1b4b2787u);
   return (word >> (8u * (p % 4u) + 2u * digit)) & 3u;
 }
 

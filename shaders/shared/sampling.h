@@ -9,7 +9,7 @@ VKMC_CONST float kInvPi = 0.31830988618379067154f;
 
 // (cos, sin) of (pi/4) t for t in [-1, 1]: Taylor polynomials to x^10 and x^9, whose remainders there (1e-10,
 // 2e-9) are below float rounding. llvmpipe's general cos and sin reduce the range first: a cosine-sampled
-// vertex of the furnace probe spent a third of its time in them (docs/performance.md, "The furnace probe's vertex").
+// vertex of the furnace probe spent a third of its time in them (docs/journal/performance.md, "The furnace probe's vertex").
 VKMC_FN vec2 cosSinQuarterPi(float t) {
   float x = (kPi / 4.0f) * t, x2 = x * x;
   float c = 1.0f + x2 * (-0.5f + x2 * (4.16666667e-2f + x2 * (-1.38888889e-3f + x2 * (2.48015873e-5f + x2 * -2.75573192e-7f))));

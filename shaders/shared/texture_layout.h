@@ -6,7 +6,7 @@
 //       modes reach beyond its edges; a UNORM and an SRGB view (kTexturePage*), sampled bilinearly, clamped to
 //       the page. The kernel folds a uv into one period of its wrap modes (wrapUnit), so a filter reading at most
 //       one texel past an edge finds what the wrap modes give. Sampled so, DamagedHelmet renders 1.05x the
-//       samples/s of filtering in the kernel on llvmpipe (docs/performance.md, "Textures on the device")
+//       samples/s of filtering in the kernel on llvmpipe (docs/journal/performance.md, "Textures on the device")
 //   textures (BINDING_TEXTURES, RGBA32UI): one texel per glTF texture: x: its texel (0, 0) in the page,
 //       px | py << 16; y: width | height << 16; z: page | wrapS << 16 | wrapT << 18 | nearest flag; w: the
 //       pages' width | height << 16

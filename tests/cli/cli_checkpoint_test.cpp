@@ -22,7 +22,6 @@ fs::path dir() {
   return d;
 }
 
-
 // 64x64 pixels take 64 samples a pass: 8 passes, a second or more on lavapipe.
 const std::string kRender = " --width 64 --height 64 --spp 512 --seed 5 -q";
 
@@ -35,17 +34,25 @@ TEST(CliCheckpoint, ASignalStopsTheRenderAndResumeFinishesItBitForBit) {
     fs::path d = dir() / (sig == SIGINT ? "int" : "term");
     fs::create_directories(d);
     const std::string ck = (d / "render.ckpt").string(), out = (d / "out.exr").string(), report = (d / "report.json").string();
-    pid_t pid = spawnVkmc({"render", cornell(), "--width", "64", "--height", "64", "--spp", "512", "--seed", "5", "-q", "-o", out,
-                           "--report", report, "--checkpoint", ck, "--checkpoint-every", "0.01", "--stage-times", "off"});
+    const std::vector<std::string> args = {"render",   cornell(),
+                                           "--width",  "64",
+                                           "--height", "64",
+                                           "--spp",    "512",
+                                           "--seed",   "5",
+                                           "-q",       "-o",
+                                           out,        "--report",
+                                           report,     "--checkpoint",
+                                           ck,         "--checkpoint-every",
+                                           "0.01",     "--stage-times",
+                                           "off"};
+    pid_t pid = spawnVkmc(args, kHoldAfterCheckpoint);
     ASSERT_GT(pid, 0);
-    // The first periodic checkpoint says the passes have begun (a hang guard only: minutes).
-    for (int i = 0; i < 6000 && !fs::exists(ck); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    waitForFile(ck);  // the first periodic checkpoint: vkmc holds there until the signal
     kill(pid, sig);
     int status = 0;
     waitpid(pid, &status, 0);
     ASSERT_TRUE(WIFEXITED(status));
-    if (WEXITSTATUS(status) == 0) GTEST_SKIP() << "the render finished before the signal arrived";
-    EXPECT_EQ(WEXITSTATUS(status), 128 + sig);
+    ASSERT_EQ(WEXITSTATUS(status), 128 + sig);
     nlohmann::json j = nlohmann::json::parse(slurp(report));
     EXPECT_TRUE(j["interrupted"].get<bool>());
     EXPECT_LT(j["spp"].get<int>(), 512);
@@ -76,12 +83,13 @@ TEST(CliCheckpoint, ForeignCorruptAndMismatchedCheckpointsAreRefusedWithOneLine)
   const std::string ck = (d / "r.ckpt").string();
   // A checkpoint to refuse things with: the render is stopped at once by SIGTERM after its first checkpoint.
   pid_t pid = spawnVkmc({"render", cornell(), "--width", "64", "--height", "64", "--spp", "512", "--seed", "5", "-q", "-o",
-                         (d / "o.exr").string(), "--checkpoint", ck, "--checkpoint-every", "0.01"});
-  for (int i = 0; i < 6000 && !fs::exists(ck); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+                         (d / "o.exr").string(), "--checkpoint", ck, "--checkpoint-every", "0.01"},
+                        kHoldAfterCheckpoint);
+  waitForFile(ck);
   kill(pid, SIGTERM);
   int status = 0;
   waitpid(pid, &status, 0);
-  if (!fs::exists(ck)) GTEST_SKIP() << "the render finished before the signal arrived";
+  ASSERT_TRUE(fs::exists(ck)) << "a stopped render keeps its checkpoint";
   const std::string bytes = slurp(ck);
 
   auto refused = [&](const std::string& args, const std::string& expected) {
@@ -91,7 +99,8 @@ TEST(CliCheckpoint, ForeignCorruptAndMismatchedCheckpointsAreRefusedWithOneLine)
     EXPECT_EQ(lines(r.err), 1) << r.err;
   };
   refused("render " + cornell() + " --width 64 --height 64 --spp 256 --seed 5 -q --resume " + ck, "differs in spp");
-  refused("render " + std::string(VKMC_SOURCE_DIR) + "/scenes/veach_mis.gltf --width 64 --height 64 --spp 512 --seed 5 -q --resume " + ck,
+  refused("render " + std::string(VKMC_SOURCE_DIR) +
+              "/scenes/veach_mis.gltf --width 64 --height 64 --spp 512 --seed 5 -q --resume " + ck,
           "differs in scene");
   refused("render --resume " + ck + " --spp 8", "--spp cannot change a resumed render");
   std::ofstream(d / "text.ckpt") << "not a checkpoint\n";
@@ -107,15 +116,17 @@ TEST(CliCheckpoint, ForeignCorruptAndMismatchedCheckpointsAreRefusedWithOneLine)
   // The same scene file with one material changed is another scene.
   fs::create_directories(d / "scene");
   for (const char* f : {"cornell_box.gltf", "cornell_box.bin"})
-    if (fs::exists(fs::path(VKMC_SOURCE_DIR) / "scenes" / f)) fs::copy_file(fs::path(VKMC_SOURCE_DIR) / "scenes" / f, d / "scene" / f);
+    if (fs::exists(fs::path(VKMC_SOURCE_DIR) / "scenes" / f))
+      fs::copy_file(fs::path(VKMC_SOURCE_DIR) / "scenes" / f, d / "scene" / f);
   // A checkpoint of the copy's render, stopped at once.
   const std::string ck2 = (d / "copy.ckpt").string();
   pid = spawnVkmc({"render", (d / "scene/cornell_box.gltf").string(), "--width", "64", "--height", "64", "--spp", "512", "--seed",
-                   "5", "-q", "-o", (d / "c2.exr").string(), "--checkpoint", ck2, "--checkpoint-every", "0.01"});
-  for (int i = 0; i < 6000 && !fs::exists(ck2); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+                   "5", "-q", "-o", (d / "c2.exr").string(), "--checkpoint", ck2, "--checkpoint-every", "0.01"},
+                  kHoldAfterCheckpoint);
+  waitForFile(ck2);
   kill(pid, SIGTERM);
   waitpid(pid, &status, 0);
-  if (!fs::exists(ck2)) GTEST_SKIP() << "the render finished before the signal arrived";
+  ASSERT_TRUE(fs::exists(ck2)) << "a stopped render keeps its checkpoint";
   std::string gltf = slurp(d / "scene/cornell_box.gltf");
   size_t at = gltf.find("\"emissiveFactor\"");
   ASSERT_NE(at, std::string::npos);

@@ -4,6 +4,9 @@
 // and just after a fold, with the learned and per-pixel state the estimators keep (efficiency roulette's pilot,
 // shadow roulette's pixel estimate), QMC replicates, and both integrators.
 #include <gtest/gtest.h>
+#include <signal.h>
+
+#include <atomic>
 
 #include <cstring>
 
@@ -84,18 +87,17 @@ TEST_P(ResumedRender, EqualsTheUninterruptedOneBitForBit) {
   EXPECT_EQ(full.stats.pathsByBounce, resumed.stats.pathsByBounce);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Checkpoint, ResumedRender,
-    ::testing::Values(ResumeCase{"inside_a_batch", 40, 32, EstimatorConfig{}},
-                      ResumeCase{"after_a_fold", 72, 0, EstimatorConfig{}},
-                      ResumeCase{"efficiency_roulette", 40, 32, with("rr", "efficiency")},
-                      // Passes of 1, 2, 4, then 8 samples (the estimate refreshed after each): a fold after 63,
-                      // the last checkpoint at 71.
-                      ResumeCase{"shadow_roulette_after_a_fold", 79, 8, with("shadow_rr", 0.5)},
-                      ResumeCase{"sobol_replicates", 40, 32, with("sampler", "sobol")},
-                      ResumeCase{"one_scrambling", 40, 32, with("replicates", 1)},
-                      ResumeCase{"megakernel", 40, 32, EstimatorConfig{}, Integrator::Megakernel}),
-    [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(Checkpoint, ResumedRender,
+                         ::testing::Values(ResumeCase{"inside_a_batch", 40, 32, EstimatorConfig{}},
+                                           ResumeCase{"after_a_fold", 72, 0, EstimatorConfig{}},
+                                           ResumeCase{"efficiency_roulette", 40, 32, with("rr", "efficiency")},
+                                           // Passes of 1, 2, 4, then 8 samples (the estimate refreshed after each): a fold after
+                                           // 63, the last checkpoint at 71.
+                                           ResumeCase{"shadow_roulette_after_a_fold", 79, 8, with("shadow_rr", 0.5)},
+                                           ResumeCase{"sobol_replicates", 40, 32, with("sampler", "sobol")},
+                                           ResumeCase{"one_scrambling", 40, 32, with("replicates", 1)},
+                                           ResumeCase{"megakernel", 40, 32, EstimatorConfig{}, Integrator::Megakernel}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 TEST(ResumedRenderRefusal, AnotherConfigurationIsNamed) {
   const RenderOptions o = options(24, EstimatorConfig{});
@@ -132,12 +134,18 @@ TEST(ResumedRenderRefusal, AnotherConfigurationIsNamed) {
 
 TEST(ResumedTimeBudget, ContinuesWithWhatIsLeftOfTheBudget) {
   RenderOptions o = options(1u << 24, EstimatorConfig{});
-  o.timeBudget = 0.5;
+  // The first render is stopped at its first checkpoint (the sync point afterCheckpoint), which follows the budget's
+  // first pass of one sample: a budget 2 s long leaves that pass far more time than it takes.
+  o.timeBudget = 2.0;
+  std::atomic<int> stop{0};
   RunControl run;
   run.checkpointPath = (dir() / "budget.ckpt").string();
   run.checkpointEvery = 1e-9;
+  run.stop = &stop;
+  run.afterCheckpoint = [&] { stop = SIGTERM; };
   RenderOutcome full = runRender(sharedContext(), o, run);
-  if (full.checkpointsWritten == 0) GTEST_SKIP() << "the budget held one pass only";
+  ASSERT_EQ(full.checkpointsWritten, 1u);
+  ASSERT_TRUE(full.interrupted);
   Checkpoint ck = readCheckpoint(run.checkpointPath);
   RunControl resume;
   resume.resumeConfig = &ck.config;

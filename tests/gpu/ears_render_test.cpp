@@ -134,7 +134,7 @@ TEST(Ears, FurnaceLightCellsLearnTheDirectLight) {
 }
 
 // On the glossy room most light samples gather little for their ray: the light cells roulette them, so fewer
-// shadow rays are traced for the same image (independent seeds; docs/ears.md has the measurement).
+// shadow rays are traced for the same image (independent seeds; docs/journal/ears.md has the measurement).
 TEST(Ears, LearnedLightSamplesRouletteShadowRaysAndKeepTheMean) {
   EstimatorConfig learned = ears();
   learned.earsLightMax = gpu::kEarsLightFactorMax;
@@ -174,7 +174,7 @@ TEST(Ears, AMaximumOfOneLearnsRouletteAloneAndNeverSplits) {
   EXPECT_LT(bounded.stats.rays(), free.stats.rays());
 }
 
-// dark_room (docs/ears.md, ADRRS's motivating case): dark walls lit by a bright room's multi-bounce light through a
+// dark_room (docs/journal/ears.md, ADRRS's motivating case): dark walls lit by a bright room's multi-bounce light through a
 // doorway. Throughput roulette keeps the paths that carry most of a pixel's value with probability about a tenth,
 // weight 10; EARS learns to keep them. So its honest relative variance times its rays (a cost the machine's load
 // cannot change) is below throughput roulette's (0.34-0.43x in this size's renders with seeds 1-4, 0.44-0.57x at

@@ -138,7 +138,7 @@ TEST(GpuTraversal, ClosestAndAnyHitAgreeWithBruteForce) {
   EXPECT_GT(hits, 2000);
 }
 
-// llvmpipe ends shader loops after 65535 iterations without an error (docs/performance.md, "the loop limiter"); a
+// llvmpipe ends shader loops after 65535 iterations without an error (docs/journal/performance.md, "the loop limiter"); a
 // walk that did not end on its own comes back with t = NaN. A ray through the common box of a pile of coincident
 // triangles, one per leaf, missing them all, visits every leaf: it must come back as a miss, not as a cut or a
 // false hit. Every child box is hit, so the walk outgrows the 12-entry register stack and runs in the deep pass.
@@ -147,7 +147,9 @@ class PileOfLeaves : public ::testing::TestWithParam<uint32_t> {};
 TEST_P(PileOfLeaves, AWalkThroughEveryLeafCompletes) {
   const uint32_t count = GetParam();
   vk::Context& ctx = context();
-  Pile pile = pileOfLeaves(count, [](uint32_t) { return std::array{glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)}; });
+  Pile pile = pileOfLeaves(count, [](uint32_t) {
+    return std::array{glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)};
+  });
   ASSERT_EQ(pile.bvh.stats.leaves, count);
   GpuScene gpuScene(ctx, pile.scene, pile.bvh);
   RayTracer tracer(ctx, gpuScene);

@@ -52,8 +52,10 @@ TEST(KernelVariants, AVariantIsChosenOnlyWhereEveryFixedConstantMatches) {
       for (size_t j = 0; j < specs.size(); ++j)
         if (j != i) missing.push_back(specs[j]);
       // Another variant may fit the changed value, this one never; a constant left at its default fits none.
-      EXPECT_NE(chooseSpirv(v.kernel, general, changed).spirv.data(), v.spirv.data()) << v.kernel << " " << v.name << " id " << v.fixed[i].id;
-      EXPECT_NE(chooseSpirv(v.kernel, general, missing).spirv.data(), v.spirv.data()) << v.kernel << " " << v.name << " id " << v.fixed[i].id;
+      EXPECT_NE(chooseSpirv(v.kernel, general, changed).spirv.data(), v.spirv.data())
+          << v.kernel << " " << v.name << " id " << v.fixed[i].id;
+      EXPECT_NE(chooseSpirv(v.kernel, general, missing).spirv.data(), v.spirv.data())
+          << v.kernel << " " << v.name << " id " << v.fixed[i].id;
     }
     EXPECT_EQ(chooseSpirv("no_such_kernel", general, specs).spirv.data(), general.data()) << "a variant of another kernel";
   }
@@ -98,11 +100,11 @@ TEST_P(PrespecializedSpirv, RendersTheGeneralSpirvsImageBitForBit) {
   EXPECT_EQ(pre.stats.rays(), general.stats.rays());
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    KernelVariants, PrespecializedSpirv,
-    ::testing::Values(VariantCase{"cornell_box", scenePath("cornell_box.gltf"), "lambertian"},
-                      VariantCase{"cornell_box_split", scenePath("cornell_box.gltf"), "lambertian", 2.0f},
-                      VariantCase{"veach_mis", scenePath("veach_mis.gltf"), "glossy"},
-                      VariantCase{"shared_DamagedHelmet", std::string(VKMC_SHARED_SCENES) + "/DamagedHelmet/DamagedHelmet.gltf",
-                                  "textured"}),
-    [](const auto& info) { return info.param.name; });
+INSTANTIATE_TEST_SUITE_P(KernelVariants, PrespecializedSpirv,
+                         ::testing::Values(VariantCase{"cornell_box", scenePath("cornell_box.gltf"), "lambertian"},
+                                           VariantCase{"cornell_box_split", scenePath("cornell_box.gltf"), "lambertian", 2.0f},
+                                           VariantCase{"veach_mis", scenePath("veach_mis.gltf"), "glossy"},
+                                           VariantCase{"shared_DamagedHelmet",
+                                                       std::string(VKMC_SHARED_SCENES) + "/DamagedHelmet/DamagedHelmet.gltf",
+                                                       "textured"}),
+                         [](const auto& info) { return info.param.name; });

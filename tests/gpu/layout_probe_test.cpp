@@ -59,9 +59,9 @@ Words echoedByName(const gpu::PathState& p, const gpu::ShadowRay& r, const gpu::
     putSlot(*t);
   e.put4(m.specularColor), e.put4(m.attenuation), e.put4(m.sheen);
   e.putf(m.clearcoat), e.putf(m.clearcoatRoughness), e.put(m.volumetric), e.put(m.unusedMaterial0);
-  for (const gpu::TextureSlot* t : {&m.transmissionTexture, &m.clearcoatTexture, &m.clearcoatRoughnessTexture,
-                                    &m.clearcoatNormalTexture, &m.sheenColorTexture, &m.sheenRoughnessTexture,
-                                    &m.specularTexture, &m.specularColorTexture})
+  for (const gpu::TextureSlot* t :
+       {&m.transmissionTexture, &m.clearcoatTexture, &m.clearcoatRoughnessTexture, &m.clearcoatNormalTexture,
+        &m.sheenColorTexture, &m.sheenRoughnessTexture, &m.specularTexture, &m.specularColorTexture})
     putSlot(*t);
   e.put4(f.sum), e.put4(f.sumSq), e.put4(f.sumHigh), e.put4(f.sumSqHigh);
   for (const glm::vec4& r : f.replicate) e.put4(r);
@@ -168,9 +168,9 @@ TEST(LayoutProbe, GlslReadsEveryStructFieldAtItsCppOffset) {
   probe.layout.bindStorage(BINDING_CONTROL, controlBuffer);
   // Hit w words are a triangle index's bits (a denormal float) or kMissPrimitive (a NaN): read through the texel
   // view, they must come back bit for bit.
-  const std::array<glm::uvec4, 2> hitWords{glm::uvec4(std::bit_cast<uint32_t>(0.25f), std::bit_cast<uint32_t>(0.5f),
-                                                      std::bit_cast<uint32_t>(0.125f), 5u),
-                                           glm::uvec4(0u, 0u, 0u, gpu::kMissPrimitive)};
+  const std::array<glm::uvec4, 2> hitWords{
+      glm::uvec4(std::bit_cast<uint32_t>(0.25f), std::bit_cast<uint32_t>(0.5f), std::bit_cast<uint32_t>(0.125f), 5u),
+      glm::uvec4(0u, 0u, 0u, gpu::kMissPrimitive)};
   vk::Buffer hits = bufferHolding(probe.ctx, std::array<glm::uvec4, 4>{hitWords[0], hitWords[1], {}, {}}, BINDING_HIT_TEXELS);
   probe.layout.bindTexel(BINDING_HIT_TEXELS, hits);
   probe.layout.bindStorage(BINDING_PATHS, paths);  // the stores go through the storage views of the same buffers
@@ -179,8 +179,8 @@ TEST(LayoutProbe, GlslReadsEveryStructFieldAtItsCppOffset) {
   Words expected = echoedByName(path, ray, material, pixel, control, pc);
   for (const glm::uvec4& h : hitWords) expected.put4u(h);
   // Every word of every struct is echoed once: no field is left out of the comparison.
-  ASSERT_EQ(expected.w.size() * 4, sizeof(path) + sizeof(ray) + sizeof(material) + sizeof(pixel) + sizeof(control) +
-                                       sizeof(pc) + sizeof(hitWords));
+  ASSERT_EQ(expected.w.size() * 4,
+            sizeof(path) + sizeof(ray) + sizeof(material) + sizeof(pixel) + sizeof(control) + sizeof(pc) + sizeof(hitWords));
   std::vector<uint32_t> got = probe.run(true, pc, expected.w.size());
   for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], expected.w[i]) << "echoed word " << i;
   // The stores wrote the same bytes the C++ structs hold (every field's bits, NaN and denormal hit words too).

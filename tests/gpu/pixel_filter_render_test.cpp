@@ -11,8 +11,8 @@
 
 using namespace vkmc;
 using namespace vkmc::test;
-using vkmc::gpu::PixelFilterHeader;
 using vkmc::gpu::pixelFilter1D;
+using vkmc::gpu::PixelFilterHeader;
 
 namespace {
 struct FilterCase {
@@ -61,7 +61,8 @@ TEST_P(PixelFilterRender, FurnaceStaysTwo) {
   o.width = 16, o.height = 16, o.spp = 256, o.seed = 99, o.progress = false;
   o.filter = GetParam().filter;
   o.integrator = GetParam().integrator;
-  // Pixel by pixel at 5 sigma needs many-dof variances (sobol's 1 by default, 3 with 4 replicates, would widen the bound to 157 sigma or more).
+  // Pixel by pixel at 5 sigma needs many-dof variances (sobol's 1 by default, 3 with 4 replicates, would widen the bound to 157
+  // sigma or more).
   o.estimator.sampler = Sampler::Independent;
   RenderOutcome r = runRender(sharedContext(), o);
   ASSERT_EQ(r.film.totalNonfinite(), 0u);
@@ -89,12 +90,15 @@ TEST_P(PixelFilterRender, EdgeIsTheFiltersIntegral) {
   for (uint32_t c = 0; c < kSide; ++c) {
     const double expected = filteredStep(h, kSide / 2.0 - (c + 0.5));
     RegionStats column = region(r.film, c, 0, c + 1, kSide);
-    EXPECT_TRUE(regionMatches(column, glm::dvec3(expected), 5.0)) << "column " << c << ": " << column.mean.x << " against " << expected;
+    EXPECT_TRUE(regionMatches(column, glm::dvec3(expected), 5.0))
+        << "column " << c << ": " << column.mean.x << " against " << expected;
     if (expected < -0.005) {
       lobes = true;
       EXPECT_LT(column.mean.x, 0.0) << "column " << c << " lies in the negative lobe";
     }
-    if (expected > 1.005) { EXPECT_GT(column.mean.x, 1.0) << "column " << c << " overshoots"; }
+    if (expected > 1.005) {
+      EXPECT_GT(column.mean.x, 1.0) << "column " << c << " overshoots";
+    }
   }
   EXPECT_EQ(lobes, o.filter.kind == gpu::kPixelFilterMitchell);
 }

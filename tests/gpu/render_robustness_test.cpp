@@ -80,8 +80,7 @@ TEST_P(ScaledCornellBox, RendersTheSameAsTheUnscaledBox) {
   ASSERT_EQ(r.film.totalNonfinite(), 0u);
   int outside = 0;
   for (size_t p = 0; p < r.film.pixels(); ++p)
-    for (int c = 0; c < 3; ++c)
-      outside += !test::pixelsAgree(ref.film, r.film, p, c, 5.0, 1e-7);
+    for (int c = 0; c < 3; ++c) outside += !test::pixelsAgree(ref.film, r.film, p, c, 5.0, 1e-7);
   EXPECT_EQ(outside, 0);
   glm::dvec3 a = ref.film.imageMean(), b = r.film.imageMean();
   glm::dvec3 va = ref.film.imageMeanVarianceOfMean(), vb = r.film.imageMeanVarianceOfMean();

@@ -45,12 +45,14 @@ Scene twoTextureScene(uint32_t secondWidth) {
 
 TEST(TextureForms, LookupsAreShadingsAndOrderIsAPermutation) {
   Scene scene = twoTextureScene(8);
-  std::vector<gpu::TestRay> coherent = makeTextureLookups(scene, 4096, true, 3), random = makeTextureLookups(scene, 4096, false, 3);
+  std::vector<gpu::TestRay> coherent = makeTextureLookups(scene, 4096, true, 3),
+                            random = makeTextureLookups(scene, 4096, false, 3);
   // Three slots per point (base colour, metallic-roughness, emissive), the normal slot empty.
   EXPECT_EQ(countTextureLookups(coherent), 3u * 4096u);
   for (const gpu::TestRay& r : random) EXPECT_EQ(std::bit_cast<uint32_t>(r.direction.z), gpu::kNoTexture);
   auto key = [](const gpu::TestRay& r) {
-    return std::make_tuple(r.origin.x, r.origin.y, std::bit_cast<uint32_t>(r.direction.x), std::bit_cast<uint32_t>(r.direction.y));
+    return std::make_tuple(r.origin.x, r.origin.y, std::bit_cast<uint32_t>(r.direction.x),
+                           std::bit_cast<uint32_t>(r.direction.y));
   };
   std::vector<std::tuple<float, float, uint32_t, uint32_t>> a, b;
   for (const gpu::TestRay& r : coherent) a.push_back(key(r));
@@ -87,7 +89,8 @@ TEST(TextureForms, ALonePageIsTrimmedToARectangle) {
   std::mt19937 rng(9);
   scene.textures = {randomTexture(16, 3, rng)};
   scene.textures[0].wrapT = TextureWrap::MirroredRepeat;
-  for (Material& m : scene.materials) m.baseColorTexture.texture = m.metallicRoughnessTexture.texture = m.emissiveTexture.texture = 0;
+  for (Material& m : scene.materials)
+    m.baseColorTexture.texture = m.metallicRoughnessTexture.texture = m.emissiveTexture.texture = 0;
   std::vector<gpu::TestRay> lookups = makeTextureLookups(scene, 2048, false, 5);
   vk::Context& ctx = test::sharedContext();
   std::vector<TextureFormTiming> forms = timeTextureForms(ctx, scene, lookups, 1);

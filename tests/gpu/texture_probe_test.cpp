@@ -126,7 +126,10 @@ TEST(TextureProbe, DeviceLookupsMatchTheSpecification) {
     // The sampler quantizes bilinear weights to subTexelPrecisionBits (an error up to 2^(1 - bits) of the largest
     // texel difference, <= 1) and returns 8-bit texels' filtered values at 8-bit precision (1/255); a wrong texel,
     // wrap or transform is off by ~0.3 on these random textures.
-    const Texture& tex = scene.textures[(c.slot == 0 ? m.baseColorTexture : c.slot == 3 ? m.emissiveTexture : m.metallicRoughnessTexture).texture];
+    const Texture& tex = scene.textures[(c.slot == 0   ? m.baseColorTexture
+                                         : c.slot == 3 ? m.emissiveTexture
+                                                       : m.metallicRoughnessTexture)
+                                            .texture];
     const double tolerance = (tex.nearest ? 0.0 : std::ldexp(1.0, 1 - subTexelBits)) + 1.0 / 255.0;
     for (int k = 0; k < 4; ++k) worst = std::max(worst, std::abs(double(got[i][k]) - want[k]));
     for (int k = 0; k < 4; ++k)
@@ -136,5 +139,6 @@ TEST(TextureProbe, DeviceLookupsMatchTheSpecification) {
                       << lookups[i].origin.w << ") channel " << k << ": device " << got[i][k] << ", reference " << want[k];
   }
   EXPECT_EQ(failures, 0) << "largest difference " << worst << ", subTexelPrecisionBits " << subTexelBits;
-  std::printf("largest difference from the specification's bilinear filter: %.2e (subTexelPrecisionBits %d)\n", worst, subTexelBits);
+  std::printf("largest difference from the specification's bilinear filter: %.2e (subTexelPrecisionBits %d)\n", worst,
+              subTexelBits);
 }

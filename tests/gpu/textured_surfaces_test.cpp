@@ -149,10 +149,10 @@ TEST(BackFaces, ShadowRaysPassTheBackOfASingleSidedSheet) {
   up.push_back({{-3, 0.5f, 3}, {6, 0, 0}, {0, 0, -6}, 2});    // front +y, towards the emitter
   down.push_back({{-3, 0.5f, -3}, {6, 0, 0}, {0, 0, 6}, 2});  // front -y, towards the floor
   RenderOutcome a = render(open, {0, 0.4f, 0}, {0, 0, 0.001f}, 40.0f, 64, 1);
-  RenderOutcome b = render(test::writeQuadsGltf(dir, "up", up, materials, kSpecularExtension), {0, 0.4f, 0}, {0, 0, 0.001f},
-                           40.0f, 64, 1);
-  RenderOutcome c = render(test::writeQuadsGltf(dir, "down", down, materials, kSpecularExtension), {0, 0.4f, 0},
-                           {0, 0, 0.001f}, 40.0f, 64, 1);
+  RenderOutcome b =
+      render(test::writeQuadsGltf(dir, "up", up, materials, kSpecularExtension), {0, 0.4f, 0}, {0, 0, 0.001f}, 40.0f, 64, 1);
+  RenderOutcome c =
+      render(test::writeQuadsGltf(dir, "down", down, materials, kSpecularExtension), {0, 0.4f, 0}, {0, 0, 0.001f}, 40.0f, 64, 1);
   ASSERT_GT(test::whole(a.film).mean.g, 0.05);
   EXPECT_TRUE(test::regionsAgree(test::whole(b.film), test::whole(a.film), 5.0));
   EXPECT_EQ(test::whole(c.film).mean.g, 0.0);
@@ -195,8 +195,8 @@ TEST(NormalMap, ATiltedMirrorStillReflectsTheEnvironment) {
     "normalTexture":{"index":0}})";
   std::string extra = R"("images":[{"uri":")" + png + R"("}],"textures":[{"source":0}])";
   std::vector<test::QuadSpec> quads = {{{-5, -5, 0}, {10, 0, 0}, {0, 10, 0}, 0}};
-  RenderOutcome m = render(test::writeQuadsGltf(dir, "mirror", quads, mirror, extra), {0, 0, 1}, {0, 0, 0}, 30.0f, 16, 1,
-                           glm::vec3(1.0f));
+  RenderOutcome m =
+      render(test::writeQuadsGltf(dir, "mirror", quads, mirror, extra), {0, 0, 1}, {0, 0, 0}, 30.0f, 16, 1, glm::vec3(1.0f));
   test::RegionStats all = test::whole(m.film);
   EXPECT_GT(all.mean.g, 0.99);
   EXPECT_LT(all.mean.g, 1.0 + 5.0 * std::sqrt(all.variance.g) + 1e-4);
@@ -208,11 +208,12 @@ TEST(ThinRibbons, ALineCoversOnePixelOfEachColumn) {
   // at its distance; in the central columns the view's obliqueness changes that by under 0.2%).
   auto dir = test::makeTempDir("ribbons");
   test::GltfBuilder b;
-  int quad = b.accessor(std::vector<float>{-2, -2, 0, 2, -2, 0, 2, 2, 0, -2, 2, 0}, 5126, "VEC3", 4,
-                        R"("min":[-2,-2,0],"max":[2,2,0])");
+  int quad =
+      b.accessor(std::vector<float>{-2, -2, 0, 2, -2, 0, 2, 2, 0, -2, 2, 0}, 5126, "VEC3", 4, R"("min":[-2,-2,0],"max":[2,2,0])");
   int quadIndices = b.accessor(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, 5123, "SCALAR", 6);
   int line = b.accessor(std::vector<float>{-3, 0, 1, 3, 0, 1}, 5126, "VEC3", 2, R"("min":[-3,0,1],"max":[3,0,1])");
-  std::string black = R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1],"metallicFactor":0},)" + std::string(kNoSpecular) + "}";
+  std::string black =
+      R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1],"metallicFactor":0},)" + std::string(kNoSpecular) + "}";
   std::string body = R"("nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":{"POSITION":)" + std::to_string(quad) +
                      R"(},"indices":)" + std::to_string(quadIndices) + R"(,"material":0},{"attributes":{"POSITION":)" +
                      std::to_string(line) + R"(},"mode":1,"material":1}]}],"materials":[)" + kEmitter + "," + black + "]," +
@@ -253,11 +254,12 @@ TEST(NormalMap, GreenTiltsTheNormalUpTheImage) {
   auto byte = [](double x) { return uint8_t(std::lround((x + 1.0) * 0.5 * 255.0)); };
   std::string up = test::writePng(dir, "up", 1, 1, {byte(0), byte(s), byte(c), 255});
   std::string down = test::writePng(dir, "down", 1, 1, {byte(0), byte(-s), byte(c), 255});
-  std::vector<test::QuadSpec> quads = {{{-1, -1, 0}, {2, 0, 0}, {0, 2, 0}, 1},    // the plane
+  std::vector<test::QuadSpec> quads = {{{-1, -1, 0}, {2, 0, 0}, {0, 2, 0}, 1},      // the plane
                                        {{-5, 2, 0.2f}, {10, 0, 0}, {0, 0, 3}, 0}};  // emitter, facing -y
   auto scene = [&](const std::string& png, const std::string& name) {
     std::string plane = R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":0},
-      "normalTexture":{"index":0},)" + std::string(kNoSpecular) + "}";
+      "normalTexture":{"index":0},)" +
+                        std::string(kNoSpecular) + "}";
     std::string extra = std::string(kSpecularExtension) + R"(,"images":[{"uri":")" + png + R"("}],"textures":[{"source":0}])";
     return test::writeQuadsGltf(dir, name, quads, kEmitter + "," + plane, extra);
   };
@@ -302,7 +304,8 @@ TEST(AlphaCanopy, EstimatorsAndIntegratorsAgreeThroughTheHoles) {
   ASSERT_EQ(base.film.totalNonfinite(), 0u);
   test::RegionStats a = test::whole(base.film);
   EXPECT_GT(a.mean.g, 0.0);
-  for (auto [nee, integrator, seed] : {std::tuple{false, Integrator::Wavefront, 12u}, std::tuple{true, Integrator::Megakernel, 13u}}) {
+  for (auto [nee, integrator, seed] :
+       {std::tuple{false, Integrator::Wavefront, 12u}, std::tuple{true, Integrator::Megakernel, 13u}}) {
     RenderOutcome other = canopy(nee, integrator, seed);
     EXPECT_EQ(other.film.totalNonfinite(), 0u);
     EXPECT_TRUE(test::regionsAgree(a, test::whole(other.film), 5.0)) << "nee " << nee << ", " << toString(integrator);

@@ -126,14 +126,18 @@ TEST(DeltaLobes, LosslessGlassAndMirrorKeepEveryPhoton) {
         refracted += s.wi.z < 0.0f;
         EXPECT_NEAR(s.weight.x * fluxScale(g, s.wi), 1.0f, 1e-5f) << "eta " << eta << " cos " << cosO;
         EXPECT_NEAR(length(s.wi), 1.0f, 1e-5f);
-        if (s.wi.z < 0.0f) { EXPECT_NEAR(std::sqrt(1 - s.wi.z * s.wi.z), std::sqrt(1 - cosO * cosO) / eta, 1e-5f); }  // Snell
+        if (s.wi.z < 0.0f) {
+          EXPECT_NEAR(std::sqrt(1 - s.wi.z * s.wi.z), std::sqrt(1 - cosO * cosO) / eta, 1e-5f);
+        }  // Snell
         BsdfSample r = sampleGltfBsdf(mirror, wo, u3(i, 34));
         EXPECT_NEAR(r.weight.x, 1.0f, 1e-6f);
         EXPECT_NEAR(r.wi.z, cosO, 1e-6f);
       }
       float sin2T = (1 - cosO * cosO) / (eta * eta);
-      if (sin2T >= 1.0f) EXPECT_EQ(refracted, 0) << "total internal reflection, eta " << eta << " cos " << cosO;
-      else EXPECT_GT(refracted, 0) << "eta " << eta << " cos " << cosO;
+      if (sin2T >= 1.0f)
+        EXPECT_EQ(refracted, 0) << "total internal reflection, eta " << eta << " cos " << cosO;
+      else
+        EXPECT_GT(refracted, 0) << "eta " << eta << " cos " << cosO;
       EXPECT_EQ(luminance(gltfBsdfEval(g, wo, vec3(0.1f, 0.2f, -0.97f))), 0.0f) << "a delta lobe is never evaluated";
       EXPECT_EQ(gltfBsdfPdf(g, wo, vec3(-wo.x, -wo.y, wo.z)), 0.0f);
     }

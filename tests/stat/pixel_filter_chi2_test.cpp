@@ -89,7 +89,9 @@ TEST_P(PixelFilterSampling, WeightsMakeTheFilteredEstimateUnbiased) {
     double v[3] = {s.weight, s.weight * x * x, s.weight * step(x)};
     for (int k = 0; k < 3; ++k) sum[k] += v[k], sumSq[k] += v[k] * v[k];
   }
-  if (GetParam().kind == kPixelFilterMitchell) { EXPECT_LT(expected[2], 0.0) << "the step's filtered value is in the lobe"; }
+  if (GetParam().kind == kPixelFilterMitchell) {
+    EXPECT_LT(expected[2], 0.0) << "the step's filtered value is in the lobe";
+  }
   for (int k = 0; k < 3; ++k) {
     double mean = sum[k] / kSamples, var = (sumSq[k] / kSamples - mean * mean) / kSamples;
     EXPECT_TRUE(test::withinSigmas(test::zTest(mean, expected[k], std::sqrt(var), 1e-6), 5.0))

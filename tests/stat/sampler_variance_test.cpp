@@ -21,7 +21,8 @@ struct VarianceRatio {
 // Relative variances (each pixel's over its mean^2 + 0.01, as relMSE weighs them), so that the few pixels at the
 // light's edge do not decide alone. Pixels are independent (each its own scrambling), so the ratio's standard
 // error comes from the per-pixel terms by the delta method: SE = sqrt(sum (a_p - R b_p)^2) / sum b_p.
-VarianceRatio ratioOf(const std::vector<double>& observed, const std::vector<double>& reported, const std::vector<double>& weight) {
+VarianceRatio ratioOf(const std::vector<double>& observed, const std::vector<double>& reported,
+                      const std::vector<double>& weight) {
   double a = 0.0, b = 0.0;
   for (size_t p = 0; p < observed.size(); ++p) a += weight[p] * observed[p], b += weight[p] * reported[p];
   VarianceRatio r;
@@ -76,8 +77,8 @@ TEST(SamplerVariance, ReportedVarianceMatchesTheSpreadOverSeeds) {
   for (Case c : {Case{Sampler::Independent, 2}, Case{Sampler::Sobol, 2}, Case{Sampler::ZSobol, 2}, Case{Sampler::Sobol, 4}}) {
     const Sampler sampler = c.sampler;
     Spread s = measure(sampler, c.replicates, 20, 24, 32);
-    std::printf("sampler %u, %u replicates: honest %s; naive %s\n", uint32_t(sampler), c.replicates,
-                describe(s.honest).c_str(), describe(s.naive).c_str());
+    std::printf("sampler %u, %u replicates: honest %s; naive %s\n", uint32_t(sampler), c.replicates, describe(s.honest).c_str(),
+                describe(s.naive).c_str());
     SCOPED_TRACE("sampler " + std::to_string(uint32_t(sampler)) + ", replicates " + std::to_string(c.replicates));
     EXPECT_LT(std::abs(s.honest.ratio - 1.0), 4.0 * s.honest.sigma) << describe(s.honest);
     EXPECT_LT(s.honest.sigma, 0.1) << "too few seeds to tell";

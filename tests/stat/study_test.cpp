@@ -97,17 +97,21 @@ TEST(Study, RejectsBadStudyFiles) {
 
 TEST(Study, ReadsItsPixelFilter) {
   Study s = loadStudy(
-      writeStudy("filtered", R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1], "filter": {"name": "mitchell"}})")
+      writeStudy("filtered",
+                 R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1], "filter": {"name": "mitchell"}})")
           .string());
   EXPECT_EQ(s.filter.kind, gpu::kPixelFilterMitchell);
   EXPECT_EQ(s.filter.radius, 2.0f);
-  EXPECT_TRUE(loadStudy(writeStudy("unfiltered", R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1]})").string())
-                  .filter.isPixelBox());
+  EXPECT_TRUE(
+      loadStudy(writeStudy("unfiltered", R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1]})").string())
+          .filter.isPixelBox());
   for (const char* bad : {R"({"name": "lanczos"})", R"({"name": "gaussian", "radius": 0})", R"("mitchell")"})
-    EXPECT_THROW(loadStudy(writeStudy("badfilter", std::string(R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1], "filter": )") +
-                                                       bad + "}")
-                               .string()),
-                 Error)
+    EXPECT_THROW(
+        loadStudy(writeStudy(
+                      "badfilter",
+                      std::string(R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1], "filter": )") + bad + "}")
+                      .string()),
+        Error)
         << bad;
 }
 
@@ -148,14 +152,19 @@ TEST(Study, AConstantReferenceMeasuresTheFurnaceAgainstItsAnalyticRadiance) {
 
 TEST(Study, RejectsBadConstantReferences) {
   Study s = loadStudy(writeStudy("rgb", R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1],
-      "reference": {"constant": [1, 0.5, 100]}})").string());
+      "reference": {"constant": [1, 0.5, 100]}})")
+                          .string());
   ASSERT_TRUE(s.referenceConstant.has_value());
   EXPECT_EQ(*s.referenceConstant, glm::vec3(1.0f, 0.5f, 100.0f));
   for (const char* bad : {R"("2")", "[1, 2]", "-1", "[1, 2, -3]", "1e39", "{}"})
-    EXPECT_THROW(loadStudy(writeStudy("badconstant", std::string(R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1], "reference": {"constant": )") +
-                                                         bad + "}}")
-                               .string()),
-                 Error)
+    EXPECT_THROW(
+        loadStudy(
+            writeStudy(
+                "badconstant",
+                std::string(R"({"scene": "x.gltf", "configurations": [{"name": "a"}], "spp": [1], "reference": {"constant": )") +
+                    bad + "}}")
+                .string()),
+        Error)
         << bad;
 }
 

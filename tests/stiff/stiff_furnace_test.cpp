@@ -27,7 +27,7 @@ namespace {
 struct ProbeResult {
   double mean = 0, sigma = 0;  // estimate of L and the standard deviation of that estimate
   double meanVertices = 0;
-  double seconds = 0;  // wall time of the dispatches, printed for docs/performance.md (never asserted)
+  double seconds = 0;  // wall time of the dispatches, printed for docs/journal/performance.md (never asserted)
   uint64_t paths = 0;
   uint32_t cutLanes = 0;  // lanes whose loop llvmpipe's iteration limiter ended with a path in flight
 };
@@ -156,10 +156,11 @@ TEST_P(HighAlbedoFurnace, RouletteIsUnbiasedToATenthOfAPercent) {
     std::snprintf(what, sizeof(what), "%s%s roulette, no cap, %.1fM paths (analytic furnace probe)", name.c_str(), modeName,
                   double(p.paths) * 1e-6);
     stabilityRow("1", what, std::to_string(expected), p.mean, p.sigma, t.within(5.0) && 5.0 * p.sigma < 1e-3 * expected);
-    std::printf("%s%s roulette: mean %.6f (expected %.6f), sigma %.3g (%.4f%%), %.1f vertices per path (expected %.1f); "
-                "%.1f s, %.2f ns per vertex\n",
-                name.c_str(), modeName, p.mean, expected, p.sigma, 100.0 * p.sigma / expected, p.meanVertices, vertices,
-                p.seconds, 1e9 * p.seconds / (p.meanVertices * double(p.paths)));
+    std::printf(
+        "%s%s roulette: mean %.6f (expected %.6f), sigma %.3g (%.4f%%), %.1f vertices per path (expected %.1f); "
+        "%.1f s, %.2f ns per vertex\n",
+        name.c_str(), modeName, p.mean, expected, p.sigma, 100.0 * p.sigma / expected, p.meanVertices, vertices, p.seconds,
+        1e9 * p.seconds / (p.meanVertices * double(p.paths)));
   }
 }
 

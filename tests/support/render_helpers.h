@@ -37,7 +37,8 @@ inline void addQuad(Scene& s, glm::vec3 o, glm::vec3 u, glm::vec3 v, uint32_t ma
 // Binds a placeholder buffer to every storage binding a standalone test kernel declares but never touches.
 inline void bindPlaceholders(vk::KernelLayout& layout, const vk::Buffer& placeholder, std::initializer_list<uint32_t> except) {
   for (uint32_t b = 0; b < BINDING_COUNT; ++b)
-    if (!vk::isTexelBinding(b) && !vk::isImageBinding(b) && std::find(except.begin(), except.end(), b) == except.end()) layout.bindStorage(b, placeholder);
+    if (!vk::isTexelBinding(b) && !vk::isImageBinding(b) && std::find(except.begin(), except.end(), b) == except.end())
+      layout.bindStorage(b, placeholder);
 }
 
 // Viewed placeholder buffers on the renderer's texel bindings (path state, hits, queues, shadow rays, pixel

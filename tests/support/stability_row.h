@@ -1,4 +1,4 @@
-// One row of docs/stability.md, recorded as a GoogleTest property; tools/stability_table.sh collects them
+// One row of docs/tables/stability.md, recorded as a GoogleTest property; tools/stability_table.sh collects them
 // from `ctest -L stiff` runs (gtest JSON output).
 #pragma once
 #include <gtest/gtest.h>

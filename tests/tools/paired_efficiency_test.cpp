@@ -93,8 +93,8 @@ TEST(PairedEfficiency, KeepsItsReferenceForABinaryThatRendersTheSameImageOnly) {
   auto run = [&](const std::string& vkmc, const std::string& json) {
     return runShell("VKMC_CACHE_DIR=" + cache.string() + " python3 " + std::string(VKMC_SOURCE_DIR) +
                     "/tools/paired_efficiency.py " + std::string(VKMC_SOURCE_DIR) +
-                    "/scenes/furnace.gltf --width 8 --height 8 --reference-spp 8192 --seconds 0.2 --pairs 1 --vkmc " +
-                    vkmc + " --json " + (workDir() / json).string());
+                    "/scenes/furnace.gltf --width 8 --height 8 --reference-spp 8192 --seconds 0.2 --pairs 1 --vkmc " + vkmc +
+                    " --json " + (workDir() / json).string());
   };
   auto reference = [&](const std::string& json) {
     return nlohmann::json::parse(slurp(workDir() / json)).at("reference").get<std::string>();

@@ -99,7 +99,8 @@ TEST(StudentT, TailsAndBoundsMatchClosedForms) {
   for (double dof : {1.0, 3.0, 10.0, 63.0, 4095.0})
     for (double k : {3.0, 5.0})
       EXPECT_NEAR(studentTwoSidedTail(studentBoundForSigmas(k, dof), dof), std::erfc(k / std::sqrt(2.0)),
-                  1e-7 * std::erfc(k / std::sqrt(2.0))) << dof << " dof, " << k << " sigma";
+                  1e-7 * std::erfc(k / std::sqrt(2.0)))
+          << dof << " dof, " << k << " sigma";
   EXPECT_NEAR(studentBoundForSigmas(3.0, 3.0), 9.2189, 1e-3);  // t_3 at two-sided 0.0027
   // Welch: equal variances and dofs add their dofs; one exact variance leaves the other's dof.
   EXPECT_NEAR(welchDof(1.0, 3.0, 1.0, 3.0), 6.0, 1e-12);

@@ -170,7 +170,8 @@ TEST(Bvh, NoWalkPendsMoreEntriesThanTheTreesBound) {
     auto children = [&](uint32_t node) {
       std::vector<uint32_t> c;
       for (int i = 0; i < 4; ++i)
-        if (wide[node].texels[gpu::kBvhWideChildTexel][i] != gpu::kBvhEmptySlot) c.push_back(wide[node].texels[gpu::kBvhWideChildTexel][i]);
+        if (wide[node].texels[gpu::kBvhWideChildTexel][i] != gpu::kBvhEmptySlot)
+          c.push_back(wide[node].texels[gpu::kBvhWideChildTexel][i]);
       return c;
     };
     std::function<uint32_t(uint32_t)> depth = [&](uint32_t node) {
@@ -247,9 +248,7 @@ TEST(Bvh, TheTreeIsTheSameOnAnyNumberOfThreads) {
     float size = 0.01f + 0.2f * std::abs(u(rng));
     bounds.push_back(Aabb{c - size, c + size});
   }
-  auto bytesOf = [](const auto& v) {
-    return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v[0]));
-  };
+  auto bytesOf = [](const auto& v) { return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v[0])); };
   BvhOptions options;
   options.threads = 1;
   Bvh one = buildBvh(bounds, options);

@@ -18,7 +18,8 @@ Checkpoint sample(bool withBatch) {
   s.film = Film(3, 2);
   s.film.replicateVariance = true;
   s.film.replicates = 3;
-  for (size_t i = 0; i < s.film.sum.size(); ++i) s.film.sum[i] = 0.1 * double(i) + 1e-17, s.film.sumSq[i] = std::ldexp(1.0, int(i) * 50);
+  for (size_t i = 0; i < s.film.sum.size(); ++i)
+    s.film.sum[i] = 0.1 * double(i) + 1e-17, s.film.sumSq[i] = std::ldexp(1.0, int(i) * 50);
   for (size_t i = 0; i < s.film.count.size(); ++i) s.film.count[i] = 1000 + i, s.film.nonfinite[i] = i;
   for (size_t i = 0; i < s.film.replicateSum.size(); ++i) s.film.replicateSum[i] = -double(i) / 3.0;
   for (size_t i = 0; i < s.film.replicateCount.size(); ++i) s.film.replicateCount[i] = 250 + i;
@@ -66,7 +67,9 @@ TEST(Checkpoint, RoundTripsEveryArrayAndCounterExactly) {
     EXPECT_EQ(d.state.nextSample, 40u);
     EXPECT_EQ(d.state.batchSamples, c.state.batchSamples);
     ASSERT_EQ(d.state.batch.size(), c.state.batch.size());
-    if (withBatch) { EXPECT_EQ(std::memcmp(d.state.batch.data(), c.state.batch.data(), c.state.batch.size() * sizeof(gpu::FilmPixel)), 0); }
+    if (withBatch) {
+      EXPECT_EQ(std::memcmp(d.state.batch.data(), c.state.batch.data(), c.state.batch.size() * sizeof(gpu::FilmPixel)), 0);
+    }
     EXPECT_EQ(d.state.stats.seconds, 1.25);
     EXPECT_EQ(d.state.stats.cameraRays, 1ull << 40);
     EXPECT_EQ(d.state.stats.stageSeconds.at("shade"), 0.5);

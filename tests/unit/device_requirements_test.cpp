@@ -22,7 +22,8 @@ vk::DeviceCapabilities capable() {
   c.maxStorageBuffersPerStage = c.maxStorageImagesPerStage = 64;
   c.maxSampledImagesPerStage = c.maxSamplersPerStage = 16;
   c.unormImageFeatures = c.srgbImageFeatures = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
-                                              VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+                                               VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT |
+                                               VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
   c.shaderInt64 = true;
   return c;
 }
@@ -46,7 +47,8 @@ TEST(DeviceRequirements, EachShortfallIsNamed) {
   EXPECT_TRUE(names(vk::missingRequirements(c), "subgroups of at least 4 invocations"));
   c = capable();
   c.texelFormats[1].second = 0;
-  EXPECT_TRUE(names(vk::missingRequirements(c), "storage texel buffers of format " + std::to_string(int(c.texelFormats[1].first))));
+  EXPECT_TRUE(
+      names(vk::missingRequirements(c), "storage texel buffers of format " + std::to_string(int(c.texelFormats[1].first))));
   c = capable();
   c.maxWorkgroupInvocations = 32;
   EXPECT_TRUE(names(vk::missingRequirements(c), "workgroups of 64"));

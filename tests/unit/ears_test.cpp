@@ -45,9 +45,7 @@ TEST(EarsShrunk, ALevelCountsByItsCopiesAgainstTheCoarserOnes) {
 
 TEST(EarsResolve, TheFoldShrinksALevelsSumsAsAVertexReadingThemOneByOneWould) {
   // Sums of n copies with mean Lr a, mean Lr^2 b, mean rays c: earsSampling gives b / c and (b - a^2) / c.
-  auto sums = [](float n, float a, float b, float c) {
-    return std::make_pair(vec4(vec3(a * n), n), vec4(vec3(b * n), c * n));
-  };
+  auto sums = [](float n, float a, float b, float c) { return std::make_pair(vec4(vec3(a * n), n), vec4(vec3(b * n), c * n)); };
   const auto coarse = sums(5000.0f, 1.0f, 4.0f, 2.0f), mid = sums(0.0f, 0.0f, 0.0f, 0.0f), fine = sums(300.0f, 0.5f, 1.0f, 2.0f);
   vec3 moment(0.0f), variance(0.0f);
   float copies = 0.0f;
@@ -224,7 +222,8 @@ TEST(EarsImageStatistics, SmoothedEstimateIsTheBoxMeanClippedAtTheEdges) {
   for (uint32_t y = 0; y < 5; ++y)
     for (uint32_t x = 0; x < 7; ++x) {
       const int dx = std::abs(int(x) - 3), dy = std::abs(int(y) - 2);
-      const int across = std::min(int(x), 2) + std::min(6 - int(x), 2) + 1, down = std::min(int(y), 2) + std::min(4 - int(y), 2) + 1;
+      const int across = std::min(int(x), 2) + std::min(6 - int(x), 2) + 1,
+                down = std::min(int(y), 2) + std::min(4 - int(y), 2) + 1;
       const float expected = dx <= 2 && dy <= 2 ? 25.0f / float(across * down) : 0.0f;
       EXPECT_NEAR(e.smoothed[y * 7 + x].x, expected, 1e-6f) << x << "," << y;
     }
@@ -292,12 +291,12 @@ TEST(EarsGuard, TheMoreEfficientPolicyRendersTheRest) {
 }
 
 TEST(EarsGuard, ACloseFirstMeasureOfEarsIsTakenAgain) {
-  const PolicyPass throughput{1.0, 1.0};  // efficiency 1
-  EXPECT_TRUE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 1.25}, throughput));   // 0.8
+  const PolicyPass throughput{1.0, 1.0};                                                    // efficiency 1
+  EXPECT_TRUE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 1.25}, throughput));  // 0.8
   EXPECT_TRUE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 1.0 / kEarsSecondLookRatio}, throughput));
-  EXPECT_FALSE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 2.0}, throughput));   // 0.5: clearly worse
-  EXPECT_FALSE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 0.5}, throughput));   // 2: EARS wins
-  EXPECT_TRUE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 0.9}, throughput));    // 1.11: within the margin
+  EXPECT_FALSE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 2.0}, throughput));  // 0.5: clearly worse
+  EXPECT_FALSE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 0.5}, throughput));  // 2: EARS wins
+  EXPECT_TRUE(earsGuardLooksAgain(EarsFallback::Auto, PolicyPass{1.0, 0.9}, throughput));   // 1.11: within the margin
   EXPECT_FALSE(earsGuardLooksAgain(EarsFallback::Never, PolicyPass{1.0, 1.25}, throughput));
   EXPECT_TRUE(earsGuardLooksAgain(EarsFallback::Always, PolicyPass{1.0, 0.5}, throughput));  // its tests' path
 }
@@ -316,7 +315,7 @@ TEST(EarsGuard, LearningMustFitInItsShareOfATimeBudget) {
 // Throughput roulette's measured passes costed from the first pass: a pass's overhead once a pass, the rest by
 // samples; the overhead from two passes of different sizes (t = a + b n), clamped, 0 where they cannot tell.
 TEST(EarsGuard, ThroughputRoulettesPassIsCostedAsOverheadPlusSamples) {
-  // dark_room at 96x96 (docs/ears.md): 1 spp in 0.0375 s, 28 spp in 0.238 s, so a = 0.030, b = 0.0074.
+  // dark_room at 96x96 (docs/journal/ears.md): 1 spp in 0.0375 s, 28 spp in 0.238 s, so a = 0.030, b = 0.0074.
   EXPECT_DOUBLE_EQ(earsPassOverhead(0.0375, 1, 0.238, 28, 1.0), (0.0375 * 28 - 0.238) / 27);
   EXPECT_NEAR(earsThroughputPassSeconds(0.0375, 1, 0.03, 1, 28), 0.03 + 28 * 0.0075, 1e-12);
   EXPECT_DOUBLE_EQ(earsThroughputPassSeconds(0.0375, 1, 0.0, 1, 28), 28 * 0.0375) << "no overhead: the upper bound";
@@ -334,7 +333,7 @@ TEST(EarsGuard, AutoWatchesTheEarsItChoseAndTheLineSaysWhatItSaw) {
   EXPECT_FALSE(earsGuardWatches(EarsFallback::Always));
   EarsGuardOutcome g;
   g.compared = g.watched = true;
-  g.ears = PolicyPass{1.0, 0.5, 4};        // efficiency 2
+  g.ears = PolicyPass{1.0, 0.5, 4};         // efficiency 2
   g.throughput = PolicyPass{2.0, 1.0, 28};  // 0.5
   g.fromSample = 13;
   EXPECT_NE(earsGuardLine(g).find("ears from sample 13"), std::string::npos) << earsGuardLine(g);

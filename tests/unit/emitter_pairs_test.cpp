@@ -17,9 +17,9 @@ void addQuad(std::vector<glm::vec3>& p, glm::vec3 o, glm::vec3 u, glm::vec3 v) {
 
 TEST(EmitterPairs, QuadsPairAndTheApexFacesTheSharedEdge) {
   std::vector<glm::vec3> p;
-  addQuad(p, {0, 2, 0}, {0.5f, 0, 0}, {0, 0, 0.4f});   // triangles 0, 1: a quad
-  addQuad(p, {3, 2, 0}, {0.5f, 0, 0}, {0, 0, 0.4f});   // 2, 3: another, another material
-  p.insert(p.end(), {glm::vec3(6, 2, 0), glm::vec3(7, 2, 0), glm::vec3(7, 2, 1)});  // 4
+  addQuad(p, {0, 2, 0}, {0.5f, 0, 0}, {0, 0, 0.4f});                                      // triangles 0, 1: a quad
+  addQuad(p, {3, 2, 0}, {0.5f, 0, 0}, {0, 0, 0.4f});                                      // 2, 3: another, another material
+  p.insert(p.end(), {glm::vec3(6, 2, 0), glm::vec3(7, 2, 0), glm::vec3(7, 2, 1)});        // 4
   p.insert(p.end(), {glm::vec3(6, 2, 0), glm::vec3(7, 2, 1), glm::vec3(6.2f, 2, 1.5f)});  // 5: shares 4's edge, no parallelogram
   std::vector<uint8_t> candidate(6, 1);
   std::vector<uint32_t> material = {0, 0, 1, 1, 0, 0};
@@ -43,7 +43,7 @@ TEST(EmitterPairs, QuadsPairAndTheApexFacesTheSharedEdge) {
   std::vector<glm::vec3> flipped = p;
   std::swap(flipped[3 * 1 + 1], flipped[3 * 1 + 2]);  // triangle 1 faces the other way
   EXPECT_EQ(findEmitterPairs(flipped, candidate, material).size(), 1u);
-  material[1] = 7;  // halves of different materials stay apart
+  material[1] = 7;   // halves of different materials stay apart
   candidate[3] = 0;  // a textured or alpha-tested half is no candidate
   EXPECT_TRUE(findEmitterPairs(p, candidate, material).empty());
 }

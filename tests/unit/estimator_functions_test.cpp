@@ -26,10 +26,14 @@ TEST(EstimatorFunctions, SamplingMapsInvertToTheirRandomNumbers) {
     vec2 u = uniformPair(i, 11u);
     vec2 t = invertUniformTriangleSample(sampleUniformTriangle(u));
     EXPECT_NEAR(t.x, u.x, 1e-5f) << "triangle, u = " << u.x << "," << u.y;
-    if (u.x > 1e-3f) { EXPECT_NEAR(t.y, u.y, 2e-3f) << "triangle, u = " << u.x << "," << u.y; }  // ill-posed at the apex
+    if (u.x > 1e-3f) {
+      EXPECT_NEAR(t.y, u.y, 2e-3f) << "triangle, u = " << u.x << "," << u.y;
+    }  // ill-posed at the apex
     vec2 h = invertUniformHemisphereSample(sampleUniformHemisphere(u));
     EXPECT_NEAR(h.x, u.x, 1e-5f);
-    if (u.x < 0.999f) { EXPECT_NEAR(std::fmod(h.y - u.y + 1.5f, 1.0f) - 0.5f, 0.0f, 1e-4f) << "hemisphere phi"; }
+    if (u.x < 0.999f) {
+      EXPECT_NEAR(std::fmod(h.y - u.y + 1.5f, 1.0f) - 0.5f, 0.0f, 1e-4f) << "hemisphere phi";
+    }
     vec3 w = sampleCosineHemisphere(u);
     vec2 c = invertCosineHemisphereSample(w);
     EXPECT_NEAR(c.x, u.x, 1e-4f) << "cosine, u = " << u.x << "," << u.y;

@@ -62,7 +62,7 @@ TEST(Exr, QmcFilmsGiveTheirReplicatesDegreesOfFreedom) {
   film.replicateVariance = true;
   film.count = {8, 2};
   for (uint32_t r = 0; r < gpu::kMaxSampleReplicates; ++r) film.replicateCount[r] = 2;  // pixel 0: all 4
-  film.replicateCount[gpu::kMaxSampleReplicates + 0] = 1;                                // pixel 1: 2 of them
+  film.replicateCount[gpu::kMaxSampleReplicates + 0] = 1;                               // pixel 1: 2 of them
   film.replicateCount[gpu::kMaxSampleReplicates + 1] = 1;
   ExrImage img = filmToImage(film);
   EXPECT_EQ(img.channels["variance.dof"][0], float(gpu::kMaxSampleReplicates - 1));

@@ -214,8 +214,8 @@ TEST(GltfAttributes, PointsAndLinesBecomeSegmentsByTheirMode) {
   int color = b.accessor(rgb, 5126, "VEC3", 4);
   std::string prims = primitive(R"("POSITION":)" + std::to_string(q.position), q.indices);
   for (int mode : {0, 1, 2, 3})
-    prims += R"(,{"attributes":{"POSITION":)" + std::to_string(pos) + R"(,"COLOR_0":)" + std::to_string(color) +
-             R"(},"mode":)" + std::to_string(mode) + "}";
+    prims += R"(,{"attributes":{"POSITION":)" + std::to_string(pos) + R"(,"COLOR_0":)" + std::to_string(color) + R"(},"mode":)" +
+             std::to_string(mode) + "}";
   Scene s = loadGltf(b.write(dir(), "modes", R"("nodes":[{"mesh":0,"translation":[0,0,2]}],)" + meshJson(prims)));
   EXPECT_EQ(s.triangleCount(), 2u);
   ASSERT_EQ(s.thinSegments.size(), 4u + 2u + 4u + 3u);

@@ -46,18 +46,17 @@ TEST(GltfExtensions, RequiredExtensionsVkmcDoesNotImplementAreRefusedByName) {
             std::string::npos)
       << iridescence;
   // Implemented in full: a file that requires them loads.
-  for (const char* name : {"KHR_materials_emissive_strength", "KHR_draco_mesh_compression", "EXT_meshopt_compression",
-                           "KHR_mesh_quantization", "EXT_mesh_gpu_instancing", "KHR_materials_transmission",
-                           "KHR_materials_volume", "KHR_materials_ior", "KHR_materials_clearcoat", "KHR_materials_sheen",
-                           "KHR_materials_specular"}) {
+  for (const char* name :
+       {"KHR_materials_emissive_strength", "KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_mesh_quantization",
+        "EXT_mesh_gpu_instancing", "KHR_materials_transmission", "KHR_materials_volume", "KHR_materials_ior",
+        "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_specular"}) {
     std::string quoted = "\"" + std::string(name) + "\"";
     EXPECT_EQ(test::loadError(quadUsing(name, quoted, quoted)), "") << name;
   }
 }
 
 TEST(GltfExtensions, UsedExtensionsThatAreIgnoredAreNamedInWarnings) {
-  Scene s =
-      loadGltf(quadUsing("used", "\"KHR_materials_anisotropy\",\"KHR_materials_emissive_strength\",\"VENDOR_magic\"", ""));
+  Scene s = loadGltf(quadUsing("used", "\"KHR_materials_anisotropy\",\"KHR_materials_emissive_strength\",\"VENDOR_magic\"", ""));
   EXPECT_TRUE(hasWarning(s, "extension KHR_materials_anisotropy: anisotropy is ignored"));
   EXPECT_TRUE(hasWarning(s, "extension VENDOR_magic is unknown to vkmc"));
   EXPECT_FALSE(hasWarning(s, "KHR_materials_emissive_strength"));  // implemented
@@ -84,4 +83,3 @@ TEST(GltfExtensions, TriangleStripsAndFansBecomeTrianglesFacingTheSameWay) {
     EXPECT_EQ(s.positions[3 * t + 2], glm::vec3(0.5f, 0.5f, 0)) << "every fan triangle ends at the centre";
   }
 }
-

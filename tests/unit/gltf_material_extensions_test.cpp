@@ -17,8 +17,8 @@ std::filesystem::path dir() {
 
 std::string quadWith(const std::string& name, const std::string& extensions) {
   GltfSpec spec = test::quadSpec();
-  spec.materialJson = R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"roughnessFactor":0.5},"extensions":{)" +
-                      extensions + "}}";
+  spec.materialJson =
+      R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"roughnessFactor":0.5},"extensions":{)" + extensions + "}}";
   return test::writeGltf(dir(), name, spec);
 }
 }  // namespace

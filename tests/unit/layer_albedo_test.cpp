@@ -16,7 +16,8 @@ TEST(LayerAlbedo, TheCommittedTableIsTheGeneratorsOutput) {
     for (uint32_t a : {0u, 1u, 7u, 16u, n - 1})
       for (uint32_t c : {0u, 2u, 11u, 24u, n - 1}) {
         float committed = gpu::kLayerAlbedo[(layer * n + a) * n + c];
-        EXPECT_NEAR(committed, layerAlbedoNode(layer, a, c), 2e-6f) << "layer " << layer << " alpha node " << a << " cos node " << c;
+        EXPECT_NEAR(committed, layerAlbedoNode(layer, a, c), 2e-6f)
+            << "layer " << layer << " alpha node " << a << " cos node " << c;
       }
 }
 
@@ -26,7 +27,8 @@ TEST(LayerAlbedo, InterpolatedValuesBoundTheAlbedoFromAbove) {
     uint key = gpu::pathKey(77u, i, 0u);
     double c = 0.02 + 0.98 * gpu::randomUnit(key, 0u), alpha = 0.02 + 0.98 * gpu::randomUnit(key, 1u);
     EXPECT_GE(gpu::layerAlbedo(gpu::kLayerAlbedoCoat, float(c), float(alpha)), coatAlbedo(c, alpha) - 2e-3) << c << " " << alpha;
-    EXPECT_GE(gpu::layerAlbedo(gpu::kLayerAlbedoSheen, float(c), float(alpha)), sheenAlbedo(c, alpha) - 2e-3) << c << " " << alpha;
+    EXPECT_GE(gpu::layerAlbedo(gpu::kLayerAlbedoSheen, float(c), float(alpha)), sheenAlbedo(c, alpha) - 2e-3)
+        << c << " " << alpha;
     EXPECT_LE(gpu::layerAlbedo(gpu::kLayerAlbedoCoat, float(c), float(alpha)), 1.0f);
   }
   // A smooth coat reflects exactly its Fresnel: 0.04 at normal incidence, all of it at grazing.

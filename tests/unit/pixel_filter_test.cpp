@@ -18,9 +18,9 @@ namespace {
 constexpr double kPiD = 3.14159265358979323846;
 
 const std::vector<PixelFilter>& tabulatedFilters() {
-  static const std::vector<PixelFilter> filters = {
-      pixelFilterFromName("gaussian"), pixelFilterFromName("mitchell"), pixelFilterFromName("blackman-harris"),
-      pixelFilterFromName("box", 1.0), pixelFilterFromName("mitchell", 0.75), pixelFilterFromName("gaussian", 3.0)};
+  static const std::vector<PixelFilter> filters = {pixelFilterFromName("gaussian"),        pixelFilterFromName("mitchell"),
+                                                   pixelFilterFromName("blackman-harris"), pixelFilterFromName("box", 1.0),
+                                                   pixelFilterFromName("mitchell", 0.75),  pixelFilterFromName("gaussian", 3.0)};
   return filters;
 }
 std::string label(const PixelFilter& f) { return pixelFilterSummary(f); }
@@ -155,9 +155,10 @@ TEST_P(PixelFilterTableTest, SamplesInvertAndReportTheirPdf) {
   EXPECT_NEAR(back.x, 0.3f, 2e-5f);
   EXPECT_NEAR(back.y, 0.8f, 2e-5f);
   vec2 offset = s.point - vec2(0.5f);
-  EXPECT_NEAR(s.weight,
-              pixelFilterValue(t.header, offset) / pixelFilterPdf(table, t.header, offset) * t.header.invIntegral * t.header.invIntegral,
-              1e-3f * std::abs(s.weight));
+  EXPECT_NEAR(
+      s.weight,
+      pixelFilterValue(t.header, offset) / pixelFilterPdf(table, t.header, offset) * t.header.invIntegral * t.header.invIntegral,
+      1e-3f * std::abs(s.weight));
 }
 
 TEST_P(PixelFilterTableTest, WeightsAreNearlyConstantInMagnitude) {

@@ -104,8 +104,8 @@ std::vector<uvec2> pixelPoints(uint32_t sampler, uint32_t pixel, uint32_t replic
   for (uint32_t i = 0; i < (1u << k); ++i) {
     uint32_t sampleIndex = i * shape.replicates + replicate;
     SampleStream s{streamKey(sampler, 9u, pixel, sampleIndex, shape.replicates), sampleIndex, pixel};
-    pts.push_back(uvec2(bitsOf(sampleDimension(sampler, s, 2 * pair, shape)),
-                        bitsOf(sampleDimension(sampler, s, 2 * pair + 1, shape))));
+    pts.push_back(
+        uvec2(bitsOf(sampleDimension(sampler, s, 2 * pair, shape)), bitsOf(sampleDimension(sampler, s, 2 * pair + 1, shape))));
   }
   return pts;
 }
@@ -120,8 +120,8 @@ TEST(Samplers, EveryPairOfAPixelIsStratified) {
           for (uint32_t pair : {0u, 1u, bounceDim(0, kDimBsdf) / 2, bounceDim(2, kDimLightPoint) / 2, lightDim(1, 3, 1) / 2}) {
             for (uint32_t k : {2u, 4u, 6u}) {
               EXPECT_TRUE(isNet(pixelPoints(sampler, pixel, replicate, pair, k, shape), k))
-                  << "sampler " << sampler << " replicates " << replicates << " pixel " << pixel << " replicate "
-                  << replicate << " pair " << pair << " k " << k;
+                  << "sampler " << sampler << " replicates " << replicates << " pixel " << pixel << " replicate " << replicate
+                  << " pair " << pair << " k " << k;
             }
           }
         }

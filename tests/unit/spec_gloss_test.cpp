@@ -50,13 +50,17 @@ TEST(SpecGloss, TexturesAreBakedPerTexel) {
   // A 2 x 1 diffuse texture (red, then black) and a specular-glossiness texture (dielectric 0.04 with glossiness
   // 1, then gold with glossiness 0.5): the baked texels are the conversion of each pair.
   auto dir = test::makeTempDir("specgloss");
-  auto srgb = [](float x) { return uint8_t(std::lround(255.0f * (x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f))); };
+  auto srgb = [](float x) {
+    return uint8_t(std::lround(255.0f * (x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f)));
+  };
   std::string diffuse = test::writePng(dir, "diffuse", 2, 1, {255, 0, 0, 255, 0, 0, 0, 200});
-  std::string sg = test::writePng(dir, "sg", 2, 1, {srgb(0.04f), srgb(0.04f), srgb(0.04f), 255, srgb(0.9f), srgb(0.6f), srgb(0.3f), 128});
+  std::string sg =
+      test::writePng(dir, "sg", 2, 1, {srgb(0.04f), srgb(0.04f), srgb(0.04f), 255, srgb(0.9f), srgb(0.6f), srgb(0.3f), 128});
   std::string material = R"({"extensions":{"KHR_materials_pbrSpecularGlossiness":{"diffuseTexture":{"index":0},
     "specularGlossinessTexture":{"index":1}}}})";
-  std::string extra = std::string(kRequired) + R"(,"images":[{"uri":")" + diffuse + R"("},{"uri":")" + sg +
-                      R"("}],"samplers":[{"magFilter":9728,"minFilter":9728}],"textures":[{"source":0,"sampler":0},{"source":1,"sampler":0}])";
+  std::string extra =
+      std::string(kRequired) + R"(,"images":[{"uri":")" + diffuse + R"("},{"uri":")" + sg +
+      R"("}],"samplers":[{"magFilter":9728,"minFilter":9728}],"textures":[{"source":0,"sampler":0},{"source":1,"sampler":0}])";
   Scene s = loadGltf(test::writeQuadsGltf(dir, "baked", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
   ASSERT_EQ(s.textures.size(), 4u);
   const Material& m = s.materials[0];
@@ -71,7 +75,7 @@ TEST(SpecGloss, TexturesAreBakedPerTexel) {
   EXPECT_NEAR(left.g, 0.0f, 0.01f);
   EXPECT_NEAR(leftMr.b, 0.0f, 0.01f);  // metallic
   EXPECT_NEAR(leftMr.g, 0.0f, 0.01f);  // roughness 1 - glossiness 1
-  EXPECT_NEAR(right.r, 0.9f, 0.01f);  // gold
+  EXPECT_NEAR(right.r, 0.9f, 0.01f);   // gold
   EXPECT_NEAR(right.b, 0.3f, 0.01f);
   EXPECT_NEAR(right.a, 200.0f / 255.0f, 0.01f) << "the diffuse texture's alpha";
   EXPECT_NEAR(rightMr.b, 1.0f, 0.01f);
@@ -86,8 +90,9 @@ TEST(SpecGloss, BakedAtTheFinerGridAndNeverReachableByIndex) {
   std::string sg = test::writePng(dir, "sg", 4, 1, {10, 10, 10, 255, 10, 10, 10, 0, 10, 10, 10, 255, 10, 10, 10, 0});
   std::string material = R"({"extensions":{"KHR_materials_pbrSpecularGlossiness":{"diffuseTexture":{"index":0},
     "specularGlossinessTexture":{"index":1}}}})";
-  std::string extra = std::string(kRequired) + R"(,"images":[{"uri":")" + diffuse + R"("},{"uri":")" + sg +
-                      R"("}],"samplers":[{"magFilter":9728,"minFilter":9728}],"textures":[{"source":0,"sampler":0},{"source":1,"sampler":0}])";
+  std::string extra =
+      std::string(kRequired) + R"(,"images":[{"uri":")" + diffuse + R"("},{"uri":")" + sg +
+      R"("}],"samplers":[{"magFilter":9728,"minFilter":9728}],"textures":[{"source":0,"sampler":0},{"source":1,"sampler":0}])";
   Scene s = loadGltf(test::writeQuadsGltf(dir, "grid", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
   const Texture& mr = s.textures[s.materials[0].metallicRoughnessTexture.texture];
   ASSERT_EQ(mr.width, 4u);

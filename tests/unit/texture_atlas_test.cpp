@@ -52,7 +52,8 @@ TEST(TextureAtlas, TexturesAndGuttersLandWholeWithoutOverlap) {
         size_t at = (size_t(p.layer) * atlas.pageHeight + size_t(int(p.y) + y)) * atlas.pageWidth + size_t(int(p.x) + x);
         EXPECT_EQ(owner[at], -1) << "texture " << k << " overlaps texture " << owner[at];
         owner[at] = int(k);
-        uint32_t want = t.texels[size_t(wrapped(y, int(t.height), t.wrapT)) * t.width + size_t(wrapped(x, int(t.width), t.wrapS))];
+        uint32_t want =
+            t.texels[size_t(wrapped(y, int(t.height), t.wrapT)) * t.width + size_t(wrapped(x, int(t.width), t.wrapS))];
         EXPECT_EQ(atlas.texels[at], want) << "texture " << k << " texel (" << x << ", " << y << ")";
       }
   }

@@ -3,7 +3,7 @@
 #   blender -b --factory-startup --python render_cycles.py -- SCENE OUT.exr --width W --height H
 #           (--spp N | --time-limit S) [--seed S] [--threads T] [--max-bounces B] [--min-bounces M] [--json OUT.json]
 # Materials are rebuilt from the glTF file itself rather than taken from Blender's importer, so that what Cycles
-# shades is what vkmc shades (README "Materials" and "Lights"):
+# shades is what vkmc shades (docs/manual/scenes.md):
 #   - metallic 0 and KHR_materials_specular.specularFactor 0: vkmc's BRDF is exactly baseColor/pi, which is
 #     Cycles' Diffuse BSDF with roughness 0 (Lambert; roughness > 0 would be Oren-Nayar);
 #   - anything else: the Principled BSDF (GGX, metallic, roughness, specular 0.5 x specularFactor, i.e. the same

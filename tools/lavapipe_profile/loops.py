@@ -2,7 +2,7 @@
 """The largest loops of each JIT region that dump_jit.py wrote (OUT/region_*.asm): per loop its instructions,
 stack-frame references (spills and reloads) and selects (blends), and the whole region's size. A loop is the span
 of a backward jump; the walk's loop in a trace kernel is its region's longest. Usage: loops.py OUT [--top N].
-Counts, unlike the clock, do not move with this shared machine's load (docs/performance.md, "Traversal against
+Counts, unlike the clock, do not move with this shared machine's load (docs/journal/performance.md, "Traversal against
 Embree")."""
 import bisect
 import glob

@@ -88,8 +88,8 @@ std::vector<Peer> makePeers(vk::Context& ctx, const Scene& scene, const Options&
     p.tracer = std::make_unique<TinybvhTracer>(ctx, "tinybvh_ailalaine", kSpirv_tinybvh_ailalaine, 32u, al.nodes, al.indices,
                                                al.vertices);
     if (o.walkStats)
-      p.counting = std::make_unique<TinybvhTracer>(ctx, "tinybvh_ailalaine_stats", kSpirv_tinybvh_ailalaine_stats, 32u,
-                                                   al.nodes, al.indices, al.vertices, true);
+      p.counting = std::make_unique<TinybvhTracer>(ctx, "tinybvh_ailalaine_stats", kSpirv_tinybvh_ailalaine_stats, 32u, al.nodes,
+                                                   al.indices, al.vertices, true);
     peers.push_back(std::move(p));
   }
   {
@@ -121,7 +121,8 @@ void printWalkStats(vk::Context& ctx, const GpuScene& gpuScene, const std::vecto
     peers[k].counting->trace(rays);
     TinybvhTracer::WalkStats w = peers[k].counting->walkStats();
     std::printf("  walk per ray, %s: %.2f iterations (%.2f triangle tests); slowest lane of %u: %.2f (%.2f triangle tests)\n",
-                peers[k].label.c_str(), w.iterations, w.triangleTests, ctx.subgroupSize(), w.slowestLaneIterations, w.slowestLaneTriangleTests);
+                peers[k].label.c_str(), w.iterations, w.triangleTests, ctx.subgroupSize(), w.slowestLaneIterations,
+                w.slowestLaneTriangleTests);
     out["tinybvh"][k]["walk_per_ray"] = {{"iterations", w.iterations},
                                          {"triangle_tests", w.triangleTests},
                                          {"slowest_lane_iterations", w.slowestLaneIterations},
@@ -160,14 +161,15 @@ void reportPeers(const std::vector<Peer>& peers, const std::vector<glm::vec4>& h
     if (a.agree != hits.size())
       std::printf("%-64s rays that differ: %zu hit nearer, %zu farther, %zu hit where vkmc misses, %zu miss where it hits\n", "",
                   a.nearer, a.farther, a.extraHits, a.misses);
-    out["tinybvh"].push_back({{"kernel", p.label},
-                              {"mrays_per_second", median(p.mrays)},
-                              {"ratio_to_vkmc", ratio},
-                              {"agreement", agree},
-                              {"differ", {{"nearer", a.nearer}, {"farther", a.farther}, {"extra_hits", a.extraHits}, {"misses", a.misses}}},
-                              {"same_triangle", sameTriangle},
-                              {"build_seconds", p.buildSeconds},
-                              {"node_bytes", p.nodeBytes}});
+    out["tinybvh"].push_back(
+        {{"kernel", p.label},
+         {"mrays_per_second", median(p.mrays)},
+         {"ratio_to_vkmc", ratio},
+         {"agreement", agree},
+         {"differ", {{"nearer", a.nearer}, {"farther", a.farther}, {"extra_hits", a.extraHits}, {"misses", a.misses}}},
+         {"same_triangle", sameTriangle},
+         {"build_seconds", p.buildSeconds},
+         {"node_bytes", p.nodeBytes}});
   }
 }
 
@@ -179,8 +181,9 @@ nlohmann::json runScene(vk::Context& ctx, const std::string& path, const Options
   double vkmcBuild = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   GpuScene gpuScene(ctx, scene, bvh);
   RayTracer tracer(ctx, gpuScene);
-  std::vector<gpu::TestRay> rays =
-      o.raysPath.empty() ? makeBenchmarkRays(scene, bvh, tracer, uint32_t(o.width), uint32_t(o.height)).diffuse : readRays(o.raysPath);
+  std::vector<gpu::TestRay> rays = o.raysPath.empty()
+                                       ? makeBenchmarkRays(scene, bvh, tracer, uint32_t(o.width), uint32_t(o.height)).diffuse
+                                       : readRays(o.raysPath);
   if (rays.empty()) throw Error(path + ": no rays to trace");
   std::string name = std::filesystem::path(path).stem().string();
   if (!o.dumpDir.empty()) writeRays((std::filesystem::path(o.dumpDir) / (name + ".rays")).string(), rays);
@@ -234,9 +237,12 @@ int main(int argc, char** argv) {
     nlohmann::json results = nlohmann::json::array();
     for (const std::string& path : o.scenes) results.push_back(runScene(ctx, path, o));
     if (!o.jsonPath.empty())
-      writeFileAtomically(o.jsonPath, nlohmann::json{{"device", ctx.deviceName()}, {"tinybvh_build", o.hq ? "BuildHQ" : "Build"},
-                                                     {"runs", o.runs}, {"results", results}}
-                                              .dump(2) + "\n");
+      writeFileAtomically(
+          o.jsonPath,
+          nlohmann::json{
+              {"device", ctx.deviceName()}, {"tinybvh_build", o.hq ? "BuildHQ" : "Build"}, {"runs", o.runs}, {"results", results}}
+                  .dump(2) +
+              "\n");
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "vkmc-tinybvh-baseline: %s\n", e.what());

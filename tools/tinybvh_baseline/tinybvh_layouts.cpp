@@ -15,7 +15,8 @@ namespace {
 
 std::vector<tinybvh::bvhvec4> triangleSoup(const Scene& scene) {
   std::vector<tinybvh::bvhvec4> v(scene.positions.size());
-  for (size_t i = 0; i < v.size(); ++i) v[i] = tinybvh::bvhvec4(scene.positions[i].x, scene.positions[i].y, scene.positions[i].z, 0);
+  for (size_t i = 0; i < v.size(); ++i)
+    v[i] = tinybvh::bvhvec4(scene.positions[i].x, scene.positions[i].y, scene.positions[i].z, 0);
   if (v.empty()) throw Error("tinybvh: a scene without triangles");
   return v;
 }
