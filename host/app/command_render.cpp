@@ -121,7 +121,11 @@ void applyEstimatorFlag(EstimatorConfig& e, const EstimatorParam& p, const std::
   try {
     p.setFromJson(e, value);
   } catch (const Error& err) {
-    throw Error(p.flag() + ": " + err.what());
+    // The key's own message names the key; the flag is what the user typed.
+    std::string what = err.what();
+    const std::string keyPrefix = std::string(p.key) + ": ";
+    if (what.rfind(keyPrefix, 0) == 0) what.erase(0, keyPrefix.size());
+    throw Error(p.flag() + ": " + what);
   }
 }
 
@@ -167,8 +171,6 @@ void fillOptions(RenderArgs& a, const CLI::App& cmd) {
   ro.workgroupSize = parseCountOrAuto(a.workgroup, "--workgroup");
   ro.wavefrontPaths = parseCountOrAuto(a.wavefront, "--wavefront");
   ro.stageTimes = parseOnOffAuto(a.stageTimes, "--stage-times");
-  if (!std::isfinite(a.exposure) || std::abs(a.exposure) > 100.0f)
-    throw Error("--exposure must be a finite number of stops in [-100, 100]");
 }
 
 // --resume without a scene: the render's options and outputs come from the checkpoint; only the outputs and the
@@ -210,6 +212,8 @@ int run(RenderArgs& a, const CLI::App& cmd) {
     fillOptions(a, cmd);
   }
   const RenderOptions& ro = a.options;
+  if (!std::isfinite(a.exposure) || std::abs(a.exposure) > 100.0f)
+    throw Error("--exposure must be a finite number of stops in [-100, 100]");
   // A resumed render goes on writing checkpoints where it was resumed from, unless told otherwise.
   const std::string checkpoint = !a.checkpoint.empty() ? a.checkpoint : a.resume;
   if (!(a.checkpointEvery > 0.0 && a.checkpointEvery <= 1e6))

@@ -33,6 +33,11 @@ namespace vkmc {
 namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+std::string formatNumber(double v) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", v);
+  return text;
+}
 }  // namespace
 
 void validateOptions(const RenderOptions& o) {
@@ -44,7 +49,8 @@ void validateOptions(const RenderOptions& o) {
   if (o.lookFrom.has_value() != o.lookAt.has_value()) throw Error("--look-from and --look-at go together");
   for (const auto& p : {o.lookFrom, o.lookAt})
     if (p && !glm::all(glm::lessThanEqual(glm::abs(*p), glm::vec3(gpu::kMaxSceneCoordinate))))
-      throw Error("--look-from and --look-at must be finite and within +-1e11 (float ray tests overflow beyond)");
+      throw Error("--look-from and --look-at must be finite and within +-" + formatNumber(gpu::kMaxSceneCoordinate) +
+                  " (float ray tests overflow beyond)");
   if (!(o.fovDegrees > 0.0f && o.fovDegrees < 179.0f)) throw Error("--fov must be in (0, 179) degrees");
   for (int c = 0; c < 3 && o.background; ++c)
     if (!((*o.background)[c] >= 0.0f) || !std::isfinite((*o.background)[c]))
@@ -241,7 +247,8 @@ Framing frameScene(const RenderOptions& options, const Scene& scene) {
   // Ray origins within 10x the coordinate range keep the traversal's slab distances and triangle products finite
   // (an automatic camera for a scene at the range's edge, or at an extreme aspect ratio, could sit further out).
   if (!glm::all(glm::lessThanEqual(glm::abs(f.camera.position), glm::vec3(10.0f * gpu::kMaxSceneCoordinate))))
-    throw Error("the camera would sit beyond +-1e12, where float ray tests overflow: place it with --look-from");
+    throw Error("the camera would sit beyond +-" + formatNumber(10.0 * gpu::kMaxSceneCoordinate) +
+                ", where float ray tests overflow: place it with --look-from");
   return f;
 }
 
@@ -579,9 +586,10 @@ void addLearnedFields(json& j, const RenderOutcome& r) {
   if (r.roulette) {
     json scales = json::array();
     for (float k : r.roulette->scale) scales.push_back(std::isfinite(k) ? json(k) : json("none"));
-    j["efficiency_roulette"] = {{"pilot_seconds", r.pilotSeconds},
-                                {"scale_per_depth", scales},
-                                {"formula", "survival = min(scale[depth] * max(throughput), 0.999)"}};
+    j["efficiency_roulette"] = {
+        {"pilot_seconds", r.pilotSeconds},
+        {"scale_per_depth", scales},
+        {"formula", "survival = min(scale[depth] * max(throughput), " + formatNumber(gpu::kRouletteMaxSurvival) + ")"}};
   }
   if (!r.ears) return;
   j["ears"] = earsJson(*r.ears);

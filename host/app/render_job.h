@@ -21,9 +21,8 @@
 
 namespace vkmc {
 
-// Limits and defaults of a render's size, used by validation, the command line's help and the report.
-constexpr uint32_t kMaxImageSide = 16384;
-constexpr uint32_t kMaxSpp = 1u << 24;
+// Defaults of a render's size, used by validation, the command line's help and the report (the limits:
+// render_settings.h).
 constexpr uint32_t kDefaultImageWidth = 256;
 constexpr uint32_t kDefaultSpp = 64;
 

@@ -113,12 +113,12 @@ constexpr EstimatorParam kParams[] = {
                            "samples not learned (light_samples, as without ears), 1 = learned shadow-ray roulette alone"),
     choice<&C::earsFallback>(
         "ears_fallback", EarsFallback::Auto, kEarsFallbackNames, -1,
-        "rr ears: after a warm-up pass of EARS, 4 samples a pixel of EARS and a full pass of "
+        "rr ears: after a warm-up pass of EARS, a few samples a pixel of EARS and a full pass of "
         "throughput roulette are measured (EARS again on its next pass where it was close); auto: "
-        "EARS renders the rest where its efficiency, 1/(variance x seconds) a sample, reads above 1.25x throughput "
-        "roulette's, else throughput roulette; "
+        "EARS renders the rest where its efficiency, 1/(variance x seconds) a sample, beats throughput "
+        "roulette's by the guard's margin (the report's ears.guard gives both readings), else throughput roulette; "
         "never: EARS throughout; always: throughput roulette after the comparison. Under a time "
-        "budget, learning and comparing may take a twentieth of it: where they would not fit, auto and "
+        "budget, learning and comparing may take a small share of it: where they would not fit, auto and "
         "always render with throughput roulette uncompared, never with EARS trained that far"),
     count<&C::lightSamples>("light_samples", 1, 1, 4096, SPEC_LIGHT_SAMPLES, "light samples per hit below --split-depth"),
     count<&C::splitDepth>("split_depth", 1, 0, 100000, SPEC_SPLIT_DEPTH,

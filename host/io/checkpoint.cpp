@@ -94,7 +94,7 @@ Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
   try {
     c.config = header.at("config");
     const uint32_t width = header.at("width"), height = header.at("height");
-    if (width == 0 || height == 0 || width > 16384 || height > 16384) throw fail("has an impossible image size");
+    if (width == 0 || height == 0 || width > kMaxImageSide || height > kMaxImageSide) throw fail("has an impossible image size");
     c.state.film = Film(width, height);
     c.state.film.replicateVariance = header.at("replicate_variance");
     c.state.film.replicates = header.at("replicates");

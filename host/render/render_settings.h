@@ -40,6 +40,10 @@ struct RenderSettings {
   bool stageTimes = true;           // a timestamp pair around every dispatch (RenderStats::stageSeconds); false: one a submission
 };
 
+// The largest image side and sample count a render accepts (the command line, checkpoints and studies check them).
+constexpr uint32_t kMaxImageSide = 16384;
+constexpr uint32_t kMaxSpp = 1u << 24;
+
 struct RenderStats {
   double seconds = 0.0;     // wall time of the sample passes
   double gpuSeconds = 0.0;  // the command buffers' GPU time, one timestamp pair each

@@ -9,10 +9,7 @@
 namespace vkmc {
 namespace {
 
-struct ExtensionRow {
-  std::string_view name;
-  std::string_view ignored;  // empty: implemented in full
-};
+using ExtensionRow = GltfExtensionSupport;  // ignored empty: implemented in full
 
 constexpr ExtensionRow kExtensions[] = {
     {"KHR_materials_emissive_strength", ""},
@@ -49,6 +46,8 @@ const ExtensionRow* find(const std::string& name) {
 }
 
 }  // namespace
+
+std::span<const GltfExtensionSupport> knownExtensions() { return kExtensions; }
 
 std::vector<std::string> checkExtensions(const std::vector<std::string>& used, const std::vector<std::string>& required) {
   for (const std::string& name : required) {
