@@ -2,6 +2,11 @@
 // furnace its image mean and four quadrants match L = 2 exactly, and on the Cornell box it matches the baseline
 // estimator (power-heuristic MIS, BSDF sampling, throughput roulette), by z-tests at 5 sigma sized from the
 // measured variances. Fixed seeds make them stable; the two renders use independent seeds.
+// Sized by samples, not seconds. The biases they catch are the estimators' classic slips, each many sigmas at these
+// counts: a roulette or splitting weight without its 1/(1 - q), 1/q or 1/K (tens of percent of L), a MIS pair whose
+// weights do not sum to one (a light or a plate counted twice or not at all), a light pdf in the wrong measure
+// (area against solid angle: off by cos/r^2 across the image), a shadow-ray or camera-ray roulette that drops what
+// it terminates, and a stiff furnace whose paths end early (the last two tests resolve 2.5% of L = 100).
 #include <gtest/gtest.h>
 
 #include "support/param_name.h"
