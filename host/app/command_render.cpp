@@ -46,12 +46,19 @@ struct RenderArgs {
 };
 
 // SIGINT and SIGTERM during a checkpointed render: the first asks the render to stop after the pass in flight
-// (the handler only stores the signal), a second one kills as usual.
+// (the handler only stores the signal), a second one kills as usual, output temporaries removed first. It is the
+// process's one handler for them, whichever thread a signal lands in (lavapipe's workers too): a checkpoint or an
+// output being written is finished, not cut (io/output_files.cpp keeps it).
 std::atomic<int> stopSignal{0};
 static_assert(std::atomic<int>::is_always_lock_free, "stored from a signal handler");
 extern "C" void requestStop(int sig) {
-  stopSignal.store(sig);
+  if (stopSignal.load() == 0) {
+    stopSignal.store(sig);
+    return;
+  }
+  removePendingTemporaries();
   ::signal(sig, SIG_DFL);
+  ::raise(sig);
 }
 
 void catchStopSignals() {
@@ -64,6 +71,11 @@ void catchStopSignals() {
     sigemptyset(&now.sa_mask);
     sigaction(sig, &now, nullptr);
   }
+}
+
+bool sameFile(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return std::filesystem::equivalent(a, b, ec) && !ec;
 }
 
 std::string absolutePath(const std::string& path) {
@@ -195,16 +207,86 @@ void optionsFromCheckpoint(RenderArgs& a, const CLI::App& cmd, const nlohmann::j
   if (!cmd.count("--exposure")) a.exposure = outputs.value("exposure", a.exposure);
 }
 
-int run(RenderArgs& a, const CLI::App& cmd) {
+// Under mpirun rank 0 reads the checkpoint and tells the others (their hosts may not see the file).
+std::optional<Checkpoint> readResume(const std::string& path) {
+  if (path.empty()) return std::nullopt;
   const RankGroup& group = RankGroup::world();
-  std::optional<Checkpoint> resume;
-  if (!a.resume.empty()) {
-    // Under mpirun rank 0 reads the checkpoint and tells the others (their hosts may not see the file).
-    std::string bytes;
-    if (group.isRoot()) bytes = encodeCheckpoint(readCheckpoint(a.resume));
-    group.broadcast(bytes);
-    resume = decodeCheckpoint(bytes, a.resume);
+  std::string bytes;
+  if (group.isRoot()) bytes = encodeCheckpoint(readCheckpoint(path));
+  group.broadcast(bytes);
+  return decodeCheckpoint(bytes, path);
+}
+
+// Output folders are checked before rendering, so a bad path fails in a second, not after the render (by rank 0,
+// which writes them). A checkpoint path that holds something else (a user's file) is not vkmc's to overwrite, nor
+// later to remove.
+void checkOutputs(const RenderArgs& a, const std::string& checkpoint) {
+  if (!RankGroup::world().isRoot()) return;
+  const RenderOptions& ro = a.options;
+  checkOutputPaths({{"--output", a.out}, {"--png", a.png}, {"--report", a.report}, {"--checkpoint", checkpoint}},
+                   {ro.scenePath, ro.referencePath, a.estimatorFile, ro.environmentPath});
+  std::error_code ec;
+  if (!checkpoint.empty() && std::filesystem::exists(std::filesystem::symlink_status(checkpoint, ec)) &&
+      !(!a.resume.empty() && sameFile(checkpoint, a.resume)) && !startsLikeCheckpoint(checkpoint))
+    throw Error("--checkpoint '" + checkpoint + "' exists and is not a vkmc checkpoint: vkmc will not overwrite it");
+}
+
+RunControl runControl(const RenderArgs& a, const CLI::App& cmd, std::optional<Checkpoint>& resume,
+                      const std::string& checkpoint) {
+  RunControl control;
+  control.checkpointPath = checkpoint;
+  control.checkpointEvery = a.checkpointEvery;
+  if (!cmd.count("--checkpoint-every")) control.checkpointShare = 0.02;  // the default promises at most 2% of the time
+  control.outputs = {{"output", absolutePath(a.out)},
+                     {"png", absolutePath(a.png)},
+                     {"report", absolutePath(a.report)},
+                     {"exposure", a.exposure}};
+  if (resume) control.resumeConfig = &resume->config, control.resumeState = &resume->state;
+  if (checkpoint.empty()) return control;
+  control.stop = &stopSignal;
+  catchStopSignals();
+  // For tests of the graceful stop: after the first checkpoint, announce it and wait for SIGINT or SIGTERM, so the
+  // signal lands in a render that is certainly still running.
+  if (std::getenv("VKMC_HOLD_AFTER_CHECKPOINT"))
+    control.afterCheckpoint = [] {
+      std::fprintf(stderr, "vkmc: checkpoint written; holding until SIGINT or SIGTERM (VKMC_HOLD_AFTER_CHECKPOINT)\n");
+      while (stopSignal.load() == 0) ::usleep(10000);
+    };
+  return control;
+}
+
+// All outputs or none: the EXR is not replaced when the PNG or the report cannot be written. An interrupted render
+// writes the samples it finished, then the checkpoint to resume it from: a checkpoint that cannot be written (a full
+// disk, a read-only folder) costs the resume, never the samples done. Returns whether the checkpoint was written.
+bool writeOutputs(const RenderArgs& a, const RenderOutcome& result, const nlohmann::json& report, const std::string& checkpoint) {
+  OutputSet outputs;
+  outputs.add(a.out, encodeFilmExr(result.film));
+  if (!a.png.empty()) outputs.add(a.png, encodeFilmPng(result.film, a.exposure));
+  if (!a.report.empty()) outputs.add(a.report, report.dump(2) + "\n");
+  outputs.commit();
+  if (!result.interrupted) return false;
+  try {
+    writeFileAtomically(checkpoint, encodeRenderCheckpoint(result));
+    return true;
+  } catch (const Error& e) {
+    std::fprintf(stderr, "vkmc: warning: %s: the samples done are in '%s', but the render cannot be resumed from here\n",
+                 e.what(), a.out.c_str());
+    return false;
   }
+}
+
+// A finished render needs its checkpoint no more (its outputs hold everything): removed where vkmc wrote it (this
+// run, or the run it resumed from that path), and never a file that is not a checkpoint.
+void removeFinishedCheckpoint(const RenderArgs& a, const RenderOutcome& result, const std::string& checkpoint) {
+  std::error_code ec;
+  const bool ours = result.checkpointsWritten > 0 || (!a.resume.empty() && sameFile(checkpoint, a.resume));
+  if (ours && std::filesystem::is_regular_file(std::filesystem::symlink_status(checkpoint, ec)) &&
+      startsLikeCheckpoint(checkpoint))
+    std::filesystem::remove(checkpoint, ec);
+}
+
+int run(RenderArgs& a, const CLI::App& cmd) {
+  std::optional<Checkpoint> resume = readResume(a.resume);
   if (a.options.scenePath.empty()) {
     if (!resume) throw Error("render needs a scene (or --resume CHECKPOINT)");
     optionsFromCheckpoint(a, cmd, resume->config);
@@ -218,62 +300,29 @@ int run(RenderArgs& a, const CLI::App& cmd) {
   const std::string checkpoint = !a.checkpoint.empty() ? a.checkpoint : a.resume;
   if (!(a.checkpointEvery > 0.0 && a.checkpointEvery <= 1e6))
     throw Error("--checkpoint-every must be a number of seconds in (0, 1e6]");
-  // Output folders are checked before rendering, so a bad path fails in a second, not after the render (by rank 0,
-  // which writes them).
-  if (group.isRoot())
-    checkOutputPaths({{"--output", a.out}, {"--png", a.png}, {"--report", a.report}, {"--checkpoint", checkpoint}},
-                     {ro.scenePath, ro.referencePath, a.estimatorFile, ro.environmentPath});
-
-  RunControl control;
-  control.checkpointPath = checkpoint;
-  control.checkpointEvery = a.checkpointEvery;
-  if (!cmd.count("--checkpoint-every")) control.checkpointShare = 0.02;  // the default promises at most 2% of the time
-  control.outputs = {{"output", absolutePath(a.out)},
-                     {"png", absolutePath(a.png)},
-                     {"report", absolutePath(a.report)},
-                     {"exposure", a.exposure}};
-  if (resume) control.resumeConfig = &resume->config, control.resumeState = &resume->state;
-  if (!checkpoint.empty()) {
-    control.stop = &stopSignal;
-    catchStopSignals();
-    // For tests of the graceful stop: after the first checkpoint, announce it and wait for SIGINT or SIGTERM, so
-    // the signal lands in a render that is certainly still running.
-    if (std::getenv("VKMC_HOLD_AFTER_CHECKPOINT"))
-      control.afterCheckpoint = [] {
-        std::fprintf(stderr, "vkmc: checkpoint written; holding until SIGINT or SIGTERM (VKMC_HOLD_AFTER_CHECKPOINT)\n");
-        while (stopSignal.load() == 0) ::usleep(10000);
-      };
-  }
+  checkOutputs(a, checkpoint);
+  RunControl control = runControl(a, cmd, resume, checkpoint);
   vk::Context ctx;
   RenderOutcome result = runRender(ctx, ro, control);
-  if (!group.isRoot()) return 0;  // rank 0 holds the film and writes every output
+  if (!RankGroup::world().isRoot()) return 0;  // rank 0 holds the film and writes every output
   nlohmann::json j = makeReport(ro, result);
   j["output"] = a.out;
   if (!checkpoint.empty()) j["checkpoint"] = checkpoint;
-  // All outputs or none: the EXR is not replaced when the PNG or the report cannot be written. An interrupted
-  // render writes the samples it finished and, with them, the checkpoint to resume it from.
-  OutputSet outputs;
-  outputs.add(a.out, encodeFilmExr(result.film));
-  if (!a.png.empty()) outputs.add(a.png, encodeFilmPng(result.film, a.exposure));
-  if (!a.report.empty()) outputs.add(a.report, j.dump(2) + "\n");
-  if (result.interrupted) outputs.add(checkpoint, encodeRenderCheckpoint(result));
-  outputs.commit();
+  const bool checkpointWritten = writeOutputs(a, result, j, checkpoint);
   if (!a.quiet) std::cout << summaryText(ro, result) << "output      " << a.out << "\n";
   for (const auto& w : result.warnings) std::fprintf(stderr, "vkmc: warning: %s\n", w.c_str());
-  if (result.interrupted) {
-    const int sig = stopSignal.load();
-    std::fprintf(
-        stderr,
-        "vkmc: interrupted by %s after %u of %u spp: wrote '%s' and the checkpoint '%s' (resume with: vkmc render --resume %s)\n",
-        sig == SIGTERM ? "SIGTERM" : "SIGINT", result.stats.samplesPerPixel, ro.spp, a.out.c_str(), checkpoint.c_str(),
-        checkpoint.c_str());
-    return 128 + sig;
+  if (!result.interrupted) {
+    removeFinishedCheckpoint(a, result, checkpoint);
+    return 0;
   }
-  // A finished render needs its checkpoint no more (its outputs hold everything), unless it is not a file.
-  std::error_code ec;
-  if (!checkpoint.empty() && std::filesystem::is_regular_file(std::filesystem::symlink_status(checkpoint, ec)))
-    std::filesystem::remove(checkpoint, ec);
-  return 0;
+  const int sig = stopSignal.load();
+  if (checkpointWritten)
+    std::fprintf(stderr,
+                 "vkmc: interrupted by %s after %u of %u spp: wrote '%s' and the checkpoint '%s' (resume with: vkmc render "
+                 "--resume %s)\n",
+                 sig == SIGTERM ? "SIGTERM" : "SIGINT", result.stats.samplesPerPixel, ro.spp, a.out.c_str(), checkpoint.c_str(),
+                 checkpoint.c_str());
+  return 128 + sig;
 }
 
 }  // namespace

@@ -183,22 +183,9 @@ void checkResumable(const nlohmann::json& config, const nlohmann::json& options,
                 "' (its geometry, materials, lights or environment) changed since it was written");
 }
 
-// Writes a checkpoint atomically with SIGINT and SIGTERM held back, so a signal during the write is handled after
-// it (as a stop request) instead of killing the process halfway. Throws Error when the file cannot be written.
-void writeCheckpoint(const std::string& path, const std::string& bytes) {
-  sigset_t set, old;
-  sigemptyset(&set);
-  sigaddset(&set, SIGINT);
-  sigaddset(&set, SIGTERM);
-  sigprocmask(SIG_BLOCK, &set, &old);
-  try {
-    writeFileAtomically(path, bytes);
-  } catch (...) {
-    sigprocmask(SIG_SETMASK, &old, nullptr);
-    throw;
-  }
-  sigprocmask(SIG_SETMASK, &old, nullptr);
-}
+// Writes a checkpoint atomically. A stop signal meanwhile only raises the render's stop flag (command_render.cpp's
+// one handler), so the write completes and the render stops after it. Throws Error when it cannot be written.
+void writeCheckpoint(const std::string& path, const std::string& bytes) { writeFileAtomically(path, bytes); }
 
 // The camera the render looks through and the image's size.
 struct Framing {
@@ -388,7 +375,7 @@ RenderControl renderControl(const RunControl& run, RenderOutcome& out) {
   control.stop = run.stop;
   if (run.checkpointPath.empty() || !RankGroup::world().isRoot()) return control;
   control.checkpointEvery = run.checkpointEvery;
-  control.checkpoint = [&run, &out, lastEnd = Clock::now(), lastWrite = 0.0](const RenderState& now) mutable {
+  control.checkpoint = [&run, &out, lastEnd = Clock::now(), lastWrite = 0.0, warned = false](const RenderState& now) mutable {
     if (run.checkpointShare > 0.0 && since(lastEnd) * run.checkpointShare < lastWrite) return;
     auto t = Clock::now();
     try {
@@ -399,7 +386,10 @@ RenderControl renderControl(const RunControl& run, RenderOutcome& out) {
       out.checkpointSeconds += lastWrite;
       if (run.afterCheckpoint) run.afterCheckpoint();
     } catch (const Error& e) {
-      std::fprintf(stderr, "vkmc: warning: %s (the render goes on; the last checkpoint is kept)\n", e.what());
+      if (warned) return;  // said once: a full disk stays full
+      warned = true;
+      std::fprintf(stderr, "vkmc: warning: %s (the render goes on; the last checkpoint is kept; later failures unsaid)\n",
+                   e.what());
       out.warnings.push_back(std::string(e.what()) + " (the render went on)");
     }
   };

@@ -29,6 +29,9 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string readFile(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw Error("'" + path + "' is not a regular file");  // a FIFO would block the read
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error("cannot open '" + path + "'");
   std::ostringstream ss;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -55,6 +56,12 @@ void EstimatorConfig::applyJson(const nlohmann::json& j) {
 }
 
 EstimatorConfig loadEstimatorFile(const std::string& path) {
+  // A FIFO or a device would block the open or never end: only a regular file of a plausible size is read.
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw Error("estimator file '" + path + "' is not a regular file");
+  if (std::filesystem::exists(path, ec) && std::filesystem::file_size(path, ec) > (1u << 20))
+    throw Error("estimator file '" + path + "' is larger than 1 MiB");
   std::ifstream in(path);
   if (!in) throw Error("cannot open estimator file '" + path + "'");
   nlohmann::json j = nlohmann::json::parse(in, nullptr, false);

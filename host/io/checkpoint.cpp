@@ -136,4 +136,10 @@ Checkpoint readCheckpoint(const std::string& path) {
   return decodeCheckpoint(buffer.str(), path);
 }
 
+bool startsLikeCheckpoint(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(kMagicBytes, '\0');
+  return in.read(head.data(), std::streamsize(kMagicBytes)) && head == std::string_view(kMagic, kMagicBytes);
+}
+
 }  // namespace vkmc

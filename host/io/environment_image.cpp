@@ -1,21 +1,33 @@
-// Environment map reading: .hdr through stb_image's float loader, .exr through io/exr.
+// Environment map reading: .hdr through io/radiance_hdr, .exr through io/exr, each size-checked before it allocates.
 #include "io/environment_image.h"
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 
 #include "error.h"
 #include "io/exr.h"
-
-#define STB_IMAGE_STATIC
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_HDR
-#include <stb/stb_image.h>
+#include "io/radiance_hdr.h"
 
 namespace vkmc {
 
-EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees, float strength) {
+namespace {
+
+std::string readBytes(const std::string& path, uint64_t maxBytes) {
+  std::error_code ec;
+  const uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw Error("--environment: cannot open '" + path + "'");
+  if (size > maxBytes) throw Error("--environment: '" + path + "' is larger than any map vkmc can hold");
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(size, '\0');
+  if (!in.read(bytes.data(), std::streamsize(size))) throw Error("--environment: cannot read '" + path + "'");
+  return bytes;
+}
+
+}  // namespace
+
+EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees, float strength, uint64_t maxTexels) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
   if (!std::filesystem::is_regular_file(path)) throw Error("--environment: cannot open '" + path + "'");
@@ -23,17 +35,21 @@ EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees
   map.source = path;
   map.rotationDegrees = rotationDegrees;
   if (ext == ".hdr") {
-    int w = 0, h = 0, channels = 0;
-    std::unique_ptr<float, void (*)(void*)> pixels(stbi_loadf(path.c_str(), &w, &h, &channels, 3), stbi_image_free);
-    if (!pixels) throw Error("--environment: cannot read '" + path + "': " + stbi_failure_reason());
-    map.width = uint32_t(w), map.height = uint32_t(h);
-    map.radiance.resize(size_t(w) * size_t(h));
+    RadianceImage image;
+    try {
+      // A flat file holds 4 bytes a texel; a header is under 64 KiB.
+      image = decodeRadianceHdr(readBytes(path, 4 * maxTexels + (1 << 16)), path, maxTexels);
+    } catch (const Error& e) {
+      throw Error(std::string("--environment: ") + e.what());
+    }
+    map.width = image.width, map.height = image.height;
+    map.radiance.resize(size_t(image.width) * image.height);
     for (size_t i = 0; i < map.radiance.size(); ++i)
-      map.radiance[i] = glm::vec3(pixels.get()[3 * i], pixels.get()[3 * i + 1], pixels.get()[3 * i + 2]);
+      map.radiance[i] = glm::vec3(image.rgb[3 * i], image.rgb[3 * i + 1], image.rgb[3 * i + 2]);
   } else if (ext == ".exr") {
     ExrImage image;
     try {
-      image = readExr(path);
+      image = readExr(path, 3 * maxTexels);  // R, G, B; a file with more channels must be smaller
     } catch (const Error& e) {
       throw Error(std::string("--environment: ") + e.what());
     }

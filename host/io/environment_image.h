@@ -1,4 +1,4 @@
-// Environment maps from files: Radiance .hdr (stb_image) or OpenEXR (R, G, B channels), validated.
+// Environment maps from files: Radiance .hdr (io/radiance_hdr) or OpenEXR (R, G, B channels), validated.
 #pragma once
 #include <string>
 
@@ -7,7 +7,9 @@
 namespace vkmc {
 
 // Reads an equirectangular map, times `strength`, rotated by `rotationDegrees` about +Y. Throws Error with one
-// line on a missing or unreadable file, an unknown extension, or a pixel that is negative or not finite.
-EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees = 0.0f, float strength = 1.0f);
+// line on a missing, unreadable, truncated or corrupt file, an unknown extension, a map of more than maxTexels
+// texels (checked before its pixels are allocated), or a pixel that is negative or not finite.
+EnvironmentMap readEnvironmentMap(const std::string& path, float rotationDegrees = 0.0f, float strength = 1.0f,
+                                  uint64_t maxTexels = uint64_t(1) << 24);
 
 }  // namespace vkmc

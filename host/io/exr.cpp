@@ -8,6 +8,10 @@
 #include <ImfOutputFile.h>
 #include <ImfStdIO.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+
 #include "error.h"
 #include "io/output_files.h"
 
@@ -70,13 +74,24 @@ ExrImage filmToImage(const Film& film) {
 void writeFilmExr(const std::string& path, const Film& film) { writeExr(path, filmToImage(film)); }
 std::string encodeFilmExr(const Film& film) { return encodeExr(filmToImage(film)); }
 
-ExrImage readExr(const std::string& path) {
+ExrImage readExr(const std::string& path, uint64_t maxValues) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw Error("cannot read EXR '" + path + "': " + (std::filesystem::exists(path, ec) ? "not a regular file" : "no such file"));
   try {
     Imf::InputFile file(path.c_str());
     Imath::Box2i dw = file.header().dataWindow();
     ExrImage img;
-    img.width = dw.max.x - dw.min.x + 1;
-    img.height = dw.max.y - dw.min.y + 1;
+    // In 64 bits: a forged window's sides overflow int, and its size must be refused before anything is allocated.
+    const int64_t width = int64_t(dw.max.x) - dw.min.x + 1, height = int64_t(dw.max.y) - dw.min.y + 1;
+    uint64_t channels = 0;
+    for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) ++channels;
+    if (width <= 0 || height <= 0 || uint64_t(width) * uint64_t(height) * std::max<uint64_t>(channels, 1) > maxValues)
+      throw Error("cannot read EXR '" + path + "': it declares " + std::to_string(width) + "x" + std::to_string(height) +
+                  " pixels of " + std::to_string(channels) + " channels, more than the " + std::to_string(maxValues) +
+                  " values vkmc reads");
+    img.width = int(width);
+    img.height = int(height);
     Imf::FrameBuffer fb;
     for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) {
       auto& data = img.channels[it.name()];
@@ -87,6 +102,8 @@ ExrImage readExr(const std::string& path) {
     file.setFrameBuffer(fb);
     file.readPixels(dw.min.y, dw.max.y);
     return img;
+  } catch (const Error&) {
+    throw;
   } catch (const std::exception& e) {
     throw Error("cannot read EXR '" + path + "': " + e.what());
   }

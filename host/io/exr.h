@@ -23,6 +23,10 @@ void writeFilmExr(const std::string& path, const Film& film);
 void writeExr(const std::string& path, const ExrImage& image);
 std::string encodeFilmExr(const Film& film);
 std::string encodeExr(const ExrImage& image);
-ExrImage readExr(const std::string& path);
+// The most float values (pixels x channels) readExr allocates: 2 GiB, an 8192 x 8192 render with all its channels.
+constexpr uint64_t kExrMaxValues = uint64_t(1) << 29;
+// Throws vkmc::Error naming the file when it is not a regular file, not an EXR, or declares more than maxValues
+// values (checked from its header, before anything is allocated).
+ExrImage readExr(const std::string& path, uint64_t maxValues = kExrMaxValues);
 
 }  // namespace vkmc

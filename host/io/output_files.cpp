@@ -24,8 +24,7 @@ char pendingPaths[kMaxPending][4096];
 std::atomic<bool> pendingUsed[kMaxPending];
 
 void removePendingAndReraise(int sig) {
-  for (int i = 0; i < kMaxPending; ++i)
-    if (pendingUsed[i].load()) ::unlink(pendingPaths[i]);
+  removePendingTemporaries();
   std::signal(sig, SIG_DFL);
   std::raise(sig);
 }
@@ -54,15 +53,19 @@ class PendingTemporary {
   bool committed_ = false;
 };
 
-// For the duration of a commit: the cleanup handler on SIGINT, SIGTERM and SIGHUP (unless the process ignores
-// them, as under nohup), and SIGPIPE ignored so that a reader closing a FIFO early is a write error, not a kill.
+// For the duration of a commit: where SIGINT, SIGTERM or SIGHUP would kill the process (their default), the
+// cleanup handler, which removes the temporaries first. A signal the process ignores stays ignored, and one it
+// handles (a render's graceful stop) keeps its handler: that one handler serves every thread, whichever the signal
+// lands in, and the commit completes before the stop is acted on. SIGPIPE is ignored so that a reader closing a
+// FIFO early is a write error, not a kill.
 class SignalGuard {
  public:
   SignalGuard() {
     for (int s : {SIGINT, SIGTERM, SIGHUP}) {
-      void (*previous)(int) = std::signal(s, removePendingAndReraise);
-      if (previous == SIG_IGN) std::signal(s, SIG_IGN);
-      old_.push_back({s, previous});
+      struct sigaction now {};
+      sigaction(s, nullptr, &now);
+      if (now.sa_handler != SIG_DFL || (now.sa_flags & SA_SIGINFO)) continue;
+      old_.push_back({s, std::signal(s, removePendingAndReraise)});
     }
     old_.push_back({SIGPIPE, std::signal(SIGPIPE, SIG_IGN)});
   }
@@ -123,6 +126,11 @@ std::string temporaryBeside(const std::string& path, int attempt) {
 }
 
 }  // namespace
+
+void removePendingTemporaries() noexcept {
+  for (int i = 0; i < kMaxPending; ++i)
+    if (pendingUsed[i].load()) ::unlink(pendingPaths[i]);
+}
 
 void OutputSet::add(const std::string& path, std::string bytes) { files_.emplace_back(path, std::move(bytes)); }
 

@@ -2,7 +2,8 @@
 // target gets a temporary beside it, each existing non-regular target (a device, a FIFO, /dev/stdout) is written
 // directly (never renamed over: that would replace the node for every other process), and only when all of
 // them succeeded are the temporaries renamed onto their targets. A failure, SIGINT, SIGTERM or SIGHUP on the way
-// removes the temporaries and leaves every existing output as it was.
+// removes the temporaries and leaves every existing output as it was (a signal the process handles itself, as a
+// render's graceful stop, waits until the commit is done).
 #pragma once
 #include <string>
 #include <utility>
@@ -19,6 +20,9 @@ class OutputSet {
  private:
   std::vector<std::pair<std::string, std::string>> files_;
 };
+
+// Removes the temporaries of commits in flight; async-signal-safe, for a signal handler that ends the process.
+void removePendingTemporaries() noexcept;
 
 // One output, as an OutputSet of one.
 void writeFileAtomically(const std::string& path, const std::string& bytes);

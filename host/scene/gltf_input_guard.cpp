@@ -6,6 +6,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <nlohmann/json.hpp>
 
@@ -132,6 +134,50 @@ class BoundedScan : public nlohmann::json_sax<nlohmann::json> {
 
 }  // namespace
 
+namespace {
+
+uint64_t unsignedOr(const nlohmann::json& object, const char* key, uint64_t fallback) {
+  auto it = object.find(key);
+  return it != object.end() && it->is_number_unsigned() ? it->get<uint64_t>() : fallback;
+}
+
+// Every bufferView inside its buffer's declared length, checked before tinygltf reads any: it decodes an image from
+// a bufferView without checking that the view lies in its buffer (tinygltf 2.8: a crafted offset read far past it).
+void checkBufferViews(const nlohmann::json& doc) {
+  if (!doc.contains("bufferViews") || !doc["bufferViews"].is_array()) return;
+  const nlohmann::json empty = nlohmann::json::array();
+  const nlohmann::json& buffers = doc.contains("buffers") && doc["buffers"].is_array() ? doc["buffers"] : empty;
+  const nlohmann::json& views = doc["bufferViews"];
+  for (size_t v = 0; v < views.size(); ++v) {
+    if (!views[v].is_object()) continue;  // tinygltf names malformed views
+    const uint64_t buffer = unsignedOr(views[v], "buffer", UINT64_MAX);
+    char why[192];
+    if (buffer >= buffers.size() || !buffers[buffer].is_object()) {
+      std::snprintf(why, sizeof(why), "bufferView %zu names a buffer the file does not have", v);
+      throw Error(why);
+    }
+    const uint64_t offset = unsignedOr(views[v], "byteOffset", 0), length = unsignedOr(views[v], "byteLength", 0);
+    const uint64_t size = unsignedOr(buffers[buffer], "byteLength", 0);
+    if (offset > size || length > size - offset) {
+      std::snprintf(why, sizeof(why), "bufferView %zu runs past the end of buffer %llu (offset %llu + length %llu > %llu bytes)",
+                    v, (unsigned long long)buffer, (unsigned long long)offset, (unsigned long long)length,
+                    (unsigned long long)size);
+      throw Error(why);
+    }
+  }
+  if (!doc.contains("images") || !doc["images"].is_array()) return;
+  for (size_t i = 0; i < doc["images"].size(); ++i) {
+    const nlohmann::json& image = doc["images"][i];
+    if (image.is_object() && image.contains("bufferView") && unsignedOr(image, "bufferView", UINT64_MAX) >= views.size()) {
+      char why[96];
+      std::snprintf(why, sizeof(why), "image %zu names a bufferView the file does not have", i);
+      throw Error(why);
+    }
+  }
+}
+
+}  // namespace
+
 GltfJsonFacts scanGltfJson(std::string_view json, const InputLimits& limits) {
   BoundedScan scan(limits);
   if (!nlohmann::json::sax_parse(json.begin(), json.end(), &scan) || !scan.problem.empty())
@@ -144,6 +190,7 @@ GltfJsonFacts scanGltfJson(std::string_view json, const InputLimits& limits) {
     for (const auto& b : doc["buffers"])
       if (b.is_object() && b.contains("byteLength") && b["byteLength"].is_number_unsigned())
         facts.largestBuffer = std::max<uint64_t>(facts.largestBuffer, b["byteLength"].get<uint64_t>());
+  checkBufferViews(doc);
   for (auto [key, list] :
        {std::pair{"extensionsUsed", &facts.extensionsUsed}, std::pair{"extensionsRequired", &facts.extensionsRequired}})
     if (doc.contains(key) && doc[key].is_array())

@@ -34,7 +34,8 @@ struct GltfJsonFacts {
 };
 
 // Throws vkmc::Error when the JSON is malformed, nested deeper than limits.maxJsonDepth or holds more than
-// limits.maxJsonValues values.
+// limits.maxJsonValues values, or when a bufferView lies outside its buffer's declared length (before anything
+// reads one: tinygltf decodes images from bufferViews unchecked).
 GltfJsonFacts scanGltfJson(std::string_view json, const InputLimits& limits);
 
 }  // namespace vkmc

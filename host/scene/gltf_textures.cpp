@@ -71,6 +71,15 @@ bool decodeGltfImage(tinygltf::Image* image, const int imageIndex, std::string*,
   auto* decoder = static_cast<ImageDecoder*>(user);
   std::string label = "image " + std::to_string(imageIndex) + (image->name.empty() ? "" : " (" + image->name + ")");
   int w = 0, h = 0, channels = 0;
+  // PNG and JPEG only, by their signatures: stb_image knows more (GIF, BMP, PSD, TGA, Radiance HDR), some of them
+  // through decoders that loop on a cut file, and glTF allows these two.
+  const bool png = size >= 8 && std::memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0;
+  const bool jpeg = size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF;
+  if (bytes && size > 0 && !png && !jpeg) {
+    decoder->failures.push_back(label + ": neither PNG nor JPEG (the image formats vkmc reads)" +
+                                (image->mimeType.empty() ? "" : " (" + image->mimeType + ")"));
+    return true;
+  }
   if (!bytes || size <= 0 || !stbi_info_from_memory(bytes, size, &w, &h, &channels)) {
     decoder->failures.push_back(label + ": not a PNG or JPEG stb_image can read" +
                                 (image->mimeType.empty() ? "" : " (" + image->mimeType + ")"));

@@ -167,3 +167,26 @@ TEST(CliCheckpoint, AnOutputThatIsAFolderIsRefusedBeforeRendering) {
   EXPECT_NE(c.err.find("--checkpoint"), std::string::npos) << c.err;
   EXPECT_FALSE(fs::exists(dir() / "x.exr"));
 }
+
+// --checkpoint naming a file vkmc did not write: refused before the render (never overwritten), and a render that
+// wrote no checkpoint (it finished before the first) leaves an earlier checkpoint it was not resumed from alone.
+TEST(CliCheckpoint, ACheckpointPathHoldingAUsersFileIsNeverOverwrittenNorRemoved) {
+  fs::path d = dir() / "foreign";
+  fs::create_directories(d);
+  const fs::path notes = d / "notes.txt";
+  std::ofstream(notes) << "a user's file\n";
+  RunResult r = runVkmc("render " + cornell() + " --width 16 --height 16 --spp 4 -q -o " + (d / "o.exr").string() +
+                        " --checkpoint " + notes.string());
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("exists and is not a vkmc checkpoint"), std::string::npos) << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_EQ(slurp(notes), "a user's file\n");
+  EXPECT_FALSE(fs::exists(d / "o.exr"));
+  // A checkpoint of another render at the path, and a render that finishes before its first checkpoint is due.
+  const fs::path old = d / "old.ckpt";
+  std::ofstream(old, std::ios::binary) << "VKMC-CHECKPOINT\n" << std::string(64, '\0');
+  RunResult quick = runVkmc("render " + cornell() + " --width 16 --height 16 --spp 4 -q -o " + (d / "o.exr").string() +
+                            " --checkpoint " + old.string() + " --checkpoint-every 1000");
+  EXPECT_EQ(quick.code, 0) << quick.err;
+  EXPECT_TRUE(fs::exists(old)) << "removed a checkpoint this render never wrote";
+}

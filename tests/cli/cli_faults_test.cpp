@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
@@ -87,4 +89,22 @@ TEST(CliFaults, NoVulkanDriverIsOneClearLine) {
   EXPECT_NE(err.find("Vulkan"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
   EXPECT_FALSE(fs::exists(out));
+}
+
+// FIFOs (made in the test's own folder, never a /dev node) given as inputs: refused at once with one line, not
+// blocked on (an open of a FIFO waits for a writer). `timeout` turns a hang into a failure, not a stuck suite.
+TEST(CliFaults, FifosAsInputsAreRefusedNotBlockedOn) {
+  fs::path d = makeTempDir("cli-fifo");
+  const std::string fifo = (d / "pipe").string();
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const std::string out = " -o " + (d / "o.exr").string();
+  for (const std::string& args :
+       {"render " + cornell() + " --width 8 --height 8 --spp 1 -q --estimator " + fifo + out,
+        "render " + cornell() + " --width 8 --height 8 --spp 1 -q --reference " + fifo + out, "compare " + fifo + " " + fifo}) {
+    RunResult r = runShell("timeout 60 " + std::string(VKMC_BINARY) + " " + args);
+    EXPECT_NE(r.code, 124) << "blocked on the FIFO: " << args;
+    EXPECT_NE(r.code, 0) << args;
+    EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << args << "\n" << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
 }

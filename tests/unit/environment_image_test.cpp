@@ -1,6 +1,7 @@
 // Environment maps from files (host/io/environment_image.cpp): .exr and .hdr read alike, bad pixels refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -74,4 +75,58 @@ TEST(EnvironmentImage, RefusesBadPixelsAndFilesWithOneLine) {
   std::string broken = (dir() / "broken.hdr").string();
   std::ofstream(broken) << "not an image";
   EXPECT_NE(errorOf([&] { readEnvironmentMap(broken); }).find("cannot read"), std::string::npos);
+}
+
+namespace {
+// A Radiance file of width x height texels in the run-length encoding (each channel one run a row) or flat.
+std::string radianceFile(uint32_t width, uint32_t height, bool rle) {
+  std::string s = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(height) + " +X " + std::to_string(width) + "\n";
+  for (uint32_t y = 0; y < height; ++y) {
+    if (!rle) {
+      for (uint32_t x = 0; x < width; ++x) s += {char(128), char(64), char(32), char(129)};
+      continue;
+    }
+    s += {char(2), char(2), char(width >> 8), char(width & 0xff)};
+    for (char value : {char(128), char(64), char(32), char(129)})
+      for (uint32_t x = 0; x < width; x += 127) s += {char(128 + std::min(127u, width - x)), value};
+  }
+  return s;
+}
+}  // namespace
+
+// The run-length encoding decodes as the flat file does; every cut of either, and a run that overruns its row, is
+// refused with one line (stb_image 2.27 looped forever on some cuts and decoded others to black).
+TEST(EnvironmentImage, TruncatedOrCorruptRadianceFilesAreRefusedNotLoopedOnOrBlackened) {
+  const std::string rle = radianceFile(300, 3, true), flat = radianceFile(300, 3, false);
+  std::ofstream(dir() / "rle.hdr", std::ios::binary) << rle;
+  std::ofstream(dir() / "flat.hdr", std::ios::binary) << flat;
+  EnvironmentMap a = readEnvironmentMap((dir() / "rle.hdr").string()), b = readEnvironmentMap((dir() / "flat.hdr").string());
+  ASSERT_EQ(a.width, 300u);
+  EXPECT_EQ(a.radiance, b.radiance);
+  EXPECT_NEAR(a.radiance[899].y, 0.5f, 1e-6f);
+  for (const std::string* file : {&rle, &flat})
+    for (size_t cut : {size_t(20), size_t(40), file->size() / 2, file->size() - 1}) {
+      std::ofstream(dir() / "cut.hdr", std::ios::binary | std::ios::trunc) << file->substr(0, cut);
+      std::string e = errorOf([] { readEnvironmentMap((dir() / "cut.hdr").string()); });
+      EXPECT_NE(e.find("cannot read"), std::string::npos) << cut << ": " << e;
+      EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+    }
+  std::string overrun = rle;
+  overrun[overrun.find("\n-Y") + 21] = char(128 + 127);  // the first row's third run (of 46) now overruns it
+  std::ofstream(dir() / "overrun.hdr", std::ios::binary) << overrun;
+  EXPECT_NE(errorOf([] { readEnvironmentMap((dir() / "overrun.hdr").string()); }).find("overruns its scanline"),
+            std::string::npos);
+}
+
+// A 69-byte file that declares 12000 x 12000 texels is refused from its header, before its pixels are allocated.
+TEST(EnvironmentImage, AMapLargerThanTheDeviceHoldsIsRefusedBeforeAllocation) {
+  std::ofstream(dir() / "huge.hdr", std::ios::binary) << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 12000 +X 12000\n"
+                                                      << std::string(8, 'x');
+  std::string e = errorOf([] { readEnvironmentMap((dir() / "huge.hdr").string(), 0.0f, 1.0f, 1u << 20); });
+  EXPECT_NE(e.find("more than the 1048576 texels"), std::string::npos) << e;
+  const std::string exr = writeMap("wide.exr", 1.0f);  // 2 x 1 texels, 3 channels: 6 values
+  e = errorOf([&] { readEnvironmentMap(exr, 0.0f, 1.0f, 1); });
+  EXPECT_NE(e.find("more than the 3 values"), std::string::npos) << e;
+  EXPECT_NE(errorOf([&] { readExr(exr, 5); }).find("declares 2x1 pixels of 3 channels"), std::string::npos);
+  EXPECT_EQ(readExr(exr, 6).width, 2);
 }

@@ -72,6 +72,18 @@ TEST(GltfHardening, HugeAccessorCountsAndOffsetsAreRefusedNotWrapped) {
             std::string::npos);
 }
 
+// An image decoded from a bufferView that lies past its buffer: tinygltf hands the decoder a pointer 8 GiB past the
+// buffer (a crash), unless the views are checked against the buffers' declared lengths before it reads them.
+TEST(GltfHardening, AnImagesBufferViewPastItsBufferIsRefusedBeforeDecoding) {
+  const std::string image = R"(,{"buffer":0,"byteOffset":8589934592,"byteLength":16}],"images":[{"bufferView":2,)"
+                            R"("mimeType":"image/png"}],"textures":[{"source":0}],"buffers":)";
+  std::string msg = test::loadError(quadWith("image_view_offset", "],\"buffers\":", image));
+  EXPECT_NE(msg.find("bufferView 2 runs past the end of buffer 0"), std::string::npos) << msg;
+  const std::string missing = R"(],"images":[{"bufferView":7,"mimeType":"image/png"}],"buffers":)";
+  msg = test::loadError(quadWith("image_view_missing", "],\"buffers\":", missing));
+  EXPECT_NE(msg.find("image 0 names a bufferView the file does not have"), std::string::npos) << msg;
+}
+
 TEST(GltfHardening, DeeplyNestedJsonIsRefusedBeforeParsing) {
   std::string deep = std::string(20000, '[') + std::string(20000, ']');
   std::string msg = test::loadError(quadWith("deep", "\"scene\":0,", "\"scene\":0,\"extras\":" + deep + ","));

@@ -74,6 +74,20 @@ TEST(GltfTextures, UndecodableAndOversizedImagesAreIgnoredWithAWarningNamingThem
   EXPECT_FALSE(s.materials[0].emissiveTexture.present());
 }
 
+// Only PNG and JPEG, by their signatures: a Radiance .hdr, a GIF or a BMP as a texture is ignored with a warning,
+// never handed to stb_image's other decoders (its HDR decoder looped forever on a cut file).
+TEST(GltfTextures, ImagesOtherThanPngAndJpegAreIgnoredWithAWarning) {
+  auto dir = test::makeTempDir("textures_formats");
+  std::ofstream(dir / "sky.hdr", std::ios::binary) << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 64 +X 64\n" << char(2) << char(2);
+  std::ofstream(dir / "anim.gif", std::ios::binary) << "GIF89a" << std::string(32, '\0');
+  std::string material = R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}},"emissiveTexture":{"index":1}})";
+  std::string extra = R"("images":[{"uri":"sky.hdr"},{"uri":"anim.gif"}],"textures":[{"source":0},{"source":1}])";
+  Scene s = loadGltf(test::writeQuadsGltf(dir, "formats", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
+  EXPECT_TRUE(anyWarningHas(s, "image 0: neither PNG nor JPEG"));
+  EXPECT_TRUE(anyWarningHas(s, "image 1: neither PNG nor JPEG"));
+  EXPECT_FALSE(s.materials[0].baseColorTexture.present());
+}
+
 TEST(GltfTextures, ATexturedEmitterIsWeightedByItsMeanEmission) {
   // Left half of the texture black, right half white (sRGB 255 = 1): the quad's mean emission is half its factor.
   auto dir = test::makeTempDir("textures");

@@ -71,3 +71,11 @@ doc = {
     "buffers": [{"byteLength": len(data), "uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
 }
 write("tangents_huge_coordinates.gltf", json.dumps(doc, separators=(",", ":")))
+# An image whose bufferView starts 8 GiB past its 72-byte buffer: tinygltf handed the image decoder that pointer
+# (SIGSEGV) before vkmc's guard had seen the views (found by a hostile-input probe, 2026-12-06).
+text, data = quad()
+doc = json.loads(text)
+doc["bufferViews"].append({"buffer": 0, "byteOffset": 2**33, "byteLength": 16})
+doc["images"] = [{"bufferView": 2, "mimeType": "image/png"}]
+doc["textures"] = [{"source": 0}]
+write("image_view_past_buffer.gltf", json.dumps(doc, separators=(",", ":")))
