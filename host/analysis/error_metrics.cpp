@@ -1,6 +1,7 @@
 // Error metrics between two EXR images.
 #include "analysis/error_metrics.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "analysis/student_t.h"
@@ -47,7 +48,25 @@ const std::vector<float>& channel(const ExrImage& img, const char* name, const c
 
 }  // namespace
 
+namespace {
+
+// A non-finite value would make every metric NaN: the image is refused, naming its first such pixel.
+void requireFinite(const ExrImage& image, const char* which) {
+  for (const auto& [name, values] : image.channels) {
+    if (name != "R" && name != "G" && name != "B" && name.rfind("variance.", 0) != 0) continue;
+    for (size_t p = 0; p < values.size(); ++p)
+      if (!std::isfinite(values[p]))
+        throw Error(std::string("the ") + which + "'s pixel (" + std::to_string(p % size_t(std::max(image.width, 1))) + ", " +
+                    std::to_string(p / size_t(std::max(image.width, 1))) + ") has a non-finite " + name +
+                    ": error metrics need finite images");
+  }
+}
+
+}  // namespace
+
 ErrorMetrics compareImages(const ExrImage& a, const ExrImage& b, double alpha, bool perPixelLevel) {
+  requireFinite(a, "image");
+  requireFinite(b, "reference");
   if (a.width != b.width || a.height != b.height)
     throw Error("image sizes differ: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " against " +
                 std::to_string(b.width) + "x" + std::to_string(b.height));

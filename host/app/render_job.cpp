@@ -448,6 +448,9 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
                           {"outputs", run.outputs}};
   LearnedBeforePasses learned;
   RenderState state = startOrResume(run, fingerprint.hex(), framing, out, learned);
+  if (state.nextSample > settings.spp)
+    throw Error("the checkpoint claims " + std::to_string(state.nextSample) + " samples a pixel of a " +
+                std::to_string(settings.spp) + "-spp render");
   if (options.estimator.rr == RouletteMode::Efficiency && !learned.roulette)
     runEfficiencyPilot(ctx, gpuScene, settings, out, learned);
   if (learned.roulette)

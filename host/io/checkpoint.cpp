@@ -95,6 +95,15 @@ Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
     c.config = header.at("config");
     const uint32_t width = header.at("width"), height = header.at("height");
     if (width == 0 || height == 0 || width > kMaxImageSide || height > kMaxImageSide) throw fail("has an impossible image size");
+    // The payload the image needs, from one pixel's arrays, before the film is allocated: a forged size must not
+    // allocate gigabytes.
+    uint64_t perPixel = 0;
+    const Film onePixel(1, 1);
+    forEachArray(onePixel, [&](const auto& v) { perPixel += v.size() * sizeof(v[0]); });
+    const uint64_t batchSamples = header.at("batch_samples");
+    const uint64_t needed = uint64_t(width) * height * (perPixel + (batchSamples > 0 ? sizeof(gpu::FilmPixel) : 0));
+    if (payloadBytes != needed)
+      throw fail("holds " + std::to_string(payloadBytes) + " bytes of film where its image needs " + std::to_string(needed));
     c.state.film = Film(width, height);
     c.state.film.replicateVariance = header.at("replicate_variance");
     c.state.film.replicates = header.at("replicates");
@@ -103,6 +112,9 @@ Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
     c.state.nextSample = header.at("next_sample");
     c.state.batchSamples = header.at("batch_samples");
     c.state.stats = renderStatsFromJson(header.at("stats"));
+    if (c.state.nextSample > kMaxSpp || c.state.batchSamples > c.state.nextSample ||
+        c.state.stats.samplesPerPixel > c.state.nextSample)
+      throw fail("has sample counts no render reaches (next sample " + std::to_string(c.state.nextSample) + ")");
   } catch (const nlohmann::json::exception& e) {
     throw fail(std::string("has a malformed header: ") + e.what());
   }

@@ -91,6 +91,13 @@ void applySpecularGlossiness(const tinygltf::Value& ext, Material& out, const st
   if (!std::isfinite(diffuseFactor.x + diffuseFactor.y + diffuseFactor.z + diffuseFactor.w) ||
       !std::isfinite(specularFactor.x + specularFactor.y + specularFactor.z) || !std::isfinite(glossinessFactor))
     throw Error(what + ": a factor is NaN or infinite");
+  // The extension's ranges: every factor in [0, 1] (a factor of 1e30 made most samples NaN).
+  auto inUnit = [](auto v) {
+    return glm::all(glm::greaterThanEqual(v, decltype(v)(0.0f))) && glm::all(glm::lessThanEqual(v, decltype(v)(1.0f)));
+  };
+  if (!inUnit(diffuseFactor)) throw Error(what + ": diffuseFactor must lie in [0, 1]");
+  if (!inUnit(specularFactor)) throw Error(what + ": specularFactor must lie in [0, 1]");
+  if (!(glossinessFactor >= 0.0f && glossinessFactor <= 1.0f)) throw Error(what + ": glossinessFactor must lie in [0, 1]");
   TextureRef diffuse = textureRef(ext, "diffuseTexture", textures, what + " diffuseTexture", warnings);
   TextureRef specGloss = textureRef(ext, "specularGlossinessTexture", textures, what + " specularGlossinessTexture", warnings);
   if (diffuse.present() && specGloss.present() && !sameMapping(diffuse, specGloss)) {

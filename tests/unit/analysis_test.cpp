@@ -185,3 +185,22 @@ TEST(EfficiencyRoulette, KeepsPathsWhoseContinuationCarriesTheEstimate) {
   RouletteTable t = optimizeRouletteScales(pilot, 1e-4, 2.0, 1);
   for (uint32_t d = 1; d < 4; ++d) EXPECT_GE(t.scale[d], 1.0f / 0.9f) << "depth " << d << ": survival must stay 1";
 }
+
+// A NaN or an infinity in either image would make every metric NaN (and `compare` exit 0 with it): refused, naming
+// the image, the pixel and the channel.
+TEST(ErrorMetrics, NonFiniteImagesAreRefused) {
+  ExrImage img, ref;
+  img.width = ref.width = 2, img.height = ref.height = 1;
+  for (const char* c : {"R", "G", "B"}) img.channels[c] = ref.channels[c] = {1.0f, 2.0f};
+  EXPECT_NO_THROW(compareImages(img, ref));
+  img.channels["G"][1] = std::nanf("");
+  try {
+    compareImages(img, ref);
+    ADD_FAILURE() << "a NaN pixel was compared";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("the image's pixel (1, 0) has a non-finite G"), std::string::npos) << e.what();
+  }
+  img.channels["G"][1] = 2.0f;
+  ref.channels["variance.R"] = {0.0f, INFINITY};
+  EXPECT_THROW(compareImages(img, ref), Error);
+}

@@ -1,11 +1,16 @@
 // Checkpoint files (io/checkpoint.h): what is written is read back exactly, and anything that is not a whole,
 // intact checkpoint is refused with a line naming the file and the problem.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstring>
+#include <nlohmann/json.hpp>
 
 #include "error.h"
 #include "io/checkpoint.h"
+#include "scene/content_hash.h"
 
 using namespace vkmc;
 
@@ -101,4 +106,49 @@ TEST(Checkpoint, EveryCorruptionIsRefusedWithOneReason) {
     EXPECT_TRUE(why.find("corrupt") != std::string::npos || why.find("truncated") != std::string::npos) << at << ": " << why;
     EXPECT_NE(why.find("'ck.bin'"), std::string::npos) << why;
   }
+}
+
+namespace {
+
+// A checkpoint file around `header` and `payload` with a valid checksum: what a forger (or a bug) could write.
+std::string sealed(const std::string& header, const std::string& payload) {
+  auto u64 = [](uint64_t v) { return std::string(reinterpret_cast<const char*>(&v), 8); };
+  std::string bytes = "VKMC-CHECKPOINT\n" + u64(header.size()) + header + u64(payload.size()) + payload;
+  ContentHash h;
+  h.add(bytes.data(), bytes.size());
+  return bytes + u64(h.value());
+}
+
+// The header and payload of an encoded checkpoint.
+std::pair<nlohmann::json, std::string> opened(const std::string& bytes) {
+  uint64_t headerBytes, payloadBytes;
+  std::memcpy(&headerBytes, bytes.data() + 16, 8);
+  std::memcpy(&payloadBytes, bytes.data() + 24 + headerBytes, 8);
+  return {nlohmann::json::parse(bytes.substr(24, headerBytes)), bytes.substr(32 + headerBytes, payloadBytes)};
+}
+
+}  // namespace
+
+// Sealed with a valid checksum but absurd: an image of 16384 x 16384 over a few bytes of film is refused before its
+// film is allocated (the child runs under a 1 GiB address-space cap, where that film would not fit), and sample
+// counts no render reaches are refused instead of reported.
+TEST(Checkpoint, AbsurdHeadersAreRefusedBeforeAllocation) {
+  auto [header, payload] = opened(encodeCheckpoint(sample(true)));
+  nlohmann::json huge = header;
+  huge["width"] = 16384, huge["height"] = 16384;
+  const std::string forged = sealed(huge.dump(), payload);
+  pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    rlimit cap{uint64_t(1) << 30, uint64_t(1) << 30};
+    setrlimit(RLIMIT_AS, &cap);
+    _exit(refusal(forged).find("of film where its image needs") != std::string::npos ? 0 : 1);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
+  nlohmann::json spp = header;
+  spp["next_sample"] = 4294967295u;
+  EXPECT_NE(refusal(sealed(spp.dump(), payload)).find("sample counts no render reaches"), std::string::npos);
+  EXPECT_EQ(refusal(sealed(header.dump(), payload)), "") << "the reseal itself is valid";
 }

@@ -46,6 +46,21 @@ TEST(SpecGloss, FactorsAloneAreConvertedInPlaceAndARequiredExtensionLoads) {
   EXPECT_FALSE(m.textured());
 }
 
+// The extension's ranges (every factor in [0, 1]) are enforced: a specularFactor of 1e30 made 62% of samples NaN.
+TEST(SpecGloss, FactorsOutsideTheirRangeAreRefusedNamingTheFactor) {
+  auto dir = test::makeTempDir("specgloss_range");
+  const std::pair<const char*, const char*> cases[] = {
+      {R"("specularFactor":[1e30,0.04,0.04])", "specularFactor must lie in [0, 1]"},
+      {R"("diffuseFactor":[0.5,0.5,-0.1,1])", "diffuseFactor must lie in [0, 1]"},
+      {R"("glossinessFactor":1.5)", "glossinessFactor must lie in [0, 1]"}};
+  for (const auto& [factor, expected] : cases) {
+    std::string material = std::string(R"({"extensions":{"KHR_materials_pbrSpecularGlossiness":{)") + factor + "}}}";
+    std::string msg =
+        test::loadError(test::writeQuadsGltf(dir, "range", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, kRequired));
+    EXPECT_NE(msg.find(expected), std::string::npos) << factor << ": " << msg;
+  }
+}
+
 TEST(SpecGloss, TexturesAreBakedPerTexel) {
   // A 2 x 1 diffuse texture (red, then black) and a specular-glossiness texture (dielectric 0.04 with glossiness
   // 1, then gold with glossiness 0.5): the baked texels are the conversion of each pair.

@@ -7,10 +7,12 @@
 #include <vector>
 
 #include "bvh/bvh.h"
+#include "cpu_timeout.h"
 #include "error.h"
 #include "scene/gltf_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  vkmc::fuzz::CpuTimeout timeout;
   std::vector<unsigned char> bytes(data, data + size);
   bool binary = size >= 4 && std::memcmp(data, "glTF", 4) == 0;
   // External URIs resolve here: the corpus folder holds the seeds' .bin files.

@@ -1,0 +1,19 @@
+// libFuzzer entry: any bytes as a glTF image (scene/gltf_textures decodeGltfImage: the PNG and JPEG signatures,
+// the size checks, then stb_image). The decoder never throws: an image it cannot read is named in its failures.
+#include <tiny_gltf.h>
+
+#include <cstdint>
+
+#include "cpu_timeout.h"
+#include "scene/gltf_textures.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  vkmc::fuzz::CpuTimeout timeout;
+  vkmc::ImageDecoder decoder;
+  decoder.limits.maxDimension = 4096;
+  decoder.limits.maxTotalTexels = 1u << 22;
+  tinygltf::Image image;
+  std::string err, warn;
+  vkmc::decodeGltfImage(&image, 0, &err, &warn, 0, 0, data, int(size), &decoder);
+  return 0;
+}
