@@ -24,8 +24,10 @@
 #include "dist/rank_group.h"
 #include "io/checkpoint.h"
 #include "io/exr.h"
+#include "io/file_lock.h"
 #include "io/output_files.h"
 #include "io/png.h"
+#include "scene/gltf_loader.h"
 #include "vk/context.h"
 
 namespace vkmc {
@@ -223,8 +225,9 @@ std::optional<Checkpoint> readResume(const std::string& path) {
 void checkOutputs(const RenderArgs& a, const std::string& checkpoint) {
   if (!RankGroup::world().isRoot()) return;
   const RenderOptions& ro = a.options;
-  checkOutputPaths({{"--output", a.out}, {"--png", a.png}, {"--report", a.report}, {"--checkpoint", checkpoint}},
-                   {ro.scenePath, ro.referencePath, a.estimatorFile, ro.environmentPath});
+  std::vector<std::string> inputs = gltfInputFiles(ro.scenePath);
+  inputs.insert(inputs.end(), {ro.referencePath, a.estimatorFile, ro.environmentPath});
+  checkOutputPaths({{"--output", a.out}, {"--png", a.png}, {"--report", a.report}, {"--checkpoint", checkpoint}}, inputs);
   std::error_code ec;
   if (!checkpoint.empty() && std::filesystem::exists(std::filesystem::symlink_status(checkpoint, ec)) &&
       !(!a.resume.empty() && sameFile(checkpoint, a.resume)) && !startsLikeCheckpoint(checkpoint))
@@ -301,6 +304,9 @@ int run(RenderArgs& a, const CLI::App& cmd) {
   if (!(a.checkpointEvery > 0.0 && a.checkpointEvery <= 1e6))
     throw Error("--checkpoint-every must be a number of seconds in (0, 1e6]");
   checkOutputs(a, checkpoint);
+  // Two renders naming one checkpoint would overwrite each other's: rank 0, which writes it, holds its lock.
+  std::optional<FileLock> checkpointLock;
+  if (!checkpoint.empty() && RankGroup::world().isRoot()) checkpointLock.emplace(checkpoint, "checkpoint");
   RunControl control = runControl(a, cmd, resume, checkpoint);
   vk::Context ctx;
   RenderOutcome result = runRender(ctx, ro, control);

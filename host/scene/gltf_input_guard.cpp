@@ -191,6 +191,12 @@ GltfJsonFacts scanGltfJson(std::string_view json, const InputLimits& limits) {
       if (b.is_object() && b.contains("byteLength") && b["byteLength"].is_number_unsigned())
         facts.largestBuffer = std::max<uint64_t>(facts.largestBuffer, b["byteLength"].get<uint64_t>());
   checkBufferViews(doc);
+  for (const char* list : {"buffers", "images"})
+    if (doc.contains(list) && doc[list].is_array())
+      for (const auto& item : doc[list])
+        if (item.is_object() && item.contains("uri") && item["uri"].is_string() &&
+            item["uri"].get<std::string>().rfind("data:", 0) != 0)
+          facts.externalUris.push_back(item["uri"].get<std::string>());
   for (auto [key, list] :
        {std::pair{"extensionsUsed", &facts.extensionsUsed}, std::pair{"extensionsRequired", &facts.extensionsRequired}})
     if (doc.contains(key) && doc[key].is_array())

@@ -31,6 +31,7 @@ std::vector<unsigned char> replaceGlbJson(const std::vector<unsigned char>& glb,
 struct GltfJsonFacts {
   uint64_t largestBuffer = 0;  // the largest declared buffers[].byteLength
   std::vector<std::string> extensionsUsed, extensionsRequired;
+  std::vector<std::string> externalUris;  // buffers' and images' uris that name files (not data: uris), as written
 };
 
 // Throws vkmc::Error when the JSON is malformed, nested deeper than limits.maxJsonDepth or holds more than

@@ -4,6 +4,7 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -489,6 +490,41 @@ Scene flattenModel(const tinygltf::Model& model, const std::string& path, const 
                    const std::vector<std::string>& extensionWarnings);
 
 }  // namespace
+
+namespace {
+
+std::string percentDecoded(const std::string& uri) {
+  std::string out;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+      out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> gltfInputFiles(const std::string& path, const LoadLimits& limits) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> files = {path};
+  try {
+    std::vector<unsigned char> bytes = readRegularFile(path, limits.input.maxSceneFileBytes, "scene");
+    std::string ext = fs::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    std::string_view json =
+        ext == ".glb" ? glbJsonChunk(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    for (const std::string& uri : scanGltfJson(json, limits.input).externalUris)
+      files.push_back((fs::path(path).parent_path() / percentDecoded(uri)).string());
+  } catch (const Error&) {
+    // The load itself names what is wrong with the file.
+  }
+  return files;
+}
 
 Scene loadGltf(const std::string& path, const LoadLimits& limits) {
   namespace fs = std::filesystem;

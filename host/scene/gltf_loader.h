@@ -22,6 +22,9 @@ struct LoadLimits {
 };
 
 Scene loadGltf(const std::string& path, const LoadLimits& limits = {});
+// The files a scene reads: the file itself, then its buffers' and images' files (never an output's place). Only the
+// file where it cannot be read: the load names why.
+std::vector<std::string> gltfInputFiles(const std::string& path, const LoadLimits& limits = {});
 // The same from a file's bytes (binary: GLB); URIs resolve against baseDir. `name` labels the scene.
 Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, const std::string& baseDir,
                          const std::string& name, const LoadLimits& limits = {});

@@ -190,3 +190,28 @@ TEST(CliCheckpoint, ACheckpointPathHoldingAUsersFileIsNeverOverwrittenNorRemoved
   EXPECT_EQ(quick.code, 0) << quick.err;
   EXPECT_TRUE(fs::exists(old)) << "removed a checkpoint this render never wrote";
 }
+
+// Two renders naming one checkpoint: the second is refused with one line while the first holds it (the first
+// holds at its first checkpoint, VKMC_HOLD_AFTER_CHECKPOINT, so the two certainly overlap), and the first's lock
+// file is gone once it ends.
+TEST(CliCheckpoint, TwoRendersCannotShareOneCheckpoint) {
+  fs::path d = dir() / "shared";
+  fs::create_directories(d);
+  const std::string ck = (d / "r.ckpt").string();
+  pid_t first = spawnVkmc({"render", cornell(), "--width", "64", "--height", "64", "--spp", "512", "-q", "-o",
+                           (d / "a.exr").string(), "--checkpoint", ck, "--checkpoint-every", "0.01"},
+                          kHoldAfterCheckpoint);
+  ASSERT_GT(first, 0);
+  waitForFile(ck);
+  RunResult second =
+      runVkmc("render " + cornell() + " --width 16 --height 16 --spp 4 -q -o " + (d / "b.exr").string() + " --checkpoint " + ck);
+  kill(first, SIGTERM);
+  int status = 0;
+  waitpid(first, &status, 0);
+  EXPECT_EQ(second.code, 1) << second.err;
+  EXPECT_NE(second.err.find("is in use by another vkmc render"), std::string::npos) << second.err;
+  EXPECT_EQ(lines(second.err), 1) << second.err;
+  EXPECT_FALSE(fs::exists(d / "b.exr"));
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 128 + SIGTERM) << status;
+  EXPECT_FALSE(fs::exists(ck + ".lock"));
+}

@@ -282,3 +282,20 @@ TEST(CliOutputs, AnInstancingBombIsRefusedBeforeAnythingIsAllocated) {
   EXPECT_NE(r.err.find("scene too big"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("67108864 instanced"), std::string::npos) << r.err;
 }
+
+// The scene's own buffer file as an output (-o, --png, --checkpoint): refused before anything is written, the
+// buffer unchanged (it was overwritten before outputs were checked against the files a scene reads).
+TEST(CliOutputs, AnOutputNamingTheScenesBufferIsRefused) {
+  const fs::path d = dir() / "own_buffer";
+  fs::create_directories(d);
+  const std::string scene = writeGltf(d, "quad", quadSpec());  // quad.gltf and its buffer quad.bin
+  const std::string bin = (d / "quad.bin").string(), before = slurp(bin);
+  for (const std::string& flag : {"-o", "--png", "--checkpoint"}) {
+    const std::string extra = flag == "-o" ? "" : " -o " + (d / "out.exr").string();
+    RunResult r = runVkmc(render(scene) + extra + " " + flag + " " + bin);
+    EXPECT_EQ(r.code, 1) << flag << ": " << r.err;
+    EXPECT_NE(r.err.find("is an input of this command"), std::string::npos) << flag << ": " << r.err;
+    EXPECT_EQ(slurp(bin), before) << flag;
+  }
+  EXPECT_FALSE(fs::exists(d / "out.exr"));
+}
