@@ -321,13 +321,14 @@ int run(RenderArgs& a, const CLI::App& cmd) {
     removeFinishedCheckpoint(a, result, checkpoint);
     return 0;
   }
-  const int sig = stopSignal.load();
+  // What stopped it: this process's signal, or under mpirun another rank's, relayed.
+  const int sig = result.stopSignal ? result.stopSignal : stopSignal.load();
+  const std::string name = sig == SIGTERM ? "SIGTERM" : sig == SIGINT ? "SIGINT" : "signal " + std::to_string(sig);
   if (checkpointWritten)
     std::fprintf(stderr,
                  "vkmc: interrupted by %s after %u of %u spp: wrote '%s' and the checkpoint '%s' (resume with: vkmc render "
                  "--resume %s)\n",
-                 sig == SIGTERM ? "SIGTERM" : "SIGINT", result.stats.samplesPerPixel, ro.spp, a.out.c_str(), checkpoint.c_str(),
-                 checkpoint.c_str());
+                 name.c_str(), result.stats.samplesPerPixel, ro.spp, a.out.c_str(), checkpoint.c_str(), checkpoint.c_str());
   return 128 + sig;
 }
 

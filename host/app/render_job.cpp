@@ -464,6 +464,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.tuning.pathSlots = renderer.pathSlots();
   renderPasses(renderer, state, renderControl(run, out), settings, out);
   out.interrupted = state.interrupted;
+  out.stopSignal = state.stopSignal;
   out.film = state.image();
   out.stats = state.stats;
   out.finalState = std::move(state);

@@ -117,6 +117,7 @@ struct RenderOutcome {
   nlohmann::json checkpointConfig;
   RenderState finalState;
   bool interrupted = false;
+  int stopSignal = 0;  // the signal that interrupted it (any rank's under mpirun)
   uint32_t checkpointsWritten = 0;
   double checkpointSeconds = 0.0;  // spent encoding and writing periodic checkpoints (inside `stats.seconds`)
   bool resumed = false;

@@ -127,7 +127,7 @@ std::vector<RankReport> renderDistributed(PathRenderer& renderer, const RankGrou
   for (uint64_t round = 0; next < plan.spp; ++round) {
     uint32_t lo, hi;
     range(round * ranks + me, lo, hi);
-    bool stop = false;
+    int stop = 0;  // the signal that stopped a rank, relayed to all (the largest number where two ranks were)
     for (uint32_t slot = 0; slot < slots && !stop; ++slot) {
       uint32_t s = lo + slot * perPass;
       if (s < hi) {
@@ -135,11 +135,12 @@ std::vector<RankReport> renderDistributed(PathRenderer& renderer, const RankGrou
         renderer.renderSamples(s, std::min(perPass, hi - s), mine);
         report.busySeconds += since(t);
       }
-      stop = group.maxOver(control.stop && control.stop->load() != 0 ? 1 : 0) != 0;
+      stop = group.maxOver(control.stop ? control.stop->load() : 0);
     }
     if (stop) {  // the round in flight is abandoned on every rank: the state stays that of the last round
       renderer.takeBatch();
       state.interrupted = true;
+      state.stopSignal = stop;
       break;
     }
     std::string batch;

@@ -855,6 +855,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
     if (secondsPerSample > 0.0) perPass = timeBudgetPassSamples(budget, since(start), secondsPerSample, maxPerPass);
     if (stopRequested()) {
       state.interrupted = true;
+      state.stopSignal = control.stop->load();
       break;
     }
     if (ears_->enabled() && earsPhase_ == EarsPhase::MeasureThroughput) {

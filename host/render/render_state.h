@@ -20,6 +20,7 @@ struct RenderState {
   uint32_t nextSample = 0;            // the first sample index not rendered yet
   RenderStats stats;                  // counters and seconds so far (the sample passes only)
   bool interrupted = false;           // stopped by RenderControl::stop before its target
+  int stopSignal = 0;                 // what stopped it: the signal's number (under mpirun, any rank's)
 
   // Every sample done: the film with the unfolded batch added.
   Film image() const {

@@ -108,3 +108,21 @@ TEST(MpiRender, ARenderStoppedUnderMpiResumesInOneProcessToTheUninterruptedImage
   ASSERT_EQ(whole.code, 0) << whole.err;
   EXPECT_TRUE(slurp(d / "resumed.exr") == slurp(d / "whole.exr"));
 }
+
+// A signal that reaches one rank only (here rank 1) stops the whole job, and rank 0 reports it as what it was:
+// SIGTERM, exit 128 + 15 (the relay once said "SIGINT", exit 128). The render is far too long to end by itself.
+TEST(MpiRender, AStopThatReachesOneRankIsReportedAsWhatItWas) {
+  VKMC_REQUIRE_MPI();
+  const fs::path d = dir() / "relay";
+  fs::create_directories(d);
+  const std::string ck = (d / "r.ckpt").string();
+  const std::string script =
+      mpirun(2) + VKMC_BINARY + " render " + cornell() + " --width 32 --height 32 --spp 1048576 -q -o " +
+      (d / "part.exr").string() + " --checkpoint " + ck + " --checkpoint-every 0.01 & m=$!; i=0; while [ ! -e " + ck +
+      " ] && [ $i -lt 6000 ]; do sleep 0.05; i=$((i+1)); done; for p in $(pgrep -P $m); do "
+      "grep -qa OMPI_COMM_WORLD_RANK=1 /proc/$p/environ && kill -TERM $p; done; wait $m";
+  RunResult r = runShell(script);
+  EXPECT_EQ(r.code, 128 + SIGTERM) << r.err;
+  EXPECT_NE(r.err.find("vkmc: interrupted by SIGTERM"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(d / "part.exr"));
+}
