@@ -86,32 +86,43 @@ Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
 
   nlohmann::json header = nlohmann::json::parse(bytes.begin() + headerAt, bytes.begin() + payloadAt - 8, nullptr, false);
   if (header.is_discarded() || !header.is_object()) throw fail("has a header that is not JSON");
-  if (header.value("format", "") != "vkmc checkpoint") throw fail("is not a vkmc checkpoint");
-  if (header.value("version", 0) != kFormatVersion)
+  // Compared as JSON values, which never throw whatever their type (a forged "format" may be an object).
+  if (header.value("format", nlohmann::json()) != nlohmann::json("vkmc checkpoint")) throw fail("is not a vkmc checkpoint");
+  if (header.value("version", nlohmann::json()) != nlohmann::json(kFormatVersion))
     throw fail("has format version " + header.value("version", nlohmann::json(0)).dump() + "; this vkmc reads version " +
                std::to_string(kFormatVersion));
+  // A count of the header: an unsigned integer up to `most` (a float or a negative number never converts).
+  auto count = [&](const char* key, uint64_t most) {
+    const nlohmann::json& v = header.at(key);
+    if (!v.is_number_unsigned() || v.get<uint64_t>() > most) throw fail(std::string("has an impossible ") + key);
+    return uint32_t(v.get<uint64_t>());
+  };
   Checkpoint c;
   try {
     c.config = header.at("config");
-    const uint32_t width = header.at("width"), height = header.at("height");
+    const uint32_t width = count("width", kMaxImageSide), height = count("height", kMaxImageSide);
     if (width == 0 || height == 0 || width > kMaxImageSide || height > kMaxImageSide) throw fail("has an impossible image size");
     // The payload the image needs, from one pixel's arrays, before the film is allocated: a forged size must not
     // allocate gigabytes.
     uint64_t perPixel = 0;
     const Film onePixel(1, 1);
     forEachArray(onePixel, [&](const auto& v) { perPixel += v.size() * sizeof(v[0]); });
-    const uint64_t batchSamples = header.at("batch_samples");
+    const uint64_t batchSamples = count("batch_samples", kMaxSpp);
     const uint64_t needed = uint64_t(width) * height * (perPixel + (batchSamples > 0 ? sizeof(gpu::FilmPixel) : 0));
     if (payloadBytes != needed)
       throw fail("holds " + std::to_string(payloadBytes) + " bytes of film where its image needs " + std::to_string(needed));
     c.state.film = Film(width, height);
-    c.state.film.replicateVariance = header.at("replicate_variance");
-    c.state.film.replicates = header.at("replicates");
-    if (c.state.film.replicates < 1 || c.state.film.replicates > gpu::kMaxSampleReplicates)
-      throw fail("has an impossible replicate count");
-    c.state.nextSample = header.at("next_sample");
-    c.state.batchSamples = header.at("batch_samples");
-    c.state.stats = renderStatsFromJson(header.at("stats"));
+    if (!header.at("replicate_variance").is_boolean()) throw fail("has a malformed header: replicate_variance");
+    c.state.film.replicateVariance = header.at("replicate_variance").get<bool>();
+    c.state.film.replicates = count("replicates", gpu::kMaxSampleReplicates);
+    if (c.state.film.replicates < 1) throw fail("has an impossible replicates");
+    c.state.nextSample = count("next_sample", kMaxSpp);
+    c.state.batchSamples = uint32_t(batchSamples);
+    try {
+      c.state.stats = renderStatsFromJson(header.at("stats"));
+    } catch (const Error& e) {
+      throw fail(std::string("has a malformed header: ") + e.what());
+    }
     if (c.state.nextSample > kMaxSpp || c.state.batchSamples > c.state.nextSample ||
         c.state.stats.samplesPerPixel > c.state.nextSample)
       throw fail("has sample counts no render reaches (next sample " + std::to_string(c.state.nextSample) + ")");

@@ -2,6 +2,10 @@
 #include "render/render_stats.h"
 
 #include <algorithm>
+#include <limits>
+#include <type_traits>
+
+#include "error.h"
 
 namespace vkmc {
 namespace {
@@ -24,6 +28,33 @@ void mergeValue(std::vector<uint64_t>& into, const std::vector<uint64_t>& from, 
   for (size_t i = 0; i < from.size(); ++i) into[i] += from[i];
 }
 
+// Each field read only from a JSON value of its own type and range: a forged checkpoint's 1e300 must not become
+// an integer by an undefined conversion.
+[[noreturn]] void malformed(const char* name) { throw Error(std::string("its counter '") + name + "' is malformed"); }
+template <class T>
+void readField(const nlohmann::json& v, const char* name, T& field) {
+  static_assert(std::is_unsigned_v<T>);
+  if (!v.is_number_unsigned() || v.get<uint64_t>() > std::numeric_limits<T>::max()) malformed(name);
+  field = T(v.get<uint64_t>());
+}
+void readField(const nlohmann::json& v, const char* name, double& field) {
+  if (!v.is_number()) malformed(name);
+  field = v.get<double>();
+}
+void readField(const nlohmann::json& v, const char* name, bool& field) {
+  if (!v.is_boolean()) malformed(name);
+  field = v.get<bool>();
+}
+void readField(const nlohmann::json& v, const char* name, std::map<std::string, double>& field) {
+  if (!v.is_object()) malformed(name);
+  for (const auto& [key, value] : v.items()) readField(value, name, field[key]);
+}
+void readField(const nlohmann::json& v, const char* name, std::vector<uint64_t>& field) {
+  if (!v.is_array() || v.size() > (1u << 16)) malformed(name);
+  field.resize(v.size());
+  for (size_t i = 0; i < v.size(); ++i) readField(v[i], name, field[i]);
+}
+
 }  // namespace
 
 nlohmann::json renderStatsJson(const RenderStats& stats) {
@@ -37,7 +68,8 @@ RenderStats renderStatsFromJson(const nlohmann::json& j) {
   forEachStat(
       [&](const char* name, StatMerge, bool defaultWhenAbsent, auto& field) {
         if (defaultWhenAbsent && !j.contains(name)) return;
-        j.at(name).get_to(field);
+        if (!j.is_object() || !j.contains(name)) malformed(name);
+        readField(j.at(name), name, field);
       },
       stats);
   return stats;

@@ -43,7 +43,8 @@ void forEachStat(Visit&& visit, Stats&... s) {
   visit("shadow_rays_by_bounce", StatMerge::Sum, false, s.shadowRaysByBounce...);
 }
 
-// A run's counters as JSON and back (exact: integers and doubles round-trip).
+// A run's counters as JSON and back (exact: integers and doubles round-trip). Reading throws vkmc::Error naming a
+// missing field or one of the wrong type or range.
 nlohmann::json renderStatsJson(const RenderStats& stats);
 RenderStats renderStatsFromJson(const nlohmann::json& j);
 // Another run's counters added to these (StatMerge of each field).

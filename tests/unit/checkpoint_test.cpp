@@ -149,6 +149,15 @@ TEST(Checkpoint, AbsurdHeadersAreRefusedBeforeAllocation) {
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
   nlohmann::json spp = header;
   spp["next_sample"] = 4294967295u;
-  EXPECT_NE(refusal(sealed(spp.dump(), payload)).find("sample counts no render reaches"), std::string::npos);
+  EXPECT_NE(refusal(sealed(spp.dump(), payload)).find("has an impossible next_sample"), std::string::npos);
+  nlohmann::json claims = header;
+  claims["stats"]["samples_per_pixel"] = 1000;  // more than the 40 samples its next sample says were done
+  EXPECT_NE(refusal(sealed(claims.dump(), payload)).find("sample counts no render reaches"), std::string::npos);
+  nlohmann::json odd = header;
+  odd["format"] = {{"not", "a string"}};  // found by checkpoint_fuzzer: a JSON type error escaped as an exception
+  EXPECT_NE(refusal(sealed(odd.dump(), payload)).find("is not a vkmc checkpoint"), std::string::npos);
+  nlohmann::json floaty = header;
+  floaty["width"] = 1e300;  // a float never converts to a count (an undefined conversion before)
+  EXPECT_NE(refusal(sealed(floaty.dump(), payload)).find("has an impossible width"), std::string::npos);
   EXPECT_EQ(refusal(sealed(header.dump(), payload)), "") << "the reseal itself is valid";
 }

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "error.h"
+
 using namespace vkmc;
 
 namespace {
@@ -41,7 +43,13 @@ TEST(RenderStats, FieldsOlderCheckpointsLackReadAsDefaults) {
   EXPECT_EQ(s.splitsRefused, 0u);
   EXPECT_FALSE(s.stagesUntimed);
   j.erase("shadow_rays");
-  EXPECT_THROW(renderStatsFromJson(j), nlohmann::json::exception) << "a field every checkpoint has is required";
+  EXPECT_THROW(renderStatsFromJson(j), Error) << "a field every checkpoint has is required";
+  j = renderStatsJson(someStats(2));
+  j["passes"] = 1e300;  // no undefined float-to-integer conversion: refused
+  EXPECT_THROW(renderStatsFromJson(j), Error);
+  j = renderStatsJson(someStats(2));
+  j["paths_by_bounce"] = {1, -2};
+  EXPECT_THROW(renderStatsFromJson(j), Error);
 }
 
 TEST(RenderStats, MergingSumsCountersKeepsMaximaAndLeavesOwnFields) {
