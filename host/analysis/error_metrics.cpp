@@ -48,9 +48,6 @@ const std::vector<float>& channel(const ExrImage& img, const char* name, const c
 
 }  // namespace
 
-namespace {
-
-// A non-finite value would make every metric NaN: the image is refused, naming its first such pixel.
 void requireFinite(const ExrImage& image, const char* which) {
   for (const auto& [name, values] : image.channels) {
     if (name != "R" && name != "G" && name != "B" && name.rfind("variance.", 0) != 0) continue;
@@ -61,8 +58,6 @@ void requireFinite(const ExrImage& image, const char* which) {
                     ": error metrics need finite images");
   }
 }
-
-}  // namespace
 
 ErrorMetrics compareImages(const ExrImage& a, const ExrImage& b, double alpha, bool perPixelLevel) {
   requireFinite(a, "image");

@@ -26,6 +26,9 @@ inline constexpr double kRelMseEpsilon = 1e-2;  // keeps near-black reference pi
 // threshold is Sidak-corrected so that on two unbiased renders all pixels pass with probability 1 - alpha;
 // perPixelLevel = true tests each value at level alpha instead (for calibration).
 ErrorMetrics compareImages(const ExrImage& image, const ExrImage& reference, double alpha = 0.01, bool perPixelLevel = false);
+// Throws vkmc::Error naming `which` ("reference") and its first pixel with a non-finite mean or variance: every
+// metric would be NaN. compareImages checks both images; a render checks its reference before it starts.
+void requireFinite(const ExrImage& image, const char* which);
 
 // A reference's own noise in relMSE terms: the mean over pixels and channels of its variance of the mean over
 // (its value^2 + epsilon). An image independent of the reference has an expected relMSE against it of its own

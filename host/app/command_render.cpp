@@ -228,9 +228,16 @@ void checkOutputs(const RenderArgs& a, const std::string& checkpoint) {
   std::vector<std::string> inputs = gltfInputFiles(ro.scenePath);
   inputs.insert(inputs.end(), {ro.referencePath, a.estimatorFile, ro.environmentPath});
   checkOutputPaths({{"--output", a.out}, {"--png", a.png}, {"--report", a.report}, {"--checkpoint", checkpoint}}, inputs);
+  // The checkpoint being resumed is an input too, though the render goes on checkpointing to it.
+  for (const auto& [flag, path] : {std::pair{"--output", a.out}, {"--png", a.png}, {"--report", a.report}})
+    if (!path.empty() && !a.resume.empty() && sameFile(path, a.resume))
+      throw Error(std::string(flag) + ": '" + path + "' is the checkpoint being resumed; it would be overwritten");
   std::error_code ec;
-  if (!checkpoint.empty() && std::filesystem::exists(std::filesystem::symlink_status(checkpoint, ec)) &&
-      !(!a.resume.empty() && sameFile(checkpoint, a.resume)) && !startsLikeCheckpoint(checkpoint))
+  const auto status = std::filesystem::symlink_status(checkpoint, ec);
+  if (checkpoint.empty() || !std::filesystem::exists(status) || (!a.resume.empty() && sameFile(checkpoint, a.resume))) return;
+  if (!std::filesystem::is_regular_file(std::filesystem::status(checkpoint, ec)))
+    throw Error("--checkpoint '" + checkpoint + "' is not a regular file");  // a FIFO would block, a device lose it
+  if (!startsLikeCheckpoint(checkpoint))
     throw Error("--checkpoint '" + checkpoint + "' exists and is not a vkmc checkpoint: vkmc will not overwrite it");
 }
 
@@ -258,24 +265,27 @@ RunControl runControl(const RenderArgs& a, const CLI::App& cmd, std::optional<Ch
   return control;
 }
 
-// All outputs or none: the EXR is not replaced when the PNG or the report cannot be written. An interrupted render
-// writes the samples it finished, then the checkpoint to resume it from: a checkpoint that cannot be written (a full
-// disk, a read-only folder) costs the resume, never the samples done. Returns whether the checkpoint was written.
-bool writeOutputs(const RenderArgs& a, const RenderOutcome& result, const nlohmann::json& report, const std::string& checkpoint) {
-  OutputSet outputs;
-  outputs.add(a.out, encodeFilmExr(result.film));
-  if (!a.png.empty()) outputs.add(a.png, encodeFilmPng(result.film, a.exposure));
-  if (!a.report.empty()) outputs.add(a.report, report.dump(2) + "\n");
-  outputs.commit();
+// An interrupted render's checkpoint, written before the other outputs: one that cannot be written (a full disk, a
+// read-only folder) costs the resume, never the samples done, and the report says so. Returns whether it was written.
+bool writeFinalCheckpoint(const RenderArgs& a, RenderOutcome& result, const std::string& checkpoint) {
   if (!result.interrupted) return false;
   try {
     writeFileAtomically(checkpoint, encodeRenderCheckpoint(result));
     return true;
   } catch (const Error& e) {
-    std::fprintf(stderr, "vkmc: warning: %s: the samples done are in '%s', but the render cannot be resumed from here\n",
-                 e.what(), a.out.c_str());
+    result.warnings.push_back(std::string(e.what()) + ": the samples done are in '" + a.out +
+                              "', but the render cannot be resumed from a checkpoint");
     return false;
   }
+}
+
+// All outputs or none: the EXR is not replaced when the PNG or the report cannot be written.
+void writeOutputs(const RenderArgs& a, const RenderOutcome& result, const nlohmann::json& report) {
+  OutputSet outputs;
+  outputs.add(a.out, encodeFilmExr(result.film));
+  if (!a.png.empty()) outputs.add(a.png, encodeFilmPng(result.film, a.exposure));
+  if (!a.report.empty()) outputs.add(a.report, report.dump(2) + "\n");
+  outputs.commit();
 }
 
 // A finished render needs its checkpoint no more (its outputs hold everything): removed where vkmc wrote it (this
@@ -311,10 +321,11 @@ int run(RenderArgs& a, const CLI::App& cmd) {
   vk::Context ctx;
   RenderOutcome result = runRender(ctx, ro, control);
   if (!RankGroup::world().isRoot()) return 0;  // rank 0 holds the film and writes every output
+  const bool checkpointWritten = writeFinalCheckpoint(a, result, checkpoint);
   nlohmann::json j = makeReport(ro, result);
   j["output"] = a.out;
-  if (!checkpoint.empty()) j["checkpoint"] = checkpoint;
-  const bool checkpointWritten = writeOutputs(a, result, j, checkpoint);
+  if (!checkpoint.empty() && (checkpointWritten || !result.interrupted)) j["checkpoint"] = checkpoint;
+  writeOutputs(a, result, j);
   if (!a.quiet) std::cout << summaryText(ro, result) << "output      " << a.out << "\n";
   for (const auto& w : result.warnings) std::fprintf(stderr, "vkmc: warning: %s\n", w.c_str());
   if (!result.interrupted) {
@@ -329,6 +340,9 @@ int run(RenderArgs& a, const CLI::App& cmd) {
                  "vkmc: interrupted by %s after %u of %u spp: wrote '%s' and the checkpoint '%s' (resume with: vkmc render "
                  "--resume %s)\n",
                  name.c_str(), result.stats.samplesPerPixel, ro.spp, a.out.c_str(), checkpoint.c_str(), checkpoint.c_str());
+  else
+    std::fprintf(stderr, "vkmc: interrupted by %s after %u of %u spp: wrote '%s' (no checkpoint: see the warning above)\n",
+                 name.c_str(), result.stats.samplesPerPixel, ro.spp, a.out.c_str());
   return 128 + sig;
 }
 

@@ -146,9 +146,10 @@ namespace {
 // The environment light: --environment's map; else, for a scene with nothing to light it (no punctual lights, no
 // --background, and no emitters or only textured ones), a constant environment of radiance 1, importance sampled,
 // with a warning.
-void addEnvironmentLight(const RenderOptions& options, Scene& scene, RenderOutcome& out) {
+void addEnvironmentLight(const RenderOptions& options, Scene& scene, RenderOutcome& out, uint64_t maxTexels) {
   if (!options.environmentPath.empty()) {
-    scene.environment = readEnvironmentMap(options.environmentPath, options.environmentRotation, options.environmentStrength);
+    scene.environment =
+        readEnvironmentMap(options.environmentPath, options.environmentRotation, options.environmentStrength, maxTexels);
   } else if (getsDefaultLight(options, scene)) {
     scene.environment = EnvironmentMap::constant(glm::vec3(1.0f));
     out.warnings.push_back(std::string("the scene has no punctual lights and ") +
@@ -414,7 +415,10 @@ void renderPasses(PathRenderer& renderer, RenderState& state, const RenderContro
 
 RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene scene, const RunControl& run) {
   std::optional<ExrImage> reference;
-  if (!options.referencePath.empty()) reference = readExr(options.referencePath);
+  if (!options.referencePath.empty()) {
+    reference = readExr(options.referencePath);
+    requireFinite(*reference, ("reference '" + options.referencePath + "'").c_str());
+  }
   RenderOutcome out;
   out.device = ctx.deviceName();
   out.degenerateTriangles = scene.degenerateTriangles;
@@ -426,7 +430,8 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
                 std::to_string(framing.height));
   out.cameraName = framing.camera.name, out.width = framing.width, out.height = framing.height;
   addThinRibbons(scene, framing.camera, framing.height);  // points and lines, one pixel wide for this camera and image
-  addEnvironmentLight(options, scene, out);
+  // The map's texels are one storage buffer of vec4s (GpuScene): the device's range bounds them.
+  addEnvironmentLight(options, scene, out, ctx.properties().limits.maxStorageBufferRange / sizeof(glm::vec4));
   auto t = Clock::now();
   Bvh bvh = buildBvh(scene.triangleBounds());
   out.setup.bvh = since(t);

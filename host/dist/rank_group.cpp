@@ -3,6 +3,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -60,29 +63,73 @@ std::string RankGroup::describe() const {
   return "rank " + std::to_string(rank_) + " of " + std::to_string(size_) + " on " + host;
 }
 
+#ifdef VKMC_HAVE_MPI
+namespace {
+
+// How long a rank waits for another before it ends the job: VKMC_RANK_TIMEOUT seconds, by default ten minutes (a
+// pass of a large image on a slow device, or rank 0 writing a large checkpoint, must not look like a stopped rank).
+double rankTimeoutSeconds() {
+  static const double seconds = [] {
+    const char* text = std::getenv("VKMC_RANK_TIMEOUT");
+    const double v = text ? std::atof(text) : 0.0;
+    return v > 0.0 ? v : 600.0;
+  }();
+  return seconds;
+}
+
+// Completes `request`, or ends the job with one line naming the rank that did not answer (a rank stopped by
+// SIGSTOP, or hung, would otherwise keep every other rank in MPI forever).
+void waitFor(MPI_Request& request, int peer, const char* what, const RankGroup& group) {
+  const auto start = std::chrono::steady_clock::now();
+  for (int polls = 0;; ++polls) {
+    int done = 0;
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+    const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // A rank waiting on rank 0 waits half as long again: where rank 0 is alive it names the rank that is not.
+    if (waited > rankTimeoutSeconds() * (peer == 0 && group.rank() != 0 ? 1.5 : 1.0)) {
+      std::fprintf(stderr, "vkmc: error: rank %d of %u did not answer for %.0f s (%s): it stopped or hung, so the job ends\n",
+                   peer, group.size(), waited, what);
+      group.abort(1);
+    }
+    ::usleep(polls < 100 ? 50 : 2000);  // quick answers stay quick; a long wait costs no CPU
+  }
+}
+
+}  // namespace
+#endif
+
 std::vector<std::string> RankGroup::gather(const std::string& mine) const {
   if (!mpi_) return {mine};
 #ifdef VKMC_HAVE_MPI
-  // Sizes first (bytes may pass 2 GiB in total, so they travel in chunks of at most 1 GiB per rank).
+  // Sizes first, then the bytes (which may pass 2 GiB in total: chunks of at most 1 GiB per rank), point to point,
+  // so that rank 0 knows which rank did not answer.
   long long length = static_cast<long long>(mine.size());
-  std::vector<long long> lengths(size_);
-  MPI_Gather(&length, 1, MPI_LONG_LONG, lengths.data(), 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
   std::vector<std::string> all;
   if (rank_ == 0) {
     all.resize(size_);
     all[0] = mine;
     for (uint32_t r = 1; r < size_; ++r) {
-      all[r].resize(size_t(lengths[r]));
-      for (long long at = 0; at < lengths[r];) {
-        int chunk = int(std::min<long long>(lengths[r] - at, 1ll << 30));
-        MPI_Recv(all[r].data() + at, chunk, MPI_BYTE, int(r), 7, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      long long theirs = 0;
+      MPI_Request request;
+      MPI_Irecv(&theirs, 1, MPI_LONG_LONG, int(r), 6, MPI_COMM_WORLD, &request);
+      waitFor(request, int(r), "gathering", *this);
+      all[r].resize(size_t(theirs));
+      for (long long at = 0; at < theirs;) {
+        int chunk = int(std::min<long long>(theirs - at, 1ll << 30));
+        MPI_Irecv(all[r].data() + at, chunk, MPI_BYTE, int(r), 7, MPI_COMM_WORLD, &request);
+        waitFor(request, int(r), "gathering", *this);
         at += chunk;
       }
     }
   } else {
+    MPI_Request request;
+    MPI_Isend(&length, 1, MPI_LONG_LONG, 0, 6, MPI_COMM_WORLD, &request);
+    waitFor(request, 0, "gathering", *this);
     for (long long at = 0; at < length;) {
       int chunk = int(std::min<long long>(length - at, 1ll << 30));
-      MPI_Send(mine.data() + at, chunk, MPI_BYTE, 0, 7, MPI_COMM_WORLD);
+      MPI_Isend(mine.data() + at, chunk, MPI_BYTE, 0, 7, MPI_COMM_WORLD, &request);
+      waitFor(request, 0, "gathering", *this);
       at += chunk;
     }
   }
@@ -96,11 +143,14 @@ void RankGroup::broadcast(std::string& bytes) const {
   if (!mpi_) return;
 #ifdef VKMC_HAVE_MPI
   long long length = static_cast<long long>(bytes.size());
-  MPI_Bcast(&length, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
+  MPI_Request request;
+  MPI_Ibcast(&length, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD, &request);
+  waitFor(request, 0, "broadcasting", *this);
   bytes.resize(size_t(length));
   for (long long at = 0; at < length;) {
     int chunk = int(std::min<long long>(length - at, 1ll << 30));
-    MPI_Bcast(bytes.data() + at, chunk, MPI_BYTE, 0, MPI_COMM_WORLD);
+    MPI_Ibcast(bytes.data() + at, chunk, MPI_BYTE, 0, MPI_COMM_WORLD, &request);
+    waitFor(request, 0, "broadcasting", *this);
     at += chunk;
   }
 #endif
@@ -110,7 +160,21 @@ int RankGroup::maxOver(int mine) const {
   if (!mpi_) return mine;
   int result = mine;
 #ifdef VKMC_HAVE_MPI
-  MPI_Allreduce(&mine, &result, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  // Rank 0 collects every rank's value (so it can name one that does not answer), then tells them the maximum.
+  MPI_Request request;
+  if (rank_ == 0) {
+    for (uint32_t r = 1; r < size_; ++r) {
+      int theirs = 0;
+      MPI_Irecv(&theirs, 1, MPI_INT, int(r), 5, MPI_COMM_WORLD, &request);
+      waitFor(request, int(r), "agreeing on the next step", *this);
+      result = std::max(result, theirs);
+    }
+  } else {
+    MPI_Isend(&mine, 1, MPI_INT, 0, 5, MPI_COMM_WORLD, &request);
+    waitFor(request, 0, "agreeing on the next step", *this);
+  }
+  MPI_Ibcast(&result, 1, MPI_INT, 0, MPI_COMM_WORLD, &request);
+  waitFor(request, 0, "agreeing on the next step", *this);
 #endif
   return result;
 }

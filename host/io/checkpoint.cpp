@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "error.h"
@@ -58,8 +59,16 @@ std::string encodeCheckpoint(const Checkpoint& c) {
   return out;
 }
 
-Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
-  auto fail = [&](const std::string& why) { return Error("checkpoint '" + name + "' " + why); };
+namespace {
+
+using Fail = std::function<Error(const std::string&)>;
+
+// Where a checkpoint's header and payload lie, once its magic, lengths and checksum are checked.
+struct Sections {
+  size_t headerAt = 0, headerBytes = 0, payloadAt = 0, payloadBytes = 0;
+};
+
+Sections checkedSections(const std::string& bytes, const Fail& fail) {
   if (bytes.size() < kMagicBytes || bytes.compare(0, kMagicBytes, kMagic) != 0) throw fail("is not a vkmc checkpoint");
   size_t at = kMagicBytes;
   auto readU64 = [&](const char* what) {
@@ -69,28 +78,26 @@ Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
     at += 8;
     return v;
   };
-  const uint64_t headerBytes = readU64("header length");
-  if (headerBytes > bytes.size() - at) throw fail("is truncated (header)");
-  const size_t headerAt = at;
-  at += headerBytes;
-  const uint64_t payloadBytes = readU64("payload length");
-  if (payloadBytes > bytes.size() - at) throw fail("is truncated (payload)");
-  const size_t payloadAt = at;
-  at += payloadBytes;
+  Sections s;
+  s.headerBytes = readU64("header length");
+  if (s.headerBytes > bytes.size() - at) throw fail("is truncated (header)");
+  s.headerAt = at;
+  at += s.headerBytes;
+  s.payloadBytes = readU64("payload length");
+  if (s.payloadBytes > bytes.size() - at) throw fail("is truncated (payload)");
+  s.payloadAt = at;
+  at += s.payloadBytes;
   const size_t checked = at;
   const uint64_t checksum = readU64("checksum");
   if (at != bytes.size()) throw fail("has " + std::to_string(bytes.size() - at) + " bytes after its end");
   ContentHash h;
   h.add(bytes.data(), checked);
   if (h.value() != checksum) throw fail("is corrupt (its checksum does not match its contents)");
+  return s;
+}
 
-  nlohmann::json header = nlohmann::json::parse(bytes.begin() + headerAt, bytes.begin() + payloadAt - 8, nullptr, false);
-  if (header.is_discarded() || !header.is_object()) throw fail("has a header that is not JSON");
-  // Compared as JSON values, which never throw whatever their type (a forged "format" may be an object).
-  if (header.value("format", nlohmann::json()) != nlohmann::json("vkmc checkpoint")) throw fail("is not a vkmc checkpoint");
-  if (header.value("version", nlohmann::json()) != nlohmann::json(kFormatVersion))
-    throw fail("has format version " + header.value("version", nlohmann::json(0)).dump() + "; this vkmc reads version " +
-               std::to_string(kFormatVersion));
+// The render state a header describes, its film allocated only once the payload's length matches the image's.
+Checkpoint stateFromHeader(const nlohmann::json& header, uint64_t payloadBytes, const Fail& fail) {
   // A count of the header: an unsigned integer up to `most` (a float or a negative number never converts).
   auto count = [&](const char* key, uint64_t most) {
     const nlohmann::json& v = header.at(key);
@@ -98,44 +105,56 @@ Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
     return uint32_t(v.get<uint64_t>());
   };
   Checkpoint c;
+  c.config = header.at("config");
+  const uint32_t width = count("width", kMaxImageSide), height = count("height", kMaxImageSide);
+  if (width == 0 || height == 0) throw fail("has an impossible image size");
+  // The payload the image needs, from one pixel's arrays, before the film is allocated: a forged size must not
+  // allocate gigabytes.
+  uint64_t perPixel = 0;
+  const Film onePixel(1, 1);
+  forEachArray(onePixel, [&](const auto& v) { perPixel += v.size() * sizeof(v[0]); });
+  const uint32_t batchSamples = count("batch_samples", kMaxSpp);
+  const uint64_t needed = uint64_t(width) * height * (perPixel + (batchSamples > 0 ? sizeof(gpu::FilmPixel) : 0));
+  if (payloadBytes != needed)
+    throw fail("holds " + std::to_string(payloadBytes) + " bytes of film where its image needs " + std::to_string(needed));
+  c.state.film = Film(width, height);
+  if (!header.at("replicate_variance").is_boolean()) throw fail("has a malformed header: replicate_variance");
+  c.state.film.replicateVariance = header.at("replicate_variance").get<bool>();
+  c.state.film.replicates = count("replicates", gpu::kMaxSampleReplicates);
+  if (c.state.film.replicates < 1) throw fail("has an impossible replicates");
+  c.state.nextSample = count("next_sample", kMaxSpp);
+  c.state.batchSamples = batchSamples;
   try {
-    c.config = header.at("config");
-    const uint32_t width = count("width", kMaxImageSide), height = count("height", kMaxImageSide);
-    if (width == 0 || height == 0 || width > kMaxImageSide || height > kMaxImageSide) throw fail("has an impossible image size");
-    // The payload the image needs, from one pixel's arrays, before the film is allocated: a forged size must not
-    // allocate gigabytes.
-    uint64_t perPixel = 0;
-    const Film onePixel(1, 1);
-    forEachArray(onePixel, [&](const auto& v) { perPixel += v.size() * sizeof(v[0]); });
-    const uint64_t batchSamples = count("batch_samples", kMaxSpp);
-    const uint64_t needed = uint64_t(width) * height * (perPixel + (batchSamples > 0 ? sizeof(gpu::FilmPixel) : 0));
-    if (payloadBytes != needed)
-      throw fail("holds " + std::to_string(payloadBytes) + " bytes of film where its image needs " + std::to_string(needed));
-    c.state.film = Film(width, height);
-    if (!header.at("replicate_variance").is_boolean()) throw fail("has a malformed header: replicate_variance");
-    c.state.film.replicateVariance = header.at("replicate_variance").get<bool>();
-    c.state.film.replicates = count("replicates", gpu::kMaxSampleReplicates);
-    if (c.state.film.replicates < 1) throw fail("has an impossible replicates");
-    c.state.nextSample = count("next_sample", kMaxSpp);
-    c.state.batchSamples = uint32_t(batchSamples);
-    try {
-      c.state.stats = renderStatsFromJson(header.at("stats"));
-    } catch (const Error& e) {
-      throw fail(std::string("has a malformed header: ") + e.what());
-    }
-    if (c.state.nextSample > kMaxSpp || c.state.batchSamples > c.state.nextSample ||
-        c.state.stats.samplesPerPixel > c.state.nextSample)
-      throw fail("has sample counts no render reaches (next sample " + std::to_string(c.state.nextSample) + ")");
+    c.state.stats = renderStatsFromJson(header.at("stats"));
+  } catch (const Error& e) {
+    throw fail(std::string("has a malformed header: ") + e.what());
+  }
+  if (c.state.batchSamples > c.state.nextSample || c.state.stats.samplesPerPixel > c.state.nextSample)
+    throw fail("has sample counts no render reaches (next sample " + std::to_string(c.state.nextSample) + ")");
+  return c;
+}
+
+}  // namespace
+
+Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
+  const Fail fail = [&](const std::string& why) { return Error("checkpoint '" + name + "' " + why); };
+  const Sections s = checkedSections(bytes, fail);
+  nlohmann::json header =
+      nlohmann::json::parse(bytes.begin() + s.headerAt, bytes.begin() + s.headerAt + s.headerBytes, nullptr, false);
+  if (header.is_discarded() || !header.is_object()) throw fail("has a header that is not JSON");
+  // Compared as JSON values, which never throw whatever their type (a forged "format" may be an object).
+  if (header.value("format", nlohmann::json()) != nlohmann::json("vkmc checkpoint")) throw fail("is not a vkmc checkpoint");
+  if (header.value("version", nlohmann::json()) != nlohmann::json(kFormatVersion))
+    throw fail("has format version " + header.value("version", nlohmann::json(0)).dump() + "; this vkmc reads version " +
+               std::to_string(kFormatVersion));
+  Checkpoint c;
+  try {
+    c = stateFromHeader(header, s.payloadBytes, fail);
   } catch (const nlohmann::json::exception& e) {
     throw fail(std::string("has a malformed header: ") + e.what());
   }
   Film& film = c.state.film;
-  uint64_t expected = 0;
-  forEachArray(film, [&](const auto& v) { expected += v.size() * sizeof(v[0]); });
-  if (c.state.batchSamples > 0) expected += film.pixels() * sizeof(gpu::FilmPixel);
-  if (payloadBytes != expected)
-    throw fail("holds " + std::to_string(payloadBytes) + " bytes of film where its image needs " + std::to_string(expected));
-  const char* p = bytes.data() + payloadAt;
+  const char* p = bytes.data() + s.payloadAt;
   forEachArray(film, [&](auto& v) {
     std::memcpy(v.data(), p, v.size() * sizeof(v[0]));
     p += v.size() * sizeof(v[0]);

@@ -49,7 +49,7 @@ void readSize(Reader& r, uint64_t maxTexels, uint32_t& width, uint32_t& height) 
     r.fail("its size " + std::to_string(w) + "x" + std::to_string(h) + " is impossible");
   if (uint64_t(w) * uint64_t(h) > maxTexels)
     throw Error("'" + r.name + "' is " + std::to_string(w) + "x" + std::to_string(h) + ", more than the " +
-                std::to_string(maxTexels) + " texels vkmc can hold");
+                std::to_string(maxTexels) + " texels the device's buffers hold");
   // Even at its best a row takes 4 bytes a texel flat, or its 4-byte header and 2 bytes a 127-texel run of each of
   // its 4 channels run-length encoded.
   const uint64_t leastRowBytes = std::min<uint64_t>(4 * uint64_t(w), 4 + 8 * ((uint64_t(w) + 126) / 127));

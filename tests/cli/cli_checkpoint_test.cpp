@@ -112,6 +112,9 @@ TEST(CliCheckpoint, ForeignCorruptAndMismatchedCheckpointsAreRefusedWithOneLine)
   std::ofstream(d / "flipped.ckpt", std::ios::binary) << flipped;
   refused("render --resume " + (d / "flipped.ckpt").string(), "is corrupt");
   refused("render --resume " + (d / "missing.ckpt").string(), "does not exist");
+  // The checkpoint being resumed as an output of the resumed render (with the checkpoints going elsewhere).
+  refused("render --resume " + ck + " -o " + ck + " --checkpoint " + (d / "elsewhere.ckpt").string(),
+          "is the checkpoint being resumed");
   refused("render --resume " + d.string(), "is not a regular file");
   // The same scene file with one material changed is another scene.
   fs::create_directories(d / "scene");

@@ -100,7 +100,8 @@ TEST(CliFaults, FifosAsInputsAreRefusedNotBlockedOn) {
   const std::string out = " -o " + (d / "o.exr").string();
   for (const std::string& args :
        {"render " + cornell() + " --width 8 --height 8 --spp 1 -q --estimator " + fifo + out,
-        "render " + cornell() + " --width 8 --height 8 --spp 1 -q --reference " + fifo + out, "compare " + fifo + " " + fifo}) {
+        "render " + cornell() + " --width 8 --height 8 --spp 1 -q --reference " + fifo + out,
+        "render " + cornell() + " --width 8 --height 8 --spp 1 -q --checkpoint " + fifo + out, "compare " + fifo + " " + fifo}) {
     RunResult r = runShell("timeout 60 " + std::string(VKMC_BINARY) + " " + args);
     EXPECT_NE(r.code, 124) << "blocked on the FIFO: " << args;
     EXPECT_NE(r.code, 0) << args;

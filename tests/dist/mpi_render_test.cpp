@@ -40,6 +40,9 @@ const std::string kImage = " --width 64 --height 64 --spp 256 --seed 9 -q";
 
 nlohmann::json report(const fs::path& p) { return nlohmann::json::parse(slurp(p)); }
 
+// The launch under `timeout 120` (after the environment's assignments): a hang becomes exit 124, not a stuck suite.
+std::string withTimeout(std::string launch) { return launch.insert(launch.find("mpirun"), "timeout 120 "); }
+
 }  // namespace
 
 TEST(MpiRender, TwoRanksRenderTheImageOfOneProcessBitForBit) {
@@ -116,13 +119,33 @@ TEST(MpiRender, AStopThatReachesOneRankIsReportedAsWhatItWas) {
   const fs::path d = dir() / "relay";
   fs::create_directories(d);
   const std::string ck = (d / "r.ckpt").string();
-  const std::string script =
-      mpirun(2) + VKMC_BINARY + " render " + cornell() + " --width 32 --height 32 --spp 1048576 -q -o " +
-      (d / "part.exr").string() + " --checkpoint " + ck + " --checkpoint-every 0.01 & m=$!; i=0; while [ ! -e " + ck +
-      " ] && [ $i -lt 6000 ]; do sleep 0.05; i=$((i+1)); done; for p in $(pgrep -P $m); do "
-      "grep -qa OMPI_COMM_WORLD_RANK=1 /proc/$p/environ && kill -TERM $p; done; wait $m";
+  const std::string script = mpirun(2) + VKMC_BINARY + " render " + cornell() + " --width 32 --height 32 --spp 1048576 -q -o " +
+                             (d / "part.exr").string() + " --checkpoint " + ck +
+                             " --checkpoint-every 0.01 & m=$!; i=0; while [ ! -e " + ck +
+                             " ] && [ $i -lt 6000 ]; do sleep 0.05; i=$((i+1)); done; for p in $(pgrep -P $m); do "
+                             "grep -qa OMPI_COMM_WORLD_RANK=1 /proc/$p/environ && kill -TERM $p; done; wait $m";
   RunResult r = runShell(script);
   EXPECT_EQ(r.code, 128 + SIGTERM) << r.err;
   EXPECT_NE(r.err.find("vkmc: interrupted by SIGTERM"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::exists(d / "part.exr"));
+}
+
+// A rank stopped by SIGSTOP (it neither answers nor dies) ends the job after the bounded wait (VKMC_RANK_TIMEOUT,
+// 2 s here) with one line naming it, instead of keeping every other rank in MPI forever. `timeout` turns the old
+// behaviour, a hang, into a failure.
+TEST(MpiRender, AStoppedRankEndsTheJobWithALineNamingIt) {
+  VKMC_REQUIRE_MPI();
+  const fs::path d = dir() / "stopped";
+  fs::create_directories(d);
+  const std::string ck = (d / "r.ckpt").string();
+  const std::string script =
+      withTimeout(mpirun(2, "-x VKMC_RANK_TIMEOUT=2 ")) + VKMC_BINARY + " render " + cornell() +
+      " --width 32 --height 32 --spp 1048576 -q -o " + (d / "part.exr").string() + " --checkpoint " + ck +
+      " --checkpoint-every 0.01 & m=$!; i=0; while [ ! -e " + ck +
+      " ] && [ $i -lt 6000 ]; do sleep 0.05; i=$((i+1)); done; for p in $(pgrep -P \"$(pgrep -P $m)\"); do "
+      "grep -qa OMPI_COMM_WORLD_RANK=1 /proc/$p/environ && kill -STOP $p; done; wait $m";
+  RunResult r = runShell(script);
+  EXPECT_NE(r.code, 0) << r.err;
+  EXPECT_NE(r.code, 124) << "the job hung on the stopped rank: " << r.err;
+  EXPECT_NE(r.err.find("vkmc: error: rank 1 of 2 did not answer for"), std::string::npos) << r.err;
 }
