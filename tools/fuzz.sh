@@ -35,14 +35,15 @@ for f in scenes/*.gltf scenes/*/*.gltf scenes/*.bin scenes/*/*.bin ../shared/sce
   [[ -f $f && $(stat -c %s "$f") -le 1048576 ]] || continue
   case $f in *.bin) cp "$f" "$out/seeds/";; *) cp "$f" "$out/seeds/$(basename "$(dirname "$f")")-$(basename "$f")";; esac
 done
-cp tests/fuzz/regressions/* "$out/seeds/"
+cp tests/fuzz/regressions/*.gltf tests/fuzz/regressions/*.glb "$out/seeds/"
 export VKMC_FUZZ_BASEDIR=$PWD/$out/seeds
 export ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # -timeout (wall time) only as a backstop: the harnesses time an input by its CPU time.
 common=(-timeout=600 -rss_limit_mb=4096 -malloc_limit_mb=2048 -artifact_prefix="$out/findings/" -print_final_stats=1)
 # First the crafted files that once crashed or over-read (tools/fuzz/make_regressions.py), each run once.
-"$out/gltf_fuzzer" tests/fuzz/regressions/* 2>&1 | tail -n 3
+"$out/gltf_fuzzer" tests/fuzz/regressions/*.gltf tests/fuzz/regressions/*.glb 2>&1 | tail -n 3
+"$out/image_fuzzer" tests/fuzz/regressions/images/* 2>&1 | tail -n 1
 echo "fuzz: gltf_fuzzer"
 "$out/gltf_fuzzer" "$out/corpus-gltf" "$out/seeds" "${budget[@]}" -max_len=65536 "${common[@]}" "$@" 2>&1 | tail -n 25
 # The readers: seeds of their own.

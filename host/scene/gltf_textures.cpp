@@ -1,13 +1,13 @@
 // Texture decoding and references.
 #include "scene/gltf_textures.h"
 
-#include <stb/stb_image.h>
 #include <tiny_gltf.h>
 
 #include <cmath>
 #include <cstring>
 
 #include "error.h"
+#include "scene/image_decode.h"
 
 namespace vkmc {
 namespace {
@@ -70,45 +70,24 @@ bool decodeGltfImage(tinygltf::Image* image, const int imageIndex, std::string*,
                      const unsigned char* bytes, int size, void* user) {
   auto* decoder = static_cast<ImageDecoder*>(user);
   std::string label = "image " + std::to_string(imageIndex) + (image->name.empty() ? "" : " (" + image->name + ")");
-  int w = 0, h = 0, channels = 0;
-  // PNG and JPEG only, by their signatures: stb_image knows more (GIF, BMP, PSD, TGA, Radiance HDR), some of them
-  // through decoders that loop on a cut file, and glTF allows these two.
-  const bool png = size >= 8 && std::memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0;
-  const bool jpeg = size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF;
-  if (bytes && size > 0 && !png && !jpeg) {
-    decoder->failures.push_back(label + ": neither PNG nor JPEG (the image formats vkmc reads)" +
-                                (image->mimeType.empty() ? "" : " (" + image->mimeType + ")"));
+  const std::string mime = image->mimeType.empty() ? "" : " (" + image->mimeType + ")";
+  if (!bytes || size <= 0) {
+    decoder->failures.push_back(label + ": no bytes" + mime);
     return true;
   }
-  if (!bytes || size <= 0 || !stbi_info_from_memory(bytes, size, &w, &h, &channels)) {
-    decoder->failures.push_back(label + ": not a PNG or JPEG stb_image can read" +
-                                (image->mimeType.empty() ? "" : " (" + image->mimeType + ")"));
-    return true;
+  try {
+    const uint64_t texelsLeft = decoder->limits.maxTotalTexels - std::min(decoder->decodedTexels, decoder->limits.maxTotalTexels);
+    DecodedImage decoded = decodeImage(bytes, size_t(size), decoder->limits.maxDimension, texelsLeft);
+    decoder->decodedTexels += uint64_t(decoded.width) * decoded.height;
+    image->width = int(decoded.width);
+    image->height = int(decoded.height);
+    image->component = 4;
+    image->bits = 8;
+    image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image->image = std::move(decoded.rgba);
+  } catch (const Error& e) {
+    decoder->failures.push_back(label + ": " + e.what() + mime);
   }
-  if (w <= 0 || h <= 0 || uint32_t(w) > decoder->limits.maxDimension || uint32_t(h) > decoder->limits.maxDimension) {
-    decoder->failures.push_back(label + ": " + std::to_string(w) + "x" + std::to_string(h) + " exceeds " +
-                                std::to_string(decoder->limits.maxDimension) + " texels a side");
-    return true;
-  }
-  uint64_t texels = uint64_t(w) * uint64_t(h);
-  if (decoder->decodedTexels + texels > decoder->limits.maxTotalTexels) {
-    decoder->failures.push_back(label + ": the scene's images exceed " + std::to_string(decoder->limits.maxTotalTexels) +
-                                " texels in all");
-    return true;
-  }
-  unsigned char* pixels = stbi_load_from_memory(bytes, size, &w, &h, &channels, 4);
-  if (!pixels) {
-    decoder->failures.push_back(label + ": " + (stbi_failure_reason() ? stbi_failure_reason() : "decoding failed"));
-    return true;
-  }
-  decoder->decodedTexels += texels;
-  image->width = w;
-  image->height = h;
-  image->component = 4;
-  image->bits = 8;
-  image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
-  image->image.assign(pixels, pixels + texels * 4);
-  stbi_image_free(pixels);
   return true;
 }
 

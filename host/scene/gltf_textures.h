@@ -1,6 +1,6 @@
 // glTF images, samplers and textures into Scene::textures, and a material's texture references (with
-// KHR_texture_transform). Images are decoded by stb_image (PNG, JPEG) inside tinygltf's image callback, after
-// their dimensions are checked against the loader's limits: a small file must not decode into gigabytes.
+// KHR_texture_transform). Images are decoded by libpng and libjpeg-turbo (scene/image_decode) inside tinygltf's image callback,
+// after their dimensions are checked against the loader's limits: a small file must not decode into gigabytes.
 #pragma once
 #include <cstdint>
 #include <string>

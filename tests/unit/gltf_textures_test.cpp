@@ -75,7 +75,7 @@ TEST(GltfTextures, UndecodableAndOversizedImagesAreIgnoredWithAWarningNamingThem
 }
 
 // Only PNG and JPEG, by their signatures: a Radiance .hdr, a GIF or a BMP as a texture is ignored with a warning,
-// never handed to stb_image's other decoders (its HDR decoder looped forever on a cut file).
+// never handed to another decoder (stb_image's HDR decoder, which the loader once reached, looped forever on a cut file).
 TEST(GltfTextures, ImagesOtherThanPngAndJpegAreIgnoredWithAWarning) {
   auto dir = test::makeTempDir("textures_formats");
   std::ofstream(dir / "sky.hdr", std::ios::binary) << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 64 +X 64\n" << char(2) << char(2);
@@ -85,6 +85,19 @@ TEST(GltfTextures, ImagesOtherThanPngAndJpegAreIgnoredWithAWarning) {
   Scene s = loadGltf(test::writeQuadsGltf(dir, "formats", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
   EXPECT_TRUE(anyWarningHas(s, "image 0: neither PNG nor JPEG"));
   EXPECT_TRUE(anyWarningHas(s, "image 1: neither PNG nor JPEG"));
+  EXPECT_FALSE(s.materials[0].baseColorTexture.present());
+}
+
+// A JPEG whose Huffman table overruns stb_image's (Debian's 2.27 wrote past it: found by image_fuzzer, kept in
+// tests/fuzz/regressions/images/) is refused by libjpeg-turbo with a warning naming the image.
+TEST(GltfTextures, ACorruptJpegIsIgnoredWithAWarning) {
+  auto dir = test::makeTempDir("textures_corrupt");
+  std::filesystem::copy_file(std::string(VKMC_SOURCE_DIR) + "/tests/fuzz/regressions/images/stb_huffman_overflow.jpg",
+                             dir / "bad.jpg");
+  std::string material = R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})";
+  std::string extra = R"("images":[{"uri":"bad.jpg"}],"textures":[{"source":0}])";
+  Scene s = loadGltf(test::writeQuadsGltf(dir, "corrupt", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
+  EXPECT_TRUE(anyWarningHas(s, "image 0: a corrupt")) << (s.warnings.empty() ? "" : s.warnings.back());
   EXPECT_FALSE(s.materials[0].baseColorTexture.present());
 }
 

@@ -1,5 +1,5 @@
 // libFuzzer entry: any bytes as a glTF image (scene/gltf_textures decodeGltfImage: the PNG and JPEG signatures,
-// the size checks, then stb_image). The decoder never throws: an image it cannot read is named in its failures.
+// the size checks, then libpng or libjpeg-turbo). It never throws: an image it cannot read is named in its failures.
 #include <tiny_gltf.h>
 
 #include <cstdint>
