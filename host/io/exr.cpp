@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "error.h"
 #include "io/output_files.h"
@@ -74,12 +76,11 @@ ExrImage filmToImage(const Film& film) {
 void writeFilmExr(const std::string& path, const Film& film) { writeExr(path, filmToImage(film)); }
 std::string encodeFilmExr(const Film& film) { return encodeExr(filmToImage(film)); }
 
-ExrImage readExr(const std::string& path, uint64_t maxValues) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw Error("cannot read EXR '" + path + "': " + (std::filesystem::exists(path, ec) ? "not a regular file" : "no such file"));
+ExrImage decodeExr(const std::string& bytes, const std::string& name, uint64_t maxValues) {
   try {
-    Imf::InputFile file(path.c_str());
+    Imf::StdISStream stream;
+    stream.str(bytes);
+    Imf::InputFile file(stream);
     Imath::Box2i dw = file.header().dataWindow();
     ExrImage img;
     // In 64 bits: a forged window's sides overflow int, and its size must be refused before anything is allocated.
@@ -87,7 +88,7 @@ ExrImage readExr(const std::string& path, uint64_t maxValues) {
     uint64_t channels = 0;
     for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) ++channels;
     if (width <= 0 || height <= 0 || uint64_t(width) * uint64_t(height) * std::max<uint64_t>(channels, 1) > maxValues)
-      throw Error("cannot read EXR '" + path + "': it declares " + std::to_string(width) + "x" + std::to_string(height) +
+      throw Error("cannot read EXR '" + name + "': it declares " + std::to_string(width) + "x" + std::to_string(height) +
                   " pixels of " + std::to_string(channels) + " channels, more than the " + std::to_string(maxValues) +
                   " values vkmc reads");
     img.width = int(width);
@@ -105,8 +106,18 @@ ExrImage readExr(const std::string& path, uint64_t maxValues) {
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {
-    throw Error("cannot read EXR '" + path + "': " + e.what());
+    throw Error("cannot read EXR '" + name + "': " + e.what());
   }
+}
+
+ExrImage readExr(const std::string& path, uint64_t maxValues) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw Error("cannot read EXR '" + path + "': " + (std::filesystem::exists(path, ec) ? "not a regular file" : "no such file"));
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in && !in.eof()) throw Error("cannot read EXR '" + path + "'");
+  return decodeExr(bytes, path, maxValues);
 }
 
 }  // namespace vkmc

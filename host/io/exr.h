@@ -28,5 +28,7 @@ constexpr uint64_t kExrMaxValues = uint64_t(1) << 29;
 // Throws vkmc::Error naming the file when it is not a regular file, not an EXR, or declares more than maxValues
 // values (checked from its header, before anything is allocated).
 ExrImage readExr(const std::string& path, uint64_t maxValues = kExrMaxValues);
+// The same from the file's bytes; `name` names it in errors.
+ExrImage decodeExr(const std::string& bytes, const std::string& name, uint64_t maxValues = kExrMaxValues);
 
 }  // namespace vkmc
