@@ -76,7 +76,10 @@ void shadeExtensions(Material m, SurfacePoint s, vec3 unmappedNormal, inout Gltf
   vec3 specularColor = texturedColor(m.specularColor.rgb, m.specularColorTexture, s);
   setIor(gm, m.specularColor.w, specularColor);
   if (kHasTransmission != 0u && m.attenuation.w > 0.0) {
-    float ior = m.specularColor.w;
+    // An index-matched volume (ior 1) refracts as one of ior 1 + 1e-4: at exactly 1 every refraction gives wi = -wo,
+    // where Walter's rough btdf has no half vector (NaN samples); 1e-4 bends no ray visibly, and the lobe tends to
+    // the straight pass that ior 1 is. The Fresnel term keeps the file's ior (setIor above).
+    float ior = max(m.specularColor.w, 1.0001);
     setTransmission(gm, texturedFactor(m.attenuation.w, m.transmissionTexture, s, 0u), s.frontFace ? ior : 1.0 / ior,
                     m.volumetric == 0u);
   }
