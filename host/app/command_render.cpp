@@ -54,10 +54,9 @@ struct RenderArgs {
 std::atomic<int> stopSignal{0};
 static_assert(std::atomic<int>::is_always_lock_free, "stored from a signal handler");
 extern "C" void requestStop(int sig) {
-  if (stopSignal.load() == 0) {
-    stopSignal.store(sig);
-    return;
-  }
+  int none = 0;
+  if (stopSignal.compare_exchange_strong(none, sig)) return;         // the first: a request (two at once: one wins)
+  if (outputRenamesInFlight()) return deferSignalUntilRenamed(sig);  // the outputs' renames finish first
   removePendingTemporaries();
   ::signal(sig, SIG_DFL);
   ::raise(sig);
@@ -70,6 +69,7 @@ void catchStopSignals() {
     sigaction(sig, nullptr, &before);
     if (before.sa_handler == SIG_IGN) continue;  // nohup and friends: stay ignored
     now.sa_handler = requestStop;
+    now.sa_flags = SA_RESTART;  // as std::signal's: slow calls in other threads resume rather than fail with EINTR
     sigemptyset(&now.sa_mask);
     sigaction(sig, &now, nullptr);
   }
@@ -227,7 +227,12 @@ void checkOutputs(const RenderArgs& a, const std::string& checkpoint) {
   const RenderOptions& ro = a.options;
   std::vector<std::string> inputs = gltfInputFiles(ro.scenePath);
   inputs.insert(inputs.end(), {ro.referencePath, a.estimatorFile, ro.environmentPath});
-  checkOutputPaths({{"--output", a.out}, {"--png", a.png}, {"--report", a.report}, {"--checkpoint", checkpoint}}, inputs);
+  checkOutputPaths({{"--output", a.out},
+                    {"--png", a.png},
+                    {"--report", a.report},
+                    {"--checkpoint", checkpoint},
+                    {"--checkpoint's lock", checkpoint.empty() ? "" : checkpoint + ".lock"}},
+                   inputs);
   // The checkpoint being resumed is an input too, though the render goes on checkpointing to it.
   for (const auto& [flag, path] : {std::pair{"--output", a.out}, {"--png", a.png}, {"--report", a.report}})
     if (!path.empty() && !a.resume.empty() && sameFile(path, a.resume))
@@ -272,7 +277,7 @@ bool writeFinalCheckpoint(const RenderArgs& a, RenderOutcome& result, const std:
   try {
     writeFileAtomically(checkpoint, encodeRenderCheckpoint(result));
     return true;
-  } catch (const Error& e) {
+  } catch (const std::exception& e) {  // vkmc::Error, or bad_alloc: the samples done are written regardless
     result.warnings.push_back(std::string(e.what()) + ": the samples done are in '" + a.out +
                               "', but the render cannot be resumed from a checkpoint");
     return false;
@@ -284,7 +289,8 @@ void writeOutputs(const RenderArgs& a, const RenderOutcome& result, const nlohma
   OutputSet outputs;
   outputs.add(a.out, encodeFilmExr(result.film));
   if (!a.png.empty()) outputs.add(a.png, encodeFilmPng(result.film, a.exposure));
-  if (!a.report.empty()) outputs.add(a.report, report.dump(2) + "\n");
+  // Paths are bytes, not always UTF-8: invalid sequences are replaced in the report rather than failing it.
+  if (!a.report.empty()) outputs.add(a.report, report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   outputs.commit();
 }
 

@@ -386,8 +386,8 @@ RenderControl renderControl(const RunControl& run, RenderOutcome& out) {
       lastEnd = Clock::now();
       out.checkpointSeconds += lastWrite;
       if (run.afterCheckpoint) run.afterCheckpoint();
-    } catch (const Error& e) {
-      if (warned) return;  // said once: a full disk stays full
+    } catch (const std::exception& e) {  // vkmc::Error, or bad_alloc for a large film: the render goes on
+      if (warned) return;                // said once: a full disk stays full
       warned = true;
       std::fprintf(stderr, "vkmc: warning: %s (the render goes on; the last checkpoint is kept; later failures unsaid)\n",
                    e.what());

@@ -47,7 +47,8 @@ std::string encodeCheckpoint(const Checkpoint& c) {
   forEachArray(st.film, [&](const auto& v) { payload.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(v[0])); });
   if (st.batchSamples > 0)
     payload.append(reinterpret_cast<const char*>(st.batch.data()), st.batch.size() * sizeof(gpu::FilmPixel));
-  const std::string text = header.dump();
+  // Paths in the configuration are bytes, not always UTF-8: replaced where invalid, never a failed checkpoint.
+  const std::string text = header.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   std::string out(kMagic, kMagicBytes);
   appendU64(out, text.size());
   out += text;

@@ -30,7 +30,7 @@ FileLock::FileLock(const std::string& path, const std::string& what) : lockPath_
     }
     struct stat held {
     }, named{};
-    if (::fstat(fd_, &held) == 0 && ::stat(lockPath_.c_str(), &named) == 0 && held.st_ino == named.st_ino &&
+    if (::fstat(fd_, &held) == 0 && ::lstat(lockPath_.c_str(), &named) == 0 && held.st_ino == named.st_ino &&
         held.st_dev == named.st_dev)
       return;
     ::close(fd_);  // the holder before removed it meanwhile: lock the file the path names now
@@ -41,7 +41,12 @@ FileLock::FileLock(const std::string& path, const std::string& what) : lockPath_
 
 FileLock::~FileLock() {
   if (fd_ < 0) return;
-  ::unlink(lockPath_.c_str());
+  // Only the lock file this lock holds: a file since renamed onto its path is someone's, not vkmc's lock.
+  struct stat held {
+  }, named{};
+  if (::fstat(fd_, &held) == 0 && ::lstat(lockPath_.c_str(), &named) == 0 && held.st_ino == named.st_ino &&
+      held.st_dev == named.st_dev)
+    ::unlink(lockPath_.c_str());
   ::close(fd_);
 }
 

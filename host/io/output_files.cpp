@@ -23,7 +23,13 @@ constexpr int kMaxPending = 16;
 char pendingPaths[kMaxPending][4096];
 std::atomic<bool> pendingUsed[kMaxPending];
 
+// While a commit renames its temporaries, a signal that would end the process waits for the renames (a signal
+// for the process may land in any thread, and sigprocmask holds back only the renaming one's).
+std::atomic<bool> renaming{false};
+std::atomic<int> deferredSignal{0};
+
 void removePendingAndReraise(int sig) {
+  if (renaming.load()) return deferSignalUntilRenamed(sig);
   removePendingTemporaries();
   std::signal(sig, SIG_DFL);
   std::raise(sig);
@@ -86,8 +92,17 @@ class SignalBlock {
     sigemptyset(&set);
     for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, s);
     sigprocmask(SIG_BLOCK, &set, &old_);
+    renaming.store(true);
   }
-  ~SignalBlock() { sigprocmask(SIG_SETMASK, &old_, nullptr); }
+  ~SignalBlock() {
+    renaming.store(false);
+    sigprocmask(SIG_SETMASK, &old_, nullptr);
+    // A signal that arrived in another thread meanwhile ends the process now, the renames done.
+    if (int sig = deferredSignal.exchange(0)) {
+      std::signal(sig, SIG_DFL);
+      std::raise(sig);
+    }
+  }
 
  private:
   sigset_t old_;
@@ -126,6 +141,9 @@ std::string temporaryBeside(const std::string& path, int attempt) {
 }
 
 }  // namespace
+
+bool outputRenamesInFlight() noexcept { return renaming.load(); }
+void deferSignalUntilRenamed(int sig) noexcept { deferredSignal.store(sig); }
 
 void removePendingTemporaries() noexcept {
   for (int i = 0; i < kMaxPending; ++i)

@@ -23,6 +23,10 @@ class OutputSet {
 
 // Removes the temporaries of commits in flight; async-signal-safe, for a signal handler that ends the process.
 void removePendingTemporaries() noexcept;
+// Whether a commit is renaming its temporaries onto their targets; a handler that would end the process defers its
+// signal instead, and the commit raises it once every rename is done (both async-signal-safe).
+bool outputRenamesInFlight() noexcept;
+void deferSignalUntilRenamed(int sig) noexcept;
 
 // One output, as an OutputSet of one.
 void writeFileAtomically(const std::string& path, const std::string& bytes);

@@ -166,11 +166,28 @@ void checkBufferViews(const nlohmann::json& doc) {
     }
   }
   if (!doc.contains("images") || !doc["images"].is_array()) return;
+  // An EXT_meshopt_compression fallback buffer holds no data (vkmc reads such files with it replaced by one byte):
+  // an image decoded from a view into one would read past that byte.
+  auto isFallback = [&](uint64_t buffer) {
+    if (buffer >= buffers.size() || !buffers[buffer].is_object()) return false;
+    const nlohmann::json& b = buffers[buffer];
+    const auto ext = b.find("extensions");
+    if (ext == b.end() || !ext->is_object() || !ext->contains("EXT_meshopt_compression")) return false;
+    const nlohmann::json& meshopt = (*ext)["EXT_meshopt_compression"];
+    return meshopt.is_object() && meshopt.value("fallback", nlohmann::json(false)) == nlohmann::json(true);
+  };
   for (size_t i = 0; i < doc["images"].size(); ++i) {
     const nlohmann::json& image = doc["images"][i];
-    if (image.is_object() && image.contains("bufferView") && unsignedOr(image, "bufferView", UINT64_MAX) >= views.size()) {
-      char why[96];
+    if (!image.is_object() || !image.contains("bufferView")) continue;
+    char why[128];
+    const uint64_t view = unsignedOr(image, "bufferView", UINT64_MAX);
+    if (view >= views.size()) {
       std::snprintf(why, sizeof(why), "image %zu names a bufferView the file does not have", i);
+      throw Error(why);
+    }
+    if (views[view].is_object() && isFallback(unsignedOr(views[view], "buffer", UINT64_MAX))) {
+      std::snprintf(why, sizeof(why), "image %zu reads bufferView %llu, in a meshopt fallback buffer that holds no data", i,
+                    (unsigned long long)view);
       throw Error(why);
     }
   }

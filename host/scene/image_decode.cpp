@@ -37,7 +37,12 @@ DecodedImage decodePng(const unsigned char* bytes, size_t size, uint32_t maxSide
   image.format = PNG_FORMAT_RGBA;
   DecodedImage out;
   out.width = image.width, out.height = image.height;
-  out.rgba.resize(PNG_IMAGE_SIZE(image));
+  try {
+    out.rgba.resize(PNG_IMAGE_SIZE(image));
+  } catch (...) {
+    png_image_free(&image);  // finish_read frees it on every path; an allocation that fails before it must too
+    throw;
+  }
   if (!png_image_finish_read(&image, nullptr, out.rgba.data(), 0, nullptr))
     throw Error(std::string("a corrupt or truncated PNG: ") + image.message);
   return out;

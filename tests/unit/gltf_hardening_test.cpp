@@ -84,6 +84,19 @@ TEST(GltfHardening, AnImagesBufferViewPastItsBufferIsRefusedBeforeDecoding) {
   EXPECT_NE(msg.find("image 0 names a bufferView the file does not have"), std::string::npos) << msg;
 }
 
+// The same read through a meshopt fallback buffer: the file declares 100000 bytes, which vkmc replaces by one byte
+// before tinygltf reads it, so a view that passes the declared length still pointed past the byte (review finding).
+TEST(GltfHardening, AnImageInAMeshoptFallbackBufferIsRefused) {
+  const std::string doc = R"({"asset":{"version":"2.0"},"extensionsUsed":["EXT_meshopt_compression"],)"
+                          R"("buffers":[{"byteLength":100000,"extensions":{"EXT_meshopt_compression":{"fallback":true}}}],)"
+                          R"("bufferViews":[{"buffer":0,"byteOffset":90000,"byteLength":1000}],)"
+                          R"("images":[{"bufferView":0,"mimeType":"image/png"}],"textures":[{"source":0}]})";
+  const std::string path = (dir() / "meshopt_fallback_image.gltf").string();
+  std::ofstream(path) << doc;
+  std::string msg = test::loadError(path);
+  EXPECT_NE(msg.find("in a meshopt fallback buffer that holds no data"), std::string::npos) << msg;
+}
+
 TEST(GltfHardening, DeeplyNestedJsonIsRefusedBeforeParsing) {
   std::string deep = std::string(20000, '[') + std::string(20000, ']');
   std::string msg = test::loadError(quadWith("deep", "\"scene\":0,", "\"scene\":0,\"extras\":" + deep + ","));
