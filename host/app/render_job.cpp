@@ -171,7 +171,11 @@ nlohmann::json rouletteJson(const RouletteTable& t) {
 RouletteTable rouletteFromJson(const nlohmann::json& j) {
   RouletteTable t;
   if (!j.is_array() || j.size() != t.scale.size()) throw Error("checkpoint: malformed efficiency roulette table");
-  for (size_t d = 0; d < t.scale.size(); ++d) t.scale[d] = std::bit_cast<float>(j[d].get<uint32_t>());
+  for (size_t d = 0; d < t.scale.size(); ++d) {
+    if (!j[d].is_number_unsigned() || j[d].get<uint64_t>() > UINT32_MAX)
+      throw Error("checkpoint: malformed efficiency roulette table");
+    t.scale[d] = std::bit_cast<float>(uint32_t(j[d].get<uint64_t>()));
+  }
   return t;
 }
 
@@ -273,11 +277,10 @@ RenderOptions resolveDeviceChoices(vk::Context& ctx, const RenderOptions& option
                                    RenderSettings& settings, RenderOutcome& out) {
   RenderOptions resolved = options;
   if (run.resumeConfig) {
-    const nlohmann::json& was = run.resumeConfig->at("options");
-    if (resolved.integrator == Integrator::Auto)
-      resolved.integrator = integratorFromString(was.at("integrator").get<std::string>());
-    if (resolved.workgroupSize == 0) resolved.workgroupSize = was.value("workgroup", 0u);
-    if (resolved.wavefrontPaths == 0) resolved.wavefrontPaths = was.value("wavefront_paths", 0u);
+    const RenderOptions was = renderOptionsFromJson(run.resumeConfig->at("options"));  // each value type-checked
+    if (resolved.integrator == Integrator::Auto) resolved.integrator = was.integrator;
+    if (resolved.workgroupSize == 0) resolved.workgroupSize = was.workgroupSize;
+    if (resolved.wavefrontPaths == 0) resolved.wavefrontPaths = was.wavefrontPaths;
   }
   const DeviceTuning tuning = deviceTuning(ctx.deviceType(), ctx.subgroupSize());
   if (resolved.integrator == Integrator::Auto)

@@ -1,7 +1,10 @@
 // RenderOptions <-> JSON (see the header).
 #include "app/render_options_json.h"
 
+#include <cmath>
 #include <filesystem>
+#include <limits>
+#include <type_traits>
 
 #include "error.h"
 
@@ -19,9 +22,24 @@ nlohmann::json vec3Json(const std::optional<glm::vec3>& v) {
   return v ? nlohmann::json::array({v->x, v->y, v->z}) : nlohmann::json(nullptr);
 }
 
+// A number of type T taken only from JSON of its kind and range: the options come from a checkpoint, which a forger
+// can seal, and nlohmann's conversion of 1e300 to an integer or a float is undefined behaviour.
+template <class T>
+T numberFrom(const nlohmann::json& j) {
+  if constexpr (std::is_unsigned_v<T>) {
+    if (!j.is_number_unsigned() || j.get<uint64_t>() > std::numeric_limits<T>::max())
+      throw Error("malformed render options: " + j.dump() + " is not a count");
+    return T(j.get<uint64_t>());
+  } else {
+    if (!j.is_number() || !(std::abs(j.get<double>()) <= double(std::numeric_limits<T>::max())))
+      throw Error("malformed render options: " + j.dump() + " is not a number in range");
+    return T(j.get<double>());
+  }
+}
+
 std::optional<glm::vec3> vec3From(const nlohmann::json& j) {
   if (j.is_null()) return std::nullopt;
-  return glm::vec3(j.at(0).get<float>(), j.at(1).get<float>(), j.at(2).get<float>());
+  return glm::vec3(numberFrom<float>(j.at(0)), numberFrom<float>(j.at(1)), numberFrom<float>(j.at(2)));
 }
 
 template <class T>
@@ -31,7 +49,7 @@ nlohmann::json optionalJson(const std::optional<T>& v) {
 
 template <class T>
 std::optional<T> optionalFrom(const nlohmann::json& j) {
-  return j.is_null() ? std::nullopt : std::optional<T>(j.get<T>());
+  return j.is_null() ? std::nullopt : std::optional<T>(numberFrom<T>(j));
 }
 
 }  // namespace
@@ -67,24 +85,25 @@ RenderOptions renderOptionsFromJson(const nlohmann::json& j) {
     o.scenePath = j.at("scene");
     o.width = optionalFrom<uint32_t>(j.at("width"));
     o.height = optionalFrom<uint32_t>(j.at("height"));
-    o.spp = j.at("spp");
+    o.spp = numberFrom<uint32_t>(j.at("spp"));
     o.estimator.applyJson(j.at("estimator"));
-    o.seed = j.at("seed");
+    o.seed = numberFrom<uint32_t>(j.at("seed"));
     o.cameraIndex = optionalFrom<uint32_t>(j.at("camera"));
     o.lookFrom = vec3From(j.at("look_from"));
     o.lookAt = vec3From(j.at("look_at"));
-    o.fovDegrees = j.at("fov");
+    o.fovDegrees = numberFrom<float>(j.at("fov"));
     o.background = vec3From(j.at("background"));
     o.environmentPath = j.at("environment");
-    o.environmentRotation = j.at("environment_rotation");
-    o.environmentStrength = j.at("environment_strength");
+    o.environmentRotation = numberFrom<float>(j.at("environment_rotation"));
+    o.environmentStrength = numberFrom<float>(j.at("environment_strength"));
     o.filter = pixelFilterFromJson(j.at("filter"));
-    o.timeBudget = j.at("time_budget");
+    o.timeBudget = numberFrom<double>(j.at("time_budget"));
     o.referencePath = j.at("reference");
     o.specialize = j.at("specialize");
     o.withoutTextures = j.at("without_textures");
-    o.workgroupSize = j.at("workgroup");
-    o.wavefrontPaths = j.value("wavefront_paths", 0u);  // absent in checkpoints before it existed: the device's
+    o.workgroupSize = numberFrom<uint32_t>(j.at("workgroup"));
+    // absent in checkpoints before it existed: the device's
+    o.wavefrontPaths = j.contains("wavefront_paths") ? numberFrom<uint32_t>(j.at("wavefront_paths")) : 0u;
     o.integrator = integratorFromString(j.at("integrator"));
   } catch (const nlohmann::json::exception& e) {
     throw Error(std::string("malformed render options: ") + e.what());
