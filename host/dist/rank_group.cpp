@@ -88,8 +88,12 @@ void waitFor(MPI_Request& request, int peer, const char* what, const RankGroup& 
     const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // A rank waiting on rank 0 waits half as long again: where rank 0 is alive it names the rank that is not.
     if (waited > rankTimeoutSeconds() * (peer == 0 && group.rank() != 0 ? 1.5 : 1.0)) {
-      std::fprintf(stderr, "vkmc: error: rank %d of %u did not answer for %.0f s (%s): it stopped or hung, so the job ends\n",
-                   peer, group.size(), waited, what);
+      if (peer >= 0)
+        std::fprintf(stderr, "vkmc: error: rank %d of %u did not answer for %.0f s (%s): it stopped or hung, so the job ends\n",
+                     peer, group.size(), waited, what);
+      else
+        std::fprintf(stderr, "vkmc: error: a rank of %u did not answer for %.0f s (%s): it stopped or hung, so the job ends\n",
+                     group.size(), waited, what);
       group.abort(1);
     }
     ::usleep(polls < 100 ? 50 : 2000);  // quick answers stay quick; a long wait costs no CPU
@@ -144,13 +148,15 @@ void RankGroup::broadcast(std::string& bytes) const {
 #ifdef VKMC_HAVE_MPI
   long long length = static_cast<long long>(bytes.size());
   MPI_Request request;
+  // Rank 0 waits on its own broadcast only while a receiver stalls, which it cannot name (peer -1).
+  const int from = rank_ == 0 ? -1 : 0;
   MPI_Ibcast(&length, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD, &request);
-  waitFor(request, 0, "broadcasting", *this);
+  waitFor(request, from, "broadcasting", *this);
   bytes.resize(size_t(length));
   for (long long at = 0; at < length;) {
     int chunk = int(std::min<long long>(length - at, 1ll << 30));
     MPI_Ibcast(bytes.data() + at, chunk, MPI_BYTE, 0, MPI_COMM_WORLD, &request);
-    waitFor(request, 0, "broadcasting", *this);
+    waitFor(request, from, "broadcasting", *this);
     at += chunk;
   }
 #endif
@@ -174,7 +180,7 @@ int RankGroup::maxOver(int mine) const {
     waitFor(request, 0, "agreeing on the next step", *this);
   }
   MPI_Ibcast(&result, 1, MPI_INT, 0, MPI_COMM_WORLD, &request);
-  waitFor(request, 0, "agreeing on the next step", *this);
+  waitFor(request, rank_ == 0 ? -1 : 0, "agreeing on the next step", *this);
 #endif
   return result;
 }

@@ -11,6 +11,7 @@
 #include "error.h"
 #include "render/render_stats.h"
 #include "scene/content_hash.h"
+#include "scene/gltf_input_guard.h"
 
 namespace vkmc {
 namespace {
@@ -140,6 +141,11 @@ Checkpoint stateFromHeader(const nlohmann::json& header, uint64_t payloadBytes, 
 Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
   const Fail fail = [&](const std::string& why) { return Error("checkpoint '" + name + "' " + why); };
   const Sections s = checkedSections(bytes, fail);
+  try {  // a forged header nested 100k deep would overflow the stack when copied or dumped
+    checkJsonBounds(std::string_view(bytes).substr(s.headerAt, s.headerBytes), InputLimits{});
+  } catch (const Error& e) {
+    throw fail(std::string("has a header that is not JSON within bounds: ") + e.what());
+  }
   nlohmann::json header =
       nlohmann::json::parse(bytes.begin() + s.headerAt, bytes.begin() + s.headerAt + s.headerBytes, nullptr, false);
   if (header.is_discarded() || !header.is_object()) throw fail("has a header that is not JSON");

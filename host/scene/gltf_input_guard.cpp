@@ -195,10 +195,14 @@ void checkBufferViews(const nlohmann::json& doc) {
 
 }  // namespace
 
-GltfJsonFacts scanGltfJson(std::string_view json, const InputLimits& limits) {
+void checkJsonBounds(std::string_view json, const InputLimits& limits) {
   BoundedScan scan(limits);
   if (!nlohmann::json::sax_parse(json.begin(), json.end(), &scan) || !scan.problem.empty())
     throw Error(scan.problem.empty() ? std::string("invalid JSON") : scan.problem);
+}
+
+GltfJsonFacts scanGltfJson(std::string_view json, const InputLimits& limits) {
+  checkJsonBounds(json, limits);
   // Bounded now: read what the file declares about its buffers and extensions.
   nlohmann::json doc = nlohmann::json::parse(json.begin(), json.end());
   GltfJsonFacts facts;

@@ -34,6 +34,11 @@ struct GltfJsonFacts {
   std::vector<std::string> externalUris;  // buffers' and images' uris that name files (not data: uris), as written
 };
 
+// Throws vkmc::Error when JSON text is malformed, nested deeper than limits.maxJsonDepth or holds more than
+// limits.maxJsonValues values: checked by a scan that keeps nothing, before anything parses it (a parsed value's
+// copies and dumps recurse as deep as it nests).
+void checkJsonBounds(std::string_view json, const InputLimits& limits);
+
 // Throws vkmc::Error when the JSON is malformed, nested deeper than limits.maxJsonDepth or holds more than
 // limits.maxJsonValues values, or when a bufferView lies outside its buffer's declared length (before anything
 // reads one: tinygltf decodes images from bufferViews unchecked).

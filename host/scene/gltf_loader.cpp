@@ -493,9 +493,14 @@ Scene flattenModel(const tinygltf::Model& model, const std::string& path, const 
 
 namespace {
 
+// As tinygltf decodes a uri (its urldecode): %XX escapes, and '+' as a space.
 std::string percentDecoded(const std::string& uri) {
   std::string out;
   for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '+') {
+      out += ' ';
+      continue;
+    }
     if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
         std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
       out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
@@ -518,8 +523,14 @@ std::vector<std::string> gltfInputFiles(const std::string& path, const LoadLimit
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     std::string_view json =
         ext == ".glb" ? glbJsonChunk(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-    for (const std::string& uri : scanGltfJson(json, limits.input).externalUris)
-      files.push_back((fs::path(path).parent_path() / percentDecoded(uri)).string());
+    // Where tinygltf reads it: its base folder and the uri joined as strings (an absolute uri stays inside the
+    // folder), or where that file is missing, the uri relative to the working folder.
+    const std::string base = fs::path(path).parent_path().empty() ? "." : fs::path(path).parent_path().string();
+    for (const std::string& uri : scanGltfJson(json, limits.input).externalUris) {
+      const std::string decoded = percentDecoded(uri), beside = fs::path(base + "/" + decoded).lexically_normal().string();
+      std::error_code ec;
+      files.push_back(fs::exists(beside, ec) ? beside : decoded);
+    }
   } catch (const Error&) {
     // The load itself names what is wrong with the file.
   }

@@ -160,4 +160,11 @@ TEST(Checkpoint, AbsurdHeadersAreRefusedBeforeAllocation) {
   floaty["width"] = 1e300;  // a float never converts to a count (an undefined conversion before)
   EXPECT_NE(refusal(sealed(floaty.dump(), payload)).find("has an impossible width"), std::string::npos);
   EXPECT_EQ(refusal(sealed(header.dump(), payload)), "") << "the reseal itself is valid";
+  // A config nested 100,000 deep: refused by a scan that keeps nothing (copying or dumping it would recurse that
+  // deep and overflow the stack).
+  nlohmann::json marked = header;
+  marked["config"]["deep"] = "DEEP";
+  std::string deep = marked.dump();
+  deep.replace(deep.find("\"DEEP\""), 6, std::string(100000, '[') + std::string(100000, ']'));
+  EXPECT_NE(refusal(sealed(deep, payload)).find("nested deeper than"), std::string::npos);
 }
