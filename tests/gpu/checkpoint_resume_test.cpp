@@ -134,9 +134,9 @@ TEST(ResumedRenderRefusal, AnotherConfigurationIsNamed) {
 
 TEST(ResumedTimeBudget, ContinuesWithWhatIsLeftOfTheBudget) {
   RenderOptions o = options(1u << 24, EstimatorConfig{});
-  // The first render is stopped at its first checkpoint (the sync point afterCheckpoint), which follows the budget's
-  // first pass of one sample: a budget 2 s long leaves that pass far more time than it takes.
-  o.timeBudget = 2.0;
+  // Each run is stopped at its first checkpoint (the sync point afterCheckpoint), which follows its first pass: a
+  // budget of ten minutes is never what ends them, however slow the machine.
+  o.timeBudget = 600.0;
   std::atomic<int> stop{0};
   RunControl run;
   run.checkpointPath = (dir() / "budget.ckpt").string();
@@ -147,9 +147,14 @@ TEST(ResumedTimeBudget, ContinuesWithWhatIsLeftOfTheBudget) {
   ASSERT_EQ(full.checkpointsWritten, 1u);
   ASSERT_TRUE(full.interrupted);
   Checkpoint ck = readCheckpoint(run.checkpointPath);
+  std::atomic<int> stopResumed{0};
   RunControl resume;
   resume.resumeConfig = &ck.config;
   resume.resumeState = &ck.state;
+  resume.checkpointPath = (dir() / "budget_resumed.ckpt").string();
+  resume.checkpointEvery = 1e-9;
+  resume.stop = &stopResumed;
+  resume.afterCheckpoint = [&] { stopResumed = SIGTERM; };
   const uint32_t before = ck.state.nextSample;
   const double secondsBefore = ck.state.stats.seconds;
   RenderOutcome resumed = runRender(sharedContext(), o, resume);
