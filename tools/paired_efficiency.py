@@ -14,7 +14,10 @@ each other on this machine; side by side they read within a few percent.
 
   python3 tools/paired_efficiency.py SCENE [--a EST.json] [--b EST.json] [--seconds S] [--pairs N]
       [--width W --height H] [--reference EXR | --reference-spp N | --reference-constant L]
-      [--independent-seeds] [--cores swap|free] [--json OUT] [--vkmc PATH]
+      [--independent-seeds] [--cores swap|free] [--a-flags "..."] [--b-flags "..."] [--json OUT] [--vkmc PATH]
+
+--a-flags and --b-flags add render flags to one side (e.g. --b-flags="--adaptive on": adaptive sampling against
+the same estimator without it); the reference is rendered without them.
 
 A and B default to scenes/estimators/baseline.json (throughput roulette) and rr_ears_guard.json (`--rr ears` as
 it runs by default); --b the same file as --a is the method's control. Without --reference, a reference is
@@ -30,6 +33,7 @@ import hashlib
 import json
 import math
 import os
+import shlex
 import statistics
 import struct
 import subprocess
@@ -200,6 +204,8 @@ def main():
     p.add_argument("--independent-seeds", action="store_true", help="a seed for each render, not one a pair")
     p.add_argument("--cores", choices=("swap", "free"), default="swap",
                    help="swap: the two renders trade cores every 0.25 s; free: left to the scheduler")
+    p.add_argument("--a-flags", default="", help="render flags for A's renders (not the reference's)")
+    p.add_argument("--b-flags", default="", help="render flags for B's renders")
     p.add_argument("--json")
     p.add_argument("--vkmc", default=os.environ.get("VKMC", os.path.join(ROOT, "build/vkmc")))
     args = p.parse_args()
@@ -230,10 +236,11 @@ def main():
             seed_a = args.seed + 2 * k
             seed_b = seed_a + (1 if args.independent_seeds else 0)
             # Started in turns, A first on even pairs, so neither always starts first.
-            order = (("a", args.a, seed_a), ("b", args.b, seed_b))
-            for name, est, seed in (order if k % 2 == 0 else order[::-1]):
+            order = (("a", args.a, seed_a, args.a_flags), ("b", args.b, seed_b, args.b_flags))
+            for name, est, seed, flags in (order if k % 2 == 0 else order[::-1]):
                 exr, rep = os.path.join(tmp, f"{name}{k}.exr"), os.path.join(tmp, f"{name}{k}.json")
                 extra = ["--time-budget", str(args.seconds), "--seed", str(seed), "--reference", reference]
+                extra += shlex.split(flags)
                 procs.append((name, rep, render(args, est, exr, rep, extra, threads=1)))
             if args.cores == "swap":
                 trade_cores([p for _, _, p in procs])
@@ -272,7 +279,8 @@ def main():
     print(f"{os.path.basename(args.scene)}: B/A efficiency, {len(pairs)} concurrent pairs at {args.seconds:g} s: "
           f"geometric mean {math.exp(mean):.3f} ({shown}), median {median:.3f}")
     if json_path:
-        out = {"scene": args.scene, "a": args.a, "b": args.b, "seconds": args.seconds, "width": args.width,
+        out = {"scene": args.scene, "a": args.a, "b": args.b, "a_flags": args.a_flags, "b_flags": args.b_flags,
+               "seconds": args.seconds, "width": args.width,
                "height": args.height, "reference": reference, "reference_relvariance": reference_noise,
                "independent_seeds": args.independent_seeds, "cores": args.cores, "pairs": pairs,
                "geometric_mean": math.exp(mean), "interval95": interval, "median": median}

@@ -43,7 +43,7 @@ struct RenderArgs {
   long long seed = 1;
   int width = -1, height = -1, cameraIndex = -1;
   std::string integrator = "auto", workgroup = "auto", wavefront = "auto", stageTimes = "auto";
-  std::string checkpoint, resume;
+  std::string checkpoint, resume, adaptive = "off";
   double checkpointEvery = 120.0;
 };
 
@@ -167,7 +167,9 @@ void fillOptions(RenderArgs& a, const CLI::App& cmd) {
   if (a.seed < 0 || a.seed > 0xffffffffLL) throw Error("--seed must be between 0 and 4294967295");
   if (cmd.count("--camera") && a.cameraIndex < 0) throw Error("--camera must be >= 0");
   ro.spp = static_cast<uint32_t>(a.spp);
-  if (ro.timeBudget > 0.0 && !cmd.count("--spp")) ro.spp = kMaxSpp;  // the budget decides
+  if ((ro.timeBudget > 0.0 || ro.targetError > 0.0) && !cmd.count("--spp")) ro.spp = kMaxSpp;  // the budget decides
+  if (a.adaptive != "on" && a.adaptive != "off") throw Error("--adaptive must be on or off");
+  ro.adaptive = a.adaptive == "on";
   ro.estimator = estimatorFrom(a, cmd);
   ro.seed = static_cast<uint32_t>(a.seed);
   if (a.width > 0) ro.width = static_cast<uint32_t>(a.width);
@@ -389,6 +391,15 @@ void addSamplingOptions(CLI::App* render, RenderArgs& a) {
   render->add_option("--filter-radius", a.filterRadius, "the filter's radius in pixels, per axis (default: the filter's)")
       ->group(kSamplingGroup);
   render->add_option("--time-budget", ro.timeBudget, "render whole sample passes until this many seconds are spent (--spp caps)")
+      ->group(kSamplingGroup);
+  render
+      ->add_option("--adaptive", a.adaptive,
+                   "on: after a uniform first round, each pixel's samples follow its measured relative variance (unbiased)")
+      ->capture_default_str()
+      ->group(kSamplingGroup);
+  render
+      ->add_option("--target-error", ro.targetError,
+                   "render until the estimated relMSE's 95% upper bound is at most this (--spp and --time-budget cap)")
       ->group(kSamplingGroup);
 }
 

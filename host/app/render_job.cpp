@@ -63,6 +63,15 @@ void validateOptions(const RenderOptions& o) {
     throw Error("--environment-rotation and --environment-strength need --environment");
   validatePixelFilter(o.filter);
   if (!(o.timeBudget >= 0.0) || o.timeBudget > 1e6) throw Error("--time-budget must be between 0 and 1e6 seconds");
+  if (!(o.targetError >= 0.0 && o.targetError < 1e6)) throw Error("--target-error must be a relMSE above 0");
+  if (o.adaptive || o.targetError > 0.0) {
+    const char* what = o.adaptive ? "--adaptive on" : "--target-error";
+    if (o.estimator.rr == RouletteMode::Ears) throw Error(std::string(what) + " does not work with rr ears (its own passes) yet");
+    if (o.estimator.sampler == Sampler::ZSobol)
+      throw Error(std::string(what) + " needs the sobol or independent sampler (zsobol's index bounds a pixel's samples)");
+    if (o.estimator.sampler != Sampler::Independent && o.estimator.replicates < 2)
+      throw Error(std::string(what) + " needs a variance: --replicates 2 or more");
+  }
 }
 
 namespace {
@@ -267,6 +276,7 @@ RenderSettings renderSettings(const RenderOptions& options, const Scene& scene, 
   settings.camera = makeCameraRig(f.camera, f.width, f.height);
   settings.progress = options.progress;
   settings.timeBudget = options.timeBudget;
+  settings.sampleRuns = options.adaptive || options.targetError > 0.0;
   return settings;
 }
 
@@ -401,9 +411,15 @@ RenderControl renderControl(const RunControl& run, RenderOutcome& out) {
 }
 
 // The sample passes: in this process, or in batches across the ranks of mpirun.
-void renderPasses(PathRenderer& renderer, RenderState& state, const RenderControl& control, const RenderSettings& settings,
-                  RenderOutcome& out) {
+void renderPasses(PathRenderer& renderer, RenderState& state, const RenderControl& control, const RenderOptions& options,
+                  const RenderSettings& settings, RenderOutcome& out) {
   const RankGroup& group = RankGroup::world();
+  if (settings.sampleRuns) {
+    if (group.distributed()) throw Error("--adaptive on and --target-error do not run under mpirun yet");
+    out.rounds = renderSampleRounds(renderer, state, control, settings,
+                                    SampleRoundsPlan{options.adaptive, options.targetError, settings.spp, settings.timeBudget});
+    return;
+  }
   if (!group.distributed()) return renderer.render(state, control);
   DistributedPlan plan;
   plan.spp = settings.spp;
@@ -455,6 +471,8 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
                           {"device", out.device},
                           {"outputs", run.outputs}};
   LearnedBeforePasses learned;
+  if (settings.sampleRuns && (!run.checkpointPath.empty() || run.resumeState))
+    throw Error("--adaptive on and --target-error do not write or resume checkpoints yet");
   RenderState state = startOrResume(run, fingerprint.hex(), framing, out, learned);
   if (state.nextSample > settings.spp)
     throw Error("the checkpoint claims " + std::to_string(state.nextSample) + " samples a pixel of a " +
@@ -470,7 +488,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.setup.pipelines += renderer.pipelineSeconds();
   out.tuning.pathsPerPass = renderer.pathsPerPass();
   out.tuning.pathSlots = renderer.pathSlots();
-  renderPasses(renderer, state, renderControl(run, out), settings, out);
+  renderPasses(renderer, state, renderControl(run, out), options, settings, out);
   out.interrupted = state.interrupted;
   out.stopSignal = state.stopSignal;
   out.film = state.image();
@@ -650,6 +668,19 @@ void addErrorFields(json& j, const RenderOptions& o, const RenderOutcome& r) {
   j["efficiency"] = r.error->relmse > 0.0 && s.seconds > 0.0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0;
 }
 
+// Rendering in rounds: what adaptive sampling spent where, and the target error's estimate.
+void addRoundFields(json& j, const RenderOptions& o, const SampleRoundsOutcome& r) {
+  j["sample_rounds"] = {{"adaptive", o.adaptive},
+                        {"rounds", r.rounds},
+                        {"first_round_spp", r.firstRoundSpp},
+                        {"pixel_spp_min", r.minPixelSamples},
+                        {"pixel_spp_max", r.maxPixelSamples},
+                        {"relmse_estimate", finiteOrNull(r.relMse.value)},
+                        {"relmse_upper_95", finiteOrNull(r.relMse.upper)}};
+  if (o.targetError > 0.0)
+    j["sample_rounds"]["target_error"] = o.targetError, j["sample_rounds"]["target_reached"] = r.targetReached;
+}
+
 // The scene as the device holds it: its size, its BVH and the features its kernels were specialized for.
 void addSceneFields(json& j, const RenderOptions& o, const RenderOutcome& r) {
   j["scene_info"] = {{"triangles", r.sceneInfo.triangles},
@@ -693,6 +724,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   addRunFields(j, r);
   addLearnedFields(j, r);
   addErrorFields(j, o, r);
+  if (r.rounds) addRoundFields(j, o, *r.rounds);
   addSceneFields(j, o, r);
   // Checkpoints: a resumed render's counters and seconds include the runs before it (pass time only).
   j["resumed"] = r.resumed;

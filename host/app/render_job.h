@@ -10,6 +10,7 @@
 #include "analysis/error_metrics.h"
 #include "dist/distributed_render.h"
 #include "estimators/estimator_config.h"
+#include "policy/sample_rounds.h"
 #include "render/ears_cache.h"
 #include "render/ears_guard.h"
 #include "render/film.h"
@@ -47,7 +48,11 @@ struct RenderOptions {
   float environmentStrength = 1.0f;
   PixelFilter filter;  // pixel reconstruction filter (--filter, --filter-radius; a study's "filter")
   bool progress = true;
-  double timeBudget = 0.0;          // seconds; 0 = render spp samples
+  double timeBudget = 0.0;  // seconds; 0 = render spp samples
+  // Rendering in rounds (policy/sample_rounds.h): each pixel's share of a round from its measured relative
+  // variance (adaptive), and/or until the estimated relMSE's upper bound reaches targetError (> 0).
+  bool adaptive = false;
+  double targetError = 0.0;
   std::string referencePath;        // EXR to compare with: mse, relmse, efficiency in the report
   bool specialize = true;           // false: pipelines with every feature on (for comparison)
   bool prespecializedSpirv = true;  // false: the general SPIR-V even where a pre-specialized variant matches
@@ -121,7 +126,8 @@ struct RenderOutcome {
   uint32_t checkpointsWritten = 0;
   double checkpointSeconds = 0.0;  // spent encoding and writing periodic checkpoints (inside `stats.seconds`)
   bool resumed = false;
-  std::vector<RankReport> ranks;  // under mpirun: what each rank did (rank 0 only)
+  std::vector<RankReport> ranks;              // under mpirun: what each rank did (rank 0 only)
+  std::optional<SampleRoundsOutcome> rounds;  // rendered in rounds (adaptive sampling, --target-error)
 };
 
 // Throws vkmc::Error on bad options or input, before anything is written. Both runRender call it first, so

@@ -125,6 +125,8 @@ void PathRenderer::allocateBuffers(uint64_t pixels, const PathPoolSize& size) {
   depthStats_ =
       storage(settings_.recordDepthStats ? uint64_t(pool_) * gpu::kRouletteTableDepths * 8 : 16, vk::MemoryKind::HostVisible);
   queueStats_ = storage(gpu::kQueueStatsBounces * 8, exchange);
+  // Adaptive sampling's runs: a run and a path map word for each camera path at most.
+  sampleRuns_ = storage(settings_.sampleRuns ? uint64_t(capacity_) * (gpu::kSampleRunWords + 1) * 4 : 16, exchange);
   // The pixel filter's header and sampling table (read only by filters other than the pixel's box).
   ears_ = std::make_unique<EarsCache>(ctx_, scene_.info(), pool_, settings_.estimator.rr == RouletteMode::Ears,
                                       settings_.estimator.earsLearnsLight(), size.extraShadowSlots);
@@ -171,6 +173,7 @@ void PathRenderer::bindBuffers() {
   layout_->bindStorage(BINDING_DEPTH_STATS, depthStats_);
   layout_->bindStorage(BINDING_QUEUE_STATS, queueStats_);
   layout_->bindStorage(BINDING_PIXEL_FILTER, pixelFilter_);
+  layout_->bindStorage(BINDING_SAMPLE_RUNS, sampleRuns_);
   ears_->bindTo(*layout_);
 }
 
@@ -321,7 +324,10 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
 
 uint32_t PathRenderer::renderWavefront(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples,
                                        bool earsTrains, RenderStats& stats) {
-  gpu::PushConstants pc = passConstants(firstPixel, pixelCount, sampleIndex, samples);
+  return renderWavefront(passConstants(firstPixel, pixelCount, sampleIndex, samples), earsTrains, stats);
+}
+
+uint32_t PathRenderer::renderWavefront(gpu::PushConstants pc, bool earsTrains, RenderStats& stats) {
   pc.earsTrains = earsTrains ? 1u : 0u;
   const uint32_t count = pc.pathCount;
   if (settings_.recordDepthStats) {  // -1: "no decision recorded at this depth"
@@ -696,6 +702,41 @@ void PathRenderer::renderSamples(uint32_t s, uint32_t samples, RenderStats& stat
     stats.maxBounces = std::max(stats.maxBounces, bounces);
     ++stats.passes;
   }
+}
+
+// Packs the runs into passes of at most capacity_ camera paths, a run split where a pass fills (its pixel's two
+// parts in two passes, so a pass holds a pixel once).
+void PathRenderer::renderSampleRuns(const std::vector<PixelSamples>& work, RenderStats& stats) {
+  if (!settings_.sampleRuns) throw Error("internal error: a renderer without sample runs asked to render them");
+  if (ears_->enabled()) throw Error("internal error: rr ears renders pixel ranges only");
+  if (!settings_.stageTimes) stats.stagesUntimed = true;
+  std::vector<uint32_t> runs, pathRun;
+  auto flush = [&] {
+    if (pathRun.empty()) return;
+    const uint32_t count = uint32_t(runs.size() / gpu::kSampleRunWords);
+    std::vector<uint32_t> words = runs;
+    words.insert(words.end(), pathRun.begin(), pathRun.end());
+    sampleRuns_.upload(words.data(), words.size() * sizeof(uint32_t));
+    gpu::PushConstants pc = passConstants(0, count, 0, 1);
+    pc.pathCount = uint32_t(pathRun.size());
+    pc.sampleRuns = 1;
+    const uint32_t bounces =
+        settings_.integrator == Integrator::Megakernel ? renderMegakernelPass(pc, stats) : renderWavefront(pc, false, stats);
+    stats.maxBounces = std::max(stats.maxBounces, bounces);
+    ++stats.passes;
+    runs.clear(), pathRun.clear();
+  };
+  for (const PixelSamples& w : work) {
+    for (uint32_t done = 0; done < w.samples;) {
+      const uint32_t take = std::min(w.samples - done, capacity_ - uint32_t(pathRun.size()));
+      const uint32_t run = uint32_t(runs.size() / gpu::kSampleRunWords);
+      runs.insert(runs.end(), {w.pixel, uint32_t(pathRun.size()), take, w.firstSample + done});
+      pathRun.insert(pathRun.end(), take, run);
+      done += take;
+      if (pathRun.size() == capacity_) flush();
+    }
+  }
+  flush();
 }
 
 std::vector<gpu::FilmPixel> PathRenderer::takeBatch() {

@@ -47,7 +47,13 @@ class PathRenderer {
   uint32_t samplesPerPass() const;
   uint32_t samplesPerBatch() const;
   void renderSamples(uint32_t firstSample, uint32_t samples, RenderStats& stats);  // one sample pass
-  std::vector<gpu::FilmPixel> takeBatch();                                         // the device's batch, then zeroed
+  // Adaptive sampling (settings.sampleRuns): each entry's samples of its pixel into the device's batch, in passes
+  // of at most pathsPerPass() paths; a pixel once in `work`, with at most samplesPerBatch() samples in the batch.
+  struct PixelSamples {
+    uint32_t pixel, firstSample, samples;
+  };
+  void renderSampleRuns(const std::vector<PixelSamples>& work, RenderStats& stats);
+  std::vector<gpu::FilmPixel> takeBatch();  // the device's batch, then zeroed
   void restoreBatch(const std::vector<gpu::FilmPixel>& batch);
   void uploadPixelEstimate(const Film& film) { setPixelEstimate(runningPixelEstimate(film)); }
   // The running per-pixel estimate (shadow roulette, EARS): the film's means, w their luminance.
@@ -70,6 +76,7 @@ class PathRenderer {
   // accumulation. earsTrains: under EARS, with the kernels that train the cache.
   uint32_t renderWavefront(uint32_t firstPixel, uint32_t pixelCount, uint32_t sampleIndex, uint32_t samples, bool earsTrains,
                            RenderStats& stats);
+  uint32_t renderWavefront(gpu::PushConstants pc, bool earsTrains, RenderStats& stats);
   // The wavefront's stages, recorded into one command buffer.
   void recordCameraRays(VkCommandBuffer cmd, const gpu::PushConstants& pc, uint32_t paths);
   void recordBounce(VkCommandBuffer cmd, const gpu::PushConstants& pc, bool prepared, bool earsTrains);
@@ -154,7 +161,7 @@ class PathRenderer {
   RenderKernels kernels_;
   std::unique_ptr<vk::GpuTimer> timer_;
   vk::Buffer paths_, hits_, queues_, shadowQueue_, deepWalks_, control_, film_, pixelEstimate_, rouletteTable_, depthStats_,
-      queueStats_, pixelFilter_;
+      queueStats_, pixelFilter_, sampleRuns_;
   vk::Buffer controlMirror_;  // host-visible copy of control_ where control_ is device-local
   std::unique_ptr<EarsCache> ears_;
   std::vector<PilotPath> pilot_;

@@ -37,6 +37,7 @@ struct RenderSettings {
   uint32_t workgroupSize = 64;          // invocations per workgroup of every kernel: 32, 64, 128 or 256
   Integrator integrator = Integrator::Wavefront;
   bool prespecializedSpirv = true;  // false: pipelines from the general SPIR-V even where a variant matches
+  bool sampleRuns = false;          // adaptive sampling's passes of sample runs (PathRenderer::renderSampleRuns)
   bool stageTimes = true;           // a timestamp pair around every dispatch (RenderStats::stageSeconds); false: one a submission
 };
 

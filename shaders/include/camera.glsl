@@ -1,13 +1,14 @@
-// The camera path of sample id / pixelCount of pixel firstPixel + id % pixelCount (path id = sample *
-// pixelCount + pixel offset, so accumulate can walk one pixel's samples). Camera-ray roulette (the lecture's bad
+// The camera path of path id's pixel and sample (common.glsl cameraPathSample: a pixel's samples are ids accumulate
+// can walk). Camera-ray roulette (the lecture's bad
 // example): with probability q a sample is 0 (throughput 0), survivors weigh 1/(1-q). The pixel filter places the
 // sample in its pixel and weighs it (radiance.w, applied by accumulate, so paths and roulette never see a sign).
 #include "roulette.h"
 #include "pixel_filter.glsl"
 
 PathState cameraPath(uint id) {
-  uint pixel = pc.firstPixel + id % pc.pixelCount;
-  uint sampleIndex = pc.sampleIndex + id / pc.pixelCount;
+  uvec2 pixelSample = cameraPathSample(id);
+  uint pixel = pixelSample.x;
+  uint sampleIndex = pixelSample.y;
   SampleStream stream = SampleStream(streamKey(kSampler, pc.seed, pixel, sampleIndex, kSampleReplicates), sampleIndex, pixel);
   vec2 u = sampleU2(stream, 0u);
   FilterSample fs = samplePixelFilter(u);

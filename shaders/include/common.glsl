@@ -102,6 +102,18 @@ void flushRareCounts() {
   if (lane < kRareCounters && total[lane] > 0u) atomicAdd(controlWords[words[lane]], total[lane]);
 }
 layout(binding = BINDING_FILM, std430) buffer Film { FilmPixel film[]; };
+layout(binding = BINDING_SAMPLE_RUNS, std430) readonly buffer SampleRuns { uint sampleRunWords[]; };
+SampleRun loadSampleRun(uint run) {
+  uint w = run * kSampleRunWords;
+  return SampleRun(sampleRunWords[w], sampleRunWords[w + 1u], sampleRunWords[w + 2u], sampleRunWords[w + 3u]);
+}
+// The pixel (x) and sample number (y) of camera path `id`: a pixel range's (path id = sample * pixelCount + pixel
+// offset), or its sample run's (adaptive sampling).
+uvec2 cameraPathSample(uint id) {
+  if (pc.sampleRuns == 0u) return uvec2(pc.firstPixel + id % pc.pixelCount, pc.sampleIndex + id / pc.pixelCount);
+  SampleRun run = loadSampleRun(sampleRunWords[pc.pixelCount * kSampleRunWords + id]);
+  return uvec2(run.pixel, run.firstSample + (id - run.firstPath));
+}
 // Read per vertex (EARS) or per light sample (shadow roulette): a texel load, not a storage-buffer lane loop.
 layout(binding = BINDING_PIXEL_ESTIMATE, TEXEL_FORMAT_PIXEL_ESTIMATE) uniform readonly imageBuffer pixelEstimates;
 vec4 loadPixelEstimate(uint pixel) { return imageLoad(pixelEstimates, int(pixel)); }
@@ -261,7 +273,7 @@ bool allFinite(vec3 v) { return !any(isnan(v)) && !any(isinf(v)); }
 
 // A path's sample stream (sampler.h): its key, its pixel's sample number (the pass's first plus the root
 // path's sample slot), its pixel; and dimension `dim` of it from the sampler the kernels are specialized for.
-SampleStream pathStream(PathState p) { return SampleStream(p.rngKey, pc.sampleIndex + p.rootPath / pc.pixelCount, p.pixel); }
+SampleStream pathStream(PathState p) { return SampleStream(p.rngKey, cameraPathSample(p.rootPath).y, p.pixel); }
 SamplerShape samplerShape() { return SamplerShape(kSampleReplicates, pc.width, kSamplerLog2Spp, kSamplerDigits); }
 float sampleU(SampleStream s, uint dim) { return sampleDimension(kSampler, s, dim, samplerShape()); }
 vec2 sampleU2(SampleStream s, uint dim) { return samplePair(kSampler, s, dim, samplerShape()); }  // dim even

@@ -50,7 +50,7 @@ void echoStructs() {
   put(pc.pathCount); put(pc.firstPixel); put(pc.sampleIndex); put(pc.bounce);
   put(pc.width); put(pc.height); put(pc.seed); put(pc.queueCapacity);
   put4(pc.cameraOrigin); put4(pc.cameraForward); put4(pc.cameraRight); put4(pc.cameraUp); put4(pc.background);
-  put(pc.pixelCount); put(pc.samplesPerPass); put(pc.earsTrains); put(pc.unused1);
+  put(pc.pixelCount); put(pc.samplesPerPass); put(pc.earsTrains); put(pc.sampleRuns);
   // Hits: a triangle index in w (a denormal as a float) and a miss (kMissPrimitive, a NaN) must keep their bits.
   put4(loadHit(0u)); put4(loadHit(1u));
   // The stores (64-bit halves, common.glsl): slot 1 gets what slot 0 holds; the host compares the bytes.

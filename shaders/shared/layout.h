@@ -53,7 +53,10 @@
 #define BINDING_EARS_TRAINING \
   36  // uint[pool * (kEarsDepths + 1)]: the records written and the slots split off
       // by training paths this pass (ears.h EarsHeader training*)
-#define BINDING_COUNT 37
+#define BINDING_SAMPLE_RUNS \
+  37  // uint[]: a pass of sample runs (pc.sampleRuns: adaptive sampling): pc.pixelCount SampleRuns of 4 words,
+      // then one word a camera path, its run
+#define BINDING_COUNT 38
 
 // Texel formats of the scene bindings as GLSL image-format qualifiers (common.glsl declares the bindings with
 // them); the host derives each VkFormat from the same token (sceneTexelFormat in host/render/gpu_scene.cpp).
@@ -304,8 +307,19 @@ struct PushConstants {
   uint pixelCount;      // pixels in this pass; path id = sample * pixelCount + pixel offset
   uint samplesPerPass;  // samples of each pixel in this pass (pathCount = pixelCount * samplesPerPass)
   uint earsTrains;      // rr ears: 1 where this wavefront's paths train the cache (common.glsl earsTrains)
-  uint unused1;
+  uint sampleRuns;      // 1: the pass renders BINDING_SAMPLE_RUNS's runs (pixelCount of them), not a pixel range
 };
+
+// Consecutive samples of one pixel in a pass of sample runs (adaptive sampling): camera paths firstPath ..
+// firstPath + paths - 1 are its samples firstSample ... A pixel has one run in a pass at most (accumulate adds a
+// run's samples into its pixel without atomics).
+struct SampleRun {
+  uint pixel;
+  uint firstPath;
+  uint paths;
+  uint firstSample;
+};
+VKMC_CONST uint kSampleRunWords = 4u;
 
 // Push constants of the analytic furnace probe (shaders/probes/roulette_furnace.comp).
 struct FurnaceProbePush {
@@ -364,6 +378,7 @@ static_assert(offsetof(Control, nonfiniteEmission) == 4 * kControlWordNonfiniteE
               offsetof(Control, splitsRefused) == 4 * kControlWordSplitsRefused);
 static_assert(offsetof(Control, deepWalksDeferred) == 112 && offsetof(Control, walkIterations) == 128);
 static_assert(sizeof(TestRay) == 32);
+static_assert(sizeof(SampleRun) == 4 * kSampleRunWords && offsetof(PushConstants, sampleRuns) == 124);
 static_assert(sizeof(PushConstants) == 128);
 static_assert(offsetof(PushConstants, cameraOrigin) == 32);
 static_assert(sizeof(FurnaceProbePush) == 32);

@@ -76,7 +76,7 @@ Words echoedByName(const gpu::PathState& p, const gpu::ShadowRay& r, const gpu::
   e.put(pc.pathCount), e.put(pc.firstPixel), e.put(pc.sampleIndex), e.put(pc.bounce);
   e.put(pc.width), e.put(pc.height), e.put(pc.seed), e.put(pc.queueCapacity);
   e.put4(pc.cameraOrigin), e.put4(pc.cameraForward), e.put4(pc.cameraRight), e.put4(pc.cameraUp), e.put4(pc.background);
-  e.put(pc.pixelCount), e.put(pc.samplesPerPass), e.put(pc.earsTrains), e.put(pc.unused1);
+  e.put(pc.pixelCount), e.put(pc.samplesPerPass), e.put(pc.earsTrains), e.put(pc.sampleRuns);
   return e;
 }
 

@@ -1,0 +1,66 @@
+#include "policy/sample_allocation.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vkmc {
+
+namespace {
+// The clamped counts for scale lambda, before rounding.
+double clampedTotal(const std::vector<double>& want, double lambda, double lo, double hi) {
+  double total = 0.0;
+  for (double w : want) total += std::clamp(lambda * w, lo, hi);
+  return total;
+}
+}  // namespace
+
+std::vector<uint32_t> allocateSamples(const std::vector<double>& relVariance, const std::vector<double>& cost, uint64_t budget,
+                                      const AllocationLimits& limits) {
+  const size_t pixels = relVariance.size();
+  std::vector<uint32_t> n(pixels, limits.minimum);
+  if (pixels == 0) return n;
+  const double m = std::max(1u, limits.multiple);
+  const double mean = double(budget) / double(pixels);
+  const double lo = limits.minimum, hi = std::max(lo, std::floor(limits.maxFactor * mean / m) * m);
+  std::vector<double> want(pixels);
+  double largest = 0.0;
+  for (size_t p = 0; p < pixels; ++p) {
+    const double c = cost.empty() ? 1.0 : std::max(cost[p], 1e-12);
+    const double v = std::isfinite(relVariance[p]) ? std::max(relVariance[p], 0.0) : 0.0;
+    want[p] = std::sqrt(v / c);
+    largest = std::max(largest, want[p]);
+  }
+  if (!(largest > 0.0)) want.assign(pixels, 1.0), largest = 1.0;
+  // The scale whose clamped counts sum to the budget (monotone in lambda: bisection on a log scale).
+  double a = 1e-30 / largest, b = 1e30 / largest;
+  for (int i = 0; i < 200 && b / a > 1.0 + 1e-9; ++i) {
+    const double mid = std::sqrt(a * b);
+    (clampedTotal(want, mid, lo, hi) < double(budget) ? a : b) = mid;
+  }
+  for (size_t p = 0; p < pixels; ++p) {
+    const double x = std::clamp(b * want[p], lo, hi);
+    n[p] = uint32_t(std::clamp(std::round(x / m) * m, lo, hi));
+  }
+  return n;
+}
+
+std::vector<double> smoothedRelativeVariance(const std::vector<glm::dvec3>& mean, const std::vector<glm::dvec3>& sampleVariance,
+                                             uint32_t width, uint32_t height, double epsilon) {
+  std::vector<double> rel(mean.size(), 0.0), smooth(mean.size(), 0.0);
+  for (size_t p = 0; p < mean.size(); ++p) {
+    double r = 0.0;
+    for (int c = 0; c < 3; ++c) r += sampleVariance[p][c] / (mean[p][c] * mean[p][c] + epsilon);
+    rel[p] = std::isfinite(r) ? r / 3.0 : 0.0;
+  }
+  for (uint32_t y = 0; y < height; ++y)
+    for (uint32_t x = 0; x < width; ++x) {
+      double acc = 0.0;
+      int k = 0;
+      for (uint32_t yy = y ? y - 1 : 0; yy <= std::min(y + 1, height - 1); ++yy)
+        for (uint32_t xx = x ? x - 1 : 0; xx <= std::min(x + 1, width - 1); ++xx) acc += rel[size_t(yy) * width + xx], ++k;
+      smooth[size_t(y) * width + x] = acc / k;
+    }
+  return smooth;
+}
+
+}  // namespace vkmc

@@ -1,0 +1,123 @@
+#include "policy/sample_rounds.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "analysis/error_metrics.h"
+#include "policy/round_film.h"
+#include "policy/sample_allocation.h"
+
+namespace vkmc {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+uint32_t roundUp(double x, uint32_t multiple) { return uint32_t(std::ceil(std::max(x, 1.0) / multiple)) * multiple; }
+}  // namespace
+
+uint32_t nextRoundSpp(const SampleRoundsPlan& plan, uint32_t done, uint32_t multiple, const RelMseEstimate& estimate,
+                      double secondsLeft, double secondsPerSpp) {
+  const uint32_t first = roundUp(std::max(4.0, std::min(double(plan.spp), 64.0) / 8.0), multiple);
+  double size = done == 0 ? first : std::max<double>(first, done);
+  if (plan.targetError > 0.0 && done > 0 && std::isfinite(estimate.upper))
+    size = std::min(size, double(done) * (estimate.upper / plan.targetError - 1.0) * 1.05);
+  if (plan.timeBudget > 0.0 && secondsPerSpp > 0.0) size = std::min(size, secondsLeft / secondsPerSpp);
+  size = std::min(double(roundUp(size, multiple)), double(plan.spp - std::min(plan.spp, done)));
+  return uint32_t(std::max(size, 0.0)) / multiple * multiple;
+}
+
+namespace {
+
+struct RoundRun {
+  PathRenderer& renderer;
+  RenderStats& stats;
+  const RenderControl& control;
+  std::vector<uint32_t> nextSample;  // per pixel: its next sample number
+};
+
+// One round of per-pixel counts, in float batches of at most samplesPerBatch() a pixel, into `round`. False when a
+// stop request came first (the round is then incomplete and left out).
+bool renderRound(RoundRun& run, const std::vector<uint32_t>& counts, Film& round) {
+  const uint32_t perBatch = run.renderer.samplesPerBatch();
+  const uint32_t most = *std::max_element(counts.begin(), counts.end());
+  for (uint32_t from = 0; from < most; from += perBatch) {
+    if (run.control.stop && run.control.stop->load() != 0) return false;
+    std::vector<PathRenderer::PixelSamples> work;
+    for (uint32_t p = 0; p < counts.size(); ++p)
+      if (counts[p] > from) work.push_back({p, run.nextSample[p] + from, std::min(perBatch, counts[p] - from)});
+    run.renderer.renderSampleRuns(work, run.stats);
+    const std::vector<gpu::FilmPixel> batch = run.renderer.takeBatch();
+    round.addBatch(batch.data());
+  }
+  for (uint32_t p = 0; p < counts.size(); ++p) run.nextSample[p] += counts[p];
+  return true;
+}
+
+}  // namespace
+
+SampleRoundsOutcome renderSampleRounds(PathRenderer& renderer, RenderState& state, const RenderControl& control,
+                                       const RenderSettings& settings, const SampleRoundsPlan& plan) {
+  const uint32_t width = settings.width, height = settings.height, pixels = width * height;
+  const uint32_t replicates = settings.estimator.replicates;
+  const bool replicateVariance = settings.estimator.sampler != Sampler::Independent;
+  RoundFilm combined(width, height, replicates, replicateVariance);
+  RenderStats& stats = state.stats;
+  const RenderStats before = stats;
+  RoundRun run{renderer, stats, control, std::vector<uint32_t>(pixels, 0)};
+  SampleRoundsOutcome out;
+  const auto start = Clock::now();
+  const bool progress = settings.progress && isatty(STDERR_FILENO);
+  uint32_t done = 0;
+  double secondsPerSpp = 0.0;
+  while (true) {
+    const double elapsed = since(start);
+    if (plan.timeBudget > 0.0 && done > 0 && elapsed >= plan.timeBudget) break;
+    const uint32_t spp = nextRoundSpp(plan, done, replicates, out.relMse, plan.timeBudget - elapsed, secondsPerSpp);
+    if (spp == 0) break;
+    const uint64_t budget = uint64_t(spp) * pixels;
+    std::vector<uint32_t> counts(pixels, spp);
+    if (plan.adaptive && combined.rounds() > 0)
+      counts =
+          allocateSamples(smoothedRelativeVariance(combined.means(), combined.sampleVariances(), width, height, kRelMseEpsilon),
+                          {}, budget, AllocationLimits{replicates, replicates, 8.0});
+    Film round(width, height);
+    round.replicates = replicates, round.replicateVariance = replicateVariance;
+    const auto roundStart = Clock::now();
+    if (!renderRound(run, counts, round)) {
+      state.interrupted = true, state.stopSignal = control.stop->load();
+      break;
+    }
+    secondsPerSpp = since(roundStart) / spp;
+    combined.addRound(round, double(spp));  // its planned samples: fixed before it rendered
+    if (combined.rounds() == 1) out.firstRoundSpp = spp;
+    done += spp;
+    const Film image = combined.image();
+    out.relMse = estimateRelMse(image, kRelMseEpsilon);
+    if (settings.estimator.shadowRrThreshold > 0.0f) renderer.uploadPixelEstimate(image);
+    if (progress)
+      std::fprintf(stderr, "\rvkmc: round %u, %u spp, relMSE %.3g (upper %.3g)   ", combined.rounds(), done, out.relMse.value,
+                   out.relMse.upper);
+    if (plan.targetError > 0.0 && out.relMse.upper <= plan.targetError) {
+      out.targetReached = true;
+      break;
+    }
+  }
+  if (progress) std::fprintf(stderr, "\n");
+  out.rounds = combined.rounds();
+  state.film = combined.image();
+  state.nextSample = done;
+  if (!run.nextSample.empty()) {
+    out.minPixelSamples = *std::min_element(run.nextSample.begin(), run.nextSample.end());
+    out.maxPixelSamples = *std::max_element(run.nextSample.begin(), run.nextSample.end());
+  }
+  stats.seconds = before.seconds + since(start);
+  stats.samplesPerPixel = done;
+  renderer.finishStats(stats, before);
+  return out;
+}
+
+}  // namespace vkmc
