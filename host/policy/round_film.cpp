@@ -9,9 +9,16 @@ namespace {
 constexpr uint32_t kSlots = gpu::kMaxSampleReplicates;
 }
 
+double roundWeight(double weightSoFar, double samples, double laterSamples, bool last) {
+  const double left = std::max(0.0, 1.0 - weightSoFar);
+  if (last || laterSamples <= 0.0) return left;
+  return left * samples / (samples + laterSamples);
+}
+
 RoundFilm::RoundFilm(uint32_t width, uint32_t height, uint32_t replicates, bool replicateVariance)
     : width_(width), height_(height), replicates_(replicates), replicateVariance_(replicateVariance) {
   const size_t pixels = size_t(width) * height;
+  weight_.assign(pixels, 0.0);
   replicateSum_.assign(pixels * kSlots * 3, 0.0);
   varianceSum_.assign(pixels * 3, 0.0);
   squares_.assign(pixels * 3, 0.0);
@@ -20,9 +27,10 @@ RoundFilm::RoundFilm(uint32_t width, uint32_t height, uint32_t replicates, bool 
   count_.assign(pixels, 0), nonfinite_.assign(pixels, 0), highRange_.assign(pixels, 0);
 }
 
-void RoundFilm::addRound(const Film& round, double weight) {
+void RoundFilm::addRound(const Film& round, const std::vector<double>& weights) {
   for (size_t p = 0; p < round.pixels(); ++p) {
-    const double n = double(round.count[p]);
+    const double n = double(round.count[p]), weight = weights[p];
+    weight_[p] += weight;
     for (uint32_t r = 0; r < kSlots; ++r) {
       const uint64_t k = round.replicateCount[p * kSlots + r];
       replicateCount_[p * kSlots + r] += k;
@@ -39,19 +47,18 @@ void RoundFilm::addRound(const Film& round, double weight) {
     squaresDof_[p] += round.count[p] ? round.count[p] - 1 : 0;
     count_[p] += round.count[p], nonfinite_[p] += round.nonfinite[p], highRange_[p] += round.highRange[p];
   }
-  weight_ += weight;
   ++rounds_;
 }
 
 std::vector<glm::dvec3> RoundFilm::means() const {
   std::vector<glm::dvec3> m(count_.size(), glm::dvec3(0.0));
-  if (weight_ <= 0.0) return m;
   for (size_t p = 0; p < m.size(); ++p) {
+    if (weight_[p] <= 0.0) continue;
     int used = 0;
     for (uint32_t r = 0; r < replicates_; ++r) {
       if (!replicateCount_[p * kSlots + r]) continue;
       ++used;
-      for (int c = 0; c < 3; ++c) m[p][c] += replicateSum_[(p * kSlots + r) * 3 + c] / weight_;
+      for (int c = 0; c < 3; ++c) m[p][c] += replicateSum_[(p * kSlots + r) * 3 + c] / weight_[p];
     }
     if (used) m[p] /= double(used);
   }
@@ -76,13 +83,13 @@ Film RoundFilm::image() const {
     for (uint32_t r = 0; r < kSlots; ++r) {
       const uint64_t k = replicateCount_[p * kSlots + r];
       f.replicateCount[p * kSlots + r] = k;
-      for (int c = 0; c < 3 && k && weight_ > 0.0; ++c)
-        f.replicateSum[(p * kSlots + r) * 3 + c] = replicateSum_[(p * kSlots + r) * 3 + c] / weight_ * double(k);
+      for (int c = 0; c < 3 && k && weight_[p] > 0.0; ++c)
+        f.replicateSum[(p * kSlots + r) * 3 + c] = replicateSum_[(p * kSlots + r) * 3 + c] / weight_[p] * double(k);
     }
     for (int c = 0; c < 3; ++c) {
       f.sum[3 * p + c] = m[p][c] * n;
       // Film's sample variance of the mean is (sumSq - n m^2) / ((n - 1) n): sumSq chosen so that it reads V.
-      const double V = weight_ > 0.0 ? varianceSum_[3 * p + c] / (weight_ * weight_) : 0.0;
+      const double V = weight_[p] > 0.0 ? varianceSum_[3 * p + c] / (weight_[p] * weight_[p]) : 0.0;
       f.sumSq[3 * p + c] = n >= 2.0 ? V * n * (n - 1.0) + n * m[p][c] * m[p][c] : 0.0;
     }
   }

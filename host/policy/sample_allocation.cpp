@@ -21,7 +21,8 @@ std::vector<uint32_t> allocateSamples(const std::vector<double>& relVariance, co
   if (pixels == 0) return n;
   const double m = std::max(1u, limits.multiple);
   const double mean = double(budget) / double(pixels);
-  const double lo = limits.minimum, hi = std::max(lo, std::floor(limits.maxFactor * mean / m) * m);
+  const double lo = std::max<double>(limits.minimum, std::floor(limits.minFactor * mean / m) * m);
+  const double hi = std::max(lo, std::floor(limits.maxFactor * mean / m) * m);
   std::vector<double> want(pixels);
   double largest = 0.0;
   for (size_t p = 0; p < pixels; ++p) {

@@ -23,14 +23,41 @@ uint32_t nextRoundSpp(const SampleRoundsPlan& plan, uint32_t done, uint32_t mult
                       double secondsLeft, double secondsPerSpp) {
   const uint32_t first = roundUp(std::max(4.0, std::min(double(plan.spp), 64.0) / 8.0), multiple);
   double size = done == 0 ? first : std::max<double>(first, done);
+  // At least a quarter of what is done: a round near the target costs a pass's tail however small it is.
   if (plan.targetError > 0.0 && done > 0 && std::isfinite(estimate.upper))
-    size = std::min(size, double(done) * (estimate.upper / plan.targetError - 1.0) * 1.05);
+    size = std::min(size, std::max(double(done) * (estimate.upper / plan.targetError - 1.0) * 1.05, done / 4.0));
   if (plan.timeBudget > 0.0 && secondsPerSpp > 0.0) size = std::min(size, secondsLeft / secondsPerSpp);
   size = std::min(double(roundUp(size, multiple)), double(plan.spp - std::min(plan.spp, done)));
   return uint32_t(std::max(size, 0.0)) / multiple * multiple;
 }
 
+double plannedLaterSpp(const SampleRoundsPlan& plan, uint32_t done, uint32_t spp, const RelMseEstimate& before,
+                       double secondsLeft, double secondsPerSpp) {
+  double later = double(plan.spp) - double(done) - double(spp);
+  if (plan.targetError > 0.0) {
+    // relMSE falls as 1/samples: the samples it takes are upper * done / target; the first round guesses an eighth.
+    // Never a planned last round, and never less than what is done: whether the target is met is known only after
+    // a round, and a round that took most of what weight is left would leave later rounds little to improve on
+    // (the weights are normalized by what they came to).
+    const bool known = done > 0 && std::isfinite(before.upper);
+    later =
+        std::min(later, std::max(known ? before.upper * done / plan.targetError - done - spp : 7.0 * spp, double(done + spp)));
+  }
+  if (plan.timeBudget > 0.0 && secondsPerSpp > 0.0) later = std::min(later, secondsLeft / secondsPerSpp);
+  return std::max(later, 0.0);
+}
+
 namespace {
+
+// Each pixel's weight for the round just rendered, from what was planned before its values were seen: its count,
+// and the samples the render plans after it (image-wide, from the sample count, the time left or the estimate
+// before the round).
+std::vector<double> roundWeights(const RoundFilm& film, const std::vector<uint32_t>& counts, uint32_t spp, double laterSpp) {
+  std::vector<double> w(counts.size());
+  for (size_t p = 0; p < counts.size(); ++p)
+    w[p] = roundWeight(film.weightSoFar(p), counts[p], double(counts[p]) / spp * laterSpp, laterSpp <= 0.0);
+  return w;
+}
 
 struct RoundRun {
   PathRenderer& renderer;
@@ -39,22 +66,23 @@ struct RoundRun {
   std::vector<uint32_t> nextSample;  // per pixel: its next sample number
 };
 
-// One round of per-pixel counts, in float batches of at most samplesPerBatch() a pixel, into `round`. False when a
-// stop request came first (the round is then incomplete and left out).
+// One round of per-pixel counts into `round`, in chunks of at most samplesPerBatch() samples a pixel taken chunk
+// by chunk over the image (a pixel's chunks far apart, so passes stay full), the device's batch folded after
+// every pass. False when a stop request came first (the round is then incomplete and left out).
 bool renderRound(RoundRun& run, const std::vector<uint32_t>& counts, Film& round) {
   const uint32_t perBatch = run.renderer.samplesPerBatch();
   const uint32_t most = *std::max_element(counts.begin(), counts.end());
-  for (uint32_t from = 0; from < most; from += perBatch) {
-    if (run.control.stop && run.control.stop->load() != 0) return false;
-    std::vector<PathRenderer::PixelSamples> work;
+  std::vector<PathRenderer::PixelSamples> work;
+  for (uint32_t from = 0; from < most; from += perBatch)
     for (uint32_t p = 0; p < counts.size(); ++p)
       if (counts[p] > from) work.push_back({p, run.nextSample[p] + from, std::min(perBatch, counts[p] - from)});
-    run.renderer.renderSampleRuns(work, run.stats);
+  const bool finished = run.renderer.renderSampleRuns(work, run.stats, [&] {
     const std::vector<gpu::FilmPixel> batch = run.renderer.takeBatch();
     round.addBatch(batch.data());
-  }
+    return !(run.control.stop && run.control.stop->load() != 0);
+  });
   for (uint32_t p = 0; p < counts.size(); ++p) run.nextSample[p] += counts[p];
-  return true;
+  return finished;
 }
 
 }  // namespace
@@ -83,7 +111,7 @@ SampleRoundsOutcome renderSampleRounds(PathRenderer& renderer, RenderState& stat
     if (plan.adaptive && combined.rounds() > 0)
       counts =
           allocateSamples(smoothedRelativeVariance(combined.means(), combined.sampleVariances(), width, height, kRelMseEpsilon),
-                          {}, budget, AllocationLimits{replicates, replicates, 8.0});
+                          {}, budget, AllocationLimits{replicates, replicates, 0.25, 8.0});
     Film round(width, height);
     round.replicates = replicates, round.replicateVariance = replicateVariance;
     const auto roundStart = Clock::now();
@@ -92,7 +120,8 @@ SampleRoundsOutcome renderSampleRounds(PathRenderer& renderer, RenderState& stat
       break;
     }
     secondsPerSpp = since(roundStart) / spp;
-    combined.addRound(round, double(spp));  // its planned samples: fixed before it rendered
+    const double later = plannedLaterSpp(plan, done, spp, out.relMse, plan.timeBudget - since(start), secondsPerSpp);
+    combined.addRound(round, roundWeights(combined, counts, spp, later));
     if (combined.rounds() == 1) out.firstRoundSpp = spp;
     done += spp;
     const Film image = combined.image();

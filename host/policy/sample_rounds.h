@@ -33,9 +33,18 @@ SampleRoundsOutcome renderSampleRounds(PathRenderer& renderer, RenderState& stat
 // The next round's samples a pixel (on average, a multiple of `multiple`), from what is done and known: the first
 // round an eighth of the samples, at most 8 (the allocation starts early) and at least 4, then rounds that double
 // what is done; never past
-// spp; under a target error no more than the estimate predicts (relMSE falls as 1/samples); under a time budget no
+// spp; under a target error no more than the estimate predicts (relMSE falls as 1/samples), but at least a quarter
+// of what is done; under a time budget no
 // more than the time left at the last round's pace.
 uint32_t nextRoundSpp(const SampleRoundsPlan& plan, uint32_t done, uint32_t multiple, const RelMseEstimate& estimate,
                       double secondsLeft, double secondsPerSpp);
+
+// The mean samples a pixel the render plans to take after a round of `spp` from `done`, as known without that round's
+// values: to spp; under a target error what the estimate before it predicts (relMSE falls as 1/samples; the first
+// round guesses an eighth of the render), and never less than what is done; under a time budget what fits in the time left
+// at the round's pace (a function of its time, as every time-budgeted render's sample count is). 0: the round is the planned
+// last.
+double plannedLaterSpp(const SampleRoundsPlan& plan, uint32_t done, uint32_t spp, const RelMseEstimate& before,
+                       double secondsLeft, double secondsPerSpp);
 
 }  // namespace vkmc

@@ -704,39 +704,47 @@ void PathRenderer::renderSamples(uint32_t s, uint32_t samples, RenderStats& stat
   }
 }
 
-// Packs the runs into passes of at most capacity_ camera paths, a run split where a pass fills (its pixel's two
-// parts in two passes, so a pass holds a pixel once).
-void PathRenderer::renderSampleRuns(const std::vector<PixelSamples>& work, RenderStats& stats) {
+// Packs the runs into passes of at most capacity_ camera paths, a run split where a pass fills. A pass holds a
+// pixel once (accumulate adds without atomics): a run whose pixel the pass holds already starts the next pass.
+bool PathRenderer::renderSampleRuns(const std::vector<PixelSamples>& work, RenderStats& stats,
+                                    const std::function<bool()>& afterPass) {
   if (!settings_.sampleRuns) throw Error("internal error: a renderer without sample runs asked to render them");
   if (ears_->enabled()) throw Error("internal error: rr ears renders pixel ranges only");
   if (!settings_.stageTimes) stats.stagesUntimed = true;
   std::vector<uint32_t> runs, pathRun;
+  std::vector<uint32_t> passOfPixel(size_t(settings_.width) * settings_.height, UINT32_MAX);
+  uint32_t pass = 0;
+  bool goOn = true;
   auto flush = [&] {
     if (pathRun.empty()) return;
     const uint32_t count = uint32_t(runs.size() / gpu::kSampleRunWords);
-    std::vector<uint32_t> words = runs;
-    words.insert(words.end(), pathRun.begin(), pathRun.end());
-    sampleRuns_.upload(words.data(), words.size() * sizeof(uint32_t));
+    runs.insert(runs.end(), pathRun.begin(), pathRun.end());
+    sampleRuns_.upload(runs.data(), runs.size() * sizeof(uint32_t));
     gpu::PushConstants pc = passConstants(0, count, 0, 1);
     pc.pathCount = uint32_t(pathRun.size());
     pc.sampleRuns = 1;
     const uint32_t bounces =
         settings_.integrator == Integrator::Megakernel ? renderMegakernelPass(pc, stats) : renderWavefront(pc, false, stats);
     stats.maxBounces = std::max(stats.maxBounces, bounces);
-    ++stats.passes;
+    ++stats.passes, ++pass;
     runs.clear(), pathRun.clear();
+    goOn = afterPass();
   };
   for (const PixelSamples& w : work) {
-    for (uint32_t done = 0; done < w.samples;) {
+    if (passOfPixel.at(w.pixel) == pass) flush();
+    for (uint32_t done = 0; done < w.samples && goOn;) {
       const uint32_t take = std::min(w.samples - done, capacity_ - uint32_t(pathRun.size()));
       const uint32_t run = uint32_t(runs.size() / gpu::kSampleRunWords);
       runs.insert(runs.end(), {w.pixel, uint32_t(pathRun.size()), take, w.firstSample + done});
       pathRun.insert(pathRun.end(), take, run);
+      passOfPixel[w.pixel] = pass;
       done += take;
       if (pathRun.size() == capacity_) flush();
     }
+    if (!goOn) return false;
   }
   flush();
+  return goOn;
 }
 
 std::vector<gpu::FilmPixel> PathRenderer::takeBatch() {

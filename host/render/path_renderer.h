@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include <chrono>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -48,11 +49,12 @@ class PathRenderer {
   uint32_t samplesPerBatch() const;
   void renderSamples(uint32_t firstSample, uint32_t samples, RenderStats& stats);  // one sample pass
   // Adaptive sampling (settings.sampleRuns): each entry's samples of its pixel into the device's batch, in passes
-  // of at most pathsPerPass() paths; a pixel once in `work`, with at most samplesPerBatch() samples in the batch.
+  // of at most pathsPerPass() paths, calling afterPass after each (where the caller folds the batch: an entry has
+  // at most samplesPerBatch() samples, and a pass holds a pixel once). Returns false where afterPass said stop.
   struct PixelSamples {
     uint32_t pixel, firstSample, samples;
   };
-  void renderSampleRuns(const std::vector<PixelSamples>& work, RenderStats& stats);
+  bool renderSampleRuns(const std::vector<PixelSamples>& work, RenderStats& stats, const std::function<bool()>& afterPass);
   std::vector<gpu::FilmPixel> takeBatch();  // the device's batch, then zeroed
   void restoreBatch(const std::vector<gpu::FilmPixel>& batch);
   void uploadPixelEstimate(const Film& film) { setPixelEstimate(runningPixelEstimate(film)); }

@@ -263,6 +263,13 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"wavefront_too_small", "", "--wavefront 100", "--wavefront must be 1024 to", 1},
                       BadInput{"wavefront_huge", "", "--wavefront 1e9", "--wavefront expects auto or", 1},
                       BadInput{"stage_times_yes", "", "--stage-times yes", "--stage-times expects on, off or auto", 1},
+                      BadInput{"adaptive_maybe", "", "--adaptive maybe", "--adaptive must be on or off", 1},
+                      BadInput{"adaptive_with_ears", "", "--adaptive on --rr ears", "does not work with rr ears", 1},
+                      BadInput{"adaptive_with_zsobol", "", "--adaptive on --sampler zsobol", "needs the sobol or independent", 1},
+                      BadInput{"adaptive_one_replicate", "", "--adaptive on --replicates 1", "needs a variance", 1},
+                      BadInput{"adaptive_with_checkpoint", "", "--adaptive on --checkpoint ck.vkmc", "do not write or resume", 1},
+                      BadInput{"target_error_negative", "", "--target-error -1", "--target-error must be", 1},
+                      BadInput{"target_error_nan", "", "--target-error nan", "--target-error must be", 1},
                       BadInput{"spp_not_a_number", "", "--spp abc", "spp", 2},
                       BadInput{"unknown_flag", "", "--no-such-flag", "no-such-flag", 2}),
     [](const auto& info) { return std::string(info.param.name); });

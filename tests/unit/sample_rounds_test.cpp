@@ -18,7 +18,7 @@ using namespace vkmc;
 TEST(SampleAllocation, FollowsTheSquareRootOfRelativeVarianceWithinItsLimits) {
   std::vector<double> v(100, 1.0);
   for (int p = 50; p < 100; ++p) v[p] = 16.0;
-  const std::vector<uint32_t> n = allocateSamples(v, {}, 100 * 10, AllocationLimits{2, 2, 8.0});
+  const std::vector<uint32_t> n = allocateSamples(v, {}, 100 * 10, AllocationLimits{2, 2, 0.0, 8.0});
   // sqrt(16) = 4 times as many: 4 and 16 a pixel for a mean of 10.
   EXPECT_EQ(n[0], 4u);
   EXPECT_EQ(n[99], 16u);
@@ -27,15 +27,20 @@ TEST(SampleAllocation, FollowsTheSquareRootOfRelativeVarianceWithinItsLimits) {
   // A dark pixel keeps the minimum; a noisy one stops at the cap (8x the mean).
   v.assign(100, 0.0);
   v[7] = 1.0;
-  const std::vector<uint32_t> capped = allocateSamples(v, {}, 100 * 10, AllocationLimits{2, 2, 8.0});
+  const std::vector<uint32_t> capped = allocateSamples(v, {}, 100 * 10, AllocationLimits{2, 2, 0.0, 8.0});
   EXPECT_EQ(capped[0], 2u);
   EXPECT_EQ(capped[7], 80u);
   // Cost: a pixel four times as costly gets half the samples of one as noisy.
-  const std::vector<uint32_t> costly = allocateSamples(std::vector<double>(2, 1.0), {4.0, 1.0}, 60, AllocationLimits{1, 1, 8.0});
+  const std::vector<uint32_t> costly =
+      allocateSamples(std::vector<double>(2, 1.0), {4.0, 1.0}, 60, AllocationLimits{1, 1, 0.0, 8.0});
   EXPECT_EQ(costly[0], 20u);
   EXPECT_EQ(costly[1], 40u);
+  // The defensive floor: a quarter of the mean (10), rounded down to the multiple: 2; of a mean of 40: 10.
+  const std::vector<uint32_t> floored = allocateSamples(v, {}, 100 * 40, AllocationLimits{2, 2, 0.25, 8.0});
+  EXPECT_EQ(floored[0], 10u);
+  EXPECT_EQ(floored[7], 320u);
   // No variance anywhere: uniform.
-  const std::vector<uint32_t> flat = allocateSamples(std::vector<double>(10, 0.0), {}, 80, AllocationLimits{2, 2, 8.0});
+  const std::vector<uint32_t> flat = allocateSamples(std::vector<double>(10, 0.0), {}, 80, AllocationLimits{2, 2, 0.0, 8.0});
   for (uint32_t c : flat) EXPECT_EQ(c, 8u);
 }
 
@@ -57,6 +62,7 @@ TEST(SampleRounds, ScheduleDoublesToTheSampleCount) {
   plan.spp = 1u << 20;
   plan.targetError = 0.01;
   EXPECT_EQ(nextRoundSpp(plan, 64, 2, RelMseEstimate{0.012, 0.0125}, 0.0, 0.0), 18u);  // 64 * 0.25 * 1.05 = 16.8
+  EXPECT_EQ(nextRoundSpp(plan, 64, 2, RelMseEstimate{0.01, 0.0101}, 0.0, 0.0), 16u);   // at least a quarter
   // A time budget: no more than fits in what is left.
   plan.targetError = 0.0;
   plan.timeBudget = 10.0;
@@ -92,11 +98,13 @@ struct Trial {
   std::vector<double> estimate, variance, replicateVariance, pooled;
 };
 
-// Rounds of 4, 4 and 8 samples a pixel on average, the later two allocated from the earlier ones.
+// Rounds of 4, 4 and 8 samples a pixel on average, the later two allocated from the earlier ones (no defensive
+// floor: the allocation as uneven as it gets, which is what makes the pooled mean's bias plain).
 Trial simulateAdaptiveRender(uint32_t pixels, std::mt19937& rng) {
   RoundFilm independent(pixels, 1, 2, false), replicated(pixels, 1, 2, true);
   std::vector<uint32_t> next(pixels, 0);
   std::vector<double> pooledSum(pixels, 0.0), pooledCount(pixels, 0.0);
+  uint32_t done = 0;
   for (uint32_t spp : {4u, 4u, 8u}) {
     std::vector<uint32_t> counts(pixels, spp);
     if (independent.rounds() > 0) {
@@ -104,12 +112,18 @@ Trial simulateAdaptiveRender(uint32_t pixels, std::mt19937& rng) {
       const auto m = independent.means();
       const auto v = independent.sampleVariances();
       for (uint32_t p = 0; p < pixels; ++p) rel[p] = v[p].x / (m[p].x * m[p].x + 0.01);
-      counts = allocateSamples(rel, {}, uint64_t(spp) * pixels, AllocationLimits{2, 2, 8.0});
+      counts = allocateSamples(rel, {}, uint64_t(spp) * pixels, AllocationLimits{2, 2, 0.0, 8.0});
     }
     const Film round = simulateRound(counts, next, rng, pooledSum, pooledCount);
-    independent.addRound(round, spp);
-    replicated.addRound(round, spp);
+    const double later = 16.0 - done - spp;  // the plan: 16 samples a pixel on average
+    std::vector<double> w(pixels);
+    for (uint32_t p = 0; p < pixels; ++p)
+      w[p] = roundWeight(independent.weightSoFar(p), counts[p], double(counts[p]) / spp * later, later <= 0.0);
+    independent.addRound(round, w);
+    replicated.addRound(round, w);
+    done += spp;
   }
+  for (uint32_t p = 0; p < pixels; ++p) EXPECT_NEAR(independent.weightSoFar(p), 1.0, 1e-12);
   Trial t;
   const Film a = independent.image(), b = replicated.image();
   for (uint32_t p = 0; p < pixels; ++p) {
@@ -160,6 +174,37 @@ TEST(RoundFilm, AdaptiveRoundsStayUnbiasedWhereThePooledMeanIsNot) {
     EXPECT_LT(std::abs(r.mean - measured.mean), 5.0 * std::hypot(r.standardError, measured.standardError))
         << "reported " << r.mean << " measured " << measured.mean;
   }
+}
+
+TEST(RoundFilm, WeightsOfUnchangingCountsAreThePlainMean) {
+  // 8, 8, 16 and 32 samples: each round's share of 64.
+  double so = 0.0;
+  const double later[] = {56, 48, 32, 0};
+  const double samples[] = {8, 8, 16, 32};
+  for (int r = 0; r < 4; ++r) {
+    const double w = roundWeight(so, samples[r], later[r], later[r] == 0.0);
+    EXPECT_NEAR(w, samples[r] / 64.0, 1e-15);
+    so += w;
+  }
+  EXPECT_NEAR(so, 1.0, 1e-15);
+  // A planned last round takes what is left; a pixel whose count rises later gave its early rounds less.
+  EXPECT_DOUBLE_EQ(roundWeight(0.75, 4, 100, true), 0.25);
+  EXPECT_DOUBLE_EQ(roundWeight(0.0, 8, 120, false), 8.0 / 128.0);
+}
+
+TEST(SampleRounds, PlansTheSamplesLeftFromWhatIsKnown) {
+  SampleRoundsPlan plan;
+  plan.spp = 64;
+  EXPECT_EQ(plannedLaterSpp(plan, 16, 16, {}, 0.0, 0.0), 32.0);
+  EXPECT_EQ(plannedLaterSpp(plan, 32, 32, {}, 0.0, 0.0), 0.0);
+  plan.spp = 1u << 20;
+  plan.targetError = 0.01;
+  EXPECT_EQ(plannedLaterSpp(plan, 0, 8, {}, 0.0, 0.0), 56.0);                      // the first round: an eighth
+  EXPECT_NEAR(plannedLaterSpp(plan, 64, 64, {0.0, 0.04}, 0.0, 0.0), 128.0, 1e-9);  // 0.04 * 64 / 0.01 - 128
+  EXPECT_EQ(plannedLaterSpp(plan, 64, 8, {0.0, 0.0101}, 0.0, 0.0), 72.0);          // never less than what is done
+  plan.targetError = 0.0;
+  plan.timeBudget = 10.0;
+  EXPECT_EQ(plannedLaterSpp(plan, 64, 64, {}, 4.0, 0.5), 8.0);
 }
 
 TEST(TargetError, EstimatesRelMseAndBoundsIt) {
