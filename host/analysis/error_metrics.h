@@ -1,6 +1,7 @@
 // Error of an image against a reference: MSE, relMSE, RMSE, mean absolute error, difference of the image
 // means, and (when both carry variance channels) the per-pixel z-test of Mitsuba's render regressions.
 #pragma once
+#include "render/film.h"  // kRelMseEpsilon
 #include <string>
 
 #include "io/exr.h"
@@ -19,8 +20,6 @@ struct ErrorMetrics {
   bool studentT = false;           // both images gave variance.dof: each pixel is Welch's t at that level instead
   size_t pixels = 0;
 };
-
-inline constexpr double kRelMseEpsilon = 1e-2;  // keeps near-black reference pixels from dominating relMSE
 
 // Compares channels R, G, B; the z-test uses variance.R/G/B when both images have them. By default its
 // threshold is Sidak-corrected so that on two unbiased renders all pixels pass with probability 1 - alpha;

@@ -18,14 +18,14 @@ namespace {
 
 constexpr char kMagic[] = "VKMC-CHECKPOINT\n";  // 16 bytes without the terminator
 constexpr size_t kMagicBytes = sizeof(kMagic) - 1;
-constexpr int kFormatVersion = 2;  // 2: the estimator's `replicates` (earlier films had 4)
+constexpr int kFormatVersion = 3;  // 2: the estimator's `replicates` (earlier films had 4); 3: each pixel's cost
 static_assert(std::endian::native == std::endian::little, "checkpoints are little-endian");
 
 // The payload's arrays, in order, for a film of `pixels` pixels: one list serves encoding and decoding.
 template <class FilmT, class Visit>
 void forEachArray(FilmT& film, Visit&& visit) {
   visit(film.sum), visit(film.sumSq), visit(film.count), visit(film.nonfinite), visit(film.highRange), visit(film.replicateSum),
-      visit(film.replicateCount);
+      visit(film.replicateCount), visit(film.vertices);
 }
 
 void appendU64(std::string& out, uint64_t v) { out.append(reinterpret_cast<const char*>(&v), 8); }

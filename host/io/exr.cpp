@@ -60,6 +60,9 @@ ExrImage filmToImage(const Film& film) {
   auto& s = img.channels["samples"];
   s.resize(film.pixels());
   for (size_t p = 0; p < film.pixels(); ++p) s[p] = static_cast<float>(film.count[p]);
+  auto& cost = img.channels["cost"];
+  cost.resize(film.pixels());
+  for (size_t p = 0; p < film.pixels(); ++p) cost[p] = static_cast<float>(film.cost(p));
   // No variance channels where the film estimates none (one scrambling a pixel): a 0 would read as certainty.
   if (!film.estimatesVariance()) return img;
   for (int c = 0; c < 3; ++c) {
@@ -70,6 +73,9 @@ ExrImage filmToImage(const Film& film) {
   auto& dof = img.channels["variance.dof"];
   dof.resize(film.pixels());
   for (size_t p = 0; p < film.pixels(); ++p) dof[p] = static_cast<float>(film.varianceDof(p));
+  auto& efficiency = img.channels["efficiency"];
+  efficiency.resize(film.pixels());
+  for (size_t p = 0; p < film.pixels(); ++p) efficiency[p] = static_cast<float>(std::min(film.efficiency(p), 3.0e38));
   return img;
 }
 

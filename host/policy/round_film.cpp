@@ -25,6 +25,7 @@ RoundFilm::RoundFilm(uint32_t width, uint32_t height, uint32_t replicates, bool 
   squaresDof_.assign(pixels, 0);
   replicateCount_.assign(pixels * kSlots, 0);
   count_.assign(pixels, 0), nonfinite_.assign(pixels, 0), highRange_.assign(pixels, 0);
+  vertices_.assign(pixels, 0.0);
 }
 
 void RoundFilm::addRound(const Film& round, const std::vector<double>& weights) {
@@ -46,6 +47,7 @@ void RoundFilm::addRound(const Film& round, const std::vector<double>& weights) 
     }
     squaresDof_[p] += round.count[p] ? round.count[p] - 1 : 0;
     count_[p] += round.count[p], nonfinite_[p] += round.nonfinite[p], highRange_[p] += round.highRange[p];
+    vertices_[p] += round.vertices[p];
   }
   ++rounds_;
 }
@@ -72,6 +74,13 @@ std::vector<glm::dvec3> RoundFilm::sampleVariances() const {
   return v;
 }
 
+std::vector<double> RoundFilm::costs() const {
+  std::vector<double> c(count_.size(), 0.0);
+  for (size_t p = 0; p < c.size(); ++p)
+    if (const uint64_t n = count_[p] + nonfinite_[p]) c[p] = vertices_[p] / double(n);
+  return c;
+}
+
 Film RoundFilm::image() const {
   Film f(width_, height_);
   f.replicates = replicates_;
@@ -79,7 +88,7 @@ Film RoundFilm::image() const {
   const std::vector<glm::dvec3> m = means();
   for (size_t p = 0; p < f.pixels(); ++p) {
     const double n = double(count_[p]);
-    f.count[p] = count_[p], f.nonfinite[p] = nonfinite_[p], f.highRange[p] = highRange_[p];
+    f.count[p] = count_[p], f.nonfinite[p] = nonfinite_[p], f.highRange[p] = highRange_[p], f.vertices[p] = vertices_[p];
     for (uint32_t r = 0; r < kSlots; ++r) {
       const uint64_t k = replicateCount_[p * kSlots + r];
       f.replicateCount[p * kSlots + r] = k;

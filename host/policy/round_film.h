@@ -39,6 +39,7 @@ class RoundFilm {
   // Per pixel, the combined mean and one sample's variance (pooled within rounds): what the allocation reads.
   std::vector<glm::dvec3> means() const;
   std::vector<glm::dvec3> sampleVariances() const;
+  std::vector<double> costs() const;  // a sample's mean camera-path vertices (Film::cost)
 
  private:
   uint32_t width_, height_, replicates_;
@@ -51,6 +52,7 @@ class RoundFilm {
   std::vector<uint64_t> squaresDof_;  // per pixel: their degrees of freedom, sum_r (n_r - 1)
   std::vector<uint64_t> replicateCount_;
   std::vector<uint64_t> count_, nonfinite_, highRange_;
+  std::vector<double> vertices_;
 };
 
 }  // namespace vkmc

@@ -6,6 +6,7 @@
 namespace vkmc {
 
 namespace {
+constexpr int kSmoothingRadius = 1;  // 3x3: 9x9 was no better on glass_bulb's scattered fireflies (docs/journal)
 // The clamped counts for scale lambda, before rounding.
 double clampedTotal(const std::vector<double>& want, double lambda, double lo, double hi) {
   double total = 0.0;
@@ -23,12 +24,17 @@ std::vector<uint32_t> allocateSamples(const std::vector<double>& relVariance, co
   const double mean = double(budget) / double(pixels);
   const double lo = std::max<double>(limits.minimum, std::floor(limits.minFactor * mean / m) * m);
   const double hi = std::max(lo, std::floor(limits.maxFactor * mean / m) * m);
+  // The image's mean relative variance added to each pixel's: a pixel whose rare bright paths no sample has met
+  // yet looks quiet, and the image says how common such paths are.
+  double meanV = 0.0;
+  for (double v : relVariance) meanV += std::isfinite(v) ? std::max(v, 0.0) : 0.0;
+  meanV /= double(pixels);
   std::vector<double> want(pixels);
   double largest = 0.0;
   for (size_t p = 0; p < pixels; ++p) {
     const double c = cost.empty() ? 1.0 : std::max(cost[p], 1e-12);
     const double v = std::isfinite(relVariance[p]) ? std::max(relVariance[p], 0.0) : 0.0;
-    want[p] = std::sqrt(v / c);
+    want[p] = std::sqrt((v + limits.imagePrior * meanV) / c);
     largest = std::max(largest, want[p]);
   }
   if (!(largest > 0.0)) want.assign(pixels, 1.0), largest = 1.0;
@@ -53,12 +59,23 @@ std::vector<double> smoothedRelativeVariance(const std::vector<glm::dvec3>& mean
     for (int c = 0; c < 3; ++c) r += sampleVariance[p][c] / (mean[p][c] * mean[p][c] + epsilon);
     rel[p] = std::isfinite(r) ? r / 3.0 : 0.0;
   }
+  // A separable box, clamped at the image's edges.
+  const int radius = kSmoothingRadius;
+  std::vector<double> rows(rel.size(), 0.0);
   for (uint32_t y = 0; y < height; ++y)
     for (uint32_t x = 0; x < width; ++x) {
       double acc = 0.0;
       int k = 0;
-      for (uint32_t yy = y ? y - 1 : 0; yy <= std::min(y + 1, height - 1); ++yy)
-        for (uint32_t xx = x ? x - 1 : 0; xx <= std::min(x + 1, width - 1); ++xx) acc += rel[size_t(yy) * width + xx], ++k;
+      for (int xx = std::max(0, int(x) - radius); xx <= std::min(int(width) - 1, int(x) + radius); ++xx)
+        acc += rel[size_t(y) * width + xx], ++k;
+      rows[size_t(y) * width + x] = acc / k;
+    }
+  for (uint32_t y = 0; y < height; ++y)
+    for (uint32_t x = 0; x < width; ++x) {
+      double acc = 0.0;
+      int k = 0;
+      for (int yy = std::max(0, int(y) - radius); yy <= std::min(int(height) - 1, int(y) + radius); ++yy)
+        acc += rows[size_t(yy) * width + x], ++k;
       smooth[size_t(y) * width + x] = acc / k;
     }
   return smooth;

@@ -111,7 +111,7 @@ SampleRoundsOutcome renderSampleRounds(PathRenderer& renderer, RenderState& stat
     if (plan.adaptive && combined.rounds() > 0)
       counts =
           allocateSamples(smoothedRelativeVariance(combined.means(), combined.sampleVariances(), width, height, kRelMseEpsilon),
-                          {}, budget, AllocationLimits{replicates, replicates, 0.25, 8.0});
+                          combined.costs(), budget, AllocationLimits{replicates, replicates});
     Film round(width, height);
     round.replicates = replicates, round.replicateVariance = replicateVariance;
     const auto roundStart = Clock::now();

@@ -17,6 +17,7 @@ Film::Film(uint32_t w, uint32_t h)
       count(pixels(), 0),
       nonfinite(pixels(), 0),
       highRange(pixels(), 0),
+      vertices(pixels(), 0.0),
       replicateSum(3 * gpu::kMaxSampleReplicates * pixels(), 0.0),
       replicateCount(gpu::kMaxSampleReplicates * pixels(), 0) {}
 
@@ -38,6 +39,7 @@ void Film::addBatch(const gpu::FilmPixel* px) {
     count[p] += static_cast<uint64_t>(px[p].sum[3]);
     nonfinite[p] += static_cast<uint64_t>(px[p].sumSq[3]);
     highRange[p] += static_cast<uint64_t>(px[p].sumHigh[3]);
+    vertices[p] += double(px[p].sumSqHigh[3]);
     // The last replicate is the rest of the batch: its sums and count by difference.
     const uint32_t last = replicates - 1;
     double rest[3];
@@ -69,6 +71,18 @@ std::vector<glm::vec4> runningPixelEstimate(const Film& film, const gpu::FilmPix
     estimate[p] = glm::vec4(glm::vec3(mean), gpu::luminance(glm::vec3(mean)));
   }
   return estimate;
+}
+
+double Film::cost(size_t p) const {
+  const uint64_t n = count[p] + nonfinite[p];
+  return n ? vertices[p] / double(n) : 0.0;
+}
+
+double Film::efficiency(size_t p) const {
+  double rel = 0.0;
+  for (int c = 0; c < 3; ++c) rel += varianceOfMean(p, c) / (mean(p, c) * mean(p, c) + kRelMseEpsilon) / 3.0;
+  const double spent = vertices[p] * rel;
+  return spent > 0.0 && std::isfinite(spent) ? 1.0 / spent : 0.0;
 }
 
 double Film::mean(size_t p, int c) const { return count[p] ? sum[3 * p + c] / static_cast<double>(count[p]) : 0.0; }

@@ -10,6 +10,9 @@
 
 namespace vkmc {
 
+// relMSE's and relative variance's (v / (mean^2 + epsilon)) epsilon: keeps near-black pixels from dominating.
+inline constexpr double kRelMseEpsilon = 1e-2;
+
 struct Film {
   uint32_t width = 0, height = 0;
   std::vector<double> sum;      // 3 per pixel
@@ -17,6 +20,9 @@ struct Film {
   std::vector<uint64_t> count;  // finite samples per pixel
   std::vector<uint64_t> nonfinite;
   std::vector<uint64_t> highRange;  // finite samples with a channel >= 2^56, kept in the scaled high sums
+  // Per pixel: its samples' camera-path vertices (depth + 1 each, split children not counted), finite samples or
+  // not: what the pixel cost, about a ray and a shadow ray a vertex. cost() is a sample's mean.
+  std::vector<double> vertices;
   // Replicates (shaders/shared/sampler.h): per pixel kMaxSampleReplicates slots of sums (3 each) and counts,
   // the first `replicates` used (the estimator's `replicates`; the device's last one is the batch's rest).
   std::vector<double> replicateSum;
@@ -37,6 +43,10 @@ struct Film {
   Film(uint32_t w, uint32_t h);
   size_t pixels() const { return static_cast<size_t>(width) * height; }
   double mean(size_t pixel, int c) const;
+  double cost(size_t pixel) const;  // mean camera-path vertices a sample (0 without samples)
+  // The pixel's efficiency, 1 / (relative variance of its mean x what its samples cost), the variance relative as
+  // in relMSE (over mean^2 + kRelMseEpsilon, averaged over the channels): 0 where it shows no variance yet.
+  double efficiency(size_t pixel) const;
   // The variance of the pixel mean, estimated without bias: sample variance / n, or with replicateVariance
   // the replicate means' sample variance / (number of replicates). 0 below two samples (or replicates); NaN
   // where the film estimates no variance (estimatesVariance).

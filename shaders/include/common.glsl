@@ -254,12 +254,16 @@ void storePathRay(uint id, PathState p) {
   pathPairs[t + 2u] = wordPairs(p.throughput);
   pathPairs[t + 4u] = wordPairs(uvec4(p.pixel, p.rngKey, p.depth, p.rootPath));
 }
+// The bookkeeping texel alone: where the megakernel leaves a finished path's depth for accumulate (its cost).
+void storePathBookkeeping(uint id, PathState p) { pathPairs[id * kPathTexels + 4u] = wordPairs(uvec4(p.pixel, p.rngKey, p.depth, p.rootPath)); }
 void storePath(uint id, PathState p) {
   storePathRay(id, p);
   storeRadiance(id, p.radiance);
 }
 // The radiance a path has gathered so far, read through the texel view (shadow rays add to it).
 vec4 loadRadiance(uint id) { return uintBitsToFloat(imageLoad(pathTexels, int(id * kPathTexels + 3u))); }
+// A finished path's scattering events: its camera path's vertices are depth + 1, the sample's cost in the film.
+uint loadPathDepth(uint id) { return imageLoad(pathTexels, int(id * kPathTexels + 4u)).z; }
 
 vec4 loadHit(uint id) { return uintBitsToFloat(imageLoad(hitTexels, int(id))); }
 uint loadQueued(uint index) { return imageLoad(queueTexels, int(index)).x; }

@@ -4,7 +4,8 @@
 // pixel's samples of the pass, so no atomics. Non-finite estimates are counted and left out, never written;
 // finite ones always count, however large (FilmPixel's high sums). A filter other than the pixel's box weighs each
 // estimate by its filter weight (pixel_filter.h; negative in a filter's negative lobes). Sample slot s is the
-// pixel's sample pc.sampleIndex + s, so its replicate (sampler.h) is known here. A pass of sample runs (adaptive
+// pixel's sample pc.sampleIndex + s, so its replicate (sampler.h) is known here. Each sample's camera-path vertices
+// add to the pixel's cost (split children are not counted). A pass of sample runs (adaptive
 // sampling) has one invocation a run: its paths are consecutive.
 #include "common.glsl"
 
@@ -20,6 +21,7 @@ void main() {
   FilmPixel f = film[pixel];
   for (uint s = 0u; s < samples; ++s) {
     vec4 estimate = loadRadiance(firstPath + s * stride);
+    f.sumSqHigh.w += float(loadPathDepth(firstPath + s * stride) + 1u);  // every sample's cost, finite or not
     vec3 L = kPixelFilterSampling == kPixelFilterSamplingUniform ? estimate.rgb : estimate.rgb * estimate.w;
     if (allFinite(L)) {
       bvec3 high = greaterThanEqual(abs(L), vec3(kFilmHighThreshold));

@@ -88,6 +88,7 @@ void tracePath(uint id) {
     }
   }
   storeRadiance(id, vec4(radiance, path.radiance.w));  // w: the pixel-filter weight
+  storePathBookkeeping(id, path);                       // its depth: the sample's cost (accumulate)
   // Ray counts, one atomic per path and counter (llvmpipe runs atomics lane by lane).
   if (camera > 0u) atomicAdd(control.cameraRays, camera);
   if (extension > 0u) atomicAdd(control.extensionRays, extension);

@@ -243,7 +243,7 @@ struct FilmPixel {
   vec4 sum;        // rgb: sum of estimate channels below the threshold, w: finite samples
   vec4 sumSq;      // rgb: sum of their squares, w: non-finite samples (counted, excluded)
   vec4 sumHigh;    // rgb: sum of channels at or above the threshold, times kFilmHighScale; w: samples with one
-  vec4 sumSqHigh;  // rgb: sum of the squares of those scaled channels; w unused
+  vec4 sumSqHigh;  // rgb: sum of the squares of those scaled channels; w: the samples' camera-path vertices (their cost)
   vec4 replicate[kMaxSampleReplicates - 1u];  // rgb: sum of replicate r's finite samples, w: their count
 };
 VKMC_CONST float kFilmHighThreshold = 72057594037927936.0f;          // 2^56

@@ -13,6 +13,7 @@ TEST(Exr, FilmRoundTripsEveryChannel) {
   Film film(7, 5);
   for (size_t p = 0; p < film.pixels(); ++p) {
     film.count[p] = 10 + p;
+    film.vertices[p] = 3.5 * double(film.count[p]);
     for (int c = 0; c < 3; ++c) {
       double v = 0.25 * p + c + 1e-3 * p * p;
       film.sum[3 * p + c] = v * film.count[p];
@@ -24,12 +25,17 @@ TEST(Exr, FilmRoundTripsEveryChannel) {
   ExrImage img = readExr(path);
   ASSERT_EQ(img.width, 7);
   ASSERT_EQ(img.height, 5);
-  const char* names[] = {"R", "G", "B", "variance.R", "variance.G", "variance.B", "variance.dof", "samples"};
+  const char* names[] = {"R",       "G",    "B",         "variance.R", "variance.G", "variance.B", "variance.dof",
+                         "samples", "cost", "efficiency"};
   for (const char* n : names) ASSERT_TRUE(img.channels.count(n)) << n;
-  EXPECT_EQ(img.channels.size(), 8u);
+  EXPECT_EQ(img.channels.size(), 10u);
   for (size_t p = 0; p < film.pixels(); ++p) {
     EXPECT_EQ(img.channels["samples"][p], float(film.count[p]));
     EXPECT_EQ(img.channels["variance.dof"][p], float(film.count[p] - 1));  // independent samples: n - 1
+    EXPECT_EQ(img.channels["cost"][p], float(film.cost(p)));
+    double rel = 0.0;
+    for (int c = 0; c < 3; ++c) rel += film.varianceOfMean(p, c) / (film.mean(p, c) * film.mean(p, c) + 0.01) / 3.0;
+    EXPECT_FLOAT_EQ(img.channels["efficiency"][p], float(1.0 / (rel * film.vertices[p])));
     const char* rgb[] = {"R", "G", "B"};
     const char* var[] = {"variance.R", "variance.G", "variance.B"};
     for (int c = 0; c < 3; ++c) {

@@ -18,7 +18,7 @@ using namespace vkmc;
 TEST(SampleAllocation, FollowsTheSquareRootOfRelativeVarianceWithinItsLimits) {
   std::vector<double> v(100, 1.0);
   for (int p = 50; p < 100; ++p) v[p] = 16.0;
-  const std::vector<uint32_t> n = allocateSamples(v, {}, 100 * 10, AllocationLimits{2, 2, 0.0, 8.0});
+  const std::vector<uint32_t> n = allocateSamples(v, {}, 100 * 10, AllocationLimits{2, 2, 0.0, 8.0, 0.0});
   // sqrt(16) = 4 times as many: 4 and 16 a pixel for a mean of 10.
   EXPECT_EQ(n[0], 4u);
   EXPECT_EQ(n[99], 16u);
@@ -27,20 +27,20 @@ TEST(SampleAllocation, FollowsTheSquareRootOfRelativeVarianceWithinItsLimits) {
   // A dark pixel keeps the minimum; a noisy one stops at the cap (8x the mean).
   v.assign(100, 0.0);
   v[7] = 1.0;
-  const std::vector<uint32_t> capped = allocateSamples(v, {}, 100 * 10, AllocationLimits{2, 2, 0.0, 8.0});
+  const std::vector<uint32_t> capped = allocateSamples(v, {}, 100 * 10, AllocationLimits{2, 2, 0.0, 8.0, 0.0});
   EXPECT_EQ(capped[0], 2u);
   EXPECT_EQ(capped[7], 80u);
   // Cost: a pixel four times as costly gets half the samples of one as noisy.
   const std::vector<uint32_t> costly =
-      allocateSamples(std::vector<double>(2, 1.0), {4.0, 1.0}, 60, AllocationLimits{1, 1, 0.0, 8.0});
+      allocateSamples(std::vector<double>(2, 1.0), {4.0, 1.0}, 60, AllocationLimits{1, 1, 0.0, 8.0, 0.0});
   EXPECT_EQ(costly[0], 20u);
   EXPECT_EQ(costly[1], 40u);
   // The defensive floor: a quarter of the mean (10), rounded down to the multiple: 2; of a mean of 40: 10.
-  const std::vector<uint32_t> floored = allocateSamples(v, {}, 100 * 40, AllocationLimits{2, 2, 0.25, 8.0});
+  const std::vector<uint32_t> floored = allocateSamples(v, {}, 100 * 40, AllocationLimits{2, 2, 0.25, 8.0, 0.0});
   EXPECT_EQ(floored[0], 10u);
   EXPECT_EQ(floored[7], 320u);
   // No variance anywhere: uniform.
-  const std::vector<uint32_t> flat = allocateSamples(std::vector<double>(10, 0.0), {}, 80, AllocationLimits{2, 2, 0.0, 8.0});
+  const std::vector<uint32_t> flat = allocateSamples(std::vector<double>(10, 0.0), {}, 80, AllocationLimits{2, 2, 0.0, 8.0, 0.0});
   for (uint32_t c : flat) EXPECT_EQ(c, 8u);
 }
 
@@ -112,7 +112,7 @@ Trial simulateAdaptiveRender(uint32_t pixels, std::mt19937& rng) {
       const auto m = independent.means();
       const auto v = independent.sampleVariances();
       for (uint32_t p = 0; p < pixels; ++p) rel[p] = v[p].x / (m[p].x * m[p].x + 0.01);
-      counts = allocateSamples(rel, {}, uint64_t(spp) * pixels, AllocationLimits{2, 2, 0.0, 8.0});
+      counts = allocateSamples(rel, {}, uint64_t(spp) * pixels, AllocationLimits{2, 2, 0.0, 8.0, 0.0});
     }
     const Film round = simulateRound(counts, next, rng, pooledSum, pooledCount);
     const double later = 16.0 - done - spp;  // the plan: 16 samples a pixel on average
