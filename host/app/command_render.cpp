@@ -35,7 +35,8 @@ namespace {
 
 struct RenderArgs {
   RenderOptions options;
-  std::string out = "out.exr", png, report, lookFrom, lookAt, background, estimatorFile, filter = "box", filterRadius;
+  std::string out = "out.exr", png, efficiencyPng, report, lookFrom, lookAt, background, estimatorFile, filter = "box",
+              filterRadius;
   std::map<std::string, std::string> estimatorValues;  // by key, as typed after the flag
   float exposure = 0.0f;
   bool quiet = false, noSpecialize = false, generalSpirv = false;
@@ -192,9 +193,9 @@ void fillOptions(RenderArgs& a, const CLI::App& cmd) {
 // --resume without a scene: the render's options and outputs come from the checkpoint; only the outputs and the
 // checkpoint's own flags may be given.
 void optionsFromCheckpoint(RenderArgs& a, const CLI::App& cmd, const nlohmann::json& config) {
-  static const std::vector<std::string> allowed = {"--resume",     "--output",           "--png",
-                                                   "--report",     "--exposure",         "--quiet",
-                                                   "--checkpoint", "--checkpoint-every", "--stage-times"};
+  static const std::vector<std::string> allowed = {"--resume",           "--output",     "--png",   "--efficiency-png",
+                                                   "--report",           "--exposure",   "--quiet", "--checkpoint",
+                                                   "--checkpoint-every", "--stage-times"};
   for (const CLI::Option* opt : cmd.get_options()) {
     if (opt->count() == 0 || opt->get_positional()) continue;
     if (std::find(allowed.begin(), allowed.end(), opt->get_name()) == allowed.end())
@@ -231,12 +232,14 @@ void checkOutputs(const RenderArgs& a, const std::string& checkpoint) {
   inputs.insert(inputs.end(), {ro.referencePath, a.estimatorFile, ro.environmentPath});
   checkOutputPaths({{"--output", a.out},
                     {"--png", a.png},
+                    {"--efficiency-png", a.efficiencyPng},
                     {"--report", a.report},
                     {"--checkpoint", checkpoint},
                     {"--checkpoint's lock", checkpoint.empty() ? "" : checkpoint + ".lock"}},
                    inputs);
   // The checkpoint being resumed is an input too, though the render goes on checkpointing to it.
-  for (const auto& [flag, path] : {std::pair{"--output", a.out}, {"--png", a.png}, {"--report", a.report}})
+  for (const auto& [flag, path] :
+       {std::pair{"--output", a.out}, {"--png", a.png}, {"--efficiency-png", a.efficiencyPng}, {"--report", a.report}})
     if (!path.empty() && !a.resume.empty() && sameFile(path, a.resume))
       throw Error(std::string(flag) + ": '" + path + "' is the checkpoint being resumed; it would be overwritten");
   std::error_code ec;
@@ -291,6 +294,7 @@ void writeOutputs(const RenderArgs& a, const RenderOutcome& result, const nlohma
   OutputSet outputs;
   outputs.add(a.out, encodeFilmExr(result.film));
   if (!a.png.empty()) outputs.add(a.png, encodeFilmPng(result.film, a.exposure));
+  if (!a.efficiencyPng.empty()) outputs.add(a.efficiencyPng, encodeEfficiencyPng(result.film));
   // Paths are bytes, not always UTF-8: invalid sequences are replaced in the report rather than failing it.
   if (!a.report.empty()) outputs.add(a.report, report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
   outputs.commit();
@@ -374,6 +378,10 @@ void addOutputOptions(CLI::App* render, RenderArgs& a) {
       ->group(kOutputGroup);
   render->add_option("--report", a.report, "JSON report file")->group(kOutputGroup);
   render->add_option("--png", a.png, "sRGB PNG preview")->group(kOutputGroup);
+  render
+      ->add_option("--efficiency-png", a.efficiencyPng,
+                   "false-colour PNG of the efficiency channel (log scale: dark blue spends badly, yellow well)")
+      ->group(kOutputGroup);
   render->add_option("--exposure", a.exposure, "PNG exposure in stops")->capture_default_str()->group(kOutputGroup);
   render->add_option("--reference", ro.referencePath, "reference EXR: the report gains mse, relmse, efficiency")
       ->group(kOutputGroup);

@@ -4,6 +4,7 @@
 #include <png.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -93,6 +94,35 @@ std::string encodeFilmPng(const Film& film, float exposureStops) {
   std::vector<uint8_t> rgb(film.pixels() * 3);
   for (size_t p = 0; p < film.pixels(); ++p)
     for (int c = 0; c < 3; ++c) rgb[3 * p + c] = toSrgb8(film.mean(p, c) * scale);
+  return encodeRgbPng(rgb, film.width, film.height);
+}
+
+namespace {
+// Viridis at five stops, linearly interpolated: perceptually ordered and readable to most colour-blind eyes.
+std::array<uint8_t, 3> viridis(double t) {
+  static const double stops[5][3] = {{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
+  const double x = std::clamp(t, 0.0, 1.0) * 4.0;
+  const int i = std::min(3, int(x));
+  const double f = x - i;
+  std::array<uint8_t, 3> rgb;
+  for (int c = 0; c < 3; ++c) rgb[c] = uint8_t(std::lround(stops[i][c] + f * (stops[i + 1][c] - stops[i][c])));
+  return rgb;
+}
+}  // namespace
+
+std::string encodeEfficiencyPng(const Film& film) {
+  std::vector<double> logs;
+  for (size_t p = 0; p < film.pixels(); ++p)
+    if (const double e = film.efficiency(p); e > 0.0) logs.push_back(std::log10(e));
+  std::sort(logs.begin(), logs.end());
+  const double lo = logs.empty() ? 0.0 : logs[logs.size() / 100], hi = logs.empty() ? 1.0 : logs[logs.size() * 99 / 100];
+  std::vector<uint8_t> rgb(film.pixels() * 3, 0);
+  for (size_t p = 0; p < film.pixels() && film.estimatesVariance(); ++p) {
+    const double e = film.efficiency(p);
+    const std::array<uint8_t, 3> c =
+        e > 0.0 ? viridis((std::log10(e) - lo) / std::max(hi - lo, 1e-9)) : std::array<uint8_t, 3>{128, 128, 128};
+    std::copy(c.begin(), c.end(), rgb.begin() + 3 * p);
+  }
   return encodeRgbPng(rgb, film.width, film.height);
 }
 

@@ -11,6 +11,10 @@
 namespace vkmc {
 void writeFilmPng(const std::string& path, const Film& film, float exposureStops);
 std::string encodeFilmPng(const Film& film, float exposureStops);
+// The efficiency channel (Film::efficiency) in false colour: log10 of it from the image's 1st to 99th percentile
+// mapped onto viridis (dark blue: noise that costs much; yellow: cheap and clean); grey where the pixel shows no
+// variance; black where no efficiency can be told (no variance estimated).
+std::string encodeEfficiencyPng(const Film& film);
 // Images side by side (same size), each under its label, tone-mapped to sRGB with one shared exposure.
 void writeContactSheet(const std::string& path, const std::vector<ExrImage>& images, const std::vector<std::string>& labels,
                        float exposureStops);

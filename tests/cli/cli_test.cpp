@@ -71,6 +71,29 @@ TEST(Cli, RenderWritesExrPngAndAConsistentReport) {
   EXPECT_NEAR(sum / (40 * 30), double(j["mean"][0]), 1e-5);
 }
 
+// The cost channel counts each sample's camera-path vertices: the extension rays the report counts, plus one a
+// sample for the path's last vertex (its escape or its end), where nothing splits.
+TEST(Cli, CostAndEfficiencyChannelsAndTheirPng) {
+  fs::path exr = workDir() / "eff.exr", png = workDir() / "eff.png", report = workDir() / "eff.json";
+  RunResult r = runVkmc("render " + cornell() + " --width 24 --height 24 --spp 8 --max-depth 3 -q -o " + exr.string() +
+                        " --efficiency-png " + png.string() + " --report " + report.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_TRUE(fs::exists(png));
+  EXPECT_EQ(slurp(png).substr(1, 3), "PNG");
+  vkmc::ExrImage img = vkmc::readExr(exr.string());
+  ASSERT_EQ(img.channels.count("cost"), 1u);
+  ASSERT_EQ(img.channels.count("efficiency"), 1u);
+  double vertices = 0.0;
+  for (size_t p = 0; p < img.channels["cost"].size(); ++p) {
+    EXPECT_GE(img.channels["cost"][p], 1.0f);
+    EXPECT_LE(img.channels["cost"][p], 4.0f);  // depth cap 3: at most 4 vertices
+    EXPECT_GE(img.channels["efficiency"][p], 0.0f);
+    vertices += double(img.channels["cost"][p]) * img.channels["samples"][p];
+  }
+  auto j = nlohmann::json::parse(slurp(report));
+  EXPECT_NEAR(vertices, double(j["ray_counts"]["camera"]) + double(j["ray_counts"]["extension"]), 1e-6 * vertices);
+}
+
 TEST(Cli, DepthCapIsReportedAsBiased) {
   fs::path report = workDir() / "capped.json";
   RunResult r = runVkmc("render " + cornell() + " --width 16 --height 16 --spp 1 --max-depth 3 -q -o " +
