@@ -21,7 +21,9 @@ uint32_t roundUp(double x, uint32_t multiple) { return uint32_t(std::ceil(std::m
 
 uint32_t nextRoundSpp(const SampleRoundsPlan& plan, uint32_t done, uint32_t multiple, const RelMseEstimate& estimate,
                       double secondsLeft, double secondsPerSpp) {
-  const uint32_t first = roundUp(std::max(4.0, std::min(double(plan.spp), 64.0) / 8.0), multiple);
+  // Under a time budget the first round is short (4 samples a pixel): its pace sizes the rest.
+  const double firstSpp = plan.timeBudget > 0.0 ? 4.0 : std::max(4.0, std::min(double(plan.spp), 64.0) / 8.0);
+  const uint32_t first = roundUp(firstSpp, multiple);
   double size = done == 0 ? first : std::max<double>(first, done);
   // At least a quarter of what is done: a round near the target costs a pass's tail however small it is.
   if (plan.targetError > 0.0 && done > 0 && std::isfinite(estimate.upper))
@@ -81,7 +83,8 @@ bool renderRound(RoundRun& run, const std::vector<uint32_t>& counts, Film& round
     round.addBatch(batch.data());
     return !(run.control.stop && run.control.stop->load() != 0);
   });
-  for (uint32_t p = 0; p < counts.size(); ++p) run.nextSample[p] += counts[p];
+  if (finished)
+    for (uint32_t p = 0; p < counts.size(); ++p) run.nextSample[p] += counts[p];
   return finished;
 }
 

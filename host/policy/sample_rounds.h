@@ -31,8 +31,8 @@ SampleRoundsOutcome renderSampleRounds(PathRenderer& renderer, RenderState& stat
                                        const RenderSettings& settings, const SampleRoundsPlan& plan);
 
 // The next round's samples a pixel (on average, a multiple of `multiple`), from what is done and known: the first
-// round an eighth of the samples, at most 8 (the allocation starts early) and at least 4, then rounds that double
-// what is done; never past
+// round an eighth of the samples, at most 8 (the allocation starts early) and at least 4 (4 under a time budget,
+// whose pace it measures), then rounds that double what is done; never past
 // spp; under a target error no more than the estimate predicts (relMSE falls as 1/samples), but at least a quarter
 // of what is done; under a time budget no
 // more than the time left at the last round's pace.

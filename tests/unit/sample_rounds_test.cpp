@@ -67,6 +67,7 @@ TEST(SampleRounds, ScheduleDoublesToTheSampleCount) {
   plan.targetError = 0.0;
   plan.timeBudget = 10.0;
   EXPECT_EQ(nextRoundSpp(plan, 64, 2, {}, 3.0, 0.5), 6u);
+  EXPECT_EQ(nextRoundSpp(plan, 0, 2, {}, 10.0, 0.0), 4u);  // the first round measures the pace
 }
 
 namespace {
