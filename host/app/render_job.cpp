@@ -416,8 +416,9 @@ void renderPasses(PathRenderer& renderer, RenderState& state, const RenderContro
   const RankGroup& group = RankGroup::world();
   if (settings.sampleRuns) {
     if (group.distributed()) throw Error("--adaptive on and --target-error do not run under mpirun yet");
-    out.rounds = renderSampleRounds(renderer, state, control, settings,
-                                    SampleRoundsPlan{options.adaptive, options.targetError, settings.spp, settings.timeBudget});
+    out.rounds = renderSampleRounds(
+        renderer, state, control, settings,
+        SampleRoundsPlan{options.adaptive, options.targetError, settings.spp, settings.timeBudget, renderer.samplesPerPass()});
     return;
   }
   if (!group.distributed()) return renderer.render(state, control);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace vkmc {
 
@@ -13,6 +14,29 @@ double clampedTotal(const std::vector<double>& want, double lambda, double lo, d
   for (double w : want) total += std::clamp(lambda * w, lo, hi);
   return total;
 }
+
+// Counts in multiples of m that sum to the budget exactly (rounded down to m) where the cap allows: the floors,
+// then one m more for the pixels with the largest remainders, then (where caps left budget over) one m more a
+// pixel in turn. A round fills whole passes, and a few paths over would cost a whole extra pass.
+std::vector<uint32_t> roundToBudget(const std::vector<double>& x, uint64_t budget, uint32_t m, double hi) {
+  std::vector<uint32_t> n(x.size());
+  std::vector<std::pair<double, size_t>> order(x.size());
+  uint64_t total = 0;
+  for (size_t p = 0; p < x.size(); ++p) {
+    n[p] = uint32_t(std::floor(x[p] / m)) * m;
+    total += n[p];
+    order[p] = {x[p] - n[p], p};
+  }
+  std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (uint64_t left = total < budget ? (budget - total) / m : 0; left > 0;) {
+    const uint64_t before = left;
+    for (size_t k = 0; k < order.size() && left > 0; ++k)
+      if (uint32_t& c = n[order[k].second]; c + m <= hi) c += m, --left;
+    if (left == before) break;  // every pixel at its cap
+  }
+  return n;
+}
+
 }  // namespace
 
 std::vector<uint32_t> allocateSamples(const std::vector<double>& relVariance, const std::vector<double>& cost, uint64_t budget,
@@ -44,11 +68,8 @@ std::vector<uint32_t> allocateSamples(const std::vector<double>& relVariance, co
     const double mid = std::sqrt(a * b);
     (clampedTotal(want, mid, lo, hi) < double(budget) ? a : b) = mid;
   }
-  for (size_t p = 0; p < pixels; ++p) {
-    const double x = std::clamp(b * want[p], lo, hi);
-    n[p] = uint32_t(std::clamp(std::round(x / m) * m, lo, hi));
-  }
-  return n;
+  for (size_t p = 0; p < pixels; ++p) want[p] = std::clamp(b * want[p], lo, hi);
+  return roundToBudget(want, budget, uint32_t(m), hi);
 }
 
 std::vector<double> smoothedRelativeVariance(const std::vector<glm::dvec3>& mean, const std::vector<glm::dvec3>& sampleVariance,

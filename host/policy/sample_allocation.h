@@ -23,8 +23,9 @@ struct AllocationLimits {
   double imagePrior = 1.0;
 };
 
-// Samples per pixel for a round of about `budget` samples over the image: sqrt((v_p + prior) / c_p) scaled to the
-// budget, clamped to the limits, rounded to a multiple. Uniform where no pixel has a variance yet. `cost` may be
+// Samples per pixel for a round of `budget` samples over the image (exactly, where the budget is a multiple of
+// `multiple` and the limits allow): sqrt((v_p + prior) / c_p) scaled to the budget, clamped to the limits, in
+// multiples. Uniform where no pixel has a variance yet. `cost` may be
 // empty (every sample costs the same).
 std::vector<uint32_t> allocateSamples(const std::vector<double>& relVariance, const std::vector<double>& cost, uint64_t budget,
                                       const AllocationLimits& limits);

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 
 #include "analysis/error_metrics.h"
 #include "policy/round_film.h"
@@ -21,6 +22,7 @@ uint32_t roundUp(double x, uint32_t multiple) { return uint32_t(std::ceil(std::m
 
 uint32_t nextRoundSpp(const SampleRoundsPlan& plan, uint32_t done, uint32_t multiple, const RelMseEstimate& estimate,
                       double secondsLeft, double secondsPerSpp) {
+  multiple = std::lcm(std::max(multiple, 1u), std::max(plan.passSpp, 1u));
   // Under a time budget the first round is short (4 samples a pixel): its pace sizes the rest.
   const double firstSpp = plan.timeBudget > 0.0 ? 4.0 : std::max(4.0, std::min(double(plan.spp), 64.0) / 8.0);
   const uint32_t first = roundUp(firstSpp, multiple);

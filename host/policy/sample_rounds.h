@@ -16,6 +16,7 @@ struct SampleRoundsPlan {
   double targetError = 0.0;  // > 0: stop once the relMSE estimate's upper bound is at or under it
   uint32_t spp = 0;          // the most samples a pixel, on average
   double timeBudget = 0.0;   // seconds; > 0: rounds until it is spent
+  uint32_t passSpp = 1;      // samples a pixel a full pass holds (PathRenderer::samplesPerPass): rounds fill passes
 };
 
 struct SampleRoundsOutcome {
@@ -30,7 +31,8 @@ struct SampleRoundsOutcome {
 SampleRoundsOutcome renderSampleRounds(PathRenderer& renderer, RenderState& state, const RenderControl& control,
                                        const RenderSettings& settings, const SampleRoundsPlan& plan);
 
-// The next round's samples a pixel (on average, a multiple of `multiple`), from what is done and known: the first
+// The next round's samples a pixel (on average, a multiple of `multiple` and of plan.passSpp, so that its passes
+// are full: a pass's cost is mostly its longest path), from what is done and known: the first
 // round an eighth of the samples, at most 8 (the allocation starts early) and at least 4 (4 under a time budget,
 // whose pace it measures), then rounds that double what is done; never past
 // spp; under a target error no more than the estimate predicts (relMSE falls as 1/samples), but at least a quarter
