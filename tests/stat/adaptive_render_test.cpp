@@ -26,7 +26,7 @@ RenderOutcome renderRounds(const std::string& scene, uint32_t w, uint32_t h, uin
 TEST(AdaptiveRender, FurnaceMatchesTheAnalyticValue) {
   const RenderOutcome r = renderRounds("furnace.gltf", 16, 16, 256, 17, true);
   ASSERT_TRUE(r.rounds);
-  EXPECT_EQ(r.rounds->rounds, 6u);  // 8, 8, 16, 32, 64 and 128 samples a pixel
+  EXPECT_EQ(r.rounds->rounds, 3u);  // 64, 64 and 128 samples a pixel: a pass holds 64 of a 16x16 image
   ASSERT_EQ(r.film.totalNonfinite(), 0u);
   EXPECT_TRUE(regionMatches(whole(r.film), glm::dvec3(2.0), 5.0));
   for (uint32_t q = 0; q < 4; ++q)
@@ -38,8 +38,9 @@ TEST(AdaptiveRender, CornellBoxMatchesAUniformRenderAndReportsItsSpread) {
   const RenderOutcome uniform = renderWith("cornell_box.gltf", EstimatorConfig{}, 32, 32, 512, 999);
   const RenderOutcome adaptive = renderRounds("cornell_box.gltf", 32, 32, 256, 31, true);
   ASSERT_TRUE(adaptive.rounds);
-  // The allocation did spread the samples (the box's light and its corners are far noisier than its walls).
-  EXPECT_GT(adaptive.rounds->maxPixelSamples, 4 * adaptive.rounds->minPixelSamples);
+  // The allocation did spread the samples (the box's light and its corners are far noisier than its walls), within
+  // its floor (a quarter of the mean a round) and the image prior.
+  EXPECT_GT(adaptive.rounds->maxPixelSamples, 2 * adaptive.rounds->minPixelSamples);
   EXPECT_TRUE(regionsAgree(whole(adaptive.film), whole(uniform.film), 5.0));
   for (uint32_t q = 0; q < 4; ++q)
     EXPECT_TRUE(regionsAgree(region(adaptive.film, (q % 2) * 16, (q / 2) * 16, (q % 2) * 16 + 16, (q / 2) * 16 + 16),
