@@ -1,5 +1,6 @@
 #include "policy/target_error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -15,14 +16,16 @@ RelMseEstimate estimateRelMse(const Film& film, double epsilon) {
   for (size_t p = 0; p < film.pixels(); ++p) {
     double t = 0.0;
     for (int c = 0; c < 3; ++c) {
-      const double m = film.mean(p, c);
-      t += film.varianceOfMean(p, c) / (m * m + epsilon);
+      // mean^2 overstates the squared true value by the variance of the mean: taken out, or a few samples'
+      // noisy pixels would look relatively quieter than they are.
+      const double m = film.mean(p, c), v = film.varianceOfMean(p, c);
+      t += v / (std::max(m * m - v, 0.0) + epsilon);
     }
     t /= 3.0;
     const double dof = film.varianceDof(p);
     sum += t;
     // A pixel without a variance yet (under two samples or replicates) is as unsure as can be.
-    spread += dof > 0.0 ? 2.0 * t * t / dof : std::numeric_limits<double>::infinity();
+    spread += dof > 0.0 ? 2.0 * t * t * (1.0 / dof + 1.0) : std::numeric_limits<double>::infinity();
   }
   const double n = double(film.pixels());
   e.value = sum / n;

@@ -228,7 +228,7 @@ TEST(TargetError, EstimatesRelMseAndBoundsIt) {
   for (int c = 0; c < 3; ++c) f.sum[3 + c] = 4.0, f.sumSq[3 + c] = 4.0;
   f.count[1] = 4;
   const RelMseEstimate e = estimateRelMse(f, 0.01);
-  const double t0 = (1.0 / 3.0) / (4.0 + 0.01);
+  const double t0 = (1.0 / 3.0) / (4.0 - 1.0 / 3.0 + 0.01);  // the mean's square less its variance
   EXPECT_NEAR(e.value, t0 / 2.0, 1e-12);
-  EXPECT_NEAR(e.upper, t0 / 2.0 + 1.645 * std::sqrt(2.0 * t0 * t0 / 3.0) / 2.0, 1e-12);
+  EXPECT_NEAR(e.upper, t0 / 2.0 + 1.645 * std::sqrt(2.0 * t0 * t0 * (1.0 / 3.0 + 1.0)) / 2.0, 1e-12);
 }
