@@ -229,6 +229,10 @@ TEST(TargetError, EstimatesRelMseAndBoundsIt) {
   f.count[1] = 4;
   const RelMseEstimate e = estimateRelMse(f, 0.01);
   const double t0 = (1.0 / 3.0) / (4.0 - 1.0 / 3.0 + 0.01);  // the mean's square less its variance
+  Film dark = f;  // a pixel whose variance passes half its squared mean: the square halved, no further
+  for (int c = 0; c < 3; ++c) dark.sum[c] = 0.4, dark.sumSq[c] = 4.0 * (2.0 / 3.0 * 3.0 + 0.01);
+  const double m = 0.1, v = (dark.sumSq[0] - 4.0 * m * m) / 3.0 / 4.0;
+  EXPECT_NEAR(estimateRelMse(dark, 0.01).value, (v / (0.5 * m * m + 0.01)) / 2.0, 1e-12);
   EXPECT_NEAR(e.value, t0 / 2.0, 1e-12);
   EXPECT_NEAR(e.upper, t0 / 2.0 + 1.645 * std::sqrt(2.0 * t0 * t0 * (1.0 / 3.0 + 1.0)) / 2.0, 1e-12);
 }
