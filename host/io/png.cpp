@@ -110,20 +110,28 @@ std::array<uint8_t, 3> viridis(double t) {
 }
 }  // namespace
 
-std::string encodeEfficiencyPng(const Film& film) {
+std::string encodeEfficiencyPng(const std::vector<double>& efficiency, uint32_t width, uint32_t height) {
   std::vector<double> logs;
-  for (size_t p = 0; p < film.pixels(); ++p)
-    if (const double e = film.efficiency(p); e > 0.0) logs.push_back(std::log10(e));
+  for (double e : efficiency)
+    if (e > 0.0 && std::isfinite(e)) logs.push_back(std::log10(e));
   std::sort(logs.begin(), logs.end());
   const double lo = logs.empty() ? 0.0 : logs[logs.size() / 100], hi = logs.empty() ? 1.0 : logs[logs.size() * 99 / 100];
-  std::vector<uint8_t> rgb(film.pixels() * 3, 0);
-  for (size_t p = 0; p < film.pixels() && film.estimatesVariance(); ++p) {
-    const double e = film.efficiency(p);
-    const std::array<uint8_t, 3> c =
-        e > 0.0 ? viridis((std::log10(e) - lo) / std::max(hi - lo, 1e-9)) : std::array<uint8_t, 3>{128, 128, 128};
+  std::vector<uint8_t> rgb(efficiency.size() * 3, 0);
+  for (size_t p = 0; p < efficiency.size(); ++p) {
+    const double e = efficiency[p];
+    const std::array<uint8_t, 3> c = e > 0.0 && std::isfinite(e) ? viridis((std::log10(e) - lo) / std::max(hi - lo, 1e-9))
+                                                                 : std::array<uint8_t, 3>{128, 128, 128};
     std::copy(c.begin(), c.end(), rgb.begin() + 3 * p);
   }
-  return encodeRgbPng(rgb, film.width, film.height);
+  return encodeRgbPng(rgb, width, height);
+}
+
+std::string encodeEfficiencyPng(const Film& film) {
+  if (!film.estimatesVariance()) return encodeRgbPng(std::vector<uint8_t>(film.pixels() * 3, 0), film.width, film.height);
+  std::vector<double> efficiency(film.pixels());
+  // As the EXR holds them (float), so that `vkmc compare --efficiency-png` draws the same map from the EXR.
+  for (size_t p = 0; p < film.pixels(); ++p) efficiency[p] = double(float(std::min(film.efficiency(p), 3.0e38)));
+  return encodeEfficiencyPng(efficiency, film.width, film.height);
 }
 
 void writeFilmPng(const std::string& path, const Film& film, float exposureStops) {

@@ -15,6 +15,8 @@ std::string encodeFilmPng(const Film& film, float exposureStops);
 // mapped onto viridis (dark blue: noise that costs much; yellow: cheap and clean); grey where the pixel shows no
 // variance; black where no efficiency can be told (no variance estimated).
 std::string encodeEfficiencyPng(const Film& film);
+// The same from efficiencies per pixel (an EXR's `efficiency` channel: `vkmc compare --efficiency-png`).
+std::string encodeEfficiencyPng(const std::vector<double>& efficiency, uint32_t width, uint32_t height);
 // Images side by side (same size), each under its label, tone-mapped to sRGB with one shared exposure.
 void writeContactSheet(const std::string& path, const std::vector<ExrImage>& images, const std::vector<std::string>& labels,
                        float exposureStops);

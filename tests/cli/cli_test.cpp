@@ -92,6 +92,11 @@ TEST(Cli, CostAndEfficiencyChannelsAndTheirPng) {
   }
   auto j = nlohmann::json::parse(slurp(report));
   EXPECT_NEAR(vertices, double(j["ray_counts"]["camera"]) + double(j["ray_counts"]["extension"]), 1e-6 * vertices);
+  // compare draws the same map from the EXR's channel: the same bytes as the render's.
+  fs::path again = workDir() / "eff_again.png";
+  RunResult c = runVkmc("compare " + exr.string() + " " + exr.string() + " --efficiency-png " + again.string());
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_EQ(slurp(again), slurp(png));
 }
 
 TEST(Cli, DepthCapIsReportedAsBiased) {
