@@ -86,9 +86,12 @@ void applyMaterialExtensions(const tinygltf::Material& gltf, Material& m, const 
     m.specularColorTexture = r.texture("specularColorTexture");
   }
   if (const tinygltf::Value* v = extension(gltf, "KHR_materials_ior")) {
-    float ior = reader(*v, "KHR_materials_ior").number("ior", 1.5, 0.0, 100.0);
+    // The spec bounds ior below only (1, or 0 for backward compatibility: as 1). Above kLargestIor a dielectric's
+    // F0 differs from 1 by under 4e-4, and larger values would overflow (ior + 1)^2 in float: rendered as that.
+    constexpr double kLargestIor = 1e4;
+    float ior = reader(*v, "KHR_materials_ior").number("ior", 1.5, 0.0, std::numeric_limits<float>::max());
     if (ior != 0.0f && ior < 1.0f) throw Error(name + " KHR_materials_ior.ior = " + std::to_string(ior) + " is below 1");
-    m.ior = ior == 0.0f ? 1.0f : ior;  // the spec allows 0 (for backward compatibility): as 1
+    m.ior = ior == 0.0f ? 1.0f : float(std::min<double>(ior, kLargestIor));
   }
   if (const tinygltf::Value* v = extension(gltf, "KHR_materials_transmission")) {
     ExtensionReader r = reader(*v, "KHR_materials_transmission");

@@ -65,6 +65,13 @@ TEST(MaterialExtensions, DefaultsAndSmoothLobes) {
   EXPECT_TRUE(f.singleSided);
 }
 
+// KHR_materials_ior has no upper bound: 1000 is valid (a near-perfect mirror); beyond 1e4 it renders as 1e4.
+TEST(MaterialExtensions, LargeIorsAreAccepted) {
+  EXPECT_FLOAT_EQ(loadGltf(quadWith("ior1000", R"("KHR_materials_ior":{"ior":1000})")).materials[0].ior, 1000.0f);
+  EXPECT_FLOAT_EQ(loadGltf(quadWith("ior1e30", R"("KHR_materials_ior":{"ior":1e30})")).materials[0].ior, 1e4f);
+  EXPECT_FLOAT_EQ(loadGltf(quadWith("ior0", R"("KHR_materials_ior":{"ior":0})")).materials[0].ior, 1.0f);
+}
+
 TEST(MaterialExtensions, BadValuesAreNamedOnOneLine) {
   struct Row {
     const char* extensions;
