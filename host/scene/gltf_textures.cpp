@@ -112,8 +112,14 @@ std::vector<Texture> convertTextures(const tinygltf::Model& model, std::vector<s
       tex.texels.resize(size_t(tex.width) * tex.height);
       std::memcpy(tex.texels.data(), img.image.data(), tex.texels.size() * 4);
     } else {
-      warnings.push_back("texture " + std::to_string(i) + (t.name.empty() ? "" : " (" + t.name + ")") +
-                         " has no image vkmc can decode (PNG and JPEG are read): ignored");
+      // Name the file where there is one: a missing or unreadable file is the common cause.
+      const bool hasFile = source >= 0 && source < static_cast<int>(model.images.size()) && !model.images[source].uri.empty() &&
+                           model.images[source].uri.rfind("data:", 0) != 0;
+      warnings.push_back(
+          "texture " + std::to_string(i) + (t.name.empty() ? "" : " (" + t.name + ")") +
+          (hasFile ? ": its image '" + model.images[source].uri + "' could not be read (missing, or neither PNG nor JPEG)"
+                   : " has no image vkmc can decode (PNG and JPEG are read)") +
+          ": ignored");
     }
     out.push_back(std::move(tex));
   }

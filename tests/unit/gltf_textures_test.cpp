@@ -74,6 +74,16 @@ TEST(GltfTextures, UndecodableAndOversizedImagesAreIgnoredWithAWarningNamingThem
   EXPECT_FALSE(s.materials[0].emissiveTexture.present());
 }
 
+// A texture whose image file is missing is named with the file (it was "texture 0 has no image vkmc can decode").
+TEST(GltfTextures, AMissingImageFileIsNamed) {
+  auto dir = test::makeTempDir("textures_missing");
+  std::string material = R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})";
+  std::string extra = R"("images":[{"uri":"gone/wood.png"}],"textures":[{"source":0}])";
+  Scene s = loadGltf(test::writeQuadsGltf(dir, "missing", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
+  EXPECT_TRUE(anyWarningHas(s, "gone/wood.png")) << (s.warnings.empty() ? "" : s.warnings.back());
+  EXPECT_FALSE(s.materials[0].baseColorTexture.present());
+}
+
 // Only PNG and JPEG, by their signatures: a Radiance .hdr, a GIF or a BMP as a texture is ignored with a warning,
 // never handed to another decoder (stb_image's HDR decoder, which the loader once reached, looped forever on a cut file).
 TEST(GltfTextures, ImagesOtherThanPngAndJpegAreIgnoredWithAWarning) {
