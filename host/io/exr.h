@@ -17,8 +17,7 @@ struct ExrImage {
 // or replicates - 1 under the QMC samplers; Film::varianceDof), samples, cost (a sample's mean camera-path
 // vertices: Film::cost) and efficiency (1 / (relative variance of the mean x vertices spent): Film::efficiency, an
 // efficiency map); no variance or efficiency channels where the film estimates none (Film::estimatesVariance: one scrambling a
-// pixel). Written all or nothing (io/output_files.h): a failed run never leaves a partial or clobbered file. The film as an
-// image: mean R, G, B and the variance of each mean (variance.R, .G, .B).
+// pixel). Written all or nothing (io/output_files.h): a failed run never leaves a partial or clobbered file.
 ExrImage filmToImage(const Film& film);
 void writeFilmExr(const std::string& path, const Film& film);
 void writeExr(const std::string& path, const ExrImage& image);

@@ -8,6 +8,20 @@ namespace vkmc {
 
 namespace {
 constexpr int kSmoothingRadius = 1;  // 3x3: 9x9 was no better on glass_bulb's scattered fireflies (docs/journal)
+// One pass of a box of kSmoothingRadius, clamped at the ends, along `lines` lines of `length` values `step`
+// apart, the lines `lineStep` apart.
+void boxPass(const std::vector<double>& in, std::vector<double>& out, uint32_t length, uint32_t lines, size_t step,
+             size_t lineStep) {
+  for (uint32_t l = 0; l < lines; ++l)
+    for (int i = 0; i < int(length); ++i) {
+      double acc = 0.0;
+      int k = 0;
+      for (int j = std::max(0, i - kSmoothingRadius); j <= std::min(int(length) - 1, i + kSmoothingRadius); ++j)
+        acc += in[l * lineStep + j * step], ++k;
+      out[l * lineStep + i * step] = acc / k;
+    }
+}
+
 // The clamped counts for scale lambda, before rounding.
 double clampedTotal(const std::vector<double>& want, double lambda, double lo, double hi) {
   double total = 0.0;
@@ -80,25 +94,10 @@ std::vector<double> smoothedRelativeVariance(const std::vector<glm::dvec3>& mean
     for (int c = 0; c < 3; ++c) r += sampleVariance[p][c] / (mean[p][c] * mean[p][c] + epsilon);
     rel[p] = std::isfinite(r) ? r / 3.0 : 0.0;
   }
-  // A separable box, clamped at the image's edges.
-  const int radius = kSmoothingRadius;
+  // A separable box, clamped at the image's edges: along the rows, then down the columns.
   std::vector<double> rows(rel.size(), 0.0);
-  for (uint32_t y = 0; y < height; ++y)
-    for (uint32_t x = 0; x < width; ++x) {
-      double acc = 0.0;
-      int k = 0;
-      for (int xx = std::max(0, int(x) - radius); xx <= std::min(int(width) - 1, int(x) + radius); ++xx)
-        acc += rel[size_t(y) * width + xx], ++k;
-      rows[size_t(y) * width + x] = acc / k;
-    }
-  for (uint32_t y = 0; y < height; ++y)
-    for (uint32_t x = 0; x < width; ++x) {
-      double acc = 0.0;
-      int k = 0;
-      for (int yy = std::max(0, int(y) - radius); yy <= std::min(int(height) - 1, int(y) + radius); ++yy)
-        acc += rows[size_t(yy) * width + x], ++k;
-      smooth[size_t(y) * width + x] = acc / k;
-    }
+  boxPass(rel, rows, width, height, 1, width);
+  boxPass(rows, smooth, height, width, width, 1);
   return smooth;
 }
 
