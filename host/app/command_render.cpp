@@ -32,6 +32,7 @@
 
 namespace vkmc {
 namespace {
+constexpr const char* kEstimatorAuto = "auto";  // --estimator auto (app/estimator_search.h)
 
 struct RenderArgs {
   RenderOptions options;
@@ -146,13 +147,15 @@ void applyEstimatorFlag(EstimatorConfig& e, const EstimatorParam& p, const std::
 
 // The estimator file, then the flags over it. A file's name that flags changed says so ("name + rr_q=0.3"), so
 // the report does not echo the file's name for a configuration that is not the file's.
-EstimatorConfig estimatorFrom(const RenderArgs& a, const CLI::App& cmd) {
+// `--estimator auto` starts from the defaults and pins the keys the flags give.
+EstimatorConfig estimatorFrom(const RenderArgs& a, const CLI::App& cmd, std::set<std::string>& pinned) {
   EstimatorConfig e;
-  if (!a.estimatorFile.empty()) e = loadEstimatorFile(a.estimatorFile);
+  if (!a.estimatorFile.empty() && a.estimatorFile != kEstimatorAuto) e = loadEstimatorFile(a.estimatorFile);
   std::string overrides;
   for (const EstimatorParam& p : estimatorParams()) {
     if (!cmd.count(p.flag())) continue;
     applyEstimatorFlag(e, p, a.estimatorValues.at(p.key));
+    pinned.insert(p.key);
     overrides += (overrides.empty() ? "" : ", ") + std::string(p.key) + "=" + p.text(p.get(e));
   }
   if (!e.name.empty() && !overrides.empty()) e.name += " + " + overrides;
@@ -171,7 +174,9 @@ void fillOptions(RenderArgs& a, const CLI::App& cmd) {
   if ((ro.timeBudget > 0.0 || ro.targetError > 0.0) && !cmd.count("--spp")) ro.spp = kMaxSpp;  // the budget decides
   if (a.adaptive != "on" && a.adaptive != "off") throw Error("--adaptive must be on or off");
   ro.adaptive = a.adaptive == "on";
-  ro.estimator = estimatorFrom(a, cmd);
+  ro.estimator = estimatorFrom(a, cmd, ro.pinnedKeys);
+  ro.estimatorAuto = a.estimatorFile == kEstimatorAuto;
+  if (!ro.estimatorAuto) ro.pinnedKeys.clear();
   ro.seed = static_cast<uint32_t>(a.seed);
   if (a.width > 0) ro.width = static_cast<uint32_t>(a.width);
   if (a.height > 0) ro.height = static_cast<uint32_t>(a.height);
@@ -229,7 +234,7 @@ void checkOutputs(const RenderArgs& a, const std::string& checkpoint) {
   if (!RankGroup::world().isRoot()) return;
   const RenderOptions& ro = a.options;
   std::vector<std::string> inputs = gltfInputFiles(ro.scenePath);
-  inputs.insert(inputs.end(), {ro.referencePath, a.estimatorFile, ro.environmentPath});
+  inputs.insert(inputs.end(), {ro.referencePath, ro.estimatorAuto ? "" : a.estimatorFile, ro.environmentPath});
   checkOutputPaths({{"--output", a.out},
                     {"--png", a.png},
                     {"--efficiency-png", a.efficiencyPng},
@@ -494,7 +499,9 @@ Command addRenderCommand(CLI::App& app) {
   addSamplingOptions(render, *a);
   addCameraAndLightOptions(render, *a);
   // Flags override the file; both are the keys of host/estimators/estimator_params.cpp.
-  render->add_option("--estimator", a->estimatorFile, "JSON estimator file (the keys of the flags below)")
+  render->add_option("--estimator", a->estimatorFile,
+                     "JSON estimator file (the keys of the flags below), or auto: short pilots on the scene choose light "
+                     "and BSDF samples, MIS, light sampling and roulette by measured efficiency; flags pin their keys")
       ->group(kEstimatorGroup);
   for (const EstimatorParam& p : estimatorParams())
     render->add_option(p.flag(), a->estimatorValues[p.key], p.helpText())->group(kEstimatorGroup);

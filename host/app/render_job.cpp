@@ -64,6 +64,11 @@ void validateOptions(const RenderOptions& o) {
   validatePixelFilter(o.filter);
   if (!(o.timeBudget >= 0.0) || o.timeBudget > 1e6) throw Error("--time-budget must be between 0 and 1e6 seconds");
   if (!(o.targetError >= 0.0 && o.targetError < 1e6)) throw Error("--target-error must be a relMSE above 0");
+  if (o.estimatorAuto && o.estimator.rr == RouletteMode::Ears)
+    throw Error("--estimator auto does not search with rr ears (its training and guard are a policy of their own): give "
+                "another --rr, or a fixed estimator");
+  if (o.estimatorAuto && o.estimator.sampler == Sampler::ZSobol)
+    throw Error("--estimator auto measures with the sobol or independent sampler, not zsobol");
   if (o.adaptive || o.targetError > 0.0) {
     const char* what = o.adaptive ? "--adaptive on" : "--target-error";
     if (o.estimator.rr == RouletteMode::Ears) throw Error(std::string(what) + " does not work with rr ears (its own passes) yet");
@@ -322,6 +327,7 @@ RenderOptions resolveDeviceChoices(vk::Context& ctx, const RenderOptions& option
 struct LearnedBeforePasses {
   std::optional<RouletteTable> roulette;
   double pilotSeconds = 0.0;
+  double choiceSeconds = 0.0;  // --estimator auto's pilots
 };
 
 // A new render's empty state, or the checkpoint's after checking that it is this render's.
@@ -371,7 +377,8 @@ void runEfficiencyPilot(vk::Context& ctx, const GpuScene& gpuScene, const Render
 void chargePilotToBudget(const RenderOptions& options, const RenderState& state, const LearnedBeforePasses& learned,
                          RenderSettings& settings, RenderOutcome& out) {
   if (options.timeBudget <= 0.0) return;
-  settings.timeBudget = std::max(1e-3, options.timeBudget - learned.pilotSeconds - state.stats.seconds);
+  settings.timeBudget =
+      std::max(1e-3, options.timeBudget - learned.pilotSeconds - learned.choiceSeconds - state.stats.seconds);
   if (learned.pilotSeconds > 0.5 * options.timeBudget) {
     char line[256];
     std::snprintf(line, sizeof(line),
@@ -380,6 +387,38 @@ void chargePilotToBudget(const RenderOptions& options, const RenderState& state,
                   learned.pilotSeconds, options.timeBudget);
     out.warnings.push_back(line);
   }
+}
+
+// --estimator auto: the pilots choose (rank 0's under mpirun, told to the others), or a resumed render takes its
+// checkpoint's choice. The render then runs the chosen configuration, its integrator the wavefront where it splits.
+void chooseEstimatorFor(vk::Context& ctx, const GpuScene& gpuScene, const RenderOptions& options, const RunControl& run,
+                        RenderSettings& settings, RenderOutcome& out, LearnedBeforePasses& learned) {
+  if (!options.estimatorAuto) return;
+  nlohmann::json shared;
+  if (run.resumeConfig && run.resumeConfig->contains("chosen_estimator")) {
+    shared = run.resumeConfig->at("chosen_estimator");
+  } else {
+    const RankGroup& group = RankGroup::world();
+    std::string text;
+    if (group.isRoot()) {
+      out.choice = chooseEstimator(ctx, gpuScene, settings, options.pinnedKeys, options.timeBudget);
+      out.setup.pipelines += out.choice->pipelineSeconds;
+      nlohmann::json j = {{"estimator", out.choice->chosen.toJson()}, {"seconds", out.choice->seconds}};
+      if (out.choice->roulette) j["roulette"] = rouletteJson(*out.choice->roulette);
+      text = j.dump();
+    }
+    group.broadcast(text);
+    shared = nlohmann::json::parse(text);
+  }
+  EstimatorConfig chosen = settings.estimator;
+  chosen.applyJson(shared.at("estimator"));
+  chosen.validate();
+  settings.estimator = chosen;
+  learned.choiceSeconds = shared.at("seconds").get<double>();
+  if (shared.contains("roulette")) learned.roulette = rouletteFromJson(shared.at("roulette"));
+  if (chosen.splitsPaths() && settings.integrator != Integrator::Wavefront)
+    settings.integrator = out.integrator = Integrator::Wavefront;
+  out.checkpointConfig["chosen_estimator"] = shared;
 }
 
 // Periodic checkpoints (rank 0's). One that cannot be written (a full disk) leaves the last one intact and the
@@ -478,7 +517,8 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   if (state.nextSample > settings.spp)
     throw Error("the checkpoint claims " + std::to_string(state.nextSample) + " samples a pixel of a " +
                 std::to_string(settings.spp) + "-spp render");
-  if (options.estimator.rr == RouletteMode::Efficiency && !learned.roulette)
+  chooseEstimatorFor(ctx, gpuScene, options, run, settings, out, learned);
+  if (settings.estimator.rr == RouletteMode::Efficiency && !learned.roulette)
     runEfficiencyPilot(ctx, gpuScene, settings, out, learned);
   if (learned.roulette)
     out.checkpointConfig["roulette"] = rouletteJson(*learned.roulette),
@@ -495,8 +535,9 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.film = state.image();
   out.stats = state.stats;
   out.finalState = std::move(state);
-  out.stats.seconds += learned.pilotSeconds;
+  out.stats.seconds += learned.pilotSeconds + learned.choiceSeconds;
   out.pilotSeconds = learned.pilotSeconds;
+  out.estimator = settings.estimator;
   out.roulette = learned.roulette;
   if (renderer.ears().enabled()) out.ears = renderer.ears().summary();
   out.earsGuard = renderer.earsGuard();
@@ -617,6 +658,55 @@ void addLearnedFields(json& j, const RenderOutcome& r) {
   if (json guard = earsGuardJson(r.earsGuard); !guard.is_null()) j["ears"]["guard"] = guard;
 }
 
+// --estimator auto: every candidate's measurement (efficiency with a 95% interval, relative to the start's), the
+// choice, and what choosing cost.
+json choiceJson(const EstimatorChoice& c) {
+  json candidates = json::array();
+  const double start = c.candidates.front().reading.efficiency();
+  for (const MeasuredCandidate& m : c.candidates) {
+    const CandidateReading& r = m.reading;
+    const double spread = std::exp(1.96 * r.relativeSe());
+    candidates.push_back({{"candidate", m.label},
+                          {"chosen", m.chosen},
+                          {"rel_variance_per_sample", r.relVariance},
+                          {"rel_variance_standard_error", r.relVarianceSe},
+                          {"cost_per_sample", r.cost},
+                          {"efficiency", r.efficiency()},
+                          {"efficiency_95", {r.efficiency() / spread, r.efficiency() * spread}},
+                          {"vs_start", start > 0.0 ? r.efficiency() / start : 0.0}});
+  }
+  return {{"chosen", c.chosen.toJson()},
+          {"candidates", candidates},
+          {"cost_unit", c.costUnit},
+          {"pilot_pixels", c.pilotPixels},
+          {"pilot_spp", kChoicePilotSpp},
+          {"seconds", c.seconds},
+          {"pipeline_seconds", c.pipelineSeconds},
+          {"share_of_samples", c.share},
+          {"margin", kChoiceMargin},
+          {"note", "the pilots' samples are not in the image (their weight is 0, fixed before they ran): unbiased"}};
+}
+
+std::string choiceLine(const EstimatorChoice& c) {
+  // What the choice changed from the start, key by key.
+  const json start = c.candidates.front().config.toJson(), chosen = c.chosen.toJson();
+  std::string changed;
+  for (const auto& [key, value] : chosen.items())
+    if (key != "name" && key != "replicates" && start.value(key, json()) != value)
+      changed += (changed.empty() ? "" : ", ") + key + "=" + (value.is_string() ? value.get<std::string>() : value.dump());
+  double startEfficiency = c.candidates.front().reading.efficiency(), chosenEfficiency = startEfficiency;
+  for (const MeasuredCandidate& m : c.candidates)
+    if (m.chosen) chosenEfficiency = m.reading.efficiency();
+  char buf[512];
+  std::snprintf(buf, sizeof(buf),
+                "choice      %s, of %zu candidates (%.2fx the start's measured efficiency); pilots %.3f s, %.1f%% of the "
+                "samples; their kernels %.3f s\n",
+                changed.empty() ? "the defaults" : changed.c_str(), c.candidates.size(),
+                startEfficiency > 0.0 ? chosenEfficiency / startEfficiency : 0.0, c.seconds, 100.0 * c.share,
+                c.pipelineSeconds);
+  return buf;
+}
+
 json mpiJson(const std::vector<RankReport>& ranks) {
   json perRank = json::array();
   for (const RankReport& k : ranks)
@@ -733,9 +823,10 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["checkpoints_written"] = r.checkpointsWritten;
   j["checkpoint_seconds"] = r.checkpointSeconds;
   if (!r.ranks.empty()) j["mpi"] = mpiJson(r.ranks);
-  const EstimatorConfig& e = o.estimator;
+  const EstimatorConfig& e = r.estimator;
   j["estimator"] = e.toJson();
   j["estimator"]["unbiased"] = e.unbiased();
+  if (r.choice) j["estimator_choice"] = choiceJson(*r.choice);
   j["estimator"]["bias"] = e.unbiased() ? "none: paths end by Russian roulette only"
                                         : "truncation: paths are cut after " + std::to_string(e.maxDepth) +
                                               " scattering events, so the image is biased low";
@@ -767,7 +858,7 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 "variance    %s\n"
                 "non-finite  %llu samples excluded (%llu finite samples above 2^56 kept in the scaled sums)\n",
                 o.scenePath.c_str(), r.sceneInfo.triangles, r.sceneInfo.emissiveTriangles, r.device.c_str(), r.width, r.height,
-                s.samplesPerPixel, r.cameraName.c_str(), pixelFilterSummary(o.filter).c_str(), o.estimator.summary().c_str(),
+                s.samplesPerPixel, r.cameraName.c_str(), pixelFilterSummary(o.filter).c_str(), r.estimator.summary().c_str(),
                 s.seconds, s.gpuSeconds, r.setup.total(), r.setup.load, r.setup.bvh, r.setup.upload, r.setup.pipelines,
                 (unsigned long long)s.rays(), (unsigned long long)s.cameraRays, (unsigned long long)s.extensionRays,
                 (unsigned long long)s.shadowRays, (unsigned long long)s.deepWalks,
@@ -778,6 +869,7 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
     text += "splits      " + std::to_string(s.splitsRefused) +
             " vertices found the path pool full and went on unsplit (unbiased: q = 1 there; fewer splits than asked)\n";
   if (r.ears) text += earsLine(*r.ears) + earsGuardLine(r.earsGuard);
+  if (r.choice) text += choiceLine(*r.choice);
   if (r.error)
     text += "error       relMSE " + std::to_string(r.error->relmse) + ", MSE " + std::to_string(r.error->mse) +
             ", efficiency 1/(relMSE x s) " + std::to_string(r.error->relmse > 0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0) +

@@ -5,9 +5,11 @@
 
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 
 #include "analysis/error_metrics.h"
+#include "app/estimator_search.h"
 #include "dist/distributed_render.h"
 #include "estimators/estimator_config.h"
 #include "policy/sample_rounds.h"
@@ -53,6 +55,10 @@ struct RenderOptions {
   // variance (adaptive), and/or until the estimated relMSE's upper bound reaches targetError (> 0).
   bool adaptive = false;
   double targetError = 0.0;
+  // --estimator auto: short pilots on the scene choose every estimator key not in pinnedKeys (the user's flags),
+  // starting from `estimator` (app/estimator_search.h).
+  bool estimatorAuto = false;
+  std::set<std::string> pinnedKeys;
   std::string referencePath;        // EXR to compare with: mse, relmse, efficiency in the report
   bool specialize = true;           // false: pipelines with every feature on (for comparison)
   bool prespecializedSpirv = true;  // false: the general SPIR-V even where a pre-specialized variant matches
@@ -128,6 +134,8 @@ struct RenderOutcome {
   bool resumed = false;
   std::vector<RankReport> ranks;              // under mpirun: what each rank did (rank 0 only)
   std::optional<SampleRoundsOutcome> rounds;  // rendered in rounds (adaptive sampling, --target-error)
+  EstimatorConfig estimator;                  // the one that rendered (--estimator auto's choice)
+  std::optional<EstimatorChoice> choice;      // --estimator auto: what its pilots measured and chose
 };
 
 // Throws vkmc::Error on bad options or input, before anything is written. Both runRender call it first, so

@@ -55,7 +55,7 @@ std::optional<T> optionalFrom(const nlohmann::json& j) {
 }  // namespace
 
 nlohmann::json renderOptionsJson(const RenderOptions& o) {
-  return {{"scene", absolutePath(o.scenePath)},
+  nlohmann::json j = {{"scene", absolutePath(o.scenePath)},
           {"width", optionalJson(o.width)},
           {"height", optionalJson(o.height)},
           {"spp", o.spp},
@@ -77,6 +77,9 @@ nlohmann::json renderOptionsJson(const RenderOptions& o) {
           {"workgroup", o.workgroupSize},
           {"wavefront_paths", o.wavefrontPaths},
           {"integrator", toString(o.integrator)}};
+  // Only where it is on: the options of a render without it read as they did before it existed.
+  if (o.estimatorAuto) j["estimator_auto"] = {{"pinned", o.pinnedKeys}};
+  return j;
 }
 
 RenderOptions renderOptionsFromJson(const nlohmann::json& j) {
@@ -105,6 +108,10 @@ RenderOptions renderOptionsFromJson(const nlohmann::json& j) {
     // absent in checkpoints before it existed: the device's
     o.wavefrontPaths = j.contains("wavefront_paths") ? numberFrom<uint32_t>(j.at("wavefront_paths")) : 0u;
     o.integrator = integratorFromString(j.at("integrator"));
+    if (j.contains("estimator_auto")) {
+      o.estimatorAuto = true;
+      for (const auto& key : j.at("estimator_auto").at("pinned")) o.pinnedKeys.insert(key.get<std::string>());
+    }
   } catch (const nlohmann::json::exception& e) {
     throw Error(std::string("malformed render options: ") + e.what());
   }

@@ -1,0 +1,95 @@
+#include "policy/estimator_choice.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "estimators/estimator_config.h"
+
+namespace vkmc {
+
+std::vector<SearchStep> estimatorSearchSteps(const std::set<std::string>& pinned, const SearchScene& scene) {
+  std::vector<SearchStep> steps;
+  auto add = [&](const char* key, std::vector<double> values) {
+    if (!pinned.count(key)) steps.push_back({key, std::move(values)});
+  };
+  // Splitting first: it changes a sample's variance most, and what MIS and roulette weigh against it.
+  if (scene.lights) add("light_samples", {2, 4});
+  add("bsdf_samples", {2, 4});
+  if (scene.lights) add("mis", {double(MisHeuristic::Balance)});
+  if (scene.emissiveTriangles) add("light_sampling", {double(LightSampling::SolidAngle)});
+  add("rr", {double(RouletteMode::Efficiency)});
+  return steps;
+}
+
+namespace {
+// Per subset pixel, the mean of `value` over the subset pixels within the window around it (a summed-area table of
+// the sparse image).
+std::vector<glm::dvec3> windowMeans(const PilotPixels& where, const std::vector<glm::dvec3>& value) {
+  const size_t w = where.width, h = where.height;
+  std::vector<glm::dvec3> sum((w + 1) * (h + 1), glm::dvec3(0.0));
+  std::vector<double> count((w + 1) * (h + 1), 0.0);
+  for (size_t i = 0; i < where.index.size(); ++i) {
+    const size_t x = where.index[i] % w, y = where.index[i] / w;
+    sum[(y + 1) * (w + 1) + x + 1] += value[i], count[(y + 1) * (w + 1) + x + 1] += 1.0;
+  }
+  for (size_t y = 1; y <= h; ++y)
+    for (size_t x = 1; x <= w; ++x) {
+      const size_t at = y * (w + 1) + x, up = at - (w + 1);
+      sum[at] += sum[at - 1] + sum[up] - sum[up - 1];
+      count[at] += count[at - 1] + count[up] - count[up - 1];
+    }
+  std::vector<glm::dvec3> mean(where.index.size());
+  const long r = kChoiceWindowRadius;
+  for (size_t i = 0; i < where.index.size(); ++i) {
+    const long x = long(where.index[i] % w), y = long(where.index[i] / w);
+    const size_t x0 = size_t(std::max(x - r, 0L)), x1 = size_t(std::min(x + r + 1, long(w)));
+    const size_t y0 = size_t(std::max(y - r, 0L)), y1 = size_t(std::min(y + r + 1, long(h)));
+    auto box = [&](const auto& table) {
+      return table[y1 * (w + 1) + x1] - table[y0 * (w + 1) + x1] - table[y1 * (w + 1) + x0] + table[y0 * (w + 1) + x0];
+    };
+    mean[i] = box(sum) / std::max(box(count), 1.0);
+  }
+  return mean;
+}
+}  // namespace
+
+std::vector<CandidateReading> readCandidates(const PilotPixels& where, const std::vector<PilotSamples>& pilots, double epsilon) {
+  std::vector<CandidateReading> readings(pilots.size());
+  if (pilots.empty()) return readings;
+  const size_t pixels = where.index.size();
+  std::vector<glm::dvec3> total(pixels, glm::dvec3(0.0));
+  for (const PilotSamples& p : pilots)
+    for (size_t i = 0; i < pixels; ++i) total[i] += p.mean[i];
+  const double others = double(std::max<size_t>(pilots.size() - 1, 1));
+  for (size_t c = 0; c < pilots.size(); ++c) {
+    std::vector<glm::dvec3> value(pixels);
+    for (size_t i = 0; i < pixels; ++i) value[i] = pilots.size() > 1 ? (total[i] - pilots[c].mean[i]) / others : total[i];
+    value = windowMeans(where, value);
+    double sum = 0.0, sumSq = 0.0;
+    for (size_t i = 0; i < pixels; ++i) {
+      const glm::dvec3 rel = pilots[c].sampleVariance[i] / (value[i] * value[i] + epsilon);
+      const double r = (rel.x + rel.y + rel.z) / 3.0;
+      sum += r, sumSq += r * r;
+    }
+    const double n = double(std::max<size_t>(pixels, 1)), mean = sum / n;
+    const double spread = pixels > 1 ? std::max(0.0, (sumSq - n * mean * mean) / (n - 1.0)) : 0.0;
+    readings[c] = {mean, std::sqrt(spread / n), pilots[c].cost};
+  }
+  return readings;
+}
+
+bool beats(const CandidateReading& challenger, const CandidateReading& incumbent) {
+  if (challenger.efficiency() <= 0.0) return false;
+  if (incumbent.efficiency() <= 0.0) return true;
+  const double logRatio = std::log(challenger.efficiency() / incumbent.efficiency());
+  const double se = std::hypot(challenger.relativeSe(), incumbent.relativeSe());
+  return logRatio >= std::log(kChoiceMargin) && logRatio - 1.645 * se > 0.0;
+}
+
+uint32_t pilotPixels(double pixelSamples, uint32_t candidates, uint32_t imagePixels) {
+  const double share = kChoiceShare * pixelSamples / (double(std::max(candidates, 1u)) * kChoicePilotSpp);
+  const double floor = std::min<double>(kChoiceMinPixels, imagePixels);
+  return uint32_t(std::clamp(std::floor(share), floor, double(imagePixels)));
+}
+
+}  // namespace vkmc

@@ -1,0 +1,76 @@
+// --estimator auto's decisions, as pure functions: which keys it searches and in what order, what a candidate's
+// pilot measured (a sample's relative variance and cost over a subset of pixels), and whether a candidate beats the
+// one it would replace. The pilots themselves run in app/estimator_search.cpp.
+//
+// The search is coordinate-wise, not a grid: the start configuration (the defaults, with every key the user gave
+// pinned), then each unpinned key's alternatives with the best so far; a key's winner stays for the keys after it.
+#pragma once
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace vkmc {
+
+// One key's alternatives to whatever value the best configuration so far has (estimator_params.cpp's values).
+struct SearchStep {
+  std::string key;
+  std::vector<double> values;
+};
+
+// What the scene can use, so the search skips keys that change nothing there.
+struct SearchScene {
+  bool emissiveTriangles = false;  // light_sampling's solid angle differs from area sampling only on triangles
+  bool lights = true;              // next-event estimation has something to sample (light_samples, mis)
+};
+
+// The keys searched, in order: light_samples {2, 4}, bsdf_samples {2, 4}, mis balance, light_sampling solid-angle,
+// rr efficiency (the per-depth pilot); keys in `pinned` (the user's flags) are left out.
+std::vector<SearchStep> estimatorSearchSteps(const std::set<std::string>& pinned, const SearchScene& scene);
+
+// A candidate's pilot over the subset's pixels (`PilotPixels`, the same for every candidate): each pixel's mean and
+// one sample's variance, per channel, and the cost of one sample.
+struct PilotSamples {
+  std::vector<glm::dvec3> mean, sampleVariance;
+  double cost = 0.0;
+};
+
+// Where the subset's pixels lie in the image.
+struct PilotPixels {
+  uint32_t width = 0, height = 0;
+  std::vector<uint32_t> index;  // y * width + x, one per subset pixel
+};
+
+// What the choice compares: the mean over the subset of a sample's variance relative to the pixel's value (as in
+// relMSE: over value^2 + epsilon), its standard error over pixels, and the efficiency 1 / (relVariance x cost).
+// The value a candidate's variance is relative to comes from the other candidates (all unbiased for it) over a
+// window of kChoiceWindowRadius pixels around: a pilot has two samples a pixel, and a value from the candidate's
+// own samples would shrink its relative variance where a rare bright sample raises both, while one pixel's
+// others alone read 0 too often where the value is not.
+struct CandidateReading {
+  double relVariance = 0.0, relVarianceSe = 0.0, cost = 0.0;
+  double efficiency() const { return relVariance > 0.0 && cost > 0.0 ? 1.0 / (relVariance * cost) : 0.0; }
+  // The efficiency's relative standard error (the cost counted exact: rays, or a pass's GPU time).
+  double relativeSe() const { return relVariance > 0.0 ? relVarianceSe / relVariance : 0.0; }
+};
+
+// Every candidate's reading against the means pooled over all of them.
+inline constexpr int kChoiceWindowRadius = 2;
+std::vector<CandidateReading> readCandidates(const PilotPixels& where, const std::vector<PilotSamples>& pilots, double epsilon);
+
+// A challenger replaces the incumbent where it measures at least kChoiceMargin times as efficient and the
+// one-sided 95% bound of the ratio is above 1: a pilot is short, and a switch on noise costs more than staying.
+inline constexpr double kChoiceMargin = 1.05;
+bool beats(const CandidateReading& challenger, const CandidateReading& incumbent);
+
+// The pilot's pixels: a share of the image's pixel-samples (kChoiceShare of them, split over the candidates, two
+// samples a pixel), at least kChoiceMinPixels pixels (or all), at most all. `pixelSamples`: what the render
+// plans (width x height x spp, or under a time budget what its pace allows).
+inline constexpr double kChoiceShare = 0.05;
+inline constexpr uint32_t kChoiceMinPixels = 2048;
+inline constexpr uint32_t kChoicePilotSpp = 2;  // one sample in each of two replicates: a variance per pixel
+uint32_t pilotPixels(double pixelSamples, uint32_t candidates, uint32_t imagePixels);
+
+}  // namespace vkmc
