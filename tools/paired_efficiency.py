@@ -16,7 +16,7 @@ each other on this machine; side by side they read within a few percent.
       [--width W --height H] [--reference EXR | --reference-spp N | --reference-constant L]
       [--independent-seeds] [--cores swap|free] [--a-flags "..."] [--b-flags "..."] [--json OUT] [--vkmc PATH]
 
---a-flags and --b-flags add render flags to one side (e.g. --b-flags="--adaptive on": adaptive sampling against
+--b auto (or --a auto) renders that side with `--estimator auto`. --a-flags and --b-flags add render flags to one side (e.g. --b-flags="--adaptive on": adaptive sampling against
 the same estimator without it); the reference is rendered without them.
 
 A and B default to scenes/estimators/baseline.json (throughput roulette) and rr_ears_guard.json (`--rr ears` as
@@ -216,7 +216,7 @@ def main():
     if args.reference_constant is not None and not (math.isfinite(args.reference_constant) and args.reference_constant > 0):
         fail("--reference-constant must be a finite radiance above 0")
     for path in (args.scene, args.a, args.b, args.vkmc):
-        if not os.path.isfile(path):
+        if path != "auto" and not os.path.isfile(path):  # --a/--b auto: `--estimator auto`
             fail(f"no such file: {path}")
     json_path = os.path.realpath(args.json) if args.json else None  # a symlink keeps pointing at its replaced target
     if json_path and os.path.lexists(json_path) and not os.path.isfile(json_path):

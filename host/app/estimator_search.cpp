@@ -16,22 +16,23 @@ namespace vkmc {
 
 namespace {
 
-// The pilots' seed: their own, so the render's samples are independent of what chose its estimator.
+// The pilots' seeds: each its own, so that every pilot's samples, and the render's, are independent of the others
+// (with one seed the candidates' samples would share their random numbers, and the pilots' rounds in the image
+// would weigh near-copies as if independent).
 constexpr uint32_t kPilotSeedSalt = 0x5eed0a17u;
 
 // One candidate's pilot: its renderer (its own pipelines), and its samples over the first pixels of the order.
 class CandidatePilot {
  public:
-  CandidatePilot(vk::Context& ctx, const GpuScene& scene, const RenderSettings& render, const EstimatorConfig& e,
+  CandidatePilot(vk::Context& ctx, const GpuScene& scene, const RenderSettings& render, const EstimatorConfig& e, uint32_t index,
                  EstimatorChoice& out)
       : settings_(render), film_(render.width, render.height) {
     settings_.estimator = e;
-    settings_.estimator.replicates = 2;  // one sample in each: a variance per pixel (kChoicePilotSpp)
-    settings_.seed = gpu::hashU32(render.seed ^ kPilotSeedSalt);
+    settings_.seed = gpu::hashU32(render.seed ^ kPilotSeedSalt ^ gpu::hashU32(index + 1u));
     settings_.sampleRuns = true, settings_.progress = false, settings_.timeBudget = 0.0;
-    settings_.spp = kChoicePilotSpp;
+    settings_.spp = kChoiceMaxPilotSpp;
     if (e.splitsPaths()) settings_.integrator = Integrator::Wavefront;  // splitting needs the path pool
-    film_.replicates = 2, film_.replicateVariance = e.sampler != Sampler::Independent;
+    film_.replicates = e.replicates, film_.replicateVariance = e.sampler != Sampler::Independent;
     if (e.rr == RouletteMode::Efficiency) {
       RoulettePilot pilot = runRoulettePilot(ctx, scene, settings_);
       out.pipelineSeconds += pilot.pipelineSeconds, out.seconds += pilot.seconds;
@@ -41,37 +42,38 @@ class CandidatePilot {
     if (roulette_) renderer_->setRouletteScales(roulette_->scale);
     out.pipelineSeconds += renderer_->pipelineSeconds();
   }
-  // Pixels order[from, to) at kChoicePilotSpp samples each.
-  void render(const std::vector<uint32_t>& order, uint32_t from, uint32_t to) {
+  uint32_t pathsPerPass() const { return renderer_->pathsPerPass(); }
+  // Pixels order[0, shape.pixels) at shape.spp samples each, then the renderer is let go.
+  void render(const std::vector<uint32_t>& order, PilotShape shape) {
     std::vector<PathRenderer::PixelSamples> work;
-    for (uint32_t i = from; i < to; ++i) work.push_back({order[i], 0, kChoicePilotSpp});
+    for (uint32_t i = 0; i < shape.pixels; ++i) work.push_back({order[i], 0, shape.spp});
     const auto start = std::chrono::steady_clock::now();
     renderer_->renderSampleRuns(work, stats_, [&] {
       const std::vector<gpu::FilmPixel> batch = renderer_->takeBatch();
       film_.addBatch(batch.data());
       return true;
     });
-    pixels_ = to;
-    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    renderer_.reset();
+    pixelSamples_ = double(shape.pixels) * shape.spp;
+    seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
-  // What the choice reads, over order[0, pixels): means, a sample's variances, and a sample's cost.
-  PilotSamples samples(const std::vector<uint32_t>& order, uint32_t pixels, bool byTime) const {
+  // What the choice reads, over order[0, pixels): means, a sample's variances, and a sample's GPU seconds.
+  PilotSamples samples(const std::vector<uint32_t>& order, uint32_t pixels) const {
     PilotSamples s;
     for (uint32_t i = 0; i < pixels; ++i) {
       const uint32_t p = order[i];
       glm::dvec3 mean, variance;
-      for (int c = 0; c < 3; ++c)
-        mean[c] = film_.mean(p, c), variance[c] = film_.varianceOfMean(p, c) * double(film_.count[p]);
+      for (int c = 0; c < 3; ++c) mean[c] = film_.mean(p, c), variance[c] = film_.varianceOfMean(p, c) * double(film_.count[p]);
       s.mean.push_back(mean), s.sampleVariance.push_back(variance);
     }
-    const double pixelSamples = double(pixels_) * kChoicePilotSpp;
-    s.cost = (byTime ? stats_.gpuSeconds : double(stats_.rays())) / pixelSamples;
+    s.cost = stats_.gpuSeconds / pixelSamples_;
     return s;
   }
-  double gpuSeconds() const { return stats_.gpuSeconds; }
+  const Film& film() const { return film_; }
+  const RenderStats& stats() const { return stats_; }
   double seconds() const { return seconds_; }  // the pilot's passes, wall time
+  double secondsPerPixelSample() const { return seconds_ / pixelSamples_; }
   const std::optional<RouletteTable>& roulette() const { return roulette_; }
-  void release() { renderer_.reset(); }
 
  private:
   RenderSettings settings_;
@@ -79,8 +81,7 @@ class CandidatePilot {
   RenderStats stats_;
   std::unique_ptr<PathRenderer> renderer_;
   std::optional<RouletteTable> roulette_;
-  uint32_t pixels_ = 0;
-  double seconds_ = 0.0;
+  double pixelSamples_ = 0.0, seconds_ = 0.0;
 };
 
 // A pixel order the pilots share (the same pixels for every candidate: a paired comparison), shuffled so any
@@ -98,45 +99,77 @@ std::string label(const std::string& key, double value) {
   return key + "=" + p->text(value);
 }
 
+// The image's share of each pilot: a round of the render (round_film.h) whose weights are fixed before its values
+// are seen, from its samples and those planned after it (plannedSpp a pixel on average, from the render's samples
+// or its time budget at the start's pace).
+class PilotRounds {
+ public:
+  PilotRounds(RoundFilm& film, const std::vector<uint32_t>& order, PilotShape shape)
+      : film_(film), order_(order), shape_(shape), done_(order.size(), 0) {}
+  void add(const Film& pilot, double plannedSpp) {
+    std::vector<double> weight(order_.size(), 0.0);
+    for (uint32_t i = 0; i < shape_.pixels; ++i) {
+      const uint32_t p = order_[i];
+      const double later = std::max(plannedSpp - done_[p] - shape_.spp, double(shape_.spp));
+      weight[p] = roundWeight(film_.weightSoFar(p), shape_.spp, later, false);
+      done_[p] += shape_.spp;
+    }
+    film_.addRound(pilot, weight);
+    pixelSamples_ += double(shape_.pixels) * shape_.spp;
+  }
+  double pixelSamples() const { return pixelSamples_; }
+
+ private:
+  RoundFilm& film_;
+  const std::vector<uint32_t>& order_;
+  PilotShape shape_;
+  std::vector<uint32_t> done_;
+  double pixelSamples_ = 0.0;
+};
+
 }  // namespace
 
 EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings,
-                                const std::set<std::string>& pinned, double timeBudget) {
+                                const std::set<std::string>& pinned, double timeBudget, RoundFilm& film) {
   EstimatorChoice out;
-  const bool byTime = timeBudget > 0.0;
-  out.costUnit = byTime ? "GPU seconds" : "rays";
   const SceneFeatures& f = settings.features;
   const std::vector<SearchStep> steps = estimatorSearchSteps(pinned, SearchScene{f.emitters(), f.lights()});
   uint32_t candidates = 1;
   for (const SearchStep& s : steps) candidates += uint32_t(s.values.size());
   const uint32_t imagePixels = settings.width * settings.height;
   const std::vector<uint32_t> order = pixelOrder(imagePixels, settings.seed);
-  // The start, first on the fewest pixels; under a time budget its pace then sizes every pilot.
   std::vector<std::unique_ptr<CandidatePilot>> pilots;
-  pilots.push_back(std::make_unique<CandidatePilot>(ctx, scene, settings, settings.estimator, out));
-  uint32_t pixels = pilotPixels(0.0, candidates, imagePixels);
-  pilots[0]->render(order, 0, pixels);
-  const double planned = byTime ? timeBudget / std::max(pilots[0]->gpuSeconds() / (pixels * double(kChoicePilotSpp)), 1e-12)
-                                : double(imagePixels) * settings.spp;
-  const uint32_t more = pilotPixels(planned, candidates, imagePixels);
-  if (more > pixels) pilots[0]->render(order, pixels, more), pixels = more;
-  pilots[0]->release();
-  out.candidates.push_back({"start", settings.estimator, {}, false});
+  std::vector<PilotSamples> measured;
+  pilots.push_back(std::make_unique<CandidatePilot>(ctx, scene, settings, settings.estimator, 0u, out));
+  // Under a time budget the plan is known only from the start's pace.
+  const double plannedPixelSamples = timeBudget > 0.0 ? 1e300 : double(settings.spp) * imagePixels;
+  const PilotShape shape =
+      pilotShape(pilots[0]->pathsPerPass(), plannedPixelSamples, candidates, imagePixels, settings.estimator.replicates);
+  PilotRounds rounds(film, order, shape);
+  double plannedSpp = settings.spp;
+  auto measure = [&](const std::string& label, const EstimatorConfig& e) {
+    if (!out.candidates.empty())
+      pilots.push_back(std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out));
+    pilots.back()->render(order, shape);
+    if (timeBudget > 0.0 && out.candidates.empty())
+      plannedSpp = std::min(plannedSpp, timeBudget / (pilots[0]->secondsPerPixelSample() * imagePixels));
+    rounds.add(pilots.back()->film(), plannedSpp);
+    measured.push_back(pilots.back()->samples(order, shape.pixels));
+    out.candidates.push_back({label, e, {}, false});
+  };
+  measure("start", settings.estimator);
+  // Under a time budget too short for the pilots to pay, the start renders.
+  out.cutShort = timeBudget > 0.0 && pilots[0]->seconds() * (candidates - 1) > kChoiceMaxShare * timeBudget;
+  const PilotPixels where{settings.width, settings.height, std::vector<uint32_t>(order.begin(), order.begin() + shape.pixels)};
   size_t best = 0;
-  std::vector<PilotSamples> measured = {pilots[0]->samples(order, pixels, byTime)};
-  const PilotPixels where{settings.width, settings.height, std::vector<uint32_t>(order.begin(), order.begin() + pixels)};
-  for (const SearchStep& step : steps) {
+  for (const SearchStep& step : out.cutShort ? std::vector<SearchStep>{} : steps) {
     const size_t incumbent = best, first = out.candidates.size();
     for (double value : step.values) {
       EstimatorConfig e = out.candidates[incumbent].config;
       findEstimatorParam(step.key)->set(e, value);
-      pilots.push_back(std::make_unique<CandidatePilot>(ctx, scene, settings, e, out));
-      pilots.back()->render(order, 0, pixels);
-      pilots.back()->release();
-      measured.push_back(pilots.back()->samples(order, pixels, byTime));
-      out.candidates.push_back({label(step.key, value), e, {}, false});
+      measure(label(step.key, value), e);
     }
-    // Each decision reads every candidate against the means pooled so far.
+    // Each decision reads every candidate against the values pooled so far.
     const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
     for (size_t c = first; c < readings.size(); ++c)
       if (beats(readings[c], readings[best])) best = c;
@@ -145,11 +178,11 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   for (size_t c = 0; c < readings.size(); ++c) out.candidates[c].reading = readings[c];
   out.candidates[best].chosen = true;
   out.chosen = out.candidates[best].config;
-  out.chosen.replicates = settings.estimator.replicates;
   out.roulette = pilots[best]->roulette();
-  for (const auto& p : pilots) out.seconds += p->seconds();
-  out.pilotPixels = pixels;
-  out.share = double(pixels) * kChoicePilotSpp * double(pilots.size()) / planned;
+  for (const auto& p : pilots) out.seconds += p->seconds(), out.stats.push_back(p->stats());
+  out.pilotPixels = shape.pixels, out.pilotSpp = shape.spp;
+  out.pixelSamples = rounds.pixelSamples();
+  out.share = rounds.pixelSamples() / (plannedSpp * imagePixels);
   return out;
 }
 

@@ -1,6 +1,7 @@
-// --estimator auto: before the render, pilots of candidate configurations on a subset of the image's pixels, each
-// with its own pipelines and seed, and the choice between them (policy/estimator_choice.h). The pilots' samples are
-// left out of the image: a weight fixed at 0 before they are seen, so the render stays unbiased whatever they chose.
+// --estimator auto: the render's first rounds are pilots of candidate configurations on a subset of the image's
+// pixels, each with its own pipelines and seed; the choice between them (policy/estimator_choice.h) renders the rest.
+// Every pilot is a round of the image (policy/round_film.h) whose per-pixel weights are fixed before its samples are
+// seen, so the image stays unbiased whichever configuration its values chose.
 #pragma once
 #include <optional>
 #include <set>
@@ -9,6 +10,7 @@
 
 #include "estimators/efficiency_roulette.h"
 #include "policy/estimator_choice.h"
+#include "policy/round_film.h"
 #include "render/gpu_scene.h"
 #include "render/render_settings.h"
 #include "vk/context.h"
@@ -26,16 +28,18 @@ struct EstimatorChoice {
   EstimatorConfig chosen;
   std::vector<MeasuredCandidate> candidates;  // in the order measured
   std::optional<RouletteTable> roulette;      // rr efficiency chosen: its pilot's scales
-  std::string costUnit;                       // "rays" (no time budget: reproducible) or "GPU seconds"
-  uint32_t pilotPixels = 0;
-  double seconds = 0.0;          // the pilots' rendering (rr efficiency's own pilot included)
-  double pipelineSeconds = 0.0;  // the candidates' kernels' set-up
-  double share = 0.0;            // the pilots' pixel-samples over the render's planned ones
+  uint32_t pilotPixels = 0, pilotSpp = 0;
+  double seconds = 0.0;            // the pilots' rendering (rr efficiency's own pilot included)
+  double pipelineSeconds = 0.0;    // the candidates' kernels' set-up
+  double pixelSamples = 0.0;       // the pilots' samples, all in the image
+  double share = 0.0;              // their share of the render's planned pixel-samples
+  bool cutShort = false;           // the time budget was too short for the pilots to pay: the start renders
+  std::vector<RenderStats> stats;  // each pilot's counters (the report's rays include them)
 };
 
-// settings: the render's (its estimator the start, with the user's keys in `pinned`); timeBudget > 0 sizes the
-// pilots from their measured pace.
+// settings: the render's (its estimator the start, with the user's keys in `pinned`); timeBudget > 0: the render's
+// samples are planned from the start's pace. The pilots' rounds go into `film` (the render's, empty).
 EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings,
-                                const std::set<std::string>& pinned, double timeBudget);
+                                const std::set<std::string>& pinned, double timeBudget, RoundFilm& film);
 
 }  // namespace vkmc

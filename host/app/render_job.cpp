@@ -64,13 +64,8 @@ void validateOptions(const RenderOptions& o) {
   validatePixelFilter(o.filter);
   if (!(o.timeBudget >= 0.0) || o.timeBudget > 1e6) throw Error("--time-budget must be between 0 and 1e6 seconds");
   if (!(o.targetError >= 0.0 && o.targetError < 1e6)) throw Error("--target-error must be a relMSE above 0");
-  if (o.estimatorAuto && o.estimator.rr == RouletteMode::Ears)
-    throw Error("--estimator auto does not search with rr ears (its training and guard are a policy of their own): give "
-                "another --rr, or a fixed estimator");
-  if (o.estimatorAuto && o.estimator.sampler == Sampler::ZSobol)
-    throw Error("--estimator auto measures with the sobol or independent sampler, not zsobol");
-  if (o.adaptive || o.targetError > 0.0) {
-    const char* what = o.adaptive ? "--adaptive on" : "--target-error";
+  if (o.adaptive || o.targetError > 0.0 || o.estimatorAuto) {
+    const char* what = o.estimatorAuto ? "--estimator auto" : o.adaptive ? "--adaptive on" : "--target-error";
     if (o.estimator.rr == RouletteMode::Ears) throw Error(std::string(what) + " does not work with rr ears (its own passes) yet");
     if (o.estimator.sampler == Sampler::ZSobol)
       throw Error(std::string(what) + " needs the sobol or independent sampler (zsobol's index bounds a pixel's samples)");
@@ -281,7 +276,7 @@ RenderSettings renderSettings(const RenderOptions& options, const Scene& scene, 
   settings.camera = makeCameraRig(f.camera, f.width, f.height);
   settings.progress = options.progress;
   settings.timeBudget = options.timeBudget;
-  settings.sampleRuns = options.adaptive || options.targetError > 0.0;
+  settings.sampleRuns = options.adaptive || options.targetError > 0.0 || options.estimatorAuto;
   return settings;
 }
 
@@ -377,8 +372,7 @@ void runEfficiencyPilot(vk::Context& ctx, const GpuScene& gpuScene, const Render
 void chargePilotToBudget(const RenderOptions& options, const RenderState& state, const LearnedBeforePasses& learned,
                          RenderSettings& settings, RenderOutcome& out) {
   if (options.timeBudget <= 0.0) return;
-  settings.timeBudget =
-      std::max(1e-3, options.timeBudget - learned.pilotSeconds - learned.choiceSeconds - state.stats.seconds);
+  settings.timeBudget = std::max(1e-3, options.timeBudget - learned.pilotSeconds - learned.choiceSeconds - state.stats.seconds);
   if (learned.pilotSeconds > 0.5 * options.timeBudget) {
     char line[256];
     std::snprintf(line, sizeof(line),
@@ -389,36 +383,28 @@ void chargePilotToBudget(const RenderOptions& options, const RenderState& state,
   }
 }
 
-// --estimator auto: the pilots choose (rank 0's under mpirun, told to the others), or a resumed render takes its
-// checkpoint's choice. The render then runs the chosen configuration, its integrator the wavefront where it splits.
-void chooseEstimatorFor(vk::Context& ctx, const GpuScene& gpuScene, const RenderOptions& options, const RunControl& run,
-                        RenderSettings& settings, RenderOutcome& out, LearnedBeforePasses& learned) {
+// --estimator auto: the pilots choose, and are the render's first rounds (`earlier`); the render then runs the
+// chosen configuration, its integrator the wavefront where it splits. The pilots' counters join the render's.
+void chooseEstimatorFor(vk::Context& ctx, const GpuScene& gpuScene, const RenderOptions& options, RenderSettings& settings,
+                        RenderOutcome& out, LearnedBeforePasses& learned, RenderState& state,
+                        std::optional<EarlierRounds>& earlier) {
   if (!options.estimatorAuto) return;
-  nlohmann::json shared;
-  if (run.resumeConfig && run.resumeConfig->contains("chosen_estimator")) {
-    shared = run.resumeConfig->at("chosen_estimator");
-  } else {
-    const RankGroup& group = RankGroup::world();
-    std::string text;
-    if (group.isRoot()) {
-      out.choice = chooseEstimator(ctx, gpuScene, settings, options.pinnedKeys, options.timeBudget);
-      out.setup.pipelines += out.choice->pipelineSeconds;
-      nlohmann::json j = {{"estimator", out.choice->chosen.toJson()}, {"seconds", out.choice->seconds}};
-      if (out.choice->roulette) j["roulette"] = rouletteJson(*out.choice->roulette);
-      text = j.dump();
-    }
-    group.broadcast(text);
-    shared = nlohmann::json::parse(text);
-  }
-  EstimatorConfig chosen = settings.estimator;
-  chosen.applyJson(shared.at("estimator"));
-  chosen.validate();
-  settings.estimator = chosen;
-  learned.choiceSeconds = shared.at("seconds").get<double>();
-  if (shared.contains("roulette")) learned.roulette = rouletteFromJson(shared.at("roulette"));
-  if (chosen.splitsPaths() && settings.integrator != Integrator::Wavefront)
+  earlier.emplace(EarlierRounds{RoundFilm(settings.width, settings.height, settings.estimator.replicates,
+                                          settings.estimator.sampler != Sampler::Independent)});
+  out.choice = chooseEstimator(ctx, gpuScene, settings, options.pinnedKeys, options.timeBudget, earlier->film);
+  earlier->spp = out.choice->pixelSamples / (double(settings.width) * settings.height);
+  out.setup.pipelines += out.choice->pipelineSeconds;
+  settings.estimator = out.choice->chosen;
+  learned.choiceSeconds = out.choice->seconds;
+  learned.roulette = out.choice->roulette;
+  if (settings.estimator.splitsPaths() && settings.integrator != Integrator::Wavefront)
     settings.integrator = out.integrator = Integrator::Wavefront;
-  out.checkpointConfig["chosen_estimator"] = shared;
+  for (const RenderStats& s : out.choice->stats) {
+    state.stats.cameraRays += s.cameraRays, state.stats.extensionRays += s.extensionRays;
+    state.stats.shadowRays += s.shadowRays, state.stats.primaryRays += s.primaryRays;
+    state.stats.gpuSeconds += s.gpuSeconds, state.stats.passes += s.passes;
+    state.stats.maxBounces = std::max(state.stats.maxBounces, s.maxBounces);
+  }
 }
 
 // Periodic checkpoints (rank 0's). One that cannot be written (a full disk) leaves the last one intact and the
@@ -451,13 +437,14 @@ RenderControl renderControl(const RunControl& run, RenderOutcome& out) {
 
 // The sample passes: in this process, or in batches across the ranks of mpirun.
 void renderPasses(PathRenderer& renderer, RenderState& state, const RenderControl& control, const RenderOptions& options,
-                  const RenderSettings& settings, RenderOutcome& out) {
+                  const RenderSettings& settings, RenderOutcome& out, std::optional<EarlierRounds>& earlier) {
   const RankGroup& group = RankGroup::world();
   if (settings.sampleRuns) {
-    if (group.distributed()) throw Error("--adaptive on and --target-error do not run under mpirun yet");
+    if (group.distributed()) throw Error("--adaptive on, --target-error and --estimator auto do not run under mpirun yet");
     out.rounds = renderSampleRounds(
         renderer, state, control, settings,
-        SampleRoundsPlan{options.adaptive, options.targetError, settings.spp, settings.timeBudget, renderer.samplesPerPass()});
+        SampleRoundsPlan{options.adaptive, options.targetError, settings.spp, settings.timeBudget, renderer.samplesPerPass()},
+        earlier ? &*earlier : nullptr);
     return;
   }
   if (!group.distributed()) return renderer.render(state, control);
@@ -512,12 +499,13 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
                           {"outputs", run.outputs}};
   LearnedBeforePasses learned;
   if (settings.sampleRuns && (!run.checkpointPath.empty() || run.resumeState))
-    throw Error("--adaptive on and --target-error do not write or resume checkpoints yet");
+    throw Error("--adaptive on, --target-error and --estimator auto do not write or resume checkpoints yet");
   RenderState state = startOrResume(run, fingerprint.hex(), framing, out, learned);
   if (state.nextSample > settings.spp)
     throw Error("the checkpoint claims " + std::to_string(state.nextSample) + " samples a pixel of a " +
                 std::to_string(settings.spp) + "-spp render");
-  chooseEstimatorFor(ctx, gpuScene, options, run, settings, out, learned);
+  std::optional<EarlierRounds> earlier;
+  chooseEstimatorFor(ctx, gpuScene, options, settings, out, learned, state, earlier);
   if (settings.estimator.rr == RouletteMode::Efficiency && !learned.roulette)
     runEfficiencyPilot(ctx, gpuScene, settings, out, learned);
   if (learned.roulette)
@@ -529,7 +517,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.setup.pipelines += renderer.pipelineSeconds();
   out.tuning.pathsPerPass = renderer.pathsPerPass();
   out.tuning.pathSlots = renderer.pathSlots();
-  renderPasses(renderer, state, renderControl(run, out), options, settings, out);
+  renderPasses(renderer, state, renderControl(run, out), options, settings, out, earlier);
   out.interrupted = state.interrupted;
   out.stopSignal = state.stopSignal;
   out.film = state.image();
@@ -677,14 +665,18 @@ json choiceJson(const EstimatorChoice& c) {
   }
   return {{"chosen", c.chosen.toJson()},
           {"candidates", candidates},
-          {"cost_unit", c.costUnit},
+          {"cost_unit", "GPU seconds"},
+          {"cut_short", c.cutShort},
+          {"pilot_pixel_samples", c.pixelSamples},
           {"pilot_pixels", c.pilotPixels},
-          {"pilot_spp", kChoicePilotSpp},
+          {"pilot_spp", c.pilotSpp},
           {"seconds", c.seconds},
           {"pipeline_seconds", c.pipelineSeconds},
           {"share_of_samples", c.share},
           {"margin", kChoiceMargin},
-          {"note", "the pilots' samples are not in the image (their weight is 0, fixed before they ran): unbiased"}};
+          {"note",
+           "the pilots are the render's first rounds, weighted per pixel by weights fixed before their samples were "
+           "seen (round_film.h): unbiased whichever configuration they chose"}};
 }
 
 std::string choiceLine(const EstimatorChoice& c) {
@@ -699,11 +691,11 @@ std::string choiceLine(const EstimatorChoice& c) {
     if (m.chosen) chosenEfficiency = m.reading.efficiency();
   char buf[512];
   std::snprintf(buf, sizeof(buf),
-                "choice      %s, of %zu candidates (%.2fx the start's measured efficiency); pilots %.3f s, %.1f%% of the "
-                "samples; their kernels %.3f s\n",
+                "choice      %s, of %zu candidates%s (%.2fx the start's measured efficiency); pilots %.3f s, %.1f%% of "
+                "the samples (in the image); their kernels %.3f s\n",
                 changed.empty() ? "the defaults" : changed.c_str(), c.candidates.size(),
-                startEfficiency > 0.0 ? chosenEfficiency / startEfficiency : 0.0, c.seconds, 100.0 * c.share,
-                c.pipelineSeconds);
+                c.cutShort ? " (the time budget was too short to measure more)" : "",
+                startEfficiency > 0.0 ? chosenEfficiency / startEfficiency : 0.0, c.seconds, 100.0 * c.share, c.pipelineSeconds);
   return buf;
 }
 

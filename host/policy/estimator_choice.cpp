@@ -86,10 +86,16 @@ bool beats(const CandidateReading& challenger, const CandidateReading& incumbent
   return logRatio >= std::log(kChoiceMargin) && logRatio - 1.645 * se > 0.0;
 }
 
-uint32_t pilotPixels(double pixelSamples, uint32_t candidates, uint32_t imagePixels) {
-  const double share = kChoiceShare * pixelSamples / (double(std::max(candidates, 1u)) * kChoicePilotSpp);
-  const double floor = std::min<double>(kChoiceMinPixels, imagePixels);
-  return uint32_t(std::clamp(std::floor(share), floor, double(imagePixels)));
+PilotShape pilotShape(uint32_t pathsPerPass, double plannedPixelSamples, uint32_t candidates, uint32_t imagePixels,
+                      uint32_t replicates) {
+  double paths = std::min<double>(kChoicePilotPaths, pathsPerPass);
+  paths = std::min(paths, kChoiceMaxShare * plannedPixelSamples / std::max(candidates, 1u));
+  replicates = std::max(replicates, 1u);
+  PilotShape shape;
+  const double fill = std::ceil(paths / std::max(imagePixels, 1u) / replicates) * replicates;
+  shape.spp = uint32_t(std::clamp(fill, double(replicates), double(kChoiceMaxPilotSpp / replicates * replicates)));
+  shape.pixels = uint32_t(std::clamp(std::floor(paths / shape.spp), 1.0, double(imagePixels)));
+  return shape;
 }
 
 }  // namespace vkmc

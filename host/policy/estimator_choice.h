@@ -1,6 +1,6 @@
-// --estimator auto's decisions, as pure functions: which keys it searches and in what order, what a candidate's
-// pilot measured (a sample's relative variance and cost over a subset of pixels), and whether a candidate beats the
-// one it would replace. The pilots themselves run in app/estimator_search.cpp.
+// --estimator auto's decisions, as pure functions: which keys it searches and in what order, how big a pilot is,
+// what a candidate's pilot measured (a sample's relative variance and cost over a subset of pixels), and whether a
+// candidate beats the one it would replace. The pilots themselves run in app/estimator_search.cpp.
 //
 // The search is coordinate-wise, not a grid: the start configuration (the defaults, with every key the user gave
 // pinned), then each unpinned key's alternatives with the best so far; a key's winner stays for the keys after it.
@@ -65,12 +65,18 @@ std::vector<CandidateReading> readCandidates(const PilotPixels& where, const std
 inline constexpr double kChoiceMargin = 1.05;
 bool beats(const CandidateReading& challenger, const CandidateReading& incumbent);
 
-// The pilot's pixels: a share of the image's pixel-samples (kChoiceShare of them, split over the candidates, two
-// samples a pixel), at least kChoiceMinPixels pixels (or all), at most all. `pixelSamples`: what the render
-// plans (width x height x spp, or under a time budget what its pace allows).
-inline constexpr double kChoiceShare = 0.05;
-inline constexpr uint32_t kChoiceMinPixels = 2048;
-inline constexpr uint32_t kChoicePilotSpp = 2;  // one sample in each of two replicates: a variance per pixel
-uint32_t pilotPixels(double pixelSamples, uint32_t candidates, uint32_t imagePixels);
+// A pilot's size: kChoicePilotPaths camera paths (or a pass's, where fewer; a pilot's cost per sample is read from
+// its GPU time, and on lavapipe a pass of fewer paths costs more per path, more so for the splitting candidates:
+// four BSDF continuations measured 2.1x the start's cost at 29k paths, 2.6x at 70k, 2.8-3.0x at 145k-258k), at most
+// kChoiceMaxShare of the render's planned pixel-samples over the candidates. Its samples a pixel: as few as fill
+// it over the image, a multiple of the replicates, at most kChoiceMaxPilotSpp; its pixels: what that leaves.
+inline constexpr uint32_t kChoicePilotPaths = 1u << 17;
+inline constexpr double kChoiceMaxShare = 0.25;
+inline constexpr uint32_t kChoiceMaxPilotSpp = 64;
+struct PilotShape {
+  uint32_t pixels = 0, spp = 0;
+};
+PilotShape pilotShape(uint32_t pathsPerPass, double plannedPixelSamples, uint32_t candidates, uint32_t imagePixels,
+                      uint32_t replicates);
 
 }  // namespace vkmc

@@ -93,18 +93,19 @@ bool renderRound(RoundRun& run, const std::vector<uint32_t>& counts, Film& round
 }  // namespace
 
 SampleRoundsOutcome renderSampleRounds(PathRenderer& renderer, RenderState& state, const RenderControl& control,
-                                       const RenderSettings& settings, const SampleRoundsPlan& plan) {
+                                       const RenderSettings& settings, const SampleRoundsPlan& plan, EarlierRounds* earlier) {
   const uint32_t width = settings.width, height = settings.height, pixels = width * height;
   const uint32_t replicates = settings.estimator.replicates;
   const bool replicateVariance = settings.estimator.sampler != Sampler::Independent;
-  RoundFilm combined(width, height, replicates, replicateVariance);
+  RoundFilm combined = earlier ? std::move(earlier->film) : RoundFilm(width, height, replicates, replicateVariance);
   RenderStats& stats = state.stats;
   const RenderStats before = stats;
   RoundRun run{renderer, stats, control, std::vector<uint32_t>(pixels, 0)};
   SampleRoundsOutcome out;
   const auto start = Clock::now();
   const bool progress = settings.progress && isatty(STDERR_FILENO);
-  uint32_t done = 0;
+  uint32_t done = earlier ? uint32_t(std::lround(earlier->spp)) : 0;
+  if (combined.rounds() > 0) out.relMse = estimateRelMse(combined.image(), kRelMseEpsilon);
   double secondsPerSpp = 0.0;
   while (true) {
     const double elapsed = since(start);

@@ -5,6 +5,7 @@
 #pragma once
 #include <cstdint>
 
+#include "policy/round_film.h"
 #include "policy/target_error.h"
 #include "render/path_renderer.h"
 #include "render/render_state.h"
@@ -27,9 +28,17 @@ struct SampleRoundsOutcome {
   double firstRoundSpp = 0.0;  // the first (uniform) round: what the allocation learned from
 };
 
-// Renders into `state` from scratch (no resume); an interrupted render keeps its finished rounds.
+// Rounds rendered before these (--estimator auto's pilots, app/estimator_search.h): their combined film and the
+// samples a pixel they hold on average.
+struct EarlierRounds {
+  RoundFilm film;
+  double spp = 0.0;
+};
+
+// Renders into `state` from scratch (no resume) or after `earlier`; an interrupted render keeps its finished rounds.
 SampleRoundsOutcome renderSampleRounds(PathRenderer& renderer, RenderState& state, const RenderControl& control,
-                                       const RenderSettings& settings, const SampleRoundsPlan& plan);
+                                       const RenderSettings& settings, const SampleRoundsPlan& plan,
+                                       EarlierRounds* earlier = nullptr);
 
 // The next round's samples a pixel (on average, a multiple of `multiple` and of plan.passSpp, so that its passes
 // are full: a pass's cost is mostly its longest path), from what is done and known: the first
