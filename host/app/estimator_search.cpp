@@ -35,7 +35,7 @@ class CandidatePilot {
     film_.replicates = e.replicates, film_.replicateVariance = e.sampler != Sampler::Independent;
     if (e.rr == RouletteMode::Efficiency) {
       RoulettePilot pilot = runRoulettePilot(ctx, scene, settings_);
-      out.pipelineSeconds += pilot.pipelineSeconds, out.seconds += pilot.seconds;
+      out.pipelineSeconds += pilot.pipelineSeconds, seconds_ += pilot.seconds;
       roulette_ = pilot.table;
     }
     renderer_ = std::make_unique<PathRenderer>(ctx, scene, settings_);
@@ -55,7 +55,8 @@ class CandidatePilot {
     });
     renderer_.reset();
     pixelSamples_ = double(shape.pixels) * shape.spp;
-    seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    passSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    seconds_ += passSeconds_;
   }
   // What the choice reads, over order[0, pixels): means, a sample's variances, and a sample's GPU seconds.
   PilotSamples samples(const std::vector<uint32_t>& order, uint32_t pixels) const {
@@ -72,7 +73,7 @@ class CandidatePilot {
   const Film& film() const { return film_; }
   const RenderStats& stats() const { return stats_; }
   double seconds() const { return seconds_; }  // the pilot's passes, wall time
-  double secondsPerPixelSample() const { return seconds_ / pixelSamples_; }
+  double secondsPerPixelSample() const { return passSeconds_ / pixelSamples_; }
   const std::optional<RouletteTable>& roulette() const { return roulette_; }
 
  private:
@@ -81,7 +82,7 @@ class CandidatePilot {
   RenderStats stats_;
   std::unique_ptr<PathRenderer> renderer_;
   std::optional<RouletteTable> roulette_;
-  double pixelSamples_ = 0.0, seconds_ = 0.0;
+  double pixelSamples_ = 0.0, seconds_ = 0.0, passSeconds_ = 0.0;
 };
 
 // A pixel order the pilots share (the same pixels for every candidate: a paired comparison), shuffled so any
@@ -134,8 +135,7 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   EstimatorChoice out;
   const SceneFeatures& f = settings.features;
   const std::vector<SearchStep> steps = estimatorSearchSteps(pinned, SearchScene{f.emitters(), f.lights()});
-  uint32_t candidates = 1;
-  for (const SearchStep& s : steps) candidates += uint32_t(s.values.size());
+  const uint32_t candidates = 1 + uint32_t(steps.size());  // at least one value a key
   const uint32_t imagePixels = settings.width * settings.height;
   const std::vector<uint32_t> order = pixelOrder(imagePixels, settings.seed);
   std::vector<std::unique_ptr<CandidatePilot>> pilots;
@@ -155,7 +155,7 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
       plannedSpp = std::min(plannedSpp, timeBudget / (pilots[0]->secondsPerPixelSample() * imagePixels));
     rounds.add(pilots.back()->film(), plannedSpp);
     measured.push_back(pilots.back()->samples(order, shape.pixels));
-    out.candidates.push_back({label, e, {}, false});
+    out.candidates.push_back({label, e, {}, false, pilots.back()->seconds()});
   };
   measure("start", settings.estimator);
   // Under a time budget too short for the pilots to pay, the start renders.
@@ -163,16 +163,16 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   const PilotPixels where{settings.width, settings.height, std::vector<uint32_t>(order.begin(), order.begin() + shape.pixels)};
   size_t best = 0;
   for (const SearchStep& step : out.cutShort ? std::vector<SearchStep>{} : steps) {
-    const size_t incumbent = best, first = out.candidates.size();
+    // Each value against the best so far, every candidate read against the values pooled so far; the key's
+    // next value only where this one won.
     for (double value : step.values) {
-      EstimatorConfig e = out.candidates[incumbent].config;
+      EstimatorConfig e = out.candidates[best].config;
       findEstimatorParam(step.key)->set(e, value);
       measure(label(step.key, value), e);
+      const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
+      if (!beats(readings.back(), readings[best])) break;
+      best = readings.size() - 1;
     }
-    // Each decision reads every candidate against the values pooled so far.
-    const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
-    for (size_t c = first; c < readings.size(); ++c)
-      if (beats(readings[c], readings[best])) best = c;
   }
   const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
   for (size_t c = 0; c < readings.size(); ++c) out.candidates[c].reading = readings[c];

@@ -20,8 +20,9 @@ namespace vkmc {
 struct MeasuredCandidate {
   std::string label;  // "start", or the key and value it changed ("light_samples=4")
   EstimatorConfig config;
-  CandidateReading reading;  // against the means pooled over every candidate (readCandidates)
+  CandidateReading reading;  // against the values pooled over every candidate (readCandidates)
   bool chosen = false;
+  double seconds = 0.0;  // its pilot's passes (and rr efficiency's own pilot), wall time
 };
 
 struct EstimatorChoice {

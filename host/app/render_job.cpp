@@ -276,7 +276,7 @@ RenderSettings renderSettings(const RenderOptions& options, const Scene& scene, 
   settings.camera = makeCameraRig(f.camera, f.width, f.height);
   settings.progress = options.progress;
   settings.timeBudget = options.timeBudget;
-  settings.sampleRuns = options.adaptive || options.targetError > 0.0 || options.estimatorAuto;
+  settings.sampleRuns = options.adaptive || options.targetError > 0.0;
   return settings;
 }
 
@@ -393,6 +393,9 @@ void chooseEstimatorFor(vk::Context& ctx, const GpuScene& gpuScene, const Render
                                           settings.estimator.sampler != Sampler::Independent)});
   out.choice = chooseEstimator(ctx, gpuScene, settings, options.pinnedKeys, options.timeBudget, earlier->film);
   earlier->spp = out.choice->pixelSamples / (double(settings.width) * settings.height);
+  // Without a time budget the pilots' samples count toward --spp (on average over the pixels).
+  if (options.timeBudget <= 0.0)
+    settings.spp = std::max(settings.estimator.replicates, settings.spp - std::min(settings.spp, uint32_t(std::lround(earlier->spp))));
   out.setup.pipelines += out.choice->pipelineSeconds;
   settings.estimator = out.choice->chosen;
   learned.choiceSeconds = out.choice->seconds;
@@ -435,6 +438,19 @@ RenderControl renderControl(const RunControl& run, RenderOutcome& out) {
   return control;
 }
 
+// --estimator auto without rounds of its own: the chosen configuration renders the rest as a plain render (full
+// passes, no sample runs), which joins the pilots' rounds as the last round, each pixel's weight what they left.
+void renderAfterPilots(PathRenderer& renderer, RenderState& state, const RenderControl& control, EarlierRounds& earlier) {
+  renderer.render(state, control);
+  const Film rest = state.image();
+  std::vector<double> weight(rest.pixels());
+  for (size_t p = 0; p < rest.pixels(); ++p) weight[p] = roundWeight(earlier.film.weightSoFar(p), double(rest.count[p]), 0.0, true);
+  earlier.film.addRound(rest, weight);
+  state.film = earlier.film.image();
+  state.batch.clear(), state.batchSamples = 0;
+  state.stats.samplesPerPixel += uint32_t(std::lround(earlier.spp));
+}
+
 // The sample passes: in this process, or in batches across the ranks of mpirun.
 void renderPasses(PathRenderer& renderer, RenderState& state, const RenderControl& control, const RenderOptions& options,
                   const RenderSettings& settings, RenderOutcome& out, std::optional<EarlierRounds>& earlier) {
@@ -447,6 +463,9 @@ void renderPasses(PathRenderer& renderer, RenderState& state, const RenderContro
         earlier ? &*earlier : nullptr);
     return;
   }
+  if (group.distributed() && earlier)
+    throw Error("--adaptive on, --target-error and --estimator auto do not run under mpirun yet");
+  if (earlier) return renderAfterPilots(renderer, state, control, *earlier);
   if (!group.distributed()) return renderer.render(state, control);
   DistributedPlan plan;
   plan.spp = settings.spp;
@@ -498,7 +517,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
                           {"device", out.device},
                           {"outputs", run.outputs}};
   LearnedBeforePasses learned;
-  if (settings.sampleRuns && (!run.checkpointPath.empty() || run.resumeState))
+  if ((settings.sampleRuns || options.estimatorAuto) && (!run.checkpointPath.empty() || run.resumeState))
     throw Error("--adaptive on, --target-error and --estimator auto do not write or resume checkpoints yet");
   RenderState state = startOrResume(run, fingerprint.hex(), framing, out, learned);
   if (state.nextSample > settings.spp)
@@ -656,6 +675,7 @@ json choiceJson(const EstimatorChoice& c) {
     const double spread = std::exp(1.96 * r.relativeSe());
     candidates.push_back({{"candidate", m.label},
                           {"chosen", m.chosen},
+                          {"seconds", m.seconds},
                           {"rel_variance_per_sample", r.relVariance},
                           {"rel_variance_standard_error", r.relVarianceSe},
                           {"cost_per_sample", r.cost},

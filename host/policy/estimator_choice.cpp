@@ -65,14 +65,16 @@ std::vector<CandidateReading> readCandidates(const PilotPixels& where, const std
     std::vector<glm::dvec3> value(pixels);
     for (size_t i = 0; i < pixels; ++i) value[i] = pilots.size() > 1 ? (total[i] - pilots[c].mean[i]) / others : total[i];
     value = windowMeans(where, value);
-    double sum = 0.0, sumSq = 0.0;
+    std::vector<double> r(pixels);
     for (size_t i = 0; i < pixels; ++i) {
       const glm::dvec3 rel = pilots[c].sampleVariance[i] / (value[i] * value[i] + epsilon);
-      const double r = (rel.x + rel.y + rel.z) / 3.0;
-      sum += r, sumSq += r * r;
+      r[i] = (rel.x + rel.y + rel.z) / 3.0;
     }
-    const double n = double(std::max<size_t>(pixels, 1)), mean = sum / n;
-    const double spread = pixels > 1 ? std::max(0.0, (sumSq - n * mean * mean) / (n - 1.0)) : 0.0;
+    const double n = double(std::max<size_t>(pixels, 1));
+    double mean = 0.0, squares = 0.0;
+    for (double x : r) mean += x / n;
+    for (double x : r) squares += (x - mean) * (x - mean);
+    const double spread = pixels > 1 ? squares / (n - 1.0) : 0.0;
     readings[c] = {mean, std::sqrt(spread / n), pilots[c].cost};
   }
   return readings;
@@ -88,11 +90,10 @@ bool beats(const CandidateReading& challenger, const CandidateReading& incumbent
 
 PilotShape pilotShape(uint32_t pathsPerPass, double plannedPixelSamples, uint32_t candidates, uint32_t imagePixels,
                       uint32_t replicates) {
-  double paths = std::min<double>(kChoicePilotPaths, pathsPerPass);
-  paths = std::min(paths, kChoiceMaxShare * plannedPixelSamples / std::max(candidates, 1u));
+  double paths = std::min(double(pathsPerPass), kChoiceMaxShare * plannedPixelSamples / std::max(candidates, 1u));
   replicates = std::max(replicates, 1u);
   PilotShape shape;
-  const double fill = std::ceil(paths / std::max(imagePixels, 1u) / replicates) * replicates;
+  const double fill = std::ceil(std::max(paths / std::max(imagePixels, 1u), double(kChoiceMinPilotSpp)) / replicates) * replicates;
   shape.spp = uint32_t(std::clamp(fill, double(replicates), double(kChoiceMaxPilotSpp / replicates * replicates)));
   shape.pixels = uint32_t(std::clamp(std::floor(paths / shape.spp), 1.0, double(imagePixels)));
   return shape;

@@ -14,7 +14,8 @@
 
 namespace vkmc {
 
-// One key's alternatives to whatever value the best configuration so far has (estimator_params.cpp's values).
+// One key's alternatives to whatever value the best configuration so far has (estimator_params.cpp's values), in
+// order: a value is measured only where the one before it won (4 light samples only after 2 beat 1).
 struct SearchStep {
   std::string key;
   std::vector<double> values;
@@ -65,13 +66,15 @@ std::vector<CandidateReading> readCandidates(const PilotPixels& where, const std
 inline constexpr double kChoiceMargin = 1.05;
 bool beats(const CandidateReading& challenger, const CandidateReading& incumbent);
 
-// A pilot's size: kChoicePilotPaths camera paths (or a pass's, where fewer; a pilot's cost per sample is read from
-// its GPU time, and on lavapipe a pass of fewer paths costs more per path, more so for the splitting candidates:
-// four BSDF continuations measured 2.1x the start's cost at 29k paths, 2.6x at 70k, 2.8-3.0x at 145k-258k), at most
-// kChoiceMaxShare of the render's planned pixel-samples over the candidates. Its samples a pixel: as few as fill
-// it over the image, a multiple of the replicates, at most kChoiceMaxPilotSpp; its pixels: what that leaves.
-inline constexpr uint32_t kChoicePilotPaths = 1u << 17;
-inline constexpr double kChoiceMaxShare = 0.25;
+// A pilot's size: a pass of the render's (a pilot's cost per sample is read from its GPU time, and on lavapipe a
+// pass of fewer paths costs less per path for the splitting candidates than the render's full passes will: at half a
+// pass two BSDF continuations measured 1.68x the start's cost where the render took 2.25x), at most kChoiceMaxShare
+// of the render's planned pixel-samples over the candidates. Its samples a pixel: as few as fill it over the image, a
+// multiple of the replicates, at least kChoiceMinPilotSpp (a pixel's replicates stratify as the render's will, in
+// part: a pilot sample is worth less than a render's under QMC, and its reading misses the gain), at most
+// kChoiceMaxPilotSpp; its pixels: what that leaves.
+inline constexpr double kChoiceMaxShare = 0.1;
+inline constexpr uint32_t kChoiceMinPilotSpp = 16;
 inline constexpr uint32_t kChoiceMaxPilotSpp = 64;
 struct PilotShape {
   uint32_t pixels = 0, spp = 0;

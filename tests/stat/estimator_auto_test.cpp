@@ -1,0 +1,81 @@
+// --estimator auto on the device (app/estimator_search.h): whatever its pilots choose, the image stays unbiased
+// (the white furnace's analytic L = 2; the Cornell box against a uniform render of the defaults), its variance is
+// the spread it has, the user's keys stay pinned, and the report names what was measured. Sized by samples; fixed
+// seeds. The bias they would catch: pilots weighted by what they measured, a pilot's samples written with
+// another's weights, or pilots that share their random numbers (their rounds would count near-copies as
+// independent: the variance would read low).
+#include <gtest/gtest.h>
+
+#include "support/render_helpers.h"
+
+using namespace vkmc;
+using namespace vkmc::test;
+
+namespace {
+
+RenderOutcome renderAuto(const std::string& scene, uint32_t w, uint32_t h, uint32_t spp, uint32_t seed,
+                         const EstimatorConfig& start = {}, std::set<std::string> pinned = {}) {
+  RenderOptions o = optionsFor(scene, start, w, h, spp, seed);
+  o.estimatorAuto = true;
+  o.pinnedKeys = std::move(pinned);
+  return runRender(sharedContext(), o);
+}
+
+// Per pixel E[(a - u)^2] = Var(a) + Var(u) where both variances are honest: the mean over pixels and channels of
+// d = (a - u)^2 - (V_a + V_u) is 0 within its own spread.
+void expectHonestVariance(const Film& a, const Film& u) {
+  std::vector<double> d;
+  for (size_t p = 0; p < a.pixels(); ++p)
+    for (int c = 0; c < 3; ++c) {
+      const double diff = a.mean(p, c) - u.mean(p, c);
+      d.push_back(diff * diff - a.varianceOfMean(p, c) - u.varianceOfMean(p, c));
+    }
+  double mean = 0.0, ss = 0.0;
+  for (double x : d) mean += x;
+  mean /= double(d.size());
+  for (double x : d) ss += (x - mean) * (x - mean);
+  const double se = std::sqrt(ss / double(d.size() - 1) / double(d.size()));
+  EXPECT_LT(std::abs(mean), 5.0 * se) << "mean of (a - u)^2 - V_a - V_u: " << mean << " +- " << se;
+}
+
+}  // namespace
+
+TEST(EstimatorAuto, FurnaceMatchesTheAnalyticValue) {
+  const RenderOutcome r = renderAuto("furnace.gltf", 16, 16, 512, 23);
+  ASSERT_TRUE(r.choice);
+  EXPECT_GE(r.choice->candidates.size(), 3u);  // the start and at least one value of each key in turn
+  ASSERT_EQ(r.film.totalNonfinite(), 0u);
+  EXPECT_TRUE(regionMatches(whole(r.film), glm::dvec3(2.0), 5.0));
+}
+
+TEST(EstimatorAuto, CornellBoxMatchesAUniformRenderAndReportsItsSpread) {
+  const RenderOutcome uniform = renderWith("cornell_box.gltf", EstimatorConfig{}, 32, 32, 512, 999);
+  const RenderOutcome chosen = renderAuto("cornell_box.gltf", 32, 32, 256, 37);
+  ASSERT_TRUE(chosen.choice);
+  EXPECT_GT(chosen.choice->pixelSamples, 0.0);  // the pilots are in the image
+  EXPECT_TRUE(regionsAgree(whole(chosen.film), whole(uniform.film), 5.0));
+  for (uint32_t q = 0; q < 4; ++q)
+    EXPECT_TRUE(regionsAgree(region(chosen.film, (q % 2) * 16, (q / 2) * 16, (q % 2) * 16 + 16, (q / 2) * 16 + 16),
+                             region(uniform.film, (q % 2) * 16, (q / 2) * 16, (q % 2) * 16 + 16, (q / 2) * 16 + 16), 5.0))
+        << "quadrant " << q;
+  expectHonestVariance(chosen.film, uniform.film);
+}
+
+// Every key the user gave stays as given: no candidate changes it, and the render runs it.
+TEST(EstimatorAuto, TheUsersKeysStayPinned) {
+  EstimatorConfig start;
+  start.lightSamples = 2;
+  start.mis = MisHeuristic::Balance;
+  const RenderOutcome r = renderAuto("cornell_box.gltf", 32, 32, 128, 41, start, {"light_samples", "mis"});
+  ASSERT_TRUE(r.choice);
+  for (const MeasuredCandidate& c : r.choice->candidates) {
+    EXPECT_EQ(c.config.lightSamples, 2u) << c.label;
+    EXPECT_EQ(c.config.mis, MisHeuristic::Balance) << c.label;
+    EXPECT_GT(c.reading.efficiency(), 0.0) << c.label;
+  }
+  EXPECT_EQ(r.estimator.lightSamples, 2u);
+  EXPECT_EQ(r.estimator.mis, MisHeuristic::Balance);
+  int chosen = 0;
+  for (const MeasuredCandidate& c : r.choice->candidates) chosen += c.chosen;
+  EXPECT_EQ(chosen, 1);
+}

@@ -1,0 +1,123 @@
+// --estimator auto's decisions without a GPU (policy/estimator_choice.h): which keys it searches, how big a pilot
+// is, what a candidate's reading is relative to, and when a challenger wins.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "estimators/estimator_config.h"
+#include "policy/estimator_choice.h"
+
+using namespace vkmc;
+
+namespace {
+bool hasKey(const std::vector<SearchStep>& steps, const std::string& key) {
+  for (const SearchStep& s : steps)
+    if (s.key == key) return true;
+  return false;
+}
+
+// A pilot over a w x h subset (every pixel of it) whose samples have the given mean and variance everywhere.
+PilotSamples flatPilot(size_t pixels, double mean, double variance, double cost) {
+  PilotSamples p;
+  p.mean.assign(pixels, glm::dvec3(mean));
+  p.sampleVariance.assign(pixels, glm::dvec3(variance));
+  p.cost = cost;
+  return p;
+}
+
+PilotPixels allPixels(uint32_t w, uint32_t h) {
+  PilotPixels where{w, h, {}};
+  for (uint32_t i = 0; i < w * h; ++i) where.index.push_back(i);
+  return where;
+}
+}  // namespace
+
+TEST(EstimatorChoice, SearchesTheKeysTheUserLeftAndTheSceneCanUse) {
+  const std::vector<SearchStep> all = estimatorSearchSteps({}, SearchScene{true, true});
+  for (const char* key : {"light_samples", "bsdf_samples", "mis", "light_sampling", "rr"}) EXPECT_TRUE(hasKey(all, key)) << key;
+  // Splitting first: what MIS and roulette weigh depends on it.
+  EXPECT_EQ(all.front().key, "light_samples");
+  const std::vector<SearchStep> pinned = estimatorSearchSteps({"light_samples", "rr"}, SearchScene{true, true});
+  EXPECT_FALSE(hasKey(pinned, "light_samples"));
+  EXPECT_FALSE(hasKey(pinned, "rr"));
+  EXPECT_TRUE(hasKey(pinned, "bsdf_samples"));
+  // Solid-angle sampling differs from area sampling on emissive triangles only; without lights next-event
+  // estimation has nothing to sample, so its keys change nothing.
+  EXPECT_FALSE(hasKey(estimatorSearchSteps({}, SearchScene{false, true}), "light_sampling"));
+  const std::vector<SearchStep> dark = estimatorSearchSteps({}, SearchScene{false, false});
+  EXPECT_FALSE(hasKey(dark, "light_samples"));
+  EXPECT_FALSE(hasKey(dark, "mis"));
+  EXPECT_TRUE(hasKey(dark, "bsdf_samples"));
+}
+
+TEST(EstimatorChoice, ReadsEfficiencyAsInverseRelativeVarianceTimesCost) {
+  const PilotPixels where = allPixels(16, 16);
+  // B: a quarter of A's variance at twice its cost, so twice as efficient; C: A's variance at A's cost.
+  const std::vector<CandidateReading> r =
+      readCandidates(where, {flatPilot(256, 0.5, 1.0, 1.0), flatPilot(256, 0.5, 0.25, 2.0), flatPilot(256, 0.5, 1.0, 1.0)}, 1e-2);
+  EXPECT_NEAR(r[0].relVariance, 1.0 / (0.25 + 1e-2), 1e-9);
+  EXPECT_NEAR(r[1].efficiency() / r[0].efficiency(), 2.0, 1e-9);
+  EXPECT_NEAR(r[2].efficiency(), r[0].efficiency(), 1e-12);
+  EXPECT_LT(r[0].relVarianceSe, 1e-12);  // every pixel alike: no spread
+}
+
+// A rare bright sample raises a pixel's variance and its own mean together: read against its own mean, the
+// candidate's relative variance would shrink (two samples x and 0: V / m^2 = 2 however large x). It is read
+// against the other candidates' value instead, around the pixel.
+TEST(EstimatorChoice, ReadsEachCandidateAgainstTheOthersValue) {
+  const PilotPixels where = allPixels(8, 8);
+  PilotSamples firefly = flatPilot(64, 0.5, 0.1, 1.0);
+  firefly.mean[27] = glm::dvec3(50.0);  // one pixel's samples were x = 100 and 0
+  firefly.sampleVariance[27] = glm::dvec3(5000.0);
+  const std::vector<CandidateReading> r = readCandidates(where, {firefly, flatPilot(64, 0.5, 0.1, 1.0)}, 1e-2);
+  // Against the others' 0.5 the firefly pixel alone adds 5000 / 0.26 / 64 = 300.
+  EXPECT_GT(r[0].relVariance, 250.0);
+  EXPECT_LT(r[1].relVariance, 1.0);
+  EXPECT_GT(r[0].relVarianceSe, 0.1 * r[0].relVariance);
+}
+
+// The window: where another candidate reads 0 on one pixel only by chance, its neighbours give the value.
+TEST(EstimatorChoice, TheValueComesFromAWindowOfPixels) {
+  const PilotPixels where = allPixels(8, 8);
+  PilotSamples other = flatPilot(64, 1.0, 0.0, 1.0);
+  other.mean[36] = glm::dvec3(0.0);
+  const std::vector<CandidateReading> r = readCandidates(where, {flatPilot(64, 1.0, 1.0, 1.0), other}, 1e-2);
+  // The 25 pixels whose 5x5 window holds pixel 36 read a value of 0.96 or so; without the window pixel 36 alone
+  // would read 1 / 0.01 and add 100 / 64 to the mean.
+  EXPECT_GT(r[0].relVariance, 1.0 / (1.0 + 1e-2));
+  EXPECT_LT(r[0].relVariance, 1.1);
+}
+
+TEST(EstimatorChoice, AChallengerWinsByTheMarginAndBeyondItsNoise) {
+  CandidateReading incumbent{1.0, 0.001, 1.0};
+  EXPECT_FALSE(beats({1.0 / 1.04, 0.001, 1.0}, incumbent));  // 4% better: within the margin
+  EXPECT_TRUE(beats({1.0 / 1.5, 0.001, 1.0}, incumbent));    // 50% better, measured tightly
+  EXPECT_FALSE(beats({1.0 / 1.5, 0.5, 1.0}, incumbent));     // 50% better by a reading uncertain by 75%
+  EXPECT_FALSE(beats({1.0, 0.001, 1.0}, incumbent));         // the same
+  EXPECT_TRUE(beats({0.5, 0.001, 1.0}, CandidateReading{}));  // anything measured beats nothing measured
+  EXPECT_FALSE(beats(CandidateReading{}, incumbent));
+}
+
+TEST(EstimatorChoice, APilotFillsAPassAndStaysAShareOfTheRender) {
+  // 192 x 192 under a long budget: a pass of 2^18 paths at 16 samples a pixel (the fewest a pilot takes; a
+  // multiple of the 2 replicates), over 16384 pixels.
+  PilotShape s = pilotShape(1u << 18, 1e12, 8, 192 * 192, 2);
+  EXPECT_EQ(s.spp, kChoiceMinPilotSpp);
+  EXPECT_EQ(s.pixels, (1u << 18) / kChoiceMinPilotSpp);
+  // A large image: still 16 a pixel, over fewer of its pixels.
+  s = pilotShape(1u << 18, 1e12, 8, 1920 * 1080, 2);
+  EXPECT_EQ(uint64_t(s.pixels) * s.spp, 1u << 18);
+  // A small render: the pilots stay within kChoiceMaxShare of its pixel-samples.
+  s = pilotShape(1u << 18, 128.0 * 128 * 256, 8, 128 * 128, 2);
+  EXPECT_LE(8.0 * s.pixels * s.spp, kChoiceMaxShare * 128 * 128 * 256);
+  EXPECT_EQ(s.spp % 2, 0u);
+  // Three replicates: a multiple of 3.
+  s = pilotShape(1u << 18, 1e12, 8, 192 * 192, 3);
+  EXPECT_EQ(s.spp % 3, 0u);
+  // A tiny render: one pixel at least; never past the image or the batch.
+  s = pilotShape(1u << 18, 64.0, 8, 16, 4);
+  EXPECT_GE(s.pixels, 1u);
+  s = pilotShape(1u << 18, 1e12, 8, 64, 2);
+  EXPECT_LE(s.pixels, 64u);
+  EXPECT_LE(s.spp, kChoiceMaxPilotSpp);
+}
