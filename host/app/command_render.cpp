@@ -499,9 +499,10 @@ Command addRenderCommand(CLI::App& app) {
   addSamplingOptions(render, *a);
   addCameraAndLightOptions(render, *a);
   // Flags override the file; both are the keys of host/estimators/estimator_params.cpp.
-  render->add_option("--estimator", a->estimatorFile,
-                     "JSON estimator file (the keys of the flags below), or auto: short pilots on the scene choose light "
-                     "and BSDF samples, MIS, light sampling and roulette by measured efficiency; flags pin their keys")
+  render
+      ->add_option("--estimator", a->estimatorFile,
+                   "JSON estimator file (the keys of the flags below), or auto: short pilots on the scene choose light "
+                   "and BSDF samples, MIS, light sampling and roulette by measured efficiency; flags pin their keys")
       ->group(kEstimatorGroup);
   for (const EstimatorParam& p : estimatorParams())
     render->add_option(p.flag(), a->estimatorValues[p.key], p.helpText())->group(kEstimatorGroup);

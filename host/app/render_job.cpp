@@ -395,7 +395,8 @@ void chooseEstimatorFor(vk::Context& ctx, const GpuScene& gpuScene, const Render
   earlier->spp = out.choice->pixelSamples / (double(settings.width) * settings.height);
   // Without a time budget the pilots' samples count toward --spp (on average over the pixels).
   if (options.timeBudget <= 0.0)
-    settings.spp = std::max(settings.estimator.replicates, settings.spp - std::min(settings.spp, uint32_t(std::lround(earlier->spp))));
+    settings.spp =
+        std::max(settings.estimator.replicates, settings.spp - std::min(settings.spp, uint32_t(std::lround(earlier->spp))));
   out.setup.pipelines += out.choice->pipelineSeconds;
   settings.estimator = out.choice->chosen;
   learned.choiceSeconds = out.choice->seconds;
@@ -444,7 +445,8 @@ void renderAfterPilots(PathRenderer& renderer, RenderState& state, const RenderC
   renderer.render(state, control);
   const Film rest = state.image();
   std::vector<double> weight(rest.pixels());
-  for (size_t p = 0; p < rest.pixels(); ++p) weight[p] = roundWeight(earlier.film.weightSoFar(p), double(rest.count[p]), 0.0, true);
+  for (size_t p = 0; p < rest.pixels(); ++p)
+    weight[p] = roundWeight(earlier.film.weightSoFar(p), double(rest.count[p]), 0.0, true);
   earlier.film.addRound(rest, weight);
   state.film = earlier.film.image();
   state.batch.clear(), state.batchSamples = 0;

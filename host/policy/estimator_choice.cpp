@@ -93,7 +93,8 @@ PilotShape pilotShape(uint32_t pathsPerPass, double plannedPixelSamples, uint32_
   double paths = std::min(double(pathsPerPass), kChoiceMaxShare * plannedPixelSamples / std::max(candidates, 1u));
   replicates = std::max(replicates, 1u);
   PilotShape shape;
-  const double fill = std::ceil(std::max(paths / std::max(imagePixels, 1u), double(kChoiceMinPilotSpp)) / replicates) * replicates;
+  const double fill =
+      std::ceil(std::max(paths / std::max(imagePixels, 1u), double(kChoiceMinPilotSpp)) / replicates) * replicates;
   shape.spp = uint32_t(std::clamp(fill, double(replicates), double(kChoiceMaxPilotSpp / replicates * replicates)));
   shape.pixels = uint32_t(std::clamp(std::floor(paths / shape.spp), 1.0, double(imagePixels)));
   return shape;

@@ -90,10 +90,10 @@ TEST(EstimatorChoice, TheValueComesFromAWindowOfPixels) {
 
 TEST(EstimatorChoice, AChallengerWinsByTheMarginAndBeyondItsNoise) {
   CandidateReading incumbent{1.0, 0.001, 1.0};
-  EXPECT_FALSE(beats({1.0 / 1.04, 0.001, 1.0}, incumbent));  // 4% better: within the margin
-  EXPECT_TRUE(beats({1.0 / 1.5, 0.001, 1.0}, incumbent));    // 50% better, measured tightly
-  EXPECT_FALSE(beats({1.0 / 1.5, 0.5, 1.0}, incumbent));     // 50% better by a reading uncertain by 75%
-  EXPECT_FALSE(beats({1.0, 0.001, 1.0}, incumbent));         // the same
+  EXPECT_FALSE(beats({1.0 / 1.04, 0.001, 1.0}, incumbent));   // 4% better: within the margin
+  EXPECT_TRUE(beats({1.0 / 1.5, 0.001, 1.0}, incumbent));     // 50% better, measured tightly
+  EXPECT_FALSE(beats({1.0 / 1.5, 0.5, 1.0}, incumbent));      // 50% better by a reading uncertain by 75%
+  EXPECT_FALSE(beats({1.0, 0.001, 1.0}, incumbent));          // the same
   EXPECT_TRUE(beats({0.5, 0.001, 1.0}, CandidateReading{}));  // anything measured beats nothing measured
   EXPECT_FALSE(beats(CandidateReading{}, incumbent));
 }
