@@ -25,6 +25,7 @@
 #include "scene/camera_rig.h"
 #include "scene/gltf_loader.h"
 #include "scene/content_hash.h"
+#include "scene/coordinate_precision.h"
 #include "scene/scene_fingerprint.h"
 #include "scene/thin_ribbons.h"
 #include "vk/lavapipe_environment.h"
@@ -490,6 +491,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.device = ctx.deviceName();
   out.degenerateTriangles = scene.degenerateTriangles;
   out.warnings = scene.warnings;
+  if (std::optional<std::string> w = coordinatePrecisionWarning(scene)) out.warnings.push_back(*w);
   const Framing framing = frameScene(options, scene);
   if (reference && (uint32_t(reference->width) != framing.width || uint32_t(reference->height) != framing.height))
     throw Error("reference '" + options.referencePath + "' is " + std::to_string(reference->width) + "x" +
