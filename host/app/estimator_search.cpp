@@ -142,11 +142,13 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   std::vector<PilotSamples> measured;
   pilots.push_back(std::make_unique<CandidatePilot>(ctx, scene, settings, settings.estimator, 0u, out));
   // Under a time budget the plan is known only from the start's pace.
-  const double plannedPixelSamples = timeBudget > 0.0 ? 1e300 : double(settings.spp) * imagePixels;
+  // Without a sample count (--target-error alone) the pilots plan for kChoiceNominalSpp.
+  const double renderSpp = settings.spp == kMaxSpp ? double(kChoiceNominalSpp) : double(settings.spp);
+  const double plannedPixelSamples = timeBudget > 0.0 ? 1e300 : renderSpp * imagePixels;
   const PilotShape shape =
       pilotShape(pilots[0]->pathsPerPass(), plannedPixelSamples, candidates, imagePixels, settings.estimator.replicates);
   PilotRounds rounds(film, order, shape);
-  double plannedSpp = settings.spp;
+  double plannedSpp = renderSpp;
   auto measure = [&](const std::string& label, const EstimatorConfig& e) {
     if (!out.candidates.empty())
       pilots.push_back(std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out));

@@ -394,8 +394,9 @@ void chooseEstimatorFor(vk::Context& ctx, const GpuScene& gpuScene, const Render
                                           settings.estimator.sampler != Sampler::Independent)});
   out.choice = chooseEstimator(ctx, gpuScene, settings, options.pinnedKeys, options.timeBudget, earlier->film);
   earlier->spp = out.choice->pixelSamples / (double(settings.width) * settings.height);
-  // Without a time budget the pilots' samples count toward --spp (on average over the pixels).
-  if (options.timeBudget <= 0.0)
+  // Without a time budget the pilots' samples count toward --spp (on average over the pixels); rounds count them
+  // themselves (EarlierRounds::spp).
+  if (options.timeBudget <= 0.0 && !settings.sampleRuns)
     settings.spp =
         std::max(settings.estimator.replicates, settings.spp - std::min(settings.spp, uint32_t(std::lround(earlier->spp))));
   out.setup.pipelines += out.choice->pipelineSeconds;

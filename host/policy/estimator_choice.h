@@ -74,6 +74,7 @@ bool beats(const CandidateReading& challenger, const CandidateReading& incumbent
 // part: a pilot sample is worth less than a render's under QMC, and its reading misses the gain), at most
 // kChoiceMaxPilotSpp; its pixels: what that leaves.
 inline constexpr double kChoiceMaxShare = 0.1;
+inline constexpr uint32_t kChoiceNominalSpp = 256;  // what a render with no sample count or budget plans for
 inline constexpr uint32_t kChoiceMinPilotSpp = 16;
 inline constexpr uint32_t kChoiceMaxPilotSpp = 64;
 struct PilotShape {

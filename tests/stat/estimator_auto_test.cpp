@@ -13,9 +13,10 @@ using namespace vkmc::test;
 namespace {
 
 RenderOutcome renderAuto(const std::string& scene, uint32_t w, uint32_t h, uint32_t spp, uint32_t seed,
-                         const EstimatorConfig& start = {}, std::set<std::string> pinned = {}) {
+                         const EstimatorConfig& start = {}, std::set<std::string> pinned = {}, bool adaptive = false) {
   RenderOptions o = optionsFor(scene, start, w, h, spp, seed);
   o.estimatorAuto = true;
+  o.adaptive = adaptive;
   o.pinnedKeys = std::move(pinned);
   return runRender(sharedContext(), o);
 }
@@ -43,6 +44,15 @@ TEST(EstimatorAuto, FurnaceMatchesTheAnalyticValue) {
   const RenderOutcome r = renderAuto("furnace.gltf", 16, 16, 512, 23);
   ASSERT_TRUE(r.choice);
   EXPECT_GE(r.choice->candidates.size(), 3u);  // the start and at least one value of each key in turn
+  ASSERT_EQ(r.film.totalNonfinite(), 0u);
+  EXPECT_TRUE(regionMatches(whole(r.film), glm::dvec3(2.0), 5.0));
+}
+
+// With --adaptive on the rounds continue from the pilots' (sample_rounds.h EarlierRounds).
+TEST(EstimatorAuto, FurnaceMatchesTheAnalyticValueUnderAdaptiveRounds) {
+  const RenderOutcome r = renderAuto("furnace.gltf", 16, 16, 512, 29, {}, {}, true);
+  ASSERT_TRUE(r.choice && r.rounds);
+  EXPECT_GE(r.rounds->rounds, r.choice->candidates.size() + 1);  // the pilots' rounds, then the render's own
   ASSERT_EQ(r.film.totalNonfinite(), 0u);
   EXPECT_TRUE(regionMatches(whole(r.film), glm::dvec3(2.0), 5.0));
 }
