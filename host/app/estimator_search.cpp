@@ -71,6 +71,7 @@ class CandidatePilot {
     return s;
   }
   const Film& film() const { return film_; }
+  void releaseFilm() { film_ = Film(); }
   const RenderStats& stats() const { return stats_; }
   double seconds() const { return seconds_; }  // the pilot's passes, wall time
   double secondsPerPixelSample() const { return passSeconds_ / pixelSamples_; }
@@ -134,7 +135,8 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
                                 const std::set<std::string>& pinned, double timeBudget, RoundFilm& film) {
   EstimatorChoice out;
   const SceneFeatures& f = settings.features;
-  const std::vector<SearchStep> steps = estimatorSearchSteps(pinned, SearchScene{f.emitters(), f.lights()});
+  const std::vector<SearchStep> steps =
+      estimatorSearchSteps(pinned, SearchScene{f.emitters(), f.lights(), ctx.hasFloatAtomics()});
   const uint32_t candidates = 1 + uint32_t(steps.size());  // at least one value a key
   const uint32_t imagePixels = settings.width * settings.height;
   const std::vector<uint32_t> order = pixelOrder(imagePixels, settings.seed);
@@ -143,7 +145,8 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   pilots.push_back(std::make_unique<CandidatePilot>(ctx, scene, settings, settings.estimator, 0u, out));
   // Under a time budget the plan is known only from the start's pace.
   // Without a sample count (--target-error alone) the pilots plan for kChoiceNominalSpp.
-  const double renderSpp = settings.spp == kMaxSpp ? double(kChoiceNominalSpp) : double(settings.spp);
+  const bool noCount = settings.spp == kMaxSpp && timeBudget <= 0.0;
+  const double renderSpp = noCount ? double(kChoiceNominalSpp) : double(settings.spp);
   const double plannedPixelSamples = timeBudget > 0.0 ? 1e300 : renderSpp * imagePixels;
   const PilotShape shape =
       pilotShape(pilots[0]->pathsPerPass(), plannedPixelSamples, candidates, imagePixels, settings.estimator.replicates);
@@ -157,6 +160,7 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
       plannedSpp = std::min(plannedSpp, timeBudget / (pilots[0]->secondsPerPixelSample() * imagePixels));
     rounds.add(pilots.back()->film(), plannedSpp);
     measured.push_back(pilots.back()->samples(order, shape.pixels));
+    pilots.back()->releaseFilm();  // a full image's sums, of which the rounds and the reading keep what they need
     out.candidates.push_back({label, e, {}, false, pilots.back()->seconds()});
   };
   measure("start", settings.estimator);

@@ -384,6 +384,18 @@ void chargePilotToBudget(const RenderOptions& options, const RenderState& state,
   }
 }
 
+// A pilot's counters and GPU time into the render's (its wall time is the choice's, added to the render's seconds).
+void addPilotStats(RenderStats& to, const RenderStats& s) {
+  to.cameraRays += s.cameraRays, to.extensionRays += s.extensionRays, to.shadowRays += s.shadowRays;
+  to.primaryRays += s.primaryRays, to.gpuSeconds += s.gpuSeconds, to.passes += s.passes;
+  to.maxBounces = std::max(to.maxBounces, s.maxBounces);
+  to.nonfiniteEmission += s.nonfiniteEmission, to.nonfiniteLightSamples += s.nonfiniteLightSamples;
+  to.nonfiniteThroughput += s.nonfiniteThroughput, to.traversalsCut += s.traversalsCut;
+  to.deepWalks += s.deepWalks, to.deepWalksTraced += s.deepWalksTraced, to.splitsRefused += s.splitsRefused;
+  for (const auto& [stage, seconds] : s.stageSeconds) to.stageSeconds[stage] += seconds;
+  to.stagesUntimed |= s.stagesUntimed;
+}
+
 // --estimator auto: the pilots choose, and are the render's first rounds (`earlier`); the render then runs the
 // chosen configuration, its integrator the wavefront where it splits. The pilots' counters join the render's.
 void chooseEstimatorFor(vk::Context& ctx, const GpuScene& gpuScene, const RenderOptions& options, RenderSettings& settings,
@@ -405,12 +417,7 @@ void chooseEstimatorFor(vk::Context& ctx, const GpuScene& gpuScene, const Render
   learned.roulette = out.choice->roulette;
   if (settings.estimator.splitsPaths() && settings.integrator != Integrator::Wavefront)
     settings.integrator = out.integrator = Integrator::Wavefront;
-  for (const RenderStats& s : out.choice->stats) {
-    state.stats.cameraRays += s.cameraRays, state.stats.extensionRays += s.extensionRays;
-    state.stats.shadowRays += s.shadowRays, state.stats.primaryRays += s.primaryRays;
-    state.stats.gpuSeconds += s.gpuSeconds, state.stats.passes += s.passes;
-    state.stats.maxBounces = std::max(state.stats.maxBounces, s.maxBounces);
-  }
+  for (const RenderStats& s : out.choice->stats) addPilotStats(state.stats, s);
 }
 
 // Periodic checkpoints (rank 0's). One that cannot be written (a full disk) leaves the last one intact and the
@@ -447,8 +454,14 @@ void renderAfterPilots(PathRenderer& renderer, RenderState& state, const RenderC
   renderer.render(state, control);
   const Film rest = state.image();
   std::vector<double> weight(rest.pixels());
-  for (size_t p = 0; p < rest.pixels(); ++p)
-    weight[p] = roundWeight(earlier.film.weightSoFar(p), double(rest.count[p]), 0.0, true);
+  for (size_t p = 0; p < rest.pixels(); ++p) {
+    // A pixel whose every replicate has a sample takes the weight the pilots left; one the rest did not reach in
+    // every replicate (a budget that ended inside the first pass) keeps the pilots' alone, normalized (a replicate
+    // without samples would add 0 at the round's full weight).
+    bool everyReplicate = true;
+    for (uint32_t r = 0; r < rest.replicates; ++r) everyReplicate &= rest.replicateCount[p * gpu::kMaxSampleReplicates + r] > 0;
+    weight[p] = everyReplicate ? roundWeight(earlier.film.weightSoFar(p), double(rest.count[p]), 0.0, true) : 0.0;
+  }
   earlier.film.addRound(rest, weight);
   state.film = earlier.film.image();
   state.batch.clear(), state.batchSamples = 0;

@@ -13,8 +13,8 @@ std::vector<SearchStep> estimatorSearchSteps(const std::set<std::string>& pinned
     if (!pinned.count(key)) steps.push_back({key, std::move(values)});
   };
   // Splitting first: it changes a sample's variance most, and what MIS and roulette weigh against it.
-  if (scene.lights) add("light_samples", {2, 4});
-  add("bsdf_samples", {2, 4});
+  if (scene.lights && scene.floatAtomics) add("light_samples", {2, 4});
+  if (scene.floatAtomics) add("bsdf_samples", {2, 4});
   if (scene.lights) add("mis", {double(MisHeuristic::Balance)});
   if (scene.emissiveTriangles) add("light_sampling", {double(LightSampling::SolidAngle)});
   add("rr", {double(RouletteMode::Efficiency)});

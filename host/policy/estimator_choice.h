@@ -25,10 +25,12 @@ struct SearchStep {
 struct SearchScene {
   bool emissiveTriangles = false;  // light_sampling's solid angle differs from area sampling only on triangles
   bool lights = true;              // next-event estimation has something to sample (light_samples, mis)
+  bool floatAtomics = true;        // the device adds split paths' and extra light samples' contributions
 };
 
 // The keys searched, in order: light_samples {2, 4}, bsdf_samples {2, 4}, mis balance, light_sampling solid-angle,
-// rr efficiency (the per-depth pilot); keys in `pinned` (the user's flags) are left out.
+// rr efficiency (the per-depth pilot); keys in `pinned` (the user's flags) are left out, and splitting where the
+// device has no float atomics.
 std::vector<SearchStep> estimatorSearchSteps(const std::set<std::string>& pinned, const SearchScene& scene);
 
 // A candidate's pilot over the subset's pixels (`PilotPixels`, the same for every candidate): each pixel's mean and

@@ -104,7 +104,9 @@ SampleRoundsOutcome renderSampleRounds(PathRenderer& renderer, RenderState& stat
   SampleRoundsOutcome out;
   const auto start = Clock::now();
   const bool progress = settings.progress && isatty(STDERR_FILENO);
-  uint32_t done = earlier ? uint32_t(std::lround(earlier->spp)) : 0;
+  // The render's own rounds are sized from its own samples (the earlier rounds come on top of plan.spp, their
+  // weights already taken), the first of them uniform: the earlier rounds covered a subset of the pixels.
+  uint32_t done = 0, ownRounds = 0;
   if (combined.rounds() > 0) out.relMse = estimateRelMse(combined.image(), kRelMseEpsilon);
   double secondsPerSpp = 0.0;
   while (true) {
@@ -114,7 +116,7 @@ SampleRoundsOutcome renderSampleRounds(PathRenderer& renderer, RenderState& stat
     if (spp == 0) break;
     const uint64_t budget = uint64_t(spp) * pixels;
     std::vector<uint32_t> counts(pixels, spp);
-    if (plan.adaptive && combined.rounds() > 0)
+    if (plan.adaptive && ownRounds > 0)
       counts =
           allocateSamples(smoothedRelativeVariance(combined.means(), combined.sampleVariances(), width, height, kRelMseEpsilon),
                           combined.costs(), budget, AllocationLimits{replicates, replicates});
@@ -128,7 +130,7 @@ SampleRoundsOutcome renderSampleRounds(PathRenderer& renderer, RenderState& stat
     secondsPerSpp = since(roundStart) / spp;
     const double later = plannedLaterSpp(plan, done, spp, out.relMse, plan.timeBudget - since(start), secondsPerSpp);
     combined.addRound(round, roundWeights(combined, counts, spp, later));
-    if (combined.rounds() == 1) out.firstRoundSpp = spp;
+    if (++ownRounds == 1) out.firstRoundSpp = spp;
     done += spp;
     const Film image = combined.image();
     out.relMse = estimateRelMse(image, kRelMseEpsilon);
@@ -150,7 +152,7 @@ SampleRoundsOutcome renderSampleRounds(PathRenderer& renderer, RenderState& stat
     out.maxPixelSamples = *std::max_element(run.nextSample.begin(), run.nextSample.end());
   }
   stats.seconds = before.seconds + since(start);
-  stats.samplesPerPixel = done;
+  stats.samplesPerPixel = done + (earlier ? uint32_t(std::lround(earlier->spp)) : 0u);
   renderer.finishStats(stats, before);
   return out;
 }

@@ -57,6 +57,15 @@ TEST(EstimatorAuto, FurnaceMatchesTheAnalyticValueUnderAdaptiveRounds) {
   EXPECT_TRUE(regionMatches(whole(r.film), glm::dvec3(2.0), 5.0));
 }
 
+// A small image at a few samples: the pilots cover most of it at 16 a pixel, and the rounds after them must still
+// reach every pixel (sized from their own samples, the first uniform).
+TEST(EstimatorAuto, EveryPixelIsRenderedUnderAdaptiveRoundsAtAFewSamples) {
+  const RenderOutcome r = renderAuto("cornell_box.gltf", 64, 64, 64, 43, {}, {}, true);
+  ASSERT_TRUE(r.choice && r.rounds);
+  EXPECT_GE(r.rounds->minPixelSamples, r.estimator.replicates);
+  for (size_t p = 0; p < r.film.pixels(); ++p) ASSERT_GT(r.film.count[p], 0u) << "pixel " << p;
+}
+
 TEST(EstimatorAuto, CornellBoxMatchesAUniformRenderAndReportsItsSpread) {
   const RenderOutcome uniform = renderWith("cornell_box.gltf", EstimatorConfig{}, 32, 32, 512, 999);
   const RenderOutcome chosen = renderAuto("cornell_box.gltf", 32, 32, 256, 37);

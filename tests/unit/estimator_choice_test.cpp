@@ -48,6 +48,11 @@ TEST(EstimatorChoice, SearchesTheKeysTheUserLeftAndTheSceneCanUse) {
   EXPECT_FALSE(hasKey(dark, "light_samples"));
   EXPECT_FALSE(hasKey(dark, "mis"));
   EXPECT_TRUE(hasKey(dark, "bsdf_samples"));
+  // Splitting adds its contributions with float atomics: a device without them is not offered it.
+  const std::vector<SearchStep> noAtomics = estimatorSearchSteps({}, SearchScene{true, true, false});
+  EXPECT_FALSE(hasKey(noAtomics, "light_samples"));
+  EXPECT_FALSE(hasKey(noAtomics, "bsdf_samples"));
+  EXPECT_TRUE(hasKey(noAtomics, "mis"));
 }
 
 TEST(EstimatorChoice, ReadsEfficiencyAsInverseRelativeVarianceTimesCost) {
