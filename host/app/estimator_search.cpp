@@ -135,8 +135,7 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
                                 const std::set<std::string>& pinned, double timeBudget, RoundFilm& film) {
   EstimatorChoice out;
   const SceneFeatures& f = settings.features;
-  const std::vector<SearchStep> steps =
-      estimatorSearchSteps(pinned, SearchScene{f.emitters(), f.lights(), ctx.hasFloatAtomics()});
+  const std::vector<SearchStep> steps = estimatorSearchSteps(pinned, SearchScene{f.lights(), ctx.hasFloatAtomics()});
   const uint32_t candidates = 1 + uint32_t(steps.size());  // at least one value a key
   const uint32_t imagePixels = settings.width * settings.height;
   const std::vector<uint32_t> order = pixelOrder(imagePixels, settings.seed);

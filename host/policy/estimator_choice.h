@@ -21,15 +21,14 @@ struct SearchStep {
   std::vector<double> values;
 };
 
-// What the scene can use, so the search skips keys that change nothing there.
+// What the scene and the device can use, so the search skips keys that change nothing or cannot run there.
 struct SearchScene {
-  bool emissiveTriangles = false;  // light_sampling's solid angle differs from area sampling only on triangles
-  bool lights = true;              // next-event estimation has something to sample (light_samples, mis)
-  bool floatAtomics = true;        // the device adds split paths' and extra light samples' contributions
+  bool lights = true;        // next-event estimation has something to sample (light_samples, mis)
+  bool floatAtomics = true;  // the device adds split paths' and extra light samples' contributions
 };
 
-// The keys searched, in order: light_samples {2, 4}, bsdf_samples {2, 4}, mis balance, light_sampling solid-angle,
-// rr efficiency (the per-depth pilot); keys in `pinned` (the user's flags) are left out, and splitting where the
+// The keys searched, in order: light_samples {2, 4}, bsdf_samples {2, 4}, mis balance, rr efficiency (the
+// per-depth pilot); keys in `pinned` (the user's flags) are left out, and splitting where the
 // device has no float atomics.
 std::vector<SearchStep> estimatorSearchSteps(const std::set<std::string>& pinned, const SearchScene& scene);
 

@@ -34,22 +34,21 @@ PilotPixels allPixels(uint32_t w, uint32_t h) {
 
 TEST(EstimatorChoice, SearchesTheKeysTheUserLeftAndTheSceneCanUse) {
   const std::vector<SearchStep> all = estimatorSearchSteps({}, SearchScene{true, true});
-  for (const char* key : {"light_samples", "bsdf_samples", "mis", "light_sampling", "rr"}) EXPECT_TRUE(hasKey(all, key)) << key;
+  for (const char* key : {"light_samples", "bsdf_samples", "mis", "rr"}) EXPECT_TRUE(hasKey(all, key)) << key;
+  EXPECT_FALSE(hasKey(all, "light_sampling"));  // solid-angle sampling reads the furnace 0.18% low: not offered
   // Splitting first: what MIS and roulette weigh depends on it.
   EXPECT_EQ(all.front().key, "light_samples");
   const std::vector<SearchStep> pinned = estimatorSearchSteps({"light_samples", "rr"}, SearchScene{true, true});
   EXPECT_FALSE(hasKey(pinned, "light_samples"));
   EXPECT_FALSE(hasKey(pinned, "rr"));
   EXPECT_TRUE(hasKey(pinned, "bsdf_samples"));
-  // Solid-angle sampling differs from area sampling on emissive triangles only; without lights next-event
-  // estimation has nothing to sample, so its keys change nothing.
-  EXPECT_FALSE(hasKey(estimatorSearchSteps({}, SearchScene{false, true}), "light_sampling"));
-  const std::vector<SearchStep> dark = estimatorSearchSteps({}, SearchScene{false, false});
+  // Without lights next-event estimation has nothing to sample, so its keys change nothing.
+  const std::vector<SearchStep> dark = estimatorSearchSteps({}, SearchScene{false, true});
   EXPECT_FALSE(hasKey(dark, "light_samples"));
   EXPECT_FALSE(hasKey(dark, "mis"));
   EXPECT_TRUE(hasKey(dark, "bsdf_samples"));
   // Splitting adds its contributions with float atomics: a device without them is not offered it.
-  const std::vector<SearchStep> noAtomics = estimatorSearchSteps({}, SearchScene{true, true, false});
+  const std::vector<SearchStep> noAtomics = estimatorSearchSteps({}, SearchScene{true, false});
   EXPECT_FALSE(hasKey(noAtomics, "light_samples"));
   EXPECT_FALSE(hasKey(noAtomics, "bsdf_samples"));
   EXPECT_TRUE(hasKey(noAtomics, "mis"));
