@@ -6,6 +6,7 @@
 #include <string>
 
 #include <algorithm>
+#include <cmath>
 #include <initializer_list>
 #include <vector>
 
@@ -137,6 +138,24 @@ inline ::testing::AssertionResult regionsAgree(const RegionStats& a, const Regio
 }
 inline ::testing::AssertionResult regionMatches(const RegionStats& a, glm::dvec3 exact, double k) {
   return allBelowSigmas(channelZTests(a, exact), k);
+}
+
+// Per pixel E[(a - u)^2] = Var(a) + Var(u) where both films' variances are honest: the mean over pixels and
+// channels of d = (a - u)^2 - (V_a + V_u) is 0 within k of its own standard errors.
+inline ::testing::AssertionResult variancesAreHonest(const Film& a, const Film& u, double k) {
+  std::vector<double> d;
+  for (size_t p = 0; p < a.pixels(); ++p)
+    for (int c = 0; c < 3; ++c) {
+      const double diff = a.mean(p, c) - u.mean(p, c);
+      d.push_back(diff * diff - a.varianceOfMean(p, c) - u.varianceOfMean(p, c));
+    }
+  double mean = 0.0, ss = 0.0;
+  for (double x : d) mean += x;
+  mean /= double(d.size());
+  for (double x : d) ss += (x - mean) * (x - mean);
+  const double se = std::sqrt(ss / double(d.size() - 1) / double(d.size()));
+  if (std::abs(mean) < k * se) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "mean of (a - u)^2 - V_a - V_u: " << mean << " +- " << se;
 }
 
 }  // namespace vkmc::test
