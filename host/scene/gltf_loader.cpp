@@ -25,10 +25,9 @@
 #include "scene/gltf_decompress.h"
 #include "scene/gltf_extensions.h"
 #include "scene/gltf_lights.h"
-#include "scene/gltf_material_extensions.h"
+#include "scene/gltf_material.h"
 #include "scene/gltf_primitive.h"
 #include "scene/gltf_textures.h"
-#include "scene/spec_gloss.h"
 #include "scene/tangent_space.h"
 
 namespace vkmc {
@@ -62,68 +61,6 @@ glm::mat4 localTransform(const tinygltf::Node& node) {
   }
   if (node.scale.size() == 3) m = glm::scale(m, glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
   return m;
-}
-
-double extensionNumber(const tinygltf::ExtensionMap& ext, const char* extension, const char* key, double fallback) {
-  auto it = ext.find(extension);
-  if (it == ext.end() || !it->second.Has(key)) return fallback;
-  const tinygltf::Value& v = it->second.Get(key);
-  return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
-}
-
-// KHR_materials_unlit as an emission shader (what Blender's importer makes of it): the surface shows its base
-// colour, baseColorFactor x baseColorTexture, as emitted radiance, reflects nothing, and like any emitter lights
-// its surroundings. Its alpha (factor and texture) still applies.
-void makeUnlit(Material& m) {
-  m.emission = m.baseColor;
-  m.emissiveTexture = m.baseColorTexture;
-  m.baseColor = glm::vec3(0.0f);
-  m.metallic = 0.0f;
-  m.specular = 0.0f;
-  m.normalTexture = TextureRef{};
-  m.metallicRoughnessTexture = TextureRef{};
-  m.transmission = 0.0f;
-  m.clearcoat = 0.0f;
-  m.sheenColor = glm::vec3(0.0f);
-}
-
-// `textures`: the file's; textures baked for the material (specular-glossiness) go to `baked`.
-Material convertMaterial(const tinygltf::Material& m, int index, const std::vector<Texture>& textures,
-                         std::vector<Texture>& baked, std::vector<std::string>& warnings) {
-  Material out;
-  const auto& pbr = m.pbrMetallicRoughness;
-  std::string name = "material " + std::to_string(index);
-  if (pbr.baseColorFactor.size() == 4) {
-    out.baseColor = glm::vec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]);
-    out.alpha = static_cast<float>(pbr.baseColorFactor[3]);
-  }
-  out.metallic = static_cast<float>(pbr.metallicFactor);
-  out.roughness = static_cast<float>(pbr.roughnessFactor);
-  if (m.emissiveFactor.size() == 3) out.emission = glm::vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
-  double strength = extensionNumber(m.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
-  if (!std::isfinite(strength) || strength < 0.0) throw Error(name + ": emissiveStrength is not a finite non-negative number");
-  out.emission *= static_cast<float>(strength);
-  out.doubleSided = m.doubleSided;
-  if (!finite(out.baseColor) || !finite(out.emission) || !std::isfinite(out.alpha) || !std::isfinite(out.metallic) ||
-      !std::isfinite(out.roughness) || !std::isfinite(out.specular))
-    throw Error(name + ": a factor is NaN or infinite");
-  if (glm::any(glm::lessThan(out.emission, glm::vec3(0.0f))) || glm::any(glm::lessThan(out.baseColor, glm::vec3(0.0f))))
-    throw Error(name + ": negative color or emission factor");
-  out.baseColorTexture = convertTextureRef(pbr.baseColorTexture, textures, name + " baseColorTexture", warnings);
-  out.metallicRoughnessTexture =
-      convertTextureRef(pbr.metallicRoughnessTexture, textures, name + " metallicRoughnessTexture", warnings);
-  out.normalTexture = convertTextureRef(m.normalTexture, textures, name + " normalTexture", warnings);
-  out.emissiveTexture = convertTextureRef(m.emissiveTexture, textures, name + " emissiveTexture", warnings);
-  // occlusionTexture is for rasterizers' ambient-occlusion approximations; a path tracer computes occlusion.
-  if (m.alphaMode == "MASK") out.alphaMode = AlphaMode::Mask;
-  if (m.alphaMode == "BLEND") out.alphaMode = AlphaMode::Blend;
-  out.alphaCutoff = static_cast<float>(m.alphaCutoff);
-  if (!std::isfinite(out.alphaCutoff)) throw Error(name + ": alphaCutoff is not finite");
-  applyMaterialExtensions(m, out, textures, name, warnings);
-  if (auto sg = m.extensions.find("KHR_materials_pbrSpecularGlossiness"); sg != m.extensions.end() && sg->second.IsObject())
-    applySpecularGlossiness(sg->second, out, textures, baked, name, warnings);
-  if (m.extensions.count("KHR_materials_unlit")) makeUnlit(out);
-  return out;
 }
 
 // Appends one corner's attribute to a scene array that stays empty until some primitive has the attribute; the
