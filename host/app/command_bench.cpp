@@ -23,8 +23,9 @@ Command addBenchCommand(CLI::App& app) {
             std::string dir = a->outDir.empty() ? "bench-" + study.name : a->outDir;
             runStudy(study, dir);
             std::ifstream summary(dir + "/summary.md");
-            std::cout << summary.rdbuf() << "wrote " << dir
-                      << "/{results.csv,results.json,error_vs_time.svg,summary.md,equal_time.png}\n";
+            std::cout << summary.rdbuf() << "wrote " << dir << "/{";
+            for (const char* name : kStudyOutputFiles) std::cout << (name == kStudyOutputFiles[0] ? "" : ",") << name;
+            std::cout << "}\n";
             return 0;
           }};
 }

@@ -74,6 +74,7 @@ Study loadStudy(const std::string& path) {
   s.name = j.value("name", fs::path(path).stem().string());
   if (!j.contains("scene") || !j["scene"].is_string()) throw Error("study: 'scene' (a glTF path) is required");
   s.scenePath = resolve(j["scene"].get<std::string>());
+  s.inputFiles.push_back(path);
   auto count = [&](const char* key, uint32_t fallback, uint32_t lo, uint32_t hi) {
     if (!j.contains(key)) return fallback;
     if (!j[key].is_number_integer() || j[key].get<int64_t>() < lo || j[key].get<int64_t>() > hi)
@@ -95,7 +96,7 @@ Study loadStudy(const std::string& path) {
   if (j.contains("reference")) {
     const auto& r = j["reference"];
     if (r.contains("exr") && r["exr"].is_string())
-      s.referenceExr = resolve(r["exr"].get<std::string>());
+      s.referenceExr = resolve(r["exr"].get<std::string>()), s.inputFiles.push_back(s.referenceExr);
     else if (r.contains("spp") && r["spp"].is_number_integer() && r["spp"].get<int64_t>() >= 1 &&
              r["spp"].get<int64_t>() <= (1 << 20))
       s.referenceSpp = r["spp"].get<uint32_t>();
@@ -110,7 +111,10 @@ Study loadStudy(const std::string& path) {
     if (!c.is_object() || !c.contains("name") || !c["name"].is_string()) throw Error("study: every configuration needs a 'name'");
     StudyConfiguration sc;
     sc.name = c["name"].get<std::string>();
-    if (c.contains("estimator_file")) sc.estimator = loadEstimatorFile(resolve(c["estimator_file"].get<std::string>()));
+    if (c.contains("estimator_file")) {
+      s.inputFiles.push_back(resolve(c["estimator_file"].get<std::string>()));
+      sc.estimator = loadEstimatorFile(s.inputFiles.back());
+    }
     if (c.contains("estimator")) sc.estimator.applyJson(c["estimator"]);
     sc.estimator.validate();
     s.configurations.push_back(sc);
@@ -384,6 +388,11 @@ std::vector<StudyRow> runStudy(const Study& study, const std::string& outDir) {
   std::error_code ec;
   fs::create_directories(outDir, ec);
   if (!fs::is_directory(outDir)) throw Error("cannot create output folder '" + outDir + "'");
+  std::vector<std::string> inputs = gltfInputFiles(study.scenePath);
+  inputs.insert(inputs.end(), study.inputFiles.begin(), study.inputFiles.end());
+  std::vector<std::pair<std::string, std::string>> named;
+  for (const char* name : kStudyOutputFiles) named.push_back({"bench -o", (fs::path(outDir) / name).string()});
+  checkOutputPaths(named, inputs);  // before any render: a study's outputs never overwrite what it reads
   vk::Context ctx;
   Scene scene = loadGltf(study.scenePath, deviceLoadLimits(ctx));
   const StudyReference reference = studyReference(ctx, study, scene);

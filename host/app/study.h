@@ -43,8 +43,13 @@ struct Study {
   bool timeLadder = false;
   uint32_t repeats = 3;
   uint32_t seed = 1;
-  PixelFilter filter;  // "filter": {"name": NAME, "radius": R}, for the reference and every configuration
+  PixelFilter filter;                   // "filter": {"name": NAME, "radius": R}, for the reference and every configuration
+  std::vector<std::string> inputFiles;  // the study file, its estimator files and reference: no output may name one
 };
+
+// The files a study writes into its output folder.
+inline const char* const kStudyOutputFiles[] = {"results.csv", "results.json", "error_vs_time.svg", "summary.md",
+                                                "equal_time.png"};
 
 Study loadStudy(const std::string& path);
 

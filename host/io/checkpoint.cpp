@@ -173,10 +173,24 @@ Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name) {
   return c;
 }
 
+uint64_t largestCheckpointBytes() {
+  constexpr uint64_t kLargestHeaderBytes = uint64_t(1) << 26;  // the configuration and counters: kilobytes in practice
+  uint64_t perPixel = sizeof(gpu::FilmPixel);
+  const Film onePixel(1, 1);
+  forEachArray(onePixel, [&](const auto& v) { perPixel += v.size() * sizeof(v[0]); });
+  return kMagicBytes + 3 * 8 + kLargestHeaderBytes + uint64_t(kMaxImageSide) * kMaxImageSide * perPixel;
+}
+
 Checkpoint readCheckpoint(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw Error("checkpoint '" + path + "' does not exist");
   if (!std::filesystem::is_regular_file(path, ec)) throw Error("checkpoint '" + path + "' is not a regular file");
+  // Sized before it is read: a file larger than any image's checkpoint is not read into memory.
+  const uint64_t bytes = std::filesystem::file_size(path, ec);
+  if (ec) throw Error("cannot read checkpoint '" + path + "': " + ec.message());
+  if (bytes > largestCheckpointBytes())
+    throw Error("checkpoint '" + path + "' is " + std::to_string(bytes) + " bytes, more than any image's checkpoint (" +
+                std::to_string(largestCheckpointBytes()) + ")");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error("cannot open checkpoint '" + path + "'");
   std::ostringstream buffer;

@@ -24,7 +24,9 @@ struct Checkpoint {
 std::string encodeCheckpoint(const Checkpoint& checkpoint);
 // Throws vkmc::Error naming `name` when the bytes are not a whole, intact checkpoint of this format version.
 Checkpoint decodeCheckpoint(const std::string& bytes, const std::string& name);
+// Refuses a file larger than largestCheckpointBytes() before reading it.
 Checkpoint readCheckpoint(const std::string& path);
+uint64_t largestCheckpointBytes();
 // Whether the file at `path` starts as a vkmc checkpoint does (its magic): a path holding anything else is not
 // vkmc's to overwrite or remove.
 bool startsLikeCheckpoint(const std::string& path);

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
@@ -336,4 +337,19 @@ TEST(CliOutputs, AnOutputNamingTheScenesBufferIsRefused) {
     EXPECT_EQ(slurp(bin), before) << flag;
   }
   EXPECT_FALSE(fs::exists(d / "out.exr"));
+}
+
+// A study's outputs never overwrite what it reads: here the study file itself is named as one of them.
+TEST(CliOutputs, AStudyWhoseOutputIsItsOwnFileIsRefused) {
+  const fs::path d = dir() / "own_study";
+  fs::create_directories(d);
+  writeGltf(d, "quad", quadSpec());
+  const std::string study = (d / "results.json").string();
+  const std::string text = R"({"scene":"quad.gltf","spp":[1],"configurations":[{"name":"defaults"}]})";
+  { std::ofstream(study) << text; }
+  RunResult r = runVkmc("bench " + study + " -o " + d.string());
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("is an input of this command"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(study), text);
+  EXPECT_FALSE(fs::exists(d / "summary.md"));
 }

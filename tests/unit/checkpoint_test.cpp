@@ -6,6 +6,8 @@
 #include <unistd.h>
 
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "error.h"
@@ -167,4 +169,21 @@ TEST(Checkpoint, AbsurdHeadersAreRefusedBeforeAllocation) {
   std::string deep = marked.dump();
   deep.replace(deep.find("\"DEEP\""), 6, std::string(100000, '[') + std::string(100000, ']'));
   EXPECT_NE(refusal(sealed(deep, payload)).find("nested deeper than"), std::string::npos);
+}
+
+// A file larger than any image's checkpoint is refused from its size, before a byte is read (a sparse file: it
+// takes no disk).
+TEST(Checkpoint, AFileLargerThanAnyCheckpointIsRefusedUnread) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("vkmc_huge_checkpoint_" + std::to_string(getpid()));
+  { std::ofstream(path, std::ios::binary) << "VKMC-CHECKPOINT\n"; }
+  std::filesystem::resize_file(path, largestCheckpointBytes() + 1);
+  std::string error;
+  try {
+    readCheckpoint(path.string());
+  } catch (const Error& e) {
+    error = e.what();
+  }
+  std::filesystem::remove(path);
+  EXPECT_NE(error.find("more than any image's checkpoint"), std::string::npos) << error;
 }
