@@ -64,6 +64,47 @@ TextureRef convertRef(int index, int texCoord, const tinygltf::ExtensionMap& ext
   return ref;
 }
 
+// A texture's image sources, preferred first: EXT_texture_webp's, KHR_texture_basisu's, then the core `source`
+// (the extensions' fallback, as their specs say).
+std::vector<int> sourcesOf(const tinygltf::Texture& t) {
+  std::vector<int> sources;
+  for (const char* extension : {"EXT_texture_webp", "KHR_texture_basisu"}) {
+    auto it = t.extensions.find(extension);
+    if (it != t.extensions.end() && it->second.IsObject() && it->second.Get("source").IsInt())
+      sources.push_back(it->second.Get("source").GetNumberAsInt());
+  }
+  if (t.source >= 0) sources.push_back(t.source);
+  return sources;
+}
+
+bool decoded(const std::vector<tinygltf::Image>& images, int source) {
+  return source >= 0 && source < static_cast<int>(images.size()) && !images[source].image.empty() &&
+         images[source].component == 4 && images[source].bits == 8;
+}
+
+int chosenSource(const tinygltf::Texture& t, const std::vector<tinygltf::Image>& images) {
+  for (int source : sourcesOf(t))
+    if (decoded(images, source)) return source;
+  return -1;
+}
+
+// Names what a texture without a decoded image pointed at: each image by index and file, the common cause being
+// a missing file (the decoder's own reason is in the image warnings).
+std::string sourcesTried(const tinygltf::Texture& t, const std::vector<tinygltf::Image>& images) {
+  std::string tried;
+  for (int source : sourcesOf(t)) {
+    tried += tried.empty() ? "" : ", ";
+    if (source < 0 || source >= static_cast<int>(images.size())) {
+      tried += "image " + std::to_string(source) + " does not exist";
+      continue;
+    }
+    const std::string& uri = images[source].uri;
+    const bool file = !uri.empty() && uri.rfind("data:", 0) != 0;
+    tried += "image " + std::to_string(source) + (file ? " '" + uri + "'" : "");
+  }
+  return tried.empty() ? "it names no image" : tried;
+}
+
 }  // namespace
 
 bool decodeGltfImage(tinygltf::Image* image, const int imageIndex, std::string*, std::string*, int, int,
@@ -103,23 +144,16 @@ std::vector<Texture> convertTextures(const tinygltf::Model& model, std::vector<s
       tex.wrapT = wrapOf(s.wrapT);
       tex.nearest = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
     }
-    int source = t.source;
-    if (source >= 0 && source < static_cast<int>(model.images.size()) && !model.images[source].image.empty() &&
-        model.images[source].component == 4 && model.images[source].bits == 8) {
+    const int source = chosenSource(t, model.images);
+    if (source >= 0) {
       const tinygltf::Image& img = model.images[source];
       tex.width = static_cast<uint32_t>(img.width);
       tex.height = static_cast<uint32_t>(img.height);
       tex.texels.resize(size_t(tex.width) * tex.height);
       std::memcpy(tex.texels.data(), img.image.data(), tex.texels.size() * 4);
     } else {
-      // Name the file where there is one: a missing or unreadable file is the common cause.
-      const bool hasFile = source >= 0 && source < static_cast<int>(model.images.size()) && !model.images[source].uri.empty() &&
-                           model.images[source].uri.rfind("data:", 0) != 0;
-      warnings.push_back(
-          "texture " + std::to_string(i) + (t.name.empty() ? "" : " (" + t.name + ")") +
-          (hasFile ? ": its image '" + model.images[source].uri + "' could not be read (missing, or neither PNG nor JPEG)"
-                   : " has no image vkmc can decode (PNG and JPEG are read)") +
-          ": ignored");
+      warnings.push_back("texture " + std::to_string(i) + (t.name.empty() ? "" : " (" + t.name + ")") +
+                         " has no image vkmc could decode (" + sourcesTried(t, model.images) + "): ignored");
     }
     out.push_back(std::move(tex));
   }

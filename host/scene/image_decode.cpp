@@ -1,7 +1,8 @@
-// PNG and JPEG decoding (see the header).
+// PNG, JPEG and WebP decoding (see the header).
 #include "scene/image_decode.h"
 
 #include <png.h>
+#include <webp/decode.h>
 // clang-format off
 #include <cstdio>  // jpeglib.h needs FILE and size_t first
 #include <jpeglib.h>
@@ -99,11 +100,25 @@ bool decodeJpegInto(const unsigned char* bytes, size_t size, uint32_t maxSide, u
   return warnings == 0;
 }
 
+DecodedImage decodeWebp(const unsigned char* bytes, size_t size, uint32_t maxSide, uint64_t maxTexels) {
+  WebPBitstreamFeatures features;
+  if (WebPGetFeatures(bytes, size, &features) != VP8_STATUS_OK) throw Error("not a valid WebP (its header is malformed)");
+  if (features.has_animation) throw Error("an animated WebP (a texture is one still image)");
+  checkSize(uint32_t(features.width), uint32_t(features.height), maxSide, maxTexels);
+  DecodedImage out;
+  out.width = uint32_t(features.width), out.height = uint32_t(features.height);
+  out.rgba.resize(size_t(out.width) * out.height * 4);
+  if (!WebPDecodeRGBAInto(bytes, size, out.rgba.data(), out.rgba.size(), int(out.width) * 4))
+    throw Error("a corrupt or truncated WebP");
+  return out;
+}
+
 }  // namespace
 
 ImageFormat imageFormatOf(const unsigned char* bytes, size_t size) {
   if (size >= 8 && std::memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0) return ImageFormat::Png;
   if (size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF) return ImageFormat::Jpeg;
+  if (size >= 12 && std::memcmp(bytes, "RIFF", 4) == 0 && std::memcmp(bytes + 8, "WEBP", 4) == 0) return ImageFormat::WebP;
   return ImageFormat::Other;
 }
 
@@ -117,9 +132,10 @@ DecodedImage decodeImage(const unsigned char* bytes, size_t size, uint32_t maxSi
       if (why.empty()) checkSize(out.width, out.height, maxSide, maxTexels);  // refused by its size: say which
       throw Error(why);
     }
+    case ImageFormat::WebP: return decodeWebp(bytes, size, maxSide, maxTexels);
     case ImageFormat::Other: break;
   }
-  throw Error("neither PNG nor JPEG (the image formats vkmc reads)");
+  throw Error("not PNG, JPEG or WebP (the image formats vkmc reads)");
 }
 
 }  // namespace vkmc

@@ -1,5 +1,5 @@
-// PNG and JPEG decoding through Debian's maintained libraries (libpng's simplified API, libjpeg-turbo), for glTF
-// textures. The header is read first, so a size past the caller's limit is refused before the pixels are
+// PNG, JPEG and WebP decoding through Debian's maintained libraries (libpng's simplified API, libjpeg-turbo,
+// libwebp), for glTF textures. The header is read first, so a size past the caller's limit is refused before the pixels are
 // allocated; a truncated or corrupt file is refused (a libjpeg warning counts: it would fill the rest with grey).
 // stb_image is not used: Debian's 2.27 writes past a Huffman table on a crafted JPEG (found by image_fuzzer).
 #pragma once
@@ -9,7 +9,7 @@
 
 namespace vkmc {
 
-enum class ImageFormat { Png, Jpeg, Other };
+enum class ImageFormat { Png, Jpeg, WebP, Other };
 ImageFormat imageFormatOf(const unsigned char* bytes, size_t size);  // by the file's signature
 
 struct DecodedImage {
@@ -17,8 +17,8 @@ struct DecodedImage {
   std::vector<uint8_t> rgba;  // width * height * 4, top row first
 };
 
-// Throws vkmc::Error with the reason (not naming the image: the caller does) when the bytes are not a whole PNG or
-// JPEG, or when a side exceeds maxSide or the texels exceed maxTexels.
+// Throws vkmc::Error with the reason (not naming the image: the caller does) when the bytes are not a whole PNG,
+// JPEG or still WebP, or when a side exceeds maxSide or the texels exceed maxTexels.
 DecodedImage decodeImage(const unsigned char* bytes, size_t size, uint32_t maxSide, uint64_t maxTexels);
 
 }  // namespace vkmc

@@ -131,7 +131,7 @@ TEST(CliCheckpoint, ForeignCorruptAndMismatchedCheckpointsAreRefusedWithOneLine)
   waitpid(pid, &status, 0);
   ASSERT_TRUE(fs::exists(ck2)) << "a stopped render keeps its checkpoint";
   std::string gltf = slurp(d / "scene/cornell_box.gltf");
-  size_t at = gltf.find("\"emissiveFactor\"");
+  size_t at = gltf.find("\"emissiveStrength\"");
   ASSERT_NE(at, std::string::npos);
   size_t digit = gltf.find_first_of("123456789", at);
   gltf[digit] = gltf[digit] == '9' ? '8' : char(gltf[digit] + 1);

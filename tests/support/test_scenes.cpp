@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include <stb/stb_image_write.h>
+#include <webp/encode.h>
 
 #include "error.h"
 
@@ -124,6 +125,17 @@ std::string writeQuadsGltf(const std::filesystem::path& dir, const std::string& 
 std::string writePng(const std::filesystem::path& dir, const std::string& name, int w, int h, const std::vector<uint8_t>& rgba) {
   std::string file = name + ".png";
   if (!stbi_write_png((dir / file).c_str(), w, h, 4, rgba.data(), w * 4)) throw Error("cannot write test PNG " + file);
+  return file;
+}
+
+std::string writeWebp(const std::filesystem::path& dir, const std::string& name, int w, int h, const std::vector<uint8_t>& rgba) {
+  uint8_t* encoded = nullptr;
+  const size_t size = WebPEncodeLosslessRGBA(rgba.data(), w, h, w * 4, &encoded);
+  std::string file = name + ".webp";
+  std::ofstream out(dir / file, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(encoded), std::streamsize(size));
+  WebPFree(encoded);
+  if (size == 0 || !out) throw Error("cannot write test WebP " + file);
   return file;
 }
 

@@ -39,6 +39,8 @@ std::string writeQuadsGltf(const std::filesystem::path& dir, const std::string& 
 
 // Writes an RGBA8 PNG (w x h, rows from the top) and returns its file name within dir.
 std::string writePng(const std::filesystem::path& dir, const std::string& name, int w, int h, const std::vector<uint8_t>& rgba);
+// A lossless WebP (libwebp's encoder): texels with non-zero alpha decode exactly.
+std::string writeWebp(const std::filesystem::path& dir, const std::string& name, int w, int h, const std::vector<uint8_t>& rgba);
 
 // The one-line error loading `path` gives ("" when it loads); a message of more than one line fails the test.
 std::string loadError(const std::string& path, const LoadLimits& limits = {});

@@ -3,7 +3,9 @@
 // textured emitters weighted by their mean emission.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 
 #include "scene/gltf_loader.h"
@@ -84,17 +86,18 @@ TEST(GltfTextures, AMissingImageFileIsNamed) {
   EXPECT_FALSE(s.materials[0].baseColorTexture.present());
 }
 
-// Only PNG and JPEG, by their signatures: a Radiance .hdr, a GIF or a BMP as a texture is ignored with a warning,
-// never handed to another decoder (stb_image's HDR decoder, which the loader once reached, looped forever on a cut file).
-TEST(GltfTextures, ImagesOtherThanPngAndJpegAreIgnoredWithAWarning) {
+// Only PNG, JPEG and WebP, by their signatures: a Radiance .hdr, a GIF or a BMP as a texture is ignored with a
+// warning, never handed to another decoder (stb_image's HDR decoder, which the loader once reached, looped forever
+// on a cut file).
+TEST(GltfTextures, ImagesOtherThanPngJpegAndWebpAreIgnoredWithAWarning) {
   auto dir = test::makeTempDir("textures_formats");
   std::ofstream(dir / "sky.hdr", std::ios::binary) << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 64 +X 64\n" << char(2) << char(2);
   std::ofstream(dir / "anim.gif", std::ios::binary) << "GIF89a" << std::string(32, '\0');
   std::string material = R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}},"emissiveTexture":{"index":1}})";
   std::string extra = R"("images":[{"uri":"sky.hdr"},{"uri":"anim.gif"}],"textures":[{"source":0},{"source":1}])";
   Scene s = loadGltf(test::writeQuadsGltf(dir, "formats", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
-  EXPECT_TRUE(anyWarningHas(s, "image 0: neither PNG nor JPEG"));
-  EXPECT_TRUE(anyWarningHas(s, "image 1: neither PNG nor JPEG"));
+  EXPECT_TRUE(anyWarningHas(s, "image 0: not PNG, JPEG or WebP"));
+  EXPECT_TRUE(anyWarningHas(s, "image 1: not PNG, JPEG or WebP"));
   EXPECT_FALSE(s.materials[0].baseColorTexture.present());
 }
 
@@ -115,7 +118,8 @@ TEST(GltfTextures, ATexturedEmitterIsWeightedByItsMeanEmission) {
   // Left half of the texture black, right half white (sRGB 255 = 1): the quad's mean emission is half its factor.
   auto dir = test::makeTempDir("textures");
   std::string png = test::writePng(dir, "half", 2, 1, {0, 0, 0, 255, 255, 255, 255, 255});
-  std::string material = R"({"emissiveFactor":[4,4,4],"emissiveTexture":{"index":0}})";
+  std::string material =
+      R"({"emissiveFactor":[1,1,1],"emissiveTexture":{"index":0},"extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":4}}})";
   std::string extra = R"("images":[{"uri":")" + png + R"("}],"samplers":[{"magFilter":9728}],
     "textures":[{"source":0,"sampler":0}])";
   Scene s = loadGltf(test::writeQuadsGltf(dir, "glow", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
@@ -123,4 +127,33 @@ TEST(GltfTextures, ATexturedEmitterIsWeightedByItsMeanEmission) {
   for (size_t t = 0; t < s.triangleCount(); ++t) mean += averageEmission(s, t).x / double(s.triangleCount());
   EXPECT_NEAR(mean, 2.0, 0.26);  // the 64-point pattern per triangle: within its quadrature error of 4 x 1/2
   EXPECT_GT(mean, 0.0);
+}
+
+// EXT_texture_webp: the WebP source is preferred, the core source is its fallback, and a WebP as the core source is
+// read too (glTF-Transform, gltfjsx and Godot write WebP). Lossless WebP decodes to the exact texels.
+TEST(GltfTextures, WebpTexturesAreReadWithTheirFallback) {
+  auto dir = test::makeTempDir("textures_webp");
+  const std::vector<uint8_t> texels = {10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 110, 120, 130, 140, 150, 160};
+  std::string webp = test::writeWebp(dir, "img", 2, 2, texels);
+  std::string png = test::writePng(dir, "fallback", 1, 1, {1, 2, 3, 255});
+  const char broken[] = "RIFF\x10\0\0\0WEBPVP8 junk";  // a WebP's signature, then no valid chunk
+  std::ofstream(dir / "broken.webp", std::ios::binary).write(broken, sizeof(broken) - 1);
+  std::string material = R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}},"emissiveTexture":{"index":1},
+      "normalTexture":{"index":2}})";
+  std::string extra = R"("extensionsUsed":["EXT_texture_webp"],"images":[{"uri":")" + webp + R"("},{"uri":")" + png +
+                      R"("},{"uri":"broken.webp"}],"textures":[{"source":1,"extensions":{"EXT_texture_webp":{"source":0}}},
+      {"source":1,"extensions":{"EXT_texture_webp":{"source":2}}},{"source":0}])";
+  Scene s = loadGltf(test::writeQuadsGltf(dir, "webp", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
+  ASSERT_EQ(s.textures.size(), 3u);
+  ASSERT_EQ(s.textures[0].width, 2u);
+  EXPECT_EQ(std::memcmp(s.textures[0].texels.data(), texels.data(), texels.size()), 0) << "the WebP, not the fallback";
+  ASSERT_EQ(s.textures[1].width, 1u) << "an undecodable WebP falls back to the core source";
+  const uint8_t fallback[4] = {1, 2, 3, 255};
+  EXPECT_EQ(std::memcmp(s.textures[1].texels.data(), fallback, 4), 0);
+  EXPECT_TRUE(anyWarningHas(s, "image 2: not a valid WebP"));
+  EXPECT_EQ(s.textures[2].width, 2u) << "a WebP as the core source";
+  EXPECT_TRUE(s.warnings.end() ==
+              std::find_if(s.warnings.begin(), s.warnings.end(),
+                           [](const std::string& w) { return w.find("EXT_texture_webp") != std::string::npos; }))
+      << "EXT_texture_webp is implemented: no warning";
 }
