@@ -6,8 +6,8 @@
 #   bash tools/fuzz.sh runs N                     every harness N executions (the figure in docs/results.md)
 #   bash tools/fuzz.sh build                      only builds the harnesses (tools/test.sh does, so a run is a run)
 # First it replays tests/fuzz/regressions/ (crafted files that once crashed or over-read) under the sanitizers.
-# The glTF corpus is seeded from scenes/, ../shared/scenes (files up to 1 MB, with their .bin files beside them)
-# and the regressions; the readers' from tools/fuzz/make_seeds.py, small images of the scenes and a small EXR.
+# The glTF corpus is seeded from scenes/, ../shared/scenes (files up to 1 MB, with their .bin files beside them),
+# the regressions and tools/fuzz/make_gltf_seeds.cpp (Draco, meshopt, embedded PNG, JPEG and WebP); the readers' from tools/fuzz/make_seeds.py, small images of the scenes and a small EXR.
 # Corpora stay in build/fuzz/corpus-HARNESS between runs; findings go to build/fuzz/findings/. A hang is an input
 # that used more than its CPU time (tools/fuzz/cpu_timeout.h), so a busy machine gives no false timeouts.
 # Exits 77 (skipped) when clang or its libFuzzer runtime is missing, non-zero on a finding.
@@ -36,6 +36,8 @@ for f in scenes/*.gltf scenes/*/*.gltf scenes/*.bin scenes/*/*.bin ../shared/sce
   case $f in *.bin) cp "$f" "$out/seeds/";; *) cp "$f" "$out/seeds/$(basename "$(dirname "$f")")-$(basename "$f")";; esac
 done
 cp tests/fuzz/regressions/*.gltf tests/fuzz/regressions/*.glb "$out/seeds/"
+# Draco, meshopt and embedded PNG, JPEG and WebP images (tools/fuzz/make_gltf_seeds.cpp, built with the tests).
+if [[ -x build/vkmc-fuzz-seeds ]]; then build/vkmc-fuzz-seeds "$out/seeds" "$out/reader-seeds/image_fuzzer"; else echo "fuzz: build/vkmc-fuzz-seeds not built: no Draco, meshopt or embedded-image seeds"; fi
 export VKMC_FUZZ_BASEDIR=$PWD/$out/seeds
 export ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
@@ -46,7 +48,7 @@ common=(-timeout=600 -rss_limit_mb=4096 -malloc_limit_mb=2048 -artifact_prefix="
 "$out/image_fuzzer" tests/fuzz/regressions/images/* 2>&1 | tail -n 1
 echo "fuzz: gltf_fuzzer"
 "$out/gltf_fuzzer" "$out/corpus-gltf" "$out/seeds" "${budget[@]}" -max_len=65536 "${common[@]}" "$@" 2>&1 | tail -n 25
-# The readers: seeds of their own.
+# The readers: seeds of their own (the image harness's PNG, JPEG and WebP from vkmc-fuzz-seeds above).
 python3 tools/fuzz/make_seeds.py "$out/reader-seeds"
 mkdir -p "$out/reader-seeds/exr_fuzzer"
 find scenes ../shared/scenes -maxdepth 3 \( -name '*.png' -o -name '*.jpg' \) -size -256k 2>/dev/null | head -n 8 |

@@ -10,11 +10,13 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 
 #include "error.h"
+#include "io/exr_header_check.h"
 #include "io/output_files.h"
 
 namespace vkmc {
@@ -83,6 +85,7 @@ void writeFilmExr(const std::string& path, const Film& film) { writeExr(path, fi
 std::string encodeFilmExr(const Film& film) { return encodeExr(filmToImage(film)); }
 
 ExrImage decodeExr(const std::string& bytes, const std::string& name, uint64_t maxValues) {
+  checkExrHeaders(bytes, name, maxValues);
   try {
     Imf::StdISStream stream;
     stream.str(bytes);
@@ -93,10 +96,7 @@ ExrImage decodeExr(const std::string& bytes, const std::string& name, uint64_t m
     const int64_t width = int64_t(dw.max.x) - dw.min.x + 1, height = int64_t(dw.max.y) - dw.min.y + 1;
     uint64_t channels = 0;
     for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it) ++channels;
-    if (width <= 0 || height <= 0 || uint64_t(width) * uint64_t(height) * std::max<uint64_t>(channels, 1) > maxValues)
-      throw Error("cannot read EXR '" + name + "': it declares " + std::to_string(width) + "x" + std::to_string(height) +
-                  " pixels of " + std::to_string(channels) + " channels, more than the " + std::to_string(maxValues) +
-                  " values vkmc reads");
+    checkExrDeclaredSize(width, height, channels, maxValues, name);  // again, as OpenEXR read it
     img.width = int(width);
     img.height = int(height);
     Imf::FrameBuffer fb;

@@ -1,6 +1,10 @@
 // EXR round trip of every channel; writes are atomic.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <filesystem>
 
 #include "error.h"
@@ -73,4 +77,59 @@ TEST(Exr, QmcFilmsGiveTheirReplicatesDegreesOfFreedom) {
   ExrImage img = filmToImage(film);
   EXPECT_EQ(img.channels["variance.dof"][0], float(gpu::kMaxSampleReplicates - 1));
   EXPECT_EQ(img.channels["variance.dof"][1], 1.0f);
+}
+
+// Attributes that declare more bytes than the file holds (an opaque type and a string by their declared size, a
+// preview by its pixels) are refused by vkmc's header walk before OpenEXR allocates them (2 GiB and 16 GiB here,
+// under a 1 GiB address-space cap).
+TEST(Exr, AnAttributeLargerThanItsFileIsRefusedBeforeAllocation) {
+  ExrImage image;
+  image.width = 2, image.height = 1;
+  for (const char* c : {"R", "G", "B"}) image.channels[c] = {0.25f, 0.5f};
+  const std::string valid = encodeExr(image);
+  ASSERT_NO_THROW(decodeExr(valid, "valid", 1 << 16));
+  auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  const struct {
+    std::string attribute, expected;
+  } rows[] = {
+      {std::string("huge\0opaque\0", 12) + u32(0x7ffffff0) + "xy", "attribute 'huge' declares 2147483632 bytes"},
+      {std::string("note\0string\0", 12) + u32(0x7ffffff0) + "xy", "attribute 'note' declares 2147483632 bytes"},
+      {std::string("preview\0preview\0", 16) + u32(8) + u32(65535) + u32(65535), "attribute 'preview' declares 17179344908"},
+  };
+  for (const auto& row : rows) {
+    std::string bytes = valid;
+    bytes.insert(8, row.attribute);
+    pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      rlimit cap{uint64_t(1) << 30, uint64_t(1) << 30};
+      setrlimit(RLIMIT_AS, &cap);
+      try {
+        decodeExr(bytes, "forged", 1 << 16);
+      } catch (const Error& e) {
+        _exit(std::string(e.what()).find(row.expected) != std::string::npos ? 0 : 1);
+      }
+      _exit(2);
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << row.expected << ": status " << status;
+  }
+}
+
+// A data window of more values than the reader allows is refused from the header, before OpenEXR allocates line
+// buffers for it (it did, for a 16 KB input, before vkmc's own check after OpenEXR's header read).
+TEST(Exr, ADataWindowPastTheLimitIsRefusedFromTheHeader) {
+  ExrImage image;
+  image.width = 300, image.height = 1;
+  for (const char* c : {"R", "G", "B"}) image.channels[c].assign(300, 1.0f);
+  const std::string bytes = encodeExr(image);
+  ASSERT_NO_THROW(decodeExr(bytes, "valid", 900));
+  try {
+    decodeExr(bytes, "small limit", 899);
+    FAIL() << "not refused";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("it declares 300x1 pixels of 3 channels, more than the 899 values"), std::string::npos)
+        << e.what();
+  }
 }

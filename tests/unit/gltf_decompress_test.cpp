@@ -12,135 +12,17 @@
 #include "error.h"
 #include "scene/draco_codec.h"
 #include "scene/gltf_loader.h"
+#include "support/compressed_meshes.h"
 #include "support/gltf_builder.h"
 #include "support/test_scenes.h"
 
 using namespace vkmc;
-using vkmc::test::GltfBuilder;
+using namespace vkmc::test;
 
 namespace {
 std::filesystem::path dir() {
   static auto d = test::makeTempDir("decompress");
   return d;
-}
-
-struct IndexedMesh {
-  std::vector<float> positions;  // xyz per vertex
-  std::vector<uint32_t> indices;
-  std::vector<float> uvs;  // uv per vertex, or empty
-  size_t vertices() const { return positions.size() / 3; }
-};
-
-// An n x n grid of vertices over a bumpy surface.
-IndexedMesh grid(int n) {
-  IndexedMesh m;
-  for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x) {
-      m.positions.insert(m.positions.end(), {float(x), float(y), 0.3f * std::sin(float(x + 2 * y))});
-      m.uvs.insert(m.uvs.end(), {float(x) / float(n - 1), float(y) / float(n - 1)});
-    }
-  for (int y = 0; y + 1 < n; ++y)
-    for (int x = 0; x + 1 < n; ++x) {
-      uint32_t a = y * n + x, b = a + 1, c = a + n, d = c + 1;
-      m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
-    }
-  return m;
-}
-
-const std::string kNode = R"("nodes":[{"mesh":0}],)";
-std::string mesh(int position, int indices, int uv = -1) {
-  return R"("meshes":[{"primitives":[{"attributes":{"POSITION":)" + std::to_string(position) +
-         (uv >= 0 ? R"(,"TEXCOORD_0":)" + std::to_string(uv) : "") + R"(},"indices":)" + std::to_string(indices) + "}]}]";
-}
-
-std::string writePlain(const std::string& name, const IndexedMesh& m) {
-  GltfBuilder b;
-  int p = b.accessor(m.positions, 5126, "VEC3", m.vertices()), i = b.accessor(m.indices, 5125, "SCALAR", m.indices.size());
-  int uv = m.uvs.empty() ? -1 : b.accessor(m.uvs, 5126, "VEC2", m.vertices());
-  return b.write(dir(), name, kNode + mesh(p, i, uv));
-}
-
-// Draco-encoded, positions quantized to `bits`; sequential encoding keeps the face order, edgebreaker does not.
-std::string writeDraco(const std::string& name, const IndexedMesh& m, int bits, bool sequential, bool corrupt = false) {
-  DracoEncoded encoded = encodeDracoMesh(m.positions, m.uvs, m.indices, bits, sequential);
-  std::vector<char>& bytes = encoded.bytes;
-  EXPECT_FALSE(bytes.empty());
-  if (corrupt) bytes.resize(bytes.size() / 2);  // truncated
-  GltfBuilder b;
-  int view = b.view(bytes.data(), bytes.size());
-  int p = b.accessor(-1, 5126, "VEC3", m.vertices()), i = b.accessor(-1, 5125, "SCALAR", m.indices.size());
-  std::string attributes = R"("POSITION":)" + std::to_string(p), mapping = R"("POSITION":)" + std::to_string(encoded.positionId);
-  if (!m.uvs.empty()) {
-    attributes += R"(,"TEXCOORD_0":)" + std::to_string(b.accessor(-1, 5126, "VEC2", m.vertices()));
-    mapping += R"(,"TEXCOORD_0":)" + std::to_string(encoded.uvId);
-  }
-  std::string body = R"("extensionsUsed":["KHR_draco_mesh_compression"],"extensionsRequired":["KHR_draco_mesh_compression"],)" +
-                     kNode + R"("meshes":[{"primitives":[{"attributes":{)" + attributes + R"(},"indices":)" + std::to_string(i) +
-                     R"(,"extensions":{"KHR_draco_mesh_compression":{"bufferView":)" + std::to_string(view) +
-                     R"(,"attributes":{)" + mapping + "}}}}]}]";
-  return b.write(dir(), name, body);
-}
-
-// meshopt-encoded positions (ATTRIBUTES), indices (TRIANGLES) and octahedral-filtered byte normals, with a
-// fallback buffer that has no data, as gltfpack writes them.
-std::string writeMeshopt(const std::string& name, const IndexedMesh& m, bool corrupt = false) {
-  GltfBuilder b;
-  size_t n = m.vertices();
-  auto compressedView = [&](const std::vector<unsigned char>& data, size_t fallbackOffset, size_t stride, size_t count,
-                            const char* mode, const char* filter) {
-    size_t offset = b.append(data.data(), data.size());
-    std::string ext = R"({"buffer":0,"byteOffset":)" + std::to_string(offset) + R"(,"byteLength":)" +
-                      std::to_string(corrupt ? 4 : data.size()) + R"(,"byteStride":)" + std::to_string(stride) + R"(,"count":)" +
-                      std::to_string(count) + R"(,"mode":")" + mode + R"(","filter":")" + filter + "\"}";
-    return b.rawView(R"({"buffer":1,"byteOffset":)" + std::to_string(fallbackOffset) + R"(,"byteLength":)" +
-                     std::to_string(count * stride) +
-                     (std::string(mode) == "ATTRIBUTES" ? R"(,"byteStride":)" + std::to_string(stride) : "") +
-                     R"(,"extensions":{"EXT_meshopt_compression":)" + ext + "}}");
-  };
-  std::vector<unsigned char> vb(meshopt_encodeVertexBufferBound(n, 12));
-  vb.resize(meshopt_encodeVertexBuffer(vb.data(), vb.size(), m.positions.data(), n, 12));
-  std::vector<unsigned char> ib(meshopt_encodeIndexBufferBound(m.indices.size(), n));
-  ib.resize(meshopt_encodeIndexBuffer(ib.data(), ib.size(), m.indices.data(), m.indices.size()));
-  std::vector<float> up;  // a tilted unit normal per vertex (x, y, z, w)
-  for (size_t v = 0; v < n; ++v) up.insert(up.end(), {0.6f, 0.0f, 0.8f, 0.0f});
-  std::vector<int8_t> oct(4 * n);
-  meshopt_encodeFilterOct(oct.data(), n, 4, 8, up.data());
-  std::vector<unsigned char> nb(meshopt_encodeVertexBufferBound(n, 4));
-  nb.resize(meshopt_encodeVertexBuffer(nb.data(), nb.size(), oct.data(), n, 4));
-  int pv = compressedView(vb, 0, 12, n, "ATTRIBUTES", "NONE");
-  int iv = compressedView(ib, 12 * n, 4, m.indices.size(), "TRIANGLES", "NONE");
-  int nv = compressedView(nb, 12 * n + 4 * m.indices.size(), 4, n, "ATTRIBUTES", "OCTAHEDRAL");
-  int p = b.accessor(pv, 5126, "VEC3", n), i = b.accessor(iv, 5125, "SCALAR", m.indices.size());
-  int normal = b.accessor(nv, 5120, "VEC3", n, R"("normalized":true)");
-  size_t fallbackBytes = 12 * n + 4 * m.indices.size() + 4 * n;
-  std::string body = R"("extensionsUsed":["EXT_meshopt_compression","KHR_mesh_quantization"],
-    "extensionsRequired":["EXT_meshopt_compression","KHR_mesh_quantization"],)" +
-                     kNode + R"("meshes":[{"primitives":[{"attributes":{"POSITION":)" + std::to_string(p) + R"(,"NORMAL":)" +
-                     std::to_string(normal) + R"(},"indices":)" + std::to_string(i) + "}]}]";
-  std::string fallback =
-      R"({"byteLength":)" + std::to_string(fallbackBytes) + R"(,"extensions":{"EXT_meshopt_compression":{"fallback":true}}})";
-  return b.write(dir(), name, body, "0", fallback);
-}
-
-// The .gltf (one external buffer 0) as a .glb with buffer 0 in its BIN chunk.
-std::string toGlb(const std::string& gltfPath) {
-  std::ifstream in(gltfPath);
-  nlohmann::json doc = nlohmann::json::parse(in);
-  std::filesystem::path binPath = std::filesystem::path(gltfPath).parent_path() / doc["buffers"][0]["uri"].get<std::string>();
-  doc["buffers"][0].erase("uri");
-  std::ifstream binIn(binPath, std::ios::binary);
-  std::string bin((std::istreambuf_iterator<char>(binIn)), std::istreambuf_iterator<char>());
-  std::string json = doc.dump();
-  while (json.size() % 4) json += ' ';
-  while (bin.size() % 4) bin += '\0';
-  std::string glb;
-  auto word = [&](uint32_t w) { glb.append(reinterpret_cast<const char*>(&w), 4); };
-  word(0x46546C67u), word(2), word(uint32_t(12 + 8 + json.size() + 8 + bin.size()));
-  word(uint32_t(json.size())), word(0x4E4F534Au), glb += json;
-  word(uint32_t(bin.size())), word(0x004E4942u), glb += bin;
-  std::string path = gltfPath.substr(0, gltfPath.size() - 5) + ".glb";
-  std::ofstream(path, std::ios::binary) << glb;
-  return path;
 }
 
 // The same triangles in the same order with the same winding, positions within `tolerance` (meshopt's index codec
@@ -168,19 +50,19 @@ float largestExtent(const IndexedMesh& m) {
 }
 
 void roundTrip(const std::string& name, const IndexedMesh& m) {
-  Scene original = loadGltf(writePlain(name + "_plain", m));
+  Scene original = loadGltf(writePlain(dir(), name + "_plain", m));
   // Draco: positions within the 14-bit quantization step; the order of faces and corners kept (sequential).
-  Scene draco = loadGltf(writeDraco(name + "_draco", m, 14, true));
+  Scene draco = loadGltf(writeDraco(dir(), name + "_draco", m, 14, true));
   expectSameTriangles(draco, original, largestExtent(m) / float((1 << 14) - 1));
   ASSERT_EQ(draco.uv0.size(), original.uv0.size());
   for (size_t c = 0; c < draco.uv0.size(); ++c)
     ASSERT_NEAR(glm::length(draco.uv0[c] - original.uv0[c]), 0.0f, 2.0f / float((1 << 14) - 1)) << "corner " << c;
   // Edgebreaker reorders faces: the same count and bounds.
-  Scene edgebreaker = loadGltf(writeDraco(name + "_edgebreaker", m, 14, false));
+  Scene edgebreaker = loadGltf(writeDraco(dir(), name + "_edgebreaker", m, 14, false));
   EXPECT_EQ(edgebreaker.triangleCount() + edgebreaker.degenerateTriangles, original.triangleCount());
   EXPECT_NEAR(glm::length(edgebreaker.bounds.extent() - original.bounds.extent()), 0.0f, largestExtent(m) / 4096.0f);
   // meshopt is lossless for positions and indices.
-  for (std::string path : {writeMeshopt(name + "_meshopt", m), toGlb(writeMeshopt(name + "_meshopt_glb", m))}) {
+  for (std::string path : {writeMeshopt(dir(), name + "_meshopt", m), toGlb(writeMeshopt(dir(), name + "_meshopt_glb", m))}) {
     Scene meshopt = loadGltf(path);
     expectSameTriangles(meshopt, original, 0.0f);
     EXPECT_TRUE(meshopt.warnings.empty()) << meshopt.warnings[0];
@@ -194,14 +76,14 @@ TEST(GltfDecompress, CompressedGridsDecodeToTheirOriginal) { roundTrip("grid", g
 
 TEST(GltfDecompress, MalformedDataIsRefusedNamingTheExtension) {
   IndexedMesh m = grid(9);
-  std::string draco = test::loadError(writeDraco("draco_bad", m, 14, true, true));
+  std::string draco = test::loadError(writeDraco(dir(), "draco_bad", m, 14, true, true));
   EXPECT_NE(draco.find("KHR_draco_mesh_compression: primitive 0 of mesh 0"), std::string::npos) << draco;
-  std::string meshopt = test::loadError(writeMeshopt("meshopt_bad", m, true));
+  std::string meshopt = test::loadError(writeMeshopt(dir(), "meshopt_bad", m, true));
   EXPECT_NE(meshopt.find("EXT_meshopt_compression: buffer view 0"), std::string::npos) << meshopt;
   // Failing for another reason (an index out of range), the message still names the extension in use.
   IndexedMesh broken = m;
   broken.indices[4] = 1000;
-  std::string other = test::loadError(writeMeshopt("meshopt_index", broken));
+  std::string other = test::loadError(writeMeshopt(dir(), "meshopt_index", broken));
   EXPECT_NE(other.find("index 1000 out of range"), std::string::npos) << other;
   EXPECT_NE(other.find("EXT_meshopt_compression"), std::string::npos) << other;
 }
