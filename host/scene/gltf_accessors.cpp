@@ -149,7 +149,8 @@ AccessorView viewAccessor(const tinygltf::Model& model, int index, const char* w
   std::string name = accessorName(what, index);
   const tinygltf::Accessor& a = accessorAt(model, index, what);
   if (a.sparse.isSparse) throw Error(name + " is sparse (not supported here)");
-  size_t elemSize = componentSize(a.componentType) * componentCount(a.type);
+  // Vectors, and MAT4 for skins' inverse bind matrices (float columns have no padding).
+  size_t elemSize = componentSize(a.componentType) * (a.type == TINYGLTF_TYPE_MAT4 ? 16 : componentCount(a.type));
   if (elemSize == 0) throw Error(name + " has an invalid type");
   AccessorView out;
   out.data = viewRange(model, a.bufferView, a.byteOffset, a.count, elemSize, out.stride, name);

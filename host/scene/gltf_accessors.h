@@ -24,7 +24,7 @@ struct AccessorView {
 };
 
 // Throws vkmc::Error ("<what> accessor N ...") when the accessor or its view runs past its buffer, is sparse or
-// has no buffer view.
+// has no buffer view. Vectors and MAT4.
 AccessorView viewAccessor(const tinygltf::Model& model, int index, const char* what);
 
 // An accessor's elements as floats, up to 4 components each (missing ones 0), normalized per glTF 2.0 section

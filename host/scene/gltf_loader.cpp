@@ -26,6 +26,8 @@
 #include "scene/gltf_extensions.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_material.h"
+#include "scene/gltf_nodes.h"
+#include "scene/gltf_skin.h"
 #include "scene/gltf_primitive.h"
 #include "scene/gltf_textures.h"
 #include "scene/tangent_space.h"
@@ -43,24 +45,6 @@ std::string coordinateLimit() {
   char buf[16];
   std::snprintf(buf, sizeof(buf), "%g", double(gpu::kMaxSceneCoordinate));
   return buf;
-}
-
-glm::mat4 localTransform(const tinygltf::Node& node) {
-  if (node.matrix.size() == 16) {
-    glm::mat4 m;
-    for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = static_cast<float>(node.matrix[i]);
-    return m;
-  }
-  glm::mat4 m(1.0f);
-  if (node.translation.size() == 3)
-    m = glm::translate(m, glm::vec3(node.translation[0], node.translation[1], node.translation[2]));
-  if (node.rotation.size() == 4) {
-    glm::quat q(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]), static_cast<float>(node.rotation[1]),
-                static_cast<float>(node.rotation[2]));
-    m *= glm::mat4_cast(glm::normalize(q));
-  }
-  if (node.scale.size() == 3) m = glm::scale(m, glm::vec3(node.scale[0], node.scale[1], node.scale[2]));
-  return m;
 }
 
 // Appends one corner's attribute to a scene array that stays empty until some primitive has the attribute; the
@@ -121,6 +105,7 @@ class Flattener {
       : model_(model), scene_(scene), maxTriangles_(maxTriangles), maxElements_(3 * maxTriangles + 3) {
     for (const tinygltf::Mesh& mesh : model.meshes)
       for (const tinygltf::Primitive& prim : mesh.primitives) withTangents_ |= hasNormalTexture(model, prim.material);
+    if (!model.skins.empty()) nodeWorld_ = worldTransforms(model);  // the joints' default pose
   }
 
   void visit(int nodeIndex, const glm::mat4& parent, int depth) {
@@ -144,10 +129,12 @@ class Flattener {
   const std::vector<PrimitiveData>& meshData(int nodeIndex) {
     const tinygltf::Node& node = model_.nodes[nodeIndex];
     const tinygltf::Mesh& mesh = model_.meshes[node.mesh];
-    auto key = std::make_pair(node.mesh, node.weights.empty() ? -1 : nodeIndex);
+    auto key = std::make_pair(node.mesh, node.weights.empty() && node.skin < 0 ? -1 : nodeIndex);
     auto cached = meshes_.find(key);
     if (cached != meshes_.end()) return cached->second;
     std::vector<PrimitiveData> data;
+    std::vector<glm::mat4> joints;
+    if (node.skin >= 0) joints = jointMatrices(model_, node.skin, nodeWorld_);
     for (size_t p = 0; p < mesh.primitives.size(); ++p) {
       const tinygltf::Primitive& prim = mesh.primitives[p];
       if (!isTriangleMode(prim.mode) && !isPointOrLineMode(prim.mode)) {
@@ -159,6 +146,7 @@ class Flattener {
       request.generateTangents = isTriangleMode(prim.mode) && hasNormalTexture(model_, prim.material);
       if (request.generateTangents) request.tangentUvSet = model_.materials[prim.material].normalTexture.texCoord;
       request.maxElements = maxElements_;
+      request.joints = node.skin >= 0 ? &joints : nullptr;
       try {
         data.push_back(readPrimitive(model_, prim, request));
       } catch (const Error& e) {
@@ -173,8 +161,10 @@ class Flattener {
     if (meshIndex >= static_cast<int>(model_.meshes.size())) throw Error("mesh " + std::to_string(meshIndex) + " does not exist");
     const std::vector<PrimitiveData>& data = meshData(nodeIndex);
     const tinygltf::Mesh& mesh = model_.meshes[meshIndex];
+    // A skinned mesh is in world space already: its node's transform is not applied (glTF 2.0 section 3.7.3).
+    const glm::mat4 placement = model_.nodes[nodeIndex].skin >= 0 ? glm::mat4(1.0f) : nodeWorld;
     for (const glm::mat4& instance : instanceTransforms(model_, model_.nodes[nodeIndex], maxElements_)) {
-      glm::mat4 world = nodeWorld * instance;
+      glm::mat4 world = placement * instance;
       for (size_t p = 0; p < mesh.primitives.size(); ++p) {
         const tinygltf::Primitive& prim = mesh.primitives[p];
         if (!isTriangleMode(prim.mode) && !isPointOrLineMode(prim.mode)) {
@@ -322,6 +312,7 @@ class Flattener {
   uint64_t maxTriangles_, maxElements_;
   bool withTangents_ = false;  // some primitive's material has a normal texture
   std::map<std::pair<int, int>, std::vector<PrimitiveData>> meshes_;
+  std::vector<glm::mat4> nodeWorld_;  // every node's world transform, for skins only
   size_t visits_ = 0;
 };
 
@@ -572,7 +563,6 @@ Scene flattenModel(const tinygltf::Model& model, const std::string& path, const 
   if (instanced > limits.maxTriangles)
     throw Error("scene too big: more than " + std::to_string(limits.maxTriangles) + " triangles after instancing (" +
                 std::to_string(instanced) + " instanced; the limit is what the device's buffers and this machine's memory hold)");
-  if (!model.skins.empty()) scene.warnings.push_back("skins: rendered in bind pose");
   Flattener flattener(model, scene, limits.maxTriangles);
   for (int root : roots) flattener.visit(root, glm::mat4(1.0f), 0);
   scene.skippedPrimitives = flattener.nonTrianglePrimitives;

@@ -8,6 +8,7 @@
 
 #include "error.h"
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_skin.h"
 #include "scene/tangent_space.h"
 
 namespace vkmc {
@@ -152,6 +153,17 @@ PrimitiveData readPrimitive(const tinygltf::Model& model, const tinygltf::Primit
   if (!data.colors.empty() && model.accessors[colorAccessor].type == TINYGLTF_TYPE_VEC3)
     for (glm::vec4& c : data.colors) c.w = 1.0f;
   applyMorphTargets(model, prim, request, data);
+  if (request.joints) {
+    // Joint indices are unsigned bytes or shorts; anything else (a float past a uint's range) reads as no joint.
+    for (const glm::vec4& j : readAttribute<glm::vec4>(model, prim.attributes, "JOINTS_0", {TINYGLTF_TYPE_VEC4}, n, limit)) {
+      glm::uvec4 index(UINT32_MAX);
+      for (int k = 0; k < 4; ++k)
+        if (j[k] >= 0.0f && j[k] < 65536.0f) index[k] = uint32_t(j[k]);
+      data.joints.push_back(index);
+    }
+    data.weights = readAttribute<glm::vec4>(model, prim.attributes, "WEIGHTS_0", {TINYGLTF_TYPE_VEC4}, n, limit);
+    applySkin(data, *request.joints);
+  }
   if (isPointOrLineMode(prim.mode)) {
     data.segments = readSegments(model, prim, n, limit);
     return data;

@@ -16,6 +16,8 @@ struct PrimitiveData {
   std::vector<glm::vec4> tangents;  // TANGENT, generated ones, or empty (see PrimitiveRequest::generateTangents)
   bool tangentsPerCorner = false;   // generated (MikkTSpace): one per corner of `triangles`, not per vertex
   std::vector<glm::vec4> colors;    // COLOR_0 as RGBA, empty when absent
+  std::vector<glm::uvec4> joints;   // JOINTS_0 and WEIGHTS_0, read for a skinned mesh only
+  std::vector<glm::vec4> weights;
   std::vector<uint32_t> triangles;  // 3 vertex indices per triangle, each checked < positions.size()
   std::vector<uint32_t> segments;   // points and lines: 2 vertex indices per segment (a point: the same twice)
 };
@@ -25,6 +27,9 @@ struct PrimitiveRequest {
   bool generateTangents = false;  // when TANGENT is absent: MikkTSpace-style from the UV set below
   int tangentUvSet = 0;           // the normal texture's texCoord
   uint64_t maxElements = 0;       // per accessor (view-less accessors have no data to bound their count)
+  // A skinned mesh's joint matrices (scene/gltf_skin.h): the primitive is skinned into world space after its morph
+  // targets and before tangents are generated. Null for a mesh without a skin.
+  const std::vector<glm::mat4>* joints = nullptr;
 };
 
 // Whether glTF draws `mode` as triangles (lists, strips, fans), or as points and lines (POINTS, LINES, LINE_LOOP,
