@@ -22,11 +22,13 @@
 #include "estimators/estimator_params.h"
 #include "app/render_options_json.h"
 #include "dist/rank_group.h"
+#include "analysis/image_checks.h"
 #include "io/checkpoint.h"
 #include "io/exr.h"
 #include "io/file_lock.h"
 #include "io/output_files.h"
 #include "io/png.h"
+#include "io/tone_map.h"
 #include "scene/gltf_loader.h"
 #include "vk/context.h"
 
@@ -39,7 +41,7 @@ struct RenderArgs {
   std::string out = "out.exr", png, efficiencyPng, report, lookFrom, lookAt, background, estimatorFile, filter = "box",
               filterRadius;
   std::map<std::string, std::string> estimatorValues;  // by key, as typed after the flag
-  float exposure = 0.0f;
+  std::string exposure = "auto", toneMap = "neutral";
   bool quiet = false, noSpecialize = false, generalSpirv = false;
   int spp = kDefaultSpp;
   long long seed = 1;
@@ -198,9 +200,9 @@ void fillOptions(RenderArgs& a, const CLI::App& cmd) {
 // --resume without a scene: the render's options and outputs come from the checkpoint; only the outputs and the
 // checkpoint's own flags may be given.
 void optionsFromCheckpoint(RenderArgs& a, const CLI::App& cmd, const nlohmann::json& config) {
-  static const std::vector<std::string> allowed = {"--resume",           "--output",     "--png",   "--efficiency-png",
-                                                   "--report",           "--exposure",   "--quiet", "--checkpoint",
-                                                   "--checkpoint-every", "--stage-times"};
+  static const std::vector<std::string> allowed = {"--resume",           "--output",      "--png",    "--efficiency-png",
+                                                   "--report",           "--exposure",    "--quiet",  "--checkpoint",
+                                                   "--checkpoint-every", "--stage-times", "--tonemap"};
   for (const CLI::Option* opt : cmd.get_options()) {
     if (opt->count() == 0 || opt->get_positional()) continue;
     if (std::find(allowed.begin(), allowed.end(), opt->get_name()) == allowed.end())
@@ -214,7 +216,11 @@ void optionsFromCheckpoint(RenderArgs& a, const CLI::App& cmd, const nlohmann::j
   if (!cmd.count("--output")) a.out = outputs.value("output", a.out);
   if (!cmd.count("--png")) a.png = outputs.value("png", a.png);
   if (!cmd.count("--report")) a.report = outputs.value("report", a.report);
-  if (!cmd.count("--exposure")) a.exposure = outputs.value("exposure", a.exposure);
+  // Checkpoints before the automatic exposure stored the stops as a number.
+  if (!cmd.count("--exposure") && outputs.contains("exposure"))
+    a.exposure = outputs["exposure"].is_number() ? std::to_string(outputs["exposure"].get<double>())
+                                                 : outputs.value("exposure", a.exposure);
+  if (!cmd.count("--tonemap")) a.toneMap = outputs.value("tonemap", a.toneMap);
 }
 
 // Under mpirun rank 0 reads the checkpoint and tells the others (their hosts may not see the file).
@@ -265,7 +271,8 @@ RunControl runControl(const RenderArgs& a, const CLI::App& cmd, std::optional<Ch
   control.outputs = {{"output", absolutePath(a.out)},
                      {"png", absolutePath(a.png)},
                      {"report", absolutePath(a.report)},
-                     {"exposure", a.exposure}};
+                     {"exposure", a.exposure},
+                     {"tonemap", a.toneMap}};
   if (resume) control.resumeConfig = &resume->config, control.resumeState = &resume->state;
   if (checkpoint.empty()) return control;
   control.stop = &stopSignal;
@@ -294,11 +301,26 @@ bool writeFinalCheckpoint(const RenderArgs& a, RenderOutcome& result, const std:
   }
 }
 
-// All outputs or none: the EXR is not replaced when the PNG or the report cannot be written.
-void writeOutputs(const RenderArgs& a, const RenderOutcome& result, const nlohmann::json& report) {
+PreviewLook previewLook(const RenderArgs& a) { return {parseToneMap(a.toneMap), parseExposure(a.exposure)}; }
+
+// All outputs or none: the EXR is not replaced when the PNG or the report cannot be written. The report gains the
+// PNG's exposure and tone map.
+void writeOutputs(const RenderArgs& a, const RenderOutcome& result, nlohmann::json report, std::vector<std::string>& warnings) {
   OutputSet outputs;
   outputs.add(a.out, encodeFilmExr(result.film));
-  if (!a.png.empty()) outputs.add(a.png, encodeFilmPng(result.film, a.exposure));
+  if (!a.png.empty()) {
+    const PreviewLook look = previewLook(a);
+    FilmPreview preview = encodeFilmPng(result.film, look);
+    report["png"] = {{"path", a.png},
+                     {"exposure_stops", preview.stops},
+                     {"exposure", look.exposureStops ? "fixed" : "auto"},
+                     {"tonemap", toneMapName(look.toneMap)}};
+    if (auto w = clippedPreviewWarning(preview.clippedShare, preview.stops, !look.exposureStops)) {
+      warnings.push_back(*w);
+      report["warnings"].push_back(*w);
+    }
+    outputs.add(a.png, std::move(preview.png));
+  }
   if (!a.efficiencyPng.empty()) outputs.add(a.efficiencyPng, encodeEfficiencyPng(result.film));
   // Paths are bytes, not always UTF-8: invalid sequences are replaced in the report rather than failing it.
   if (!a.report.empty()) outputs.add(a.report, report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
@@ -324,8 +346,7 @@ int run(RenderArgs& a, const CLI::App& cmd) {
     fillOptions(a, cmd);
   }
   const RenderOptions& ro = a.options;
-  if (!std::isfinite(a.exposure) || std::abs(a.exposure) > 100.0f)
-    throw Error("--exposure must be a finite number of stops in [-100, 100]");
+  previewLook(a);  // --exposure and --tonemap checked before the render
   // A resumed render goes on writing checkpoints where it was resumed from, unless told otherwise.
   const std::string checkpoint = !a.checkpoint.empty() ? a.checkpoint : a.resume;
   if (!(a.checkpointEvery > 0.0 && a.checkpointEvery <= 1e6))
@@ -339,10 +360,11 @@ int run(RenderArgs& a, const CLI::App& cmd) {
   RenderOutcome result = runRender(ctx, ro, control);
   if (!RankGroup::world().isRoot()) return 0;  // rank 0 holds the film and writes every output
   const bool checkpointWritten = writeFinalCheckpoint(a, result, checkpoint);
+  if (auto w = blackImageWarning(result.film)) result.warnings.push_back(*w);
   nlohmann::json j = makeReport(ro, result);
   j["output"] = a.out;
   if (!checkpoint.empty() && (checkpointWritten || !result.interrupted)) j["checkpoint"] = checkpoint;
-  writeOutputs(a, result, j);
+  writeOutputs(a, result, j, result.warnings);
   if (!a.quiet) std::cout << summaryText(ro, result) << "output      " << a.out << "\n";
   for (const auto& w : result.warnings) std::fprintf(stderr, "vkmc: warning: %s\n", w.c_str());
   if (!result.interrupted) {
@@ -387,7 +409,14 @@ void addOutputOptions(CLI::App* render, RenderArgs& a) {
       ->add_option("--efficiency-png", a.efficiencyPng,
                    "false-colour PNG of the efficiency channel (log scale: dark blue spends badly, yellow well)")
       ->group(kOutputGroup);
-  render->add_option("--exposure", a.exposure, "PNG exposure in stops")->capture_default_str()->group(kOutputGroup);
+  render
+      ->add_option("--exposure", a.exposure,
+                   "the PNG's exposure: auto (the log-average luminance at middle grey) or stops; the EXR is never scaled")
+      ->capture_default_str()
+      ->group(kOutputGroup);
+  render->add_option("--tonemap", a.toneMap, "the PNG's tone map: neutral (Khronos PBR Neutral) or clamp")
+      ->capture_default_str()
+      ->group(kOutputGroup);
   render->add_option("--reference", ro.referencePath, "reference EXR: the report gains mse, relmse, efficiency")
       ->group(kOutputGroup);
   render->add_flag("-q,--quiet", a.quiet, "no summary on stdout, no progress line on stderr")->group(kOutputGroup);

@@ -13,18 +13,11 @@
 #include "error.h"
 #include "io/exr.h"
 #include "io/output_files.h"
+#include "io/tone_map.h"
 
 #include <stb/stb_easy_font.h>
 
 namespace vkmc {
-namespace {
-uint8_t toSrgb8(double linear) {
-  double v = std::clamp(std::isfinite(linear) ? linear : 0.0, 0.0, 1.0);
-  v = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
-  return static_cast<uint8_t>(std::lround(v * 255.0));
-}
-}  // namespace
-
 namespace {
 std::string encodeRgbPng(const std::vector<uint8_t>& rgb, uint32_t width, uint32_t height) {
   png_image image{};
@@ -73,28 +66,38 @@ std::string encodeContactSheet(const std::vector<ExrImage>& images, const std::v
   const uint32_t w = srcW * zoom, h = images[0].height * zoom, labelHeight = 24, gap = 4;
   const uint32_t width = uint32_t(images.size()) * (w + gap) - gap, height = h + labelHeight;
   std::vector<uint8_t> rgb(size_t(width) * height * 3, 255);
-  double scale = std::exp2(double(exposureStops));
   const char* names[] = {"R", "G", "B"};
   for (size_t k = 0; k < images.size(); ++k) {
     uint32_t x0 = uint32_t(k) * (w + gap);
     for (uint32_t y = 0; y < h; ++y)
-      for (uint32_t x = 0; x < w; ++x)
+      for (uint32_t x = 0; x < w; ++x) {
+        std::array<double, 3> v{};
         for (int c = 0; c < 3; ++c) {
           auto it = images[k].channels.find(names[c]);
-          float v = it == images[k].channels.end() ? 0.0f : it->second[size_t(y / zoom) * srcW + x / zoom];
-          rgb[3 * (size_t(y + labelHeight) * width + x0 + x) + c] = toSrgb8(v * scale);
+          v[c] = it == images[k].channels.end() ? 0.0 : it->second[size_t(y / zoom) * srcW + x / zoom];
         }
+        const std::array<uint8_t, 3> out = previewPixel(v, exposureStops, ToneMap::Neutral);
+        std::copy(out.begin(), out.end(), rgb.begin() + 3 * (size_t(y + labelHeight) * width + x0 + x));
+      }
     drawText(rgb, width, height, int(x0) + 2, 4, k < labels.size() ? labels[k] : "", w >= 320 ? 2 : 1);
   }
   return encodeRgbPng(rgb, width, height);
 }
 
-std::string encodeFilmPng(const Film& film, float exposureStops) {
-  double scale = std::exp2(static_cast<double>(exposureStops));
+FilmPreview encodeFilmPng(const Film& film, const PreviewLook& look) {
+  std::vector<double> luminances(film.pixels());
+  for (size_t p = 0; p < film.pixels(); ++p) luminances[p] = luminance(film.mean(p, 0), film.mean(p, 1), film.mean(p, 2));
+  FilmPreview preview;
+  preview.stops = exposureFor(look, luminances);
   std::vector<uint8_t> rgb(film.pixels() * 3);
-  for (size_t p = 0; p < film.pixels(); ++p)
-    for (int c = 0; c < 3; ++c) rgb[3 * p + c] = toSrgb8(film.mean(p, c) * scale);
-  return encodeRgbPng(rgb, film.width, film.height);
+  for (size_t p = 0; p < film.pixels(); ++p) {
+    const std::array<uint8_t, 3> out =
+        previewPixel({film.mean(p, 0), film.mean(p, 1), film.mean(p, 2)}, preview.stops, look.toneMap);
+    std::copy(out.begin(), out.end(), rgb.begin() + 3 * p);
+    preview.clippedShare += (out[0] == 255 || out[1] == 255 || out[2] == 255) ? 1.0 / double(film.pixels()) : 0.0;
+  }
+  preview.png = encodeRgbPng(rgb, film.width, film.height);
+  return preview;
 }
 
 namespace {
@@ -132,10 +135,6 @@ std::string encodeEfficiencyPng(const Film& film) {
   // As the EXR holds them (float), so that `vkmc compare --efficiency-png` draws the same map from the EXR.
   for (size_t p = 0; p < film.pixels(); ++p) efficiency[p] = double(float(std::min(film.efficiency(p), 3.0e38)));
   return encodeEfficiencyPng(efficiency, film.width, film.height);
-}
-
-void writeFilmPng(const std::string& path, const Film& film, float exposureStops) {
-  writeFileAtomically(path, encodeFilmPng(film, exposureStops));
 }
 
 }  // namespace vkmc

@@ -353,3 +353,31 @@ TEST(CliOutputs, AStudyWhoseOutputIsItsOwnFileIsRefused) {
   EXPECT_EQ(slurp(study), text);
   EXPECT_FALSE(fs::exists(d / "summary.md"));
 }
+
+// The PNG preview is exposed automatically (its log-average at middle grey) and tone-mapped, and the report says
+// how; a fixed exposure that clips it, and an image that came out black, each get one warning naming the cause.
+TEST(CliOutputs, ThePreviewSaysItsExposureAndWarnsWhenClippedOrBlack) {
+  const fs::path d = dir() / "preview";
+  fs::create_directories(d);
+  const std::string base = render(cornell()) + " -o " + (d / "a.exr").string() + " --png " + (d / "a.png").string() +
+                           " --report " + (d / "a.json").string();
+  RunResult automatic = runVkmc(base);
+  ASSERT_EQ(automatic.code, 0) << automatic.err;
+  nlohmann::json report = nlohmann::json::parse(slurp((d / "a.json").string()));
+  EXPECT_EQ(report["png"]["exposure"], "auto");
+  EXPECT_EQ(report["png"]["tonemap"], "neutral");
+  EXPECT_GT(report["png"]["exposure_stops"].get<double>(), 0.0) << "the Cornell box's log-average is under middle grey";
+  RunResult clipped = runVkmc(base + " --exposure 8 --tonemap clamp");
+  ASSERT_EQ(clipped.code, 0) << clipped.err;
+  EXPECT_NE(clipped.err.find("the PNG preview is clipped"), std::string::npos) << clipped.err;
+  report = nlohmann::json::parse(slurp((d / "a.json").string()));
+  EXPECT_EQ(report["png"]["exposure_stops"], 8.0);
+  EXPECT_NE(report["warnings"].dump().find("clipped"), std::string::npos);
+  GltfSpec dark = quadSpec();
+  dark.materialJson = R"({"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.5,0.5,1]}})";
+  RunResult black = runVkmc(render(writeGltf(d, "unlit", dark)) + " --background 0,0,0 -o " + (d / "b.exr").string());
+  ASSERT_EQ(black.code, 0) << black.err;
+  EXPECT_NE(black.err.find("the image is black (100.0% of its pixels): no light reaches the camera"), std::string::npos)
+      << black.err;
+  EXPECT_EQ(automatic.err.find("is black"), std::string::npos) << automatic.err;
+}

@@ -1,0 +1,43 @@
+// How the PNG preview shows a physical (linear, unbounded) image; the EXR is never tone-mapped.
+//   exposure: `auto` scales the image so that its log-average luminance lands on middle grey (Reinhard et al. 2002,
+//             "Photographic tone reproduction", key 0.18), or a fixed number of stops;
+//   tone map: `neutral`, the Khronos PBR Neutral operator (colours below 0.76 kept, less a black offset of at
+//             most 0.04; highlights compressed toward white), or `clamp` (linear, values above 1 clipped);
+//   then the sRGB transfer function to 8 bits.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vkmc {
+
+enum class ToneMap { Neutral, Clamp };
+
+struct PreviewLook {
+  ToneMap toneMap = ToneMap::Neutral;
+  std::optional<double> exposureStops;  // empty: automatic
+};
+
+// "auto" or a number of stops in [-100, 100]; "neutral" or "clamp". Throw vkmc::Error naming the flag.
+std::optional<double> parseExposure(const std::string& text);
+ToneMap parseToneMap(const std::string& text);
+const char* toneMapName(ToneMap t);
+
+constexpr double kMiddleGrey = 0.18;
+constexpr double kMaxAutoStops = 24.0;  // an all-black image is not scaled past this
+// The stops that bring the log-average of `luminance` (finite, non-negative values; others ignored) to middle
+// grey; 0 for an image with no such value.
+double autoExposureStops(const std::vector<double>& luminance);
+double luminance(double r, double g, double b);  // Rec. 709 weights
+
+std::array<double, 3> pbrNeutral(std::array<double, 3> rgb);
+uint8_t toSrgb8(double linear);  // clamped to [0, 1]; NaN as 0
+
+// The stops a look applies to an image of these luminances: its fixed stops, or the automatic ones.
+double exposureFor(const PreviewLook& look, const std::vector<double>& luminance);
+// One pixel through the look at `stops`: exposure, tone map, sRGB.
+std::array<uint8_t, 3> previewPixel(std::array<double, 3> rgb, double stops, ToneMap toneMap);
+
+}  // namespace vkmc

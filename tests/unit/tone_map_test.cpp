@@ -1,0 +1,56 @@
+// The PNG preview's look (io/tone_map.h): Reinhard's automatic exposure, the Khronos PBR Neutral tone map, the
+// flags' parsing.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "error.h"
+#include "io/tone_map.h"
+
+using namespace vkmc;
+
+TEST(ToneMap, AutomaticExposureBringsTheLogAverageToMiddleGrey) {
+  for (double level : {1e-5, 0.01, 1.0, 2534.0}) {
+    const std::vector<double> constant(100, level);
+    EXPECT_NEAR(autoExposureStops(constant), std::log2(kMiddleGrey / level), 1e-5) << level;
+  }
+  // Half the pixels at 4, half at 1: the log-average is 2 (the geometric mean), not the arithmetic 2.5.
+  std::vector<double> two(50, 4.0);
+  two.insert(two.end(), 50, 1.0);
+  EXPECT_NEAR(autoExposureStops(two), std::log2(kMiddleGrey / 2.0), 1e-5);
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  EXPECT_NEAR(autoExposureStops({1.0, nan, inf, -1.0}), std::log2(kMiddleGrey), 1e-5) << "non-finite and negative ignored";
+  EXPECT_EQ(autoExposureStops({0.0, 0.0}), 0.0) << "a black image is not scaled";
+  EXPECT_EQ(autoExposureStops({1e-300}), kMaxAutoStops) << "bounded";
+}
+
+TEST(ToneMap, PbrNeutralFollowsTheKhronosReference) {
+  // Grey 1 by the reference's formula: offset 0.04, peak 0.96, new peak 1 - 0.24^2 / 0.44.
+  const double expected = 1.0 - 0.24 * 0.24 / 0.44;
+  for (double c : pbrNeutral({1.0, 1.0, 1.0})) EXPECT_NEAR(c, expected, 1e-12);
+  for (double c : pbrNeutral({0.5, 0.5, 0.5})) EXPECT_NEAR(c, 0.46, 1e-12) << "below the knee: the offset only";
+  double previous = -1.0;
+  for (double v = 0.0; v < 1e4; v = v * 1.1 + 1e-3) {
+    const std::array<double, 3> out = pbrNeutral({v, 0.5 * v, 0.25 * v});
+    EXPECT_GE(out[0], previous - 1e-12) << "monotone at " << v;
+    EXPECT_LE(out[0], 1.0) << v;
+    EXPECT_GE(out[2], 0.0) << v;
+    previous = out[0];
+  }
+}
+
+TEST(ToneMap, PreviewPixelsAreSrgbAfterExposureAndToneMap) {
+  EXPECT_EQ(previewPixel({0.25, 0.25, 0.25}, 2.0, ToneMap::Clamp), (std::array<uint8_t, 3>{255, 255, 255}));
+  EXPECT_EQ(previewPixel({0.5, 0.0, std::nan("")}, 0.0, ToneMap::Clamp), (std::array<uint8_t, 3>{toSrgb8(0.5), 0, 0}));
+  EXPECT_LT(previewPixel({4.0, 4.0, 4.0}, 0.0, ToneMap::Neutral)[0], 255) << "four times white: compressed, not clipped";
+}
+
+TEST(ToneMap, FlagsAreParsedOrRefusedWithOneLine) {
+  EXPECT_FALSE(parseExposure("auto").has_value());
+  EXPECT_EQ(parseExposure("-2.5"), -2.5);
+  for (const char* bad : {"nan", "inf", "101", "", "2 stops", "bright"}) EXPECT_THROW(parseExposure(bad), Error) << bad;
+  EXPECT_EQ(parseToneMap("neutral"), ToneMap::Neutral);
+  EXPECT_EQ(parseToneMap("clamp"), ToneMap::Clamp);
+  EXPECT_THROW(parseToneMap("aces"), Error);
+}
