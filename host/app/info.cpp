@@ -11,6 +11,7 @@
 #include "render/gpu_scene.h"
 #include "render/path_renderer.h"
 #include "render/render_kernels.h"
+#include "scene/framing.h"
 #include "scene/camera_rig.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_features.h"
@@ -92,7 +93,7 @@ int runInfo(const RenderOptions& options) {
   settings.width = options.width.value_or(256);
   settings.height = options.height.value_or(256);
   settings.spp = options.spp;
-  Camera cam = scene.cameras.empty() ? autoCamera(scene.bounds, 1.0f) : scene.cameras[0];
+  Camera cam = scene.cameras.empty() ? autoCamera(framingBounds(scene).bounds, 1.0f) : scene.cameras[0];
   settings.camera = makeCameraRig(cam, settings.width, settings.height);
   KernelPlan plan = planKernels(settings);
   const std::string spirv = plan.spirvVariant.empty() ? "general SPIR-V" : "SPIR-V pre-specialized for " + plan.spirvVariant;

@@ -23,6 +23,7 @@
 #include "render/gpu_scene.h"
 #include "render/render_kernels.h"
 #include "scene/camera_rig.h"
+#include "scene/framing.h"
 #include "scene/gltf_loader.h"
 #include "scene/content_hash.h"
 #include "scene/coordinate_precision.h"
@@ -245,7 +246,11 @@ Framing frameScene(const RenderOptions& options, const Scene& scene) {
   } else {
     f.width = options.width.value_or(kDefaultImageWidth), f.height = derivedSide(f.width / a);
   }
-  if (!options.lookFrom && scene.cameras.empty()) f.camera = autoCamera(scene.bounds, float(f.width) / float(f.height));
+  if (!options.lookFrom && scene.cameras.empty()) {
+    const FramedBounds framed = framingBounds(scene);
+    f.camera = autoCamera(framed.bounds, float(f.width) / float(f.height));
+    if (framed.groundLeftOut) f.camera.name = "auto (framing the scene without its flat ground)";
+  }
   // Ray origins within 10x the coordinate range keep the traversal's slab distances and triangle products finite
   // (an automatic camera for a scene at the range's edge, or at an extreme aspect ratio, could sit further out).
   if (!glm::all(glm::lessThanEqual(glm::abs(f.camera.position), glm::vec3(10.0f * gpu::kMaxSceneCoordinate))))

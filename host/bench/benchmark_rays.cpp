@@ -10,12 +10,13 @@
 #include "io/exr.h"
 #include "io/output_files.h"
 #include "bench/ray_tracer.h"
+#include "scene/framing.h"
 #include "scene/camera_rig.h"
 
 namespace vkmc {
 
 BenchmarkRays makeBenchmarkRays(const Scene& scene, const Bvh& bvh, RayTracer& tracer, uint32_t width, uint32_t height) {
-  Camera cam = scene.cameras.empty() ? autoCamera(scene.bounds, float(width) / float(height)) : scene.cameras[0];
+  Camera cam = scene.cameras.empty() ? autoCamera(framingBounds(scene).bounds, float(width) / float(height)) : scene.cameras[0];
   CameraRig rig = makeCameraRig(cam, width, height);
   BenchmarkRays rays;
   for (uint32_t y = 0; y < height; ++y)
