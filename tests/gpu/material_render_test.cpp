@@ -125,31 +125,31 @@ TEST(ThroughGlass, EmittersBehindGlassAreCountedOnce) {
   }
 }
 
-// A rough glass volume of ior exactly 1 (index-matched): every refraction then gives wi = -wo, where Walter's btdf
-// has no half vector; it gave non-finite samples (195 at 480 px). Now it renders finite, and as the limit of ior
-// 1.001 does (the same image to within its noise, as index matching should).
-TEST(IndexMatchedVolume, RoughIorOneRendersFiniteAndAsItsLimit) {
+// A rough glass volume of ior exactly 1 (index-matched) is invisible: light passes straight through whatever its
+// roughness, so the glass furnace reads 1. Walter's btdf has no half vector at eta 1 (every refraction gives
+// wi = -wo): it gave non-finite samples (195 at 480 px), then, at ior 1 + 1e-4, lost 2% of the light at roughness
+// 0.3 and 29% at roughness 1.
+TEST(IndexMatchedVolume, RoughIorOneIsInvisibleInTheGlassFurnace) {
   const std::string text = [] {
-    std::ifstream in(scenePath("materials/caustic.gltf"));
+    std::ifstream in(scenePath("materials/glass_furnace.gltf"));
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   }();
-  auto variant = [&](const std::string& ior, const std::string& name) {
+  for (const std::string roughness : {"0.3", "1.0"}) {
     std::string s = text;
-    for (auto [from, to] : {std::pair{std::string("\"ior\": 1.5"), "\"ior\": " + ior},
-                            std::pair{std::string("\"roughnessFactor\": 0.0"), std::string("\"roughnessFactor\": 0.3")}}) {
+    for (auto [from, to] : {std::pair{std::string("\"ior\": 1.5"), std::string("\"ior\": 1.0")},
+                            std::pair{std::string("\"roughnessFactor\": 0.0"), "\"roughnessFactor\": " + roughness}}) {
       const size_t at = s.find(from);
-      EXPECT_NE(at, std::string::npos) << from;
-      if (at != std::string::npos) s.replace(at, from.size(), to);
+      ASSERT_NE(at, std::string::npos) << from;
+      s.replace(at, from.size(), to);
     }
-    const auto path = test::makeTempDir("index_matched") / (name + ".gltf");
+    const auto path = test::makeTempDir("index_matched") / ("rough" + roughness + ".gltf");
     std::ofstream(path) << s;
-    RenderOptions o = optionsFor("", EstimatorConfig{}, 48, 48, 256);
+    RenderOptions o = optionsFor("", EstimatorConfig{}, 16, 16, 256);
     o.scenePath = path.string();
-    return runRender(sharedContext(), o);
-  };
-  RenderOutcome one = variant("1.0", "ior1"), near = variant("1.001", "ior1001");
-  EXPECT_EQ(one.film.totalNonfinite(), 0u);
-  EXPECT_EQ(near.film.totalNonfinite(), 0u);
-  EXPECT_TRUE(regionsAgree(whole(one.film), whole(near.film), 5.0))
-      << whole(one.film).mean.x << " vs " << whole(near.film).mean.x;
+    const RenderOutcome r = runRender(sharedContext(), o);
+    EXPECT_EQ(r.film.totalNonfinite(), 0u) << roughness;
+    const glm::dvec3 mean = r.film.imageMean(), var = r.film.imageMeanVarianceOfMean();
+    EXPECT_TRUE(withinSigmas(zTest(mean.y, 1.0, std::sqrt(var.y / r.film.pixels()), 1e-4), 5.0))
+        << "roughness " << roughness << ": " << mean.y;
+  }
 }
