@@ -7,6 +7,8 @@
 #include <cstdio>  // jpeglib.h needs FILE and size_t first
 #include <jpeglib.h>
 // clang-format on
+#include <algorithm>
+#include <climits>
 #include <csetjmp>
 #include <cstring>
 #include <string>
@@ -85,6 +87,13 @@ bool decodeJpegInto(const unsigned char* bytes, size_t size, uint32_t maxSide, u
     jpeg_destroy_decompress(&info);
     return false;
   }
+  // libjpeg's own working memory (a progressive image's coefficients: 2 bytes a sample of each component, blocks
+  // padded to 16) bounded by what an image of this size needs: past it the decode fails (jmemnobs has no backing
+  // store) instead of allocating what a forged header asks.
+  const uint64_t working =
+      2 * uint64_t(info.num_components) * (uint64_t(info.image_width) + 16) * (uint64_t(info.image_height) + 16) +
+      (uint64_t(64) << 20);
+  info.mem->max_memory_to_use = long(std::min<uint64_t>(working, uint64_t(LONG_MAX)));
   info.out_color_space = JCS_EXT_RGBA;
   jpeg_start_decompress(&info);
   out->width = info.output_width, out->height = info.output_height;

@@ -5,8 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>  // jpeglib.h needs FILE first
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
+
+#include <jpeglib.h>
 
 #include "scene/gltf_loader.h"
 #include "scene/texture_sampler.h"
@@ -156,4 +160,37 @@ TEST(GltfTextures, WebpTexturesAreReadWithTheirFallback) {
               std::find_if(s.warnings.begin(), s.warnings.end(),
                            [](const std::string& w) { return w.find("EXT_texture_webp") != std::string::npos; }))
       << "EXT_texture_webp is implemented: no warning";
+}
+
+// A progressive JPEG (libjpeg's own encoder) decodes within the working memory vkmc allows libjpeg for its size.
+TEST(GltfTextures, AProgressiveJpegIsRead) {
+  auto dir = test::makeTempDir("textures_progressive");
+  const int w = 96, h = 64;
+  std::vector<uint8_t> rgb(size_t(w) * h * 3);
+  for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = uint8_t(i * 7);
+  jpeg_compress_struct info;
+  jpeg_error_mgr errors;
+  info.err = jpeg_std_error(&errors);
+  jpeg_create_compress(&info);
+  unsigned char* bytes = nullptr;
+  unsigned long size = 0;
+  jpeg_mem_dest(&info, &bytes, &size);
+  info.image_width = w, info.image_height = h, info.input_components = 3, info.in_color_space = JCS_RGB;
+  jpeg_set_defaults(&info);
+  jpeg_simple_progression(&info);
+  jpeg_start_compress(&info, TRUE);
+  while (info.next_scanline < info.image_height) {
+    JSAMPROW row = rgb.data() + size_t(info.next_scanline) * w * 3;
+    jpeg_write_scanlines(&info, &row, 1);
+  }
+  jpeg_finish_compress(&info);
+  jpeg_destroy_compress(&info);
+  std::ofstream(dir / "progressive.jpg", std::ios::binary).write(reinterpret_cast<const char*>(bytes), std::streamsize(size));
+  std::free(bytes);
+  std::string material = R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}})";
+  std::string extra = R"("images":[{"uri":"progressive.jpg"}],"textures":[{"source":0}])";
+  Scene s = loadGltf(test::writeQuadsGltf(dir, "progressive", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
+  ASSERT_EQ(s.textures.size(), 1u);
+  EXPECT_EQ(s.textures[0].width, uint32_t(w));
+  EXPECT_EQ(s.textures[0].height, uint32_t(h));
 }
