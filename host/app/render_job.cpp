@@ -165,8 +165,8 @@ void addEnvironmentLight(const RenderOptions& options, Scene& scene, RenderOutco
     scene.environment = EnvironmentMap::constant(glm::vec3(1.0f));
     out.warnings.push_back(std::string("the scene has no punctual lights and ") +
                            (scanFeatures(scene).emitters() ? "only textured emitters (emissive maps)" : "no emitters") +
-                           ": it is lit by a uniform white environment of radiance 1, importance sampled (--environment "
-                           "or --background sets another; --background 0,0,0 renders it black)");
+                           ": it is lit by a uniform white environment of radiance 1, importance sampled, and seen against a "
+                           "grey backdrop (--environment or --background sets another; --background 0,0,0 renders it black)");
   }
   out.environment = scene.environment ? scene.environment->source : "";
 }
@@ -278,6 +278,7 @@ RenderSettings renderSettings(const RenderOptions& options, const Scene& scene, 
   if (options.withoutTextures) settings.features.textures = settings.features.normalMaps = settings.features.alpha = false;
   settings.seed = options.seed;
   settings.background = options.background.value_or(glm::vec3(0.0f));
+  if (getsDefaultLight(options, scene)) settings.backdrop = kDefaultBackdrop;
   settings.filter = options.filter;
   settings.camera = makeCameraRig(f.camera, f.width, f.height);
   settings.progress = options.progress;
@@ -529,7 +530,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   out.setup.upload = since(t);
   out.sceneInfo = gpuScene.info();
   RenderSettings settings = renderSettings(options, scene, bvh.stats, framing);
-  out.features = settings.features, out.background = settings.background;
+  out.features = settings.features, out.background = settings.background, out.backdrop = settings.backdrop;
   // What a checkpoint of this render records; a resumed render's must match it, and its learned state (the
   // efficiency pilot's scales) is used instead of a new pilot.
   const RenderOptions resolved = resolveDeviceChoices(ctx, options, run, settings, out);
@@ -866,6 +867,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
                                         : "truncation: paths are cut after " + std::to_string(e.maxDepth) +
                                               " scattering events, so the image is biased low";
   j["background"] = {r.background.x, r.background.y, r.background.z};
+  if (r.backdrop > 0.0f) j["backdrop"] = r.backdrop;
   j["filter"] = pixelFilterJson(o.filter);
   j["environment"] = r.environment;
   j["warnings"] = r.warnings;

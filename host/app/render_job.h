@@ -122,6 +122,7 @@ struct RenderOutcome {
   std::string spirvVariant;           // pre-specialized SPIR-V used for shading (KernelPlan::spirvVariant)
   std::optional<RouletteTable> roulette;
   glm::vec3 background{0.0f};  // what escaped rays saw besides the environment light
+  float backdrop = 0.0f;       // the grey escaped camera rays saw instead (the default light's), or 0
   std::string environment;     // the environment light: its file, "constant", or empty (none)
   // Checkpoints: the configuration they record, the state at the end (unfolded batch included: what a checkpoint
   // of this render holds), whether a stop request ended the render early, and what happened to the periodic ones.
@@ -141,6 +142,10 @@ struct RenderOutcome {
 // Throws vkmc::Error on bad options or input, before anything is written. Both runRender call it first, so
 // their callers need not.
 void validateOptions(const RenderOptions& options);
+// The default light's backdrop: the grey radiance camera rays see where they escape, a model viewer's neutral
+// background (middle grey, what the PNG's automatic exposure keys on), while the white environment lights the scene.
+constexpr float kDefaultBackdrop = 0.18f;
+
 // Whether a render lights the scene with the default constant environment: no --environment or --background, no
 // punctual lights, and no emitters or only textured ones (emissive maps are decorations, not lights).
 bool getsDefaultLight(const RenderOptions& options, const Scene& scene);

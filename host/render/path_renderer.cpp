@@ -220,7 +220,7 @@ gpu::PushConstants PathRenderer::passConstants(uint32_t firstPixel, uint32_t pix
   pc.cameraForward = glm::vec4(cam.forward, 0.0f);
   pc.cameraRight = glm::vec4(cam.right, 0.0f);
   pc.cameraUp = glm::vec4(cam.up, 0.0f);
-  pc.background = glm::vec4(settings_.background, 0.0f);
+  pc.background = gpu::encodeBackground(settings_.background, settings_.backdrop);
   return pc;
 }
 

@@ -350,8 +350,9 @@ bool prepareLightSample(PathState path, uint slot, SurfacePoint s, GltfMaterial 
 }
 
 // Radiance an escaped ray brings: the background, and the environment light MIS-weighted against light sampling
-// for BSDF-sampled rays (as emissionAt weighs emitters).
+// for BSDF-sampled rays (as emissionAt weighs emitters); a camera ray, the backdrop where there is one.
 vec3 escapedRadiance(PathState path) {
+  if (path.depth == 0u && hasBackdrop(pc.background)) return path.throughput.rgb * vec3(pc.background.w);
   vec3 radiance = pc.background.rgb;
   if (kHasEnvironment != 0u) {
     vec3 w = path.direction.xyz;

@@ -303,12 +303,18 @@ struct PushConstants {
   vec4 cameraForward;   // xyz unit
   vec4 cameraRight;     // xyz: scaled by tan(xfov/2), or half width for orthographic
   vec4 cameraUp;        // xyz: scaled by tan(yfov/2), or half height
-  vec4 background;      // rgb: uniform radiance of escaped rays
+  vec4 background;      // rgb: uniform radiance of escaped rays; w: the backdrop (encodeBackground)
   uint pixelCount;      // pixels in this pass; path id = sample * pixelCount + pixel offset
   uint samplesPerPass;  // samples of each pixel in this pass (pathCount = pixelCount * samplesPerPass)
   uint earsTrains;      // rr ears: 1 where this wavefront's paths train the cache (common.glsl earsTrains)
   uint sampleRuns;      // 1: the pass renders BINDING_SAMPLE_RUNS's runs (pixelCount of them), not a pixel range
 };
+
+// PushConstants::background: rgb, the uniform radiance every escaped ray brings (with the environment's); w > 0, a
+// grey backdrop that camera rays which escape see instead (the default light's: a model viewer's neutral backdrop,
+// while the scene stays lit by the environment).
+VKMC_FN vec4 encodeBackground(vec3 radiance, float backdropGrey) { return vec4(radiance, backdropGrey); }
+VKMC_FN bool hasBackdrop(vec4 background) { return background.w > 0.0f; }
 
 // Consecutive samples of one pixel in a pass of sample runs (adaptive sampling): camera paths firstPath ..
 // firstPath + paths - 1 are its samples firstSample ... A pixel has one run in a pass at most (accumulate adds a

@@ -75,6 +75,24 @@ TEST(EnvironmentLight, ASceneWithoutEmittersIsLitByAConstantEnvironmentAndConver
   }
 }
 
+// Under the default light, camera rays that miss the scene see a grey backdrop (kDefaultBackdrop), exactly, while
+// the plane stays lit by the white environment (rho L); with a --background, escaped camera rays see it instead.
+TEST(EnvironmentLight, TheDefaultLightsBackdropIsGreyForCameraRaysOnly) {
+  RenderOptions o = planeView(16, 5);
+  o.fovDegrees = 90.0f;  // the plane fills the middle; the corners see the sky
+  RenderOutcome r = runRender(sharedContext(), o, planeScene());
+  EXPECT_EQ(r.backdrop, kDefaultBackdrop);
+  const Film& f = r.film;
+  EXPECT_NEAR(f.mean(0, 1), kDefaultBackdrop, 1e-6) << "a corner: every sample the backdrop";
+  const size_t centre = size_t(8) * f.width + 8;
+  EXPECT_TRUE(withinSigmas(zTest(f.mean(centre, 1), kRho, std::sqrt(f.varianceOfMean(centre, 1)), 1e-6), 5.0))
+      << "the plane, lit by the white environment: " << f.mean(centre, 1);
+  o.background = glm::vec3(0.25f);
+  RenderOutcome given = runRender(sharedContext(), o, planeScene());
+  EXPECT_EQ(given.backdrop, 0.0f);
+  EXPECT_NEAR(given.film.mean(0, 1), 0.25, 1e-6) << "--background: seen by escaped camera rays too";
+}
+
 TEST(EnvironmentLight, NeeWithMisLightSamplingAloneAndBsdfSamplingAgreeUnderAMap) {
   const std::string map = writeSunMap();
   auto render = [&](bool nee, MisHeuristic mis, uint32_t spp, uint32_t seed) {
