@@ -531,7 +531,7 @@ Command addRenderCommand(CLI::App& app) {
   render
       ->add_option("--estimator", a->estimatorFile,
                    "JSON estimator file (the keys of the flags below), or auto: short pilots on the scene choose light "
-                   "and BSDF samples, MIS, light sampling and roulette by measured efficiency; flags pin their keys")
+                   "and BSDF samples, MIS and roulette by measured efficiency; flags pin their keys")
       ->group(kEstimatorGroup);
   for (const EstimatorParam& p : estimatorParams())
     render->add_option(p.flag(), a->estimatorValues[p.key], p.helpText())->group(kEstimatorGroup);
