@@ -190,13 +190,25 @@ RouletteTable rouletteFromJson(const nlohmann::json& j) {
   return t;
 }
 
+// What a checkpoint's film saw: the scene, the camera (an automatic one's framing follows vkmc's rules) and the
+// default light's backdrop, hashed field by field (no padding bytes).
+ContentHash renderFingerprint(const Scene& scene, const RenderSettings& settings) {
+  ContentHash fingerprint;
+  fingerprint.addValue(sceneFingerprint(scene));
+  for (const glm::vec3& v : {settings.camera.origin, settings.camera.forward, settings.camera.right, settings.camera.up})
+    fingerprint.add(&v, sizeof(v));
+  fingerprint.addValue(uint64_t(settings.camera.orthographic));
+  fingerprint.add(&settings.backdrop, sizeof(settings.backdrop));
+  return fingerprint;
+}
+
 // The checkpoint's configuration must be this render's: the same options (but the reference) and the same scene.
 void checkResumable(const nlohmann::json& config, const nlohmann::json& options, const std::string& fingerprint) {
   std::string differ = differingRenderOptions(config.at("options"), options);
   if (!differ.empty()) throw Error("the checkpoint belongs to another render: it differs in " + differ);
   if (config.at("scene_fingerprint") != fingerprint)
     throw Error("the checkpoint belongs to another scene: '" + options.at("scene").get<std::string>() +
-                "' (its geometry, materials, lights or environment) changed since it was written");
+                "' (its geometry, materials, lights, environment or camera) changed since it was written");
 }
 
 // Writes a checkpoint atomically. A stop signal meanwhile only raises the render's stop flag (command_render.cpp's
@@ -534,8 +546,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
   // What a checkpoint of this render records; a resumed render's must match it, and its learned state (the
   // efficiency pilot's scales) is used instead of a new pilot.
   const RenderOptions resolved = resolveDeviceChoices(ctx, options, run, settings, out);
-  ContentHash fingerprint;
-  fingerprint.addValue(sceneFingerprint(scene));
+  const ContentHash fingerprint = renderFingerprint(scene, settings);
   out.checkpointConfig = {{"options", renderOptionsJson(resolved)},
                           {"scene_fingerprint", fingerprint.hex()},
                           {"device", out.device},

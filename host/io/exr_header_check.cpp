@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstring>
 #include <optional>
 #include <string_view>
@@ -32,9 +33,9 @@ class HeaderWalk {
     const uint32_t version = uint32At(4);
     longestName_ = (version & 0x400) ? 256 : 32;  // the long-names flag
     at_ = 8;
-    header();
+    header(true);
     if (version & 0x1000)  // multipart: headers follow one another; an empty header ends the list
-      while (at_ < b_.size() && b_[at_] != '\0') header();
+      while (at_ < b_.size() && b_[at_] != '\0') header(false);
   }
 
  private:
@@ -55,9 +56,11 @@ class HeaderWalk {
     return s;
   }
 
-  // One header's attributes, up to an empty name; then its data window checked against the limit.
-  void header() {
+  // One header's attributes, up to an empty name. The first part's data window and tiles (what vkmc reads), each
+  // times its channels, are checked against the limit; the other parts' attributes are walked.
+  void header(bool first) {
     std::optional<std::array<int32_t, 4>> window;
+    std::optional<std::array<uint32_t, 2>> tile;
     channels_ = 0;
     for (std::string attribute = text(longestName_); !attribute.empty(); attribute = text(longestName_)) {
       const std::string type = text(longestName_);
@@ -70,12 +73,14 @@ class HeaderWalk {
       if (type == "box2i" && attribute == "dataWindow")
         window = std::array<int32_t, 4>{int32_t(uint32At(at_)), int32_t(uint32At(at_ + 4)), int32_t(uint32At(at_ + 8)),
                                         int32_t(uint32At(at_ + 12))};
-      if (type == "tiledesc") checkExrDeclaredSize(uint32At(at_), uint32At(at_ + 4), 1, maxValues_, name_);
+      if (type == "tiledesc") tile = std::array<uint32_t, 2>{uint32At(at_), uint32At(at_ + 4)};
       at_ += bytes;
     }
+    if (!first) return;
     if (window)
       checkExrDeclaredSize(int64_t((*window)[2]) - (*window)[0] + 1, int64_t((*window)[3]) - (*window)[1] + 1, channels_,
                            maxValues_, name_);
+    if (tile) checkExrDeclaredSize((*tile)[0], (*tile)[1], channels_, maxValues_, name_);  // a tile buffer a channel
   }
 
   // The bytes OpenEXR reads for a value of `type` at at_ (counting a channel list's channels).
@@ -89,7 +94,10 @@ class HeaderWalk {
       at_ = start;
       return end - start;
     }
-    if (type == "preview") return 8 + 4 * uint64_t(uint32At(at_)) * uint32At(at_ + 4);
+    if (type == "preview") {  // width, height, then 4 bytes a pixel (saturated: past the file's end either way)
+      const uint64_t pixels = uint64_t(uint32At(at_)) * uint32At(at_ + 4);
+      return pixels > (UINT64_MAX - 8) / 4 ? UINT64_MAX : 8 + 4 * pixels;
+    }
     if (int32_t(declared) < 0) throw fail("its header declares a negative size for a " + type);
     return declared;  // strings, vectors, opaque types: their declared size
   }

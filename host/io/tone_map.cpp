@@ -28,16 +28,19 @@ const char* toneMapName(ToneMap t) { return t == ToneMap::Neutral ? "neutral" : 
 double luminance(double r, double g, double b) { return 0.2126 * r + 0.7152 * g + 0.0722 * b; }
 
 double autoExposureStops(const std::vector<double>& luminance) {
-  // delta keeps black pixels from sending the log-average to 0 (Reinhard's small value, relative to the image).
-  double peak = 0.0;
+  // The log-average of the lit pixels: those above a thousandth of the 95th percentile. Black pixels (a subject
+  // against a black world) would otherwise drag the average toward 0 and blow the subject out.
+  std::vector<double> positive;
   for (double l : luminance)
-    if (std::isfinite(l) && l > 0.0) peak = std::max(peak, l);
-  if (peak == 0.0) return 0.0;
-  const double delta = 1e-6 * peak;
+    if (std::isfinite(l) && l > 0.0) positive.push_back(l);
+  if (positive.empty()) return 0.0;
+  auto p95 = positive.begin() + std::ptrdiff_t(0.95 * double(positive.size() - 1));
+  std::nth_element(positive.begin(), p95, positive.end());
+  const double floor = kLitFraction * *p95;
   double sum = 0.0;
   size_t n = 0;
-  for (double l : luminance)
-    if (std::isfinite(l) && l >= 0.0) sum += std::log(delta + l), ++n;
+  for (double l : positive)
+    if (l > floor) sum += std::log(l), ++n;
   const double logAverage = std::exp(sum / double(n));
   return std::clamp(std::log2(kMiddleGrey / logAverage), -kMaxAutoStops, kMaxAutoStops);
 }

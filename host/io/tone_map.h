@@ -1,6 +1,6 @@
 // How the PNG preview shows a physical (linear, unbounded) image; the EXR is never tone-mapped.
-//   exposure: `auto` scales the image so that its log-average luminance lands on middle grey (Reinhard et al. 2002,
-//             "Photographic tone reproduction", key 0.18), or a fixed number of stops;
+//   exposure: `auto` scales the image so that the log-average luminance of its lit pixels lands on middle grey
+//             (Reinhard et al. 2002, "Photographic tone reproduction", key 0.18), or a fixed number of stops;
 //   tone map: `neutral`, the Khronos PBR Neutral operator (colours below 0.76 kept, less a black offset of at
 //             most 0.04; highlights compressed toward white), or `clamp` (linear, values above 1 clipped);
 //   then the sRGB transfer function to 8 bits.
@@ -26,9 +26,10 @@ ToneMap parseToneMap(const std::string& text);
 const char* toneMapName(ToneMap t);
 
 constexpr double kMiddleGrey = 0.18;
-constexpr double kMaxAutoStops = 24.0;  // an all-black image is not scaled past this
-// The stops that bring the log-average of `luminance` (finite, non-negative values; others ignored) to middle
-// grey; 0 for an image with no such value.
+constexpr double kMaxAutoStops = 24.0;  // a nearly black image is not scaled past this
+constexpr double kLitFraction = 1e-3;   // lit: above this fraction of the 95th percentile of positive luminances
+// The stops that bring the log-average of the lit values of `luminance` to middle grey (non-finite and
+// non-positive values ignored); 0 for an image with no positive value.
 double autoExposureStops(const std::vector<double>& luminance);
 double luminance(double r, double g, double b);  // Rec. 709 weights
 

@@ -6,7 +6,8 @@
 
 namespace vkmc {
 
-// The ground: triangles facing up or down (|normal.y| > kGroundFlatness). It is left out when leaving it out
+// The ground: triangles facing up or down (|normal.y| > kGroundFlatness) below the middle of the rest (flat ones
+// above it, a roof or a canopy, count with the rest). It is left out when leaving it out
 // shrinks the bounds' horizontal extent more than kGroundShrink times; otherwise (or when nothing else is left),
 // the bounds are the whole scene's, points and lines included.
 constexpr float kGroundFlatness = 0.98f;

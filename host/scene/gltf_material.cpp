@@ -72,13 +72,16 @@ void makeUnlit(Material& m) {
   m.sheenColor = glm::vec3(0.0f);
 }
 
-// An interface of ior 1 with no metal neither reflects (F0 = 0) nor bends light: its microfacets are invisible and
-// its transmission goes straight through whatever the roughness, which is how it is rendered (the rough btdf is
-// degenerate at eta 1: it lost 2% of the light at roughness 0.3 and 29% at 1 in the glass furnace). A metal's
-// reflection keeps its roughness, so only metallicFactor 0 (any texture times 0) qualifies.
+// A volume's interface of ior 1 with no metal neither reflects nor bends light: its microfacets are invisible, so
+// it is rendered straight through, whatever its roughness (the rough btdf is degenerate at eta 1: it lost 2% of the
+// light at roughness 0.3 and 29% at 1 in the glass furnace), and without Schlick's grazing reflection (its F90 is
+// specularFactor, which an index-matched interface does not have). A metal's reflection keeps its roughness, so
+// only metallicFactor 0 (any texture times 0) qualifies; thin-walled transmission (no volume) does not depend on
+// the ior and keeps its roughness.
 void matchIndex(Material& m) {
   constexpr float kMatched = 1e-3f;
-  if (m.transmission > 0.0f && std::abs(m.ior - 1.0f) < kMatched && m.metallic == 0.0f) m.roughness = 0.0f;
+  if (m.transmission > 0.0f && m.volumetric && std::abs(m.ior - 1.0f) < kMatched && m.metallic == 0.0f)
+    m.roughness = 0.0f, m.specular = 0.0f;
 }
 
 }  // namespace

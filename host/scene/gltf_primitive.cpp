@@ -153,6 +153,7 @@ PrimitiveData readPrimitive(const tinygltf::Model& model, const tinygltf::Primit
   if (!data.colors.empty() && model.accessors[colorAccessor].type == TINYGLTF_TYPE_VEC3)
     for (glm::vec4& c : data.colors) c.w = 1.0f;
   applyMorphTargets(model, prim, request, data);
+  std::vector<bool> mirrored;  // per vertex, by the skin
   if (request.joints) {
     // Joint indices are unsigned bytes or shorts; anything else (a float past a uint's range) reads as no joint.
     for (const glm::vec4& j : readAttribute<glm::vec4>(model, prim.attributes, "JOINTS_0", {TINYGLTF_TYPE_VEC4}, n, limit)) {
@@ -162,13 +163,19 @@ PrimitiveData readPrimitive(const tinygltf::Model& model, const tinygltf::Primit
       data.joints.push_back(index);
     }
     data.weights = readAttribute<glm::vec4>(model, prim.attributes, "WEIGHTS_0", {TINYGLTF_TYPE_VEC4}, n, limit);
-    applySkin(data, *request.joints);
+    mirrored = applySkin(data, *request.joints);
   }
   if (isPointOrLineMode(prim.mode)) {
     data.segments = readSegments(model, prim, n, limit);
     return data;
   }
   data.triangles = readTriangles(model, prim, n, limit);
+  // A triangle most of whose corners a skin mirrors keeps its facing by swapping its winding (as a node's
+  // mirroring transform does, gltf_loader.cpp).
+  for (size_t t = 0; !mirrored.empty() && t < data.triangles.size() / 3; ++t) {
+    uint32_t* c = &data.triangles[3 * t];
+    if (int(mirrored[c[0]]) + int(mirrored[c[1]]) + int(mirrored[c[2]]) >= 2) std::swap(c[1], c[2]);
+  }
   if (request.generateTangents && data.tangents.empty()) {
     data.tangents =
         generateTangents(data.positions, data.normals, request.tangentUvSet == 1 ? data.uv1 : data.uv0, data.triangles);

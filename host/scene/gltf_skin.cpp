@@ -30,9 +30,10 @@ std::vector<glm::mat4> jointMatrices(const tinygltf::Model& model, int skinIndex
   return joints;
 }
 
-void applySkin(PrimitiveData& data, const std::vector<glm::mat4>& joints) {
+std::vector<bool> applySkin(PrimitiveData& data, const std::vector<glm::mat4>& joints) {
   if (data.joints.size() != data.positions.size() || data.weights.size() != data.positions.size())
     throw Error("a skinned mesh's primitive lacks JOINTS_0 and WEIGHTS_0 for every vertex");
+  std::vector<bool> mirrored(data.positions.size(), false);
   for (size_t v = 0; v < data.positions.size(); ++v) {
     glm::mat4 m(0.0f);
     float total = 0.0f;
@@ -49,10 +50,12 @@ void applySkin(PrimitiveData& data, const std::vector<glm::mat4>& joints) {
     m = total > 0.0f ? m / total : glm::mat4(1.0f);
     data.positions[v] = glm::vec3(m * glm::vec4(data.positions[v], 1.0f));
     const glm::mat3 linear(m);
+    mirrored[v] = glm::determinant(linear) < 0.0f;  // a mirroring skeleton swaps handedness (and the winding)
     if (!data.normals.empty()) data.normals[v] = glm::transpose(glm::inverse(linear)) * data.normals[v];
     if (!data.tangents.empty() && !data.tangentsPerCorner)
-      data.tangents[v] = glm::vec4(linear * glm::vec3(data.tangents[v]), data.tangents[v].w);
+      data.tangents[v] = glm::vec4(linear * glm::vec3(data.tangents[v]), mirrored[v] ? -data.tangents[v].w : data.tangents[v].w);
   }
+  return mirrored;
 }
 
 }  // namespace vkmc

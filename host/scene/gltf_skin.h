@@ -14,8 +14,9 @@ namespace vkmc {
 // One matrix per joint of skin `skin`; throws vkmc::Error for a joint or accessor that does not exist or fit.
 std::vector<glm::mat4> jointMatrices(const tinygltf::Model& model, int skin, const std::vector<glm::mat4>& worldTransforms);
 
-// Positions, normals and tangents of `data` (with its joints and weights) into world space. Throws vkmc::Error for
-// a joint index past `joints`.
-void applySkin(PrimitiveData& data, const std::vector<glm::mat4>& joints);
+// Positions, normals and tangents of `data` (with its joints and weights) into world space, a mirroring vertex's
+// tangent handedness flipped. Returns which vertices the skin mirrors (their triangles' winding is the caller's to
+// swap). Throws vkmc::Error for a joint index past `joints`.
+std::vector<bool> applySkin(PrimitiveData& data, const std::vector<glm::mat4>& joints);
 
 }  // namespace vkmc

@@ -95,6 +95,10 @@ TEST(Exr, AnAttributeLargerThanItsFileIsRefusedBeforeAllocation) {
       {std::string("huge\0opaque\0", 12) + u32(0x7ffffff0) + "xy", "attribute 'huge' declares 2147483632 bytes"},
       {std::string("note\0string\0", 12) + u32(0x7ffffff0) + "xy", "attribute 'note' declares 2147483632 bytes"},
       {std::string("preview\0preview\0", 16) + u32(8) + u32(65535) + u32(65535), "attribute 'preview' declares 17179344908"},
+      {std::string("preview\0preview\0", 16) + u32(8) + u32(0xffffffffu) + u32(0xffffffffu), "attribute 'preview' declares"},
+      // A tile of 4096 x 4096 is under the limit alone, but not times the file's 3 channels.
+      {std::string("tiles\0tiledesc\0", 15) + u32(9) + u32(4096) + u32(4096) + std::string(1, '\0'),
+       "4096x4096 pixels of 3 channels"},
   };
   for (const auto& row : rows) {
     std::string bytes = valid;
@@ -105,7 +109,7 @@ TEST(Exr, AnAttributeLargerThanItsFileIsRefusedBeforeAllocation) {
       rlimit cap{uint64_t(1) << 30, uint64_t(1) << 30};
       setrlimit(RLIMIT_AS, &cap);
       try {
-        decodeExr(bytes, "forged", 1 << 16);
+        decodeExr(bytes, "forged", 1 << 24);
       } catch (const Error& e) {
         _exit(std::string(e.what()).find(row.expected) != std::string::npos ? 0 : 1);
       }

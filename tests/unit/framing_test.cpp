@@ -46,3 +46,11 @@ TEST(Framing, AGroundOfTheSubjectsSizeAndAFlatSceneAreKept) {
   EXPECT_FALSE(framingBounds(flat).groundLeftOut);
   EXPECT_EQ(framingBounds(flat).bounds.max.x, 200.0f);
 }
+
+// A huge flat canopy above the subject is not a ground: it stays in the frame.
+TEST(Framing, AFlatCanopyAboveIsNotAGround) {
+  Scene s;
+  addSubject(s);
+  addTriangle(s, {-200, 5, -200}, {200, 5, 200}, {200, 5, -200});
+  EXPECT_FALSE(framingBounds(s).groundLeftOut);
+}

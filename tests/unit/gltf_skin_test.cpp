@@ -23,7 +23,8 @@ std::filesystem::path dir() {
 // One triangle: corner 0 bound to joint 0, corner 1 to joint 1, corner 2 half to each. Joint 0 sits at the
 // origin; joint 1 is translated by (0, 10, 0) and its inverse bind matrix by (0, -2, 0), so it moves its vertices
 // by (0, 8, 0). The mesh's node is translated by (100, 0, 0), which a skinned mesh ignores.
-std::string skinned(const std::string& name, const std::string& joints = "[1,2]", uint8_t secondJoint = 1) {
+std::string skinned(const std::string& name, const std::string& joints = "[1,2]", uint8_t secondJoint = 1,
+                    const std::string& rootScale = "[1,1,1]") {
   GltfBuilder b;
   std::vector<float> positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
   std::vector<uint8_t> jointIds = {0, 0, 0, 0, secondJoint, 0, 0, 0, 0, secondJoint, 0, 0};
@@ -33,7 +34,8 @@ std::string skinned(const std::string& name, const std::string& joints = "[1,2]"
   std::memcpy(matrices.data(), inverseBind, sizeof(inverseBind));
   int p = b.accessor(positions, 5126, "VEC3", 3), j = b.accessor(jointIds, 5121, "VEC4", 3);
   int w = b.accessor(weights, 5126, "VEC4", 3), m = b.accessor(matrices, 5126, "MAT4", 2);
-  std::string body = R"("nodes":[{"mesh":0,"skin":0,"translation":[100,0,0]},{"name":"root","children":[2]},
+  std::string body = R"("nodes":[{"mesh":0,"skin":0,"translation":[100,0,0]},{"name":"root","children":[2],"scale":)" +
+                     rootScale + R"(},
       {"name":"arm","translation":[0,10,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":)" +
                      std::to_string(p) + R"(,"JOINTS_0":)" + std::to_string(j) + R"(,"WEIGHTS_0":)" + std::to_string(w) +
                      R"(}}]}],"skins":[{"joints":)" + joints + R"(,"inverseBindMatrices":)" + std::to_string(m) + "}]";
@@ -54,4 +56,14 @@ TEST(GltfSkin, VerticesFollowTheirJointsInTheDefaultPose) {
 TEST(GltfSkin, BadJointsAreRefusedWithOneLine) {
   EXPECT_NE(test::loadError(skinned("missing_node", "[1,9]")).find("skin 0: joint 1 is not a node"), std::string::npos);
   EXPECT_NE(test::loadError(skinned("past_skin", "[1,2]", 7)).find("names joint 7 of a skin of 2"), std::string::npos);
+}
+
+// A skeleton mirrored by its root's scale (1, 1, -1), as converters write: the triangle keeps its facing by
+// swapping its winding (corners 1 and 2), as a mirroring node transform does.
+TEST(GltfSkin, AMirroringSkeletonSwapsTheWinding) {
+  Scene s = loadGltf(skinned("mirrored", "[1,2]", 1, "[1,1,-1]"));
+  ASSERT_EQ(s.triangleCount(), 1u);
+  EXPECT_EQ(s.positions[0], glm::vec3(0, 0, 0));
+  EXPECT_EQ(s.positions[1], glm::vec3(0, 5, 0)) << "the corners after the first swapped";
+  EXPECT_EQ(s.positions[2], glm::vec3(1, 8, 0));
 }

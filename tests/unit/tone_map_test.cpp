@@ -22,6 +22,10 @@ TEST(ToneMap, AutomaticExposureBringsTheLogAverageToMiddleGrey) {
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
   EXPECT_NEAR(autoExposureStops({1.0, nan, inf, -1.0}), std::log2(kMiddleGrey), 1e-5) << "non-finite and negative ignored";
   EXPECT_EQ(autoExposureStops({0.0, 0.0}), 0.0) << "a black image is not scaled";
+  // A subject against a black world: exposed for the subject, not for the mostly black frame.
+  std::vector<double> subject(90, 0.0);
+  subject.insert(subject.end(), 10, 0.3);
+  EXPECT_NEAR(autoExposureStops(subject), std::log2(kMiddleGrey / 0.3), 1e-9);
   EXPECT_EQ(autoExposureStops({1e-300}), kMaxAutoStops) << "bounded";
 }
 
