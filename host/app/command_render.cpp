@@ -30,6 +30,7 @@
 #include "io/png.h"
 #include "io/tone_map.h"
 #include "scene/gltf_loader.h"
+#include "scene/studio_environment.h"
 #include "vk/context.h"
 
 namespace vkmc {
@@ -240,7 +241,8 @@ void checkOutputs(const RenderArgs& a, const std::string& checkpoint) {
   if (!RankGroup::world().isRoot()) return;
   const RenderOptions& ro = a.options;
   std::vector<std::string> inputs = gltfInputFiles(ro.scenePath);
-  inputs.insert(inputs.end(), {ro.referencePath, ro.estimatorAuto ? "" : a.estimatorFile, ro.environmentPath});
+  inputs.insert(inputs.end(), {ro.referencePath, ro.estimatorAuto ? "" : a.estimatorFile,
+                               ro.environmentPath == kStudioEnvironment ? "" : ro.environmentPath});
   checkOutputPaths({{"--output", a.out},
                     {"--png", a.png},
                     {"--efficiency-png", a.efficiencyPng},
@@ -459,8 +461,8 @@ void addCameraAndLightOptions(CLI::App* render, RenderArgs& a) {
       ->group(kLightsGroup);
   render
       ->add_option("--environment", ro.environmentPath,
-                   "environment light: equirectangular .hdr or .exr, +Y up, the image's centre along -Z (default: none; "
-                   "a constant white environment, with a warning, for a scene with no other light)")
+                   "environment light: equirectangular .hdr or .exr, +Y up, the image's centre along -Z, or studio (a "
+                   "built-in softbox studio); default: none, a constant white one with a warning for a scene with no other light")
       ->group(kLightsGroup);
   render->add_option("--environment-rotation", ro.environmentRotation, "rotation of the environment about +Y in degrees")
       ->capture_default_str()

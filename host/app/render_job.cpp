@@ -24,6 +24,7 @@
 #include "render/render_kernels.h"
 #include "scene/camera_rig.h"
 #include "scene/framing.h"
+#include "scene/studio_environment.h"
 #include "scene/gltf_loader.h"
 #include "scene/content_hash.h"
 #include "scene/coordinate_precision.h"
@@ -158,7 +159,11 @@ namespace {
 // --background, and no emitters or only textured ones), a constant environment of radiance 1, importance sampled,
 // with a warning.
 void addEnvironmentLight(const RenderOptions& options, Scene& scene, RenderOutcome& out, uint64_t maxTexels) {
-  if (!options.environmentPath.empty()) {
+  if (options.environmentPath == kStudioEnvironment) {
+    scene.environment = studioEnvironment();
+    scene.environment->rotationDegrees = options.environmentRotation;
+    for (glm::vec3& L : scene.environment->radiance) L *= options.environmentStrength;
+  } else if (!options.environmentPath.empty()) {
     scene.environment =
         readEnvironmentMap(options.environmentPath, options.environmentRotation, options.environmentStrength, maxTexels);
   } else if (getsDefaultLight(options, scene)) {
@@ -290,7 +295,7 @@ RenderSettings renderSettings(const RenderOptions& options, const Scene& scene, 
   if (options.withoutTextures) settings.features.textures = settings.features.normalMaps = settings.features.alpha = false;
   settings.seed = options.seed;
   settings.background = options.background.value_or(glm::vec3(0.0f));
-  if (getsDefaultLight(options, scene)) settings.backdrop = kDefaultBackdrop;
+  if (getsDefaultLight(options, scene) || options.environmentPath == kStudioEnvironment) settings.backdrop = kDefaultBackdrop;
   settings.filter = options.filter;
   settings.camera = makeCameraRig(f.camera, f.width, f.height);
   settings.progress = options.progress;

@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "error.h"
+#include "scene/studio_environment.h"
 
 namespace vkmc {
 namespace {
@@ -55,28 +56,29 @@ std::optional<T> optionalFrom(const nlohmann::json& j) {
 }  // namespace
 
 nlohmann::json renderOptionsJson(const RenderOptions& o) {
-  nlohmann::json j = {{"scene", absolutePath(o.scenePath)},
-                      {"width", optionalJson(o.width)},
-                      {"height", optionalJson(o.height)},
-                      {"spp", o.spp},
-                      {"estimator", o.estimator.toJson()},
-                      {"seed", o.seed},
-                      {"camera", optionalJson(o.cameraIndex)},
-                      {"look_from", vec3Json(o.lookFrom)},
-                      {"look_at", vec3Json(o.lookAt)},
-                      {"fov", o.fovDegrees},
-                      {"background", vec3Json(o.background)},
-                      {"environment", absolutePath(o.environmentPath)},
-                      {"environment_rotation", o.environmentRotation},
-                      {"environment_strength", o.environmentStrength},
-                      {"filter", {{"name", pixelFilterName(o.filter.kind)}, {"radius", o.filter.radius}}},
-                      {"time_budget", o.timeBudget},
-                      {"reference", absolutePath(o.referencePath)},
-                      {"specialize", o.specialize},
-                      {"without_textures", o.withoutTextures},
-                      {"workgroup", o.workgroupSize},
-                      {"wavefront_paths", o.wavefrontPaths},
-                      {"integrator", toString(o.integrator)}};
+  nlohmann::json j = {
+      {"scene", absolutePath(o.scenePath)},
+      {"width", optionalJson(o.width)},
+      {"height", optionalJson(o.height)},
+      {"spp", o.spp},
+      {"estimator", o.estimator.toJson()},
+      {"seed", o.seed},
+      {"camera", optionalJson(o.cameraIndex)},
+      {"look_from", vec3Json(o.lookFrom)},
+      {"look_at", vec3Json(o.lookAt)},
+      {"fov", o.fovDegrees},
+      {"background", vec3Json(o.background)},
+      {"environment", o.environmentPath == kStudioEnvironment ? o.environmentPath : absolutePath(o.environmentPath)},
+      {"environment_rotation", o.environmentRotation},
+      {"environment_strength", o.environmentStrength},
+      {"filter", {{"name", pixelFilterName(o.filter.kind)}, {"radius", o.filter.radius}}},
+      {"time_budget", o.timeBudget},
+      {"reference", absolutePath(o.referencePath)},
+      {"specialize", o.specialize},
+      {"without_textures", o.withoutTextures},
+      {"workgroup", o.workgroupSize},
+      {"wavefront_paths", o.wavefrontPaths},
+      {"integrator", toString(o.integrator)}};
   // Only where it is on: the options of a render without it read as they did before it existed.
   if (o.estimatorAuto) j["estimator_auto"] = {{"pinned", o.pinnedKeys}};
   return j;

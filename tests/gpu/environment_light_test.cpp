@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "io/exr.h"
+#include "scene/studio_environment.h"
 #include "support/render_helpers.h"
 #include "support/test_scenes.h"
 
@@ -91,6 +92,30 @@ TEST(EnvironmentLight, TheDefaultLightsBackdropIsGreyForCameraRaysOnly) {
   RenderOutcome given = runRender(sharedContext(), o, planeScene());
   EXPECT_EQ(given.backdrop, 0.0f);
   EXPECT_NEAR(given.film.mean(0, 1), 0.25, 1e-6) << "--background: seen by escaped camera rays too";
+}
+
+// --environment studio: the Lambertian plane (facing +Z) has radiance rho / pi times the studio's cosine-weighted
+// radiance over its hemisphere, summed here over the map's texels (the texels' exact solid angles; the cosine at
+// each texel's centre, a quadrature error under 0.2% at 128 x 64), and the camera sees the grey backdrop.
+TEST(EnvironmentLight, TheStudioEnvironmentLightsAsItsMapIntegrates) {
+  const EnvironmentMap studio = studioEnvironment();
+  double irradiance = 0.0;
+  for (uint32_t y = 0; y < studio.height; ++y)
+    for (uint32_t x = 0; x < studio.width; ++x) {
+      const glm::vec3 w = equirectangularDirection(x, y, studio.width, studio.height);
+      const double band = std::cos(M_PI * y / studio.height) - std::cos(M_PI * (y + 1) / studio.height);
+      irradiance += studio.radiance[size_t(y) * studio.width + x].x * std::max(0.0f, w.z) * band * 2.0 * M_PI / studio.width;
+    }
+  RenderOptions o = planeView(64, 6);
+  o.environmentPath = kStudioEnvironment;
+  RenderOutcome r = runRender(sharedContext(), o, planeScene());
+  EXPECT_EQ(r.environment, "studio");
+  EXPECT_EQ(r.backdrop, kDefaultBackdrop);
+  EXPECT_EQ(r.film.totalNonfinite(), 0u);
+  const double expected = kRho / M_PI * irradiance;
+  const glm::dvec3 mean = r.film.imageMean(), var = r.film.imageMeanVarianceOfMean();
+  EXPECT_TRUE(withinSigmas(zTest(mean.y, expected, std::sqrt(var.y / r.film.pixels()), 2e-3 * expected), 5.0))
+      << mean.y << " against " << expected;
 }
 
 TEST(EnvironmentLight, NeeWithMisLightSamplingAloneAndBsdfSamplingAgreeUnderAMap) {

@@ -28,3 +28,15 @@ TEST(RenderOptionsJson, RoundTripsAndRefusesForgedNumbers) {
     EXPECT_THROW(renderOptionsFromJson(forged), Error) << key << " = " << value;
   }
 }
+
+// The built-in studio is a name, not a path: a checkpoint keeps it as it is (an absolute path would be looked for
+// as a file on resume).
+TEST(RenderOptionsJson, TheStudioEnvironmentStaysANameAndAFileBecomesAbsolute) {
+  RenderOptions o;
+  o.scenePath = "/scenes/x.gltf";
+  o.environmentPath = "studio";
+  EXPECT_EQ(renderOptionsJson(o)["environment"], "studio");
+  EXPECT_EQ(renderOptionsFromJson(renderOptionsJson(o)).environmentPath, "studio");
+  o.environmentPath = "sky.hdr";
+  EXPECT_EQ(renderOptionsJson(o)["environment"].get<std::string>().front(), '/');
+}
