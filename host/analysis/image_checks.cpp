@@ -3,12 +3,14 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/tone_map.h"
+
 namespace vkmc {
 
 std::optional<std::string> blackImageWarning(const Film& film) {
   size_t black = 0, counted = 0;
   for (size_t p = 0; p < film.pixels(); ++p) {
-    const double l = 0.2126 * film.mean(p, 0) + 0.7152 * film.mean(p, 1) + 0.0722 * film.mean(p, 2);
+    const double l = luminance(film.mean(p, 0), film.mean(p, 1), film.mean(p, 2));
     if (!std::isfinite(l)) continue;
     ++counted;
     black += std::abs(l) < kBlackLuminance;
