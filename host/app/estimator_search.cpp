@@ -7,7 +7,7 @@
 #include <random>
 
 #include "../shaders/shared/rng.h"
-#include "app/roulette_pilot.h"
+#include "policy/efficiency_roulette_pilot.h"
 #include "estimators/estimator_params.h"
 #include "render/film.h"
 #include "render/path_renderer.h"

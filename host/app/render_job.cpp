@@ -13,7 +13,7 @@
 #include "analysis/variance_reliability.h"
 #include "app/malloc_tuning.h"
 #include "app/render_options_json.h"
-#include "app/roulette_pilot.h"
+#include "policy/efficiency_roulette_pilot.h"
 #include "bvh/bvh.h"
 #include "error.h"
 #include "io/checkpoint.h"

@@ -14,7 +14,7 @@
 #include "estimators/estimator_config.h"
 #include "policy/sample_rounds.h"
 #include "render/ears_cache.h"
-#include "render/ears_guard.h"
+#include "passes/ears_guard.h"
 #include "render/film.h"
 #include "render/path_renderer.h"
 #include "render/pixel_filter.h"

@@ -163,4 +163,17 @@ uint64_t Film::totalSamples() const {
   return n;
 }
 
+std::vector<PixelSums> batchPixelSums(const gpu::FilmPixel* batch, size_t pixels) {
+  std::vector<PixelSums> sums(pixels);
+  if (!batch) return sums;
+  for (size_t p = 0; p < pixels; ++p) {
+    sums[p].n = batch[p].sum.w;
+    for (int c = 0; c < 3; ++c) {
+      sums[p].sum[c] = batchChannelSum(batch[p], c);
+      sums[p].sumSq[c] = batchChannelSumSq(batch[p], c);
+    }
+  }
+  return sums;
+}
+
 }  // namespace vkmc

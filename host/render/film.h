@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "../shaders/shared/layout.h"
+#include "passes/ears_image_statistics.h"
 
 namespace vkmc {
 
@@ -71,6 +72,8 @@ struct Film {
 // added back.
 double batchChannelSum(const gpu::FilmPixel& f, int c);
 double batchChannelSumSq(const gpu::FilmPixel& f, int c);
+// The device batch's sums per pixel, its high-range sums added back (null batch: zeros).
+std::vector<PixelSums> batchPixelSums(const gpu::FilmPixel* batch, size_t pixels);
 
 // The running pixel estimate that shadow-ray roulette and EARS compare contributions against: per pixel the mean
 // of the folded film and, when given, the device's unfolded batch (rgb), and its luminance (w); 0 where no

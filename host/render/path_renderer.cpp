@@ -16,23 +16,18 @@
 #include "error.h"
 #include "render/path_pool.h"
 #include "render/pixel_filter_table.h"
+#include "passes/ears_guard_policy.h"
+#include "passes/pass_policies.h"
 #include "render/time_budget.h"
 
 namespace vkmc {
 
 namespace {
-// The samples a pixel of EARS the guard measures (each look), and the fewest of throughput roulette (a sample
-// variance needs two; a short render's budget should not go to the comparison).
-constexpr uint32_t kEarsGuardSamples = 4;
-// EARS's passes before the one the guard measures: the first after training decides from a cache that has learned
-// from a few samples a pixel, and measured 0.6x the efficiency of later passes on two_rooms (docs/journal/ears.md).
-constexpr uint32_t kEarsGuardWarmPasses = 1;
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 constexpr uint32_t kFirstChunkBounces = 24;
 constexpr uint32_t kLaterChunkBounces = 16;
 constexpr uint32_t kSamplesPerBatch = 64;           // samples in a float batch sum before it is folded into double
-constexpr uint32_t kEarsTrainingPasses = 3;         // EARS's passes that only train (1, 2 and 4 spp)
 constexpr uint32_t kEarsTrainingSeed = 0x5bd1e995;  // their seeds: the render's, xor this
 constexpr uint32_t kEarsGuardSeed = 0x27d4eb2f;     // the guard's dropped throughput pass: the render's, xor this
 }  // namespace
@@ -211,9 +206,9 @@ gpu::PushConstants PathRenderer::passConstants(uint32_t firstPixel, uint32_t pix
   pc.sampleIndex = sampleIndex;
   pc.width = settings_.width;
   pc.height = settings_.height;
-  pc.seed = earsTraining_ && !earsTrainingKept_          ? settings_.seed ^ kEarsTrainingSeed
-            : earsPhase_ == EarsPhase::MeasureThroughput ? settings_.seed ^ kEarsGuardSeed
-                                                         : settings_.seed;
+  pc.seed = plan_.use == PassUse::Training   ? settings_.seed ^ kEarsTrainingSeed
+            : plan_.use == PassUse::Measured ? settings_.seed ^ kEarsGuardSeed
+                                             : settings_.seed;
   pc.queueCapacity = pool_;
   const CameraRig& cam = settings_.camera;
   pc.cameraOrigin = glm::vec4(cam.origin, cam.orthographic ? float(gpu::kCameraOrthographic) : float(gpu::kCameraPerspective));
@@ -267,7 +262,7 @@ void PathRenderer::recordCameraRays(VkCommandBuffer cmd, const gpu::PushConstant
 // One bounce: queue sizes into dispatch arguments, intersection (and its deep pass), shading, shadow rays.
 void PathRenderer::recordBounce(VkCommandBuffer cmd, const gpu::PushConstants& pc, bool prepared, bool earsTrains) {
   vk::GpuTimer* timer = timer_.get();
-  const RenderKernels::BounceKernels stage = kernels_.bounceKernels(earsTrains, throughputPass());
+  const RenderKernels::BounceKernels stage = kernels_.bounceKernels(earsTrains, plan_.kernels == PassKernels::Throughput);
   if (!prepared) vk::dispatch(cmd, *layout_, *kernels_.prepareBounce, &pc, sizeof(pc), 1, timer);
   // A trace stage's time includes its deep pass (the walks it deferred).
   if (timer) timer->begin(cmd, pc.bounce == 0 ? "intersect_primary" : "intersect");
@@ -301,12 +296,13 @@ uint32_t PathRenderer::renderPass(uint32_t firstPixel, uint32_t pixelCount, uint
                                   RenderStats& stats) {
   if (settings_.integrator == Integrator::Megakernel)
     return renderMegakernelPass(passConstants(firstPixel, pixelCount, sampleIndex, samples), stats);
-  if (!ears_->enabled() || throughputPass()) return renderWavefront(firstPixel, pixelCount, sampleIndex, samples, false, stats);
+  if (!ears_->enabled() || plan_.kernels == PassKernels::Throughput)
+    return renderWavefront(firstPixel, pixelCount, sampleIndex, samples, false, stats);
   // EARS: the pass's training samples first, as a wavefront of their own whose kernels train the cache; then the
   // cache learns from them, and the rest of the pass runs on kernels without the training code. Every sample's
   // decisions still come from other samples than its own: unbiased. A training pass trains on all its samples.
   ears_->beginPass();
-  const uint32_t training = earsTraining_ ? samples : gpu::earsTrainingSamples(pixelCount, samples);
+  const uint32_t training = plan_.kernels == PassKernels::EarsTraining ? samples : gpu::earsTrainingSamples(pixelCount, samples);
   const auto trainStart = Clock::now();
   uint32_t bounces = renderWavefront(firstPixel, pixelCount, sampleIndex, training, true, stats);
   trainEars(pixelCount * training, stats);
@@ -364,113 +360,6 @@ uint32_t PathRenderer::renderWavefront(gpu::PushConstants pc, bool earsTrains, R
   return bounce;
 }
 
-// EARS's training passes (kEarsTrainingPasses of 1, 2, 4... spp): they fill the cache and the pixel estimate. The
-// first, from an empty cache, is throughput roulette's estimator and stays in the image; the later ones are
-// dropped, so the image holds no sample whose decisions came from a barely trained cache (the first passes'
-// outliers). Dropping passes chosen in advance is unbiased; their own seed keeps every image sample's random
-// numbers apart from those that trained its decisions. Their rays and time are the render's cost. Returns the
-// next pass's size.
-uint32_t PathRenderer::trainEarsPasses(Film& film, uint32_t& nextSample, RenderStats& stats, Clock::time_point start) {
-  const uint32_t pixels = settings_.width * settings_.height;
-  uint32_t samples = 1;
-  earsTraining_ = true;
-  earsOutOfBudget_ = false;
-  earsLastPassSecondsPerSample_ = 0.0;
-  double firstPassSeconds = 0.0;
-  double throughputOverhead = -1.0;  // a pass's fixed seconds, once two throughput passes have measured it
-  uint32_t droppedIndex = 0;         // the dropped passes' samples follow each other in their own seed's sequence
-  // Under a time budget where the guard may fall back, the first pass is throughput roulette's own (its lean
-  // kernels, no training): what it costs says whether learning fits before any training kernel has run (on the
-  // stiff furnace one training pass was a quarter of a 4-s budget).
-  const bool throughputFirst = settings_.timeBudget > 0.0 && settings_.estimator.earsMayFallBack();
-  // What learning still needs after a pass of perSample seconds a sample: the training passes left and, where the
-  // guard will compare, a warm-up sample (a budget's first pass takes one), two looks of EARS and throughput
-  // roulette's measured passes (whole passes until 4 samples a pixel: measureThroughputForGuard). Those are costed
-  // from the first pass: its fixed overhead a pass (measured by a second throughput pass; until then each pass is
-  // costed as one first pass, which is optimistic, but every check counts what has elapsed, so the budget's share
-  // holds) and the rest by samples.
-  auto learningFits = [&](uint32_t pass, uint32_t nextPassSamples, double perSample) {
-    uint32_t trainingLeft = 0;
-    for (uint32_t later = pass + 1, n = nextPassSamples; later < kEarsTrainingPasses;
-         ++later, n = std::min(2 * n, samplesPerPass()))
-      trainingLeft += n;
-    const bool compares = earsGuardPending_;
-    const uint32_t throughputPasses = (kEarsGuardSamples + samplesPerPass() - 1) / samplesPerPass();
-    const double overhead = throughputOverhead >= 0.0 ? throughputOverhead : firstPassSeconds;
-    const double throughputSeconds = compares ? earsThroughputPassSeconds(firstPassSeconds, 1u, overhead, throughputPasses,
-                                                                          throughputPasses * samplesPerPass())
-                                              : 0.0;
-    const double left = earsLearningSecondsLeft(trainingLeft, compares ? kEarsGuardWarmPasses + 2 * kEarsGuardSamples : 0u,
-                                                perSample, throughputSeconds);
-    return !(trainingLeft > 0 || compares) || earsLearningFits(settings_.timeBudget, since(start), left);
-  };
-  for (uint32_t pass = 0; pass < kEarsTrainingPasses && nextSample < settings_.spp; ++pass) {
-    const uint64_t raysBefore = stats.rays();
-    const auto passStart = Clock::now();
-    // The first pass learns from nothing, so it decides everywhere as throughput roulette does: it is an image
-    // pass (the render's seed and next sample) and stays; the later ones decide from what it taught and are dropped.
-    earsTrainingKept_ = pass == 0;
-    const EarsPhase phase = earsPhase_;
-    if (pass == 0 && throughputFirst) earsPhase_ = EarsPhase::Throughput;
-    renderSamples(earsTrainingKept_ ? nextSample : droppedIndex, samples, stats);
-    earsPhase_ = phase;
-    if (!earsTrainingKept_) droppedIndex += samples;
-    const double passSeconds = since(passStart);
-    const double perSample = passSeconds / samples;
-    earsLastPassSecondsPerSample_ = perSample;
-    if (pass == 0) firstPassSeconds = passSeconds;
-    updateEarsStatistics(film, double(stats.rays() - raysBefore) / (double(pixels) * samples));
-    if (earsTrainingKept_) {
-      foldFilm(film);
-      nextSample += samples;
-      earsTrainingKept_ = false;
-    } else {
-      ears_->noteTrainingSamples(samples);
-    }
-    samples = std::min(2 * samples, samplesPerPass());
-    if (!learningFits(pass, samples, perSample)) {
-      earsOutOfBudget_ = true;
-      break;
-    }
-    // A second throughput pass tells a pass's fixed overhead from its cost a sample (the guard's costing needs it).
-    if (pass == 0 && throughputFirst && earsGuardPending_ && samplesPerPass() >= 2 && nextSample + 2 <= settings_.spp) {
-      throughputOverhead = measureThroughputPassOverhead(film, nextSample, stats, firstPassSeconds);
-      earsGuard_.passOverhead = throughputOverhead;
-      if (!learningFits(pass, samples, perSample)) {
-        earsOutOfBudget_ = true;
-        break;
-      }
-    }
-  }
-  earsTraining_ = false;
-  film_.zero();
-  resetEarsBatchSums();
-  return samples;
-}
-
-// A second pass of throughput roulette's own, of 2 samples a pixel and kept: with the first it tells a pass's fixed
-// overhead from its cost a sample (t = a + b n). A 1-spp pass is mostly overhead (dark_room at 96x96: 0.0375 s a
-// sample, against 0.0085 in a 28-spp pass), and costing the guard's measured pass at its seconds a sample stopped
-// learning even under a 32-s budget there (docs/journal/ears.md). Returns that overhead in seconds.
-double PathRenderer::measureThroughputPassOverhead(Film& film, uint32_t& nextSample, RenderStats& stats,
-                                                   double firstPassSeconds) {
-  const uint32_t pixels = settings_.width * settings_.height;
-  const uint64_t raysBefore = stats.rays();
-  const auto start = Clock::now();
-  const EarsPhase phase = earsPhase_;
-  earsTrainingKept_ = true;
-  earsPhase_ = EarsPhase::Throughput;
-  renderSamples(nextSample, 2, stats);
-  earsPhase_ = phase;
-  const double seconds = since(start);
-  earsLastPassSecondsPerSample_ = seconds / 2.0;
-  updateEarsStatistics(film, double(stats.rays() - raysBefore) / (double(pixels) * 2));
-  foldFilm(film);
-  nextSample += 2;
-  earsTrainingKept_ = false;
-  return earsPassOverhead(firstPassSeconds, 1, seconds, 2, firstPassSeconds);
-}
-
 void PathRenderer::trainEars(uint32_t cameras, RenderStats& stats) {
   gpu::PushConstants pc{};
   pc.queueCapacity = pool_;
@@ -525,131 +414,6 @@ double PathRenderer::earsTrainingPixelSamples(uint32_t samples) const {
   return n;
 }
 
-// After a pass under EARS: its statistics, or the guard's measurement of EARS (ears_guard.h; throughput roulette's is
-// measureThroughputForGuard's, whose V_img stays out of EARS's factors).
-void PathRenderer::afterEarsPass(const Film& film, double raysPerSample, double seconds, uint32_t samples, uint32_t nextSample) {
-  switch (earsPhase_) {
-    case EarsPhase::Ears: {
-      std::vector<PixelSums> pass = updateEarsStatistics(film, raysPerSample);
-      if (earsGuard_.watched && !earsGuard_.fellBack) watchEars(pass, samples, seconds, nextSample);
-      if (earsGuardPending_ && ++earsWarmPasses_ >= kEarsGuardWarmPasses) earsPhase_ = EarsPhase::MeasureEars;
-      return;
-    }
-    case EarsPhase::Throughput:
-      // Shadow-ray roulette's estimate from every sample so far, as without EARS.
-      if (settings_.estimator.shadowRrThreshold > 0.0f && ctx_.unifiedMemory()) refreshPixelEstimate(film);
-      return;
-    case EarsPhase::MeasureEars:
-    case EarsPhase::MeasureEarsAgain:
-      addEarsPassToTally(updateEarsStatistics(film, raysPerSample), samples, seconds);
-      if (earsTally_.samples < kEarsGuardSamples) return;
-      if (earsPhase_ == EarsPhase::MeasureEars)
-        earsPhase_ = EarsPhase::MeasureThroughput;
-      else
-        decideEarsGuard(nextSample, true);
-      return;
-    case EarsPhase::MeasureThroughput:  // measureThroughputForGuard's
-      return;
-  }
-}
-
-// The guard's throughput roulette pass: rendered on a batch of its own (the caller folds the film first) with its
-// own seed, measured, then dropped, a rule fixed in advance (unbiased, as EARS's training passes). Had it stayed,
-// an image that EARS goes on to render would hold samples of the policy that lost: on two_rooms, where a sample of
-// EARS has a fifth of throughput roulette's variance, 28 of them in 173 made the 4-s image 0.79x as efficient as
-// EARS's alone.
-void PathRenderer::measureThroughputForGuard(const Film& film, uint32_t sampleIndex, uint32_t samples, RenderStats& stats) {
-  const auto start = Clock::now();
-  renderSamples(sampleIndex, samples, stats);
-  const double seconds = since(start);
-  std::vector<gpu::FilmPixel> copy;
-  const gpu::FilmPixel* batch = currentBatch(copy);
-  throughputTally_.addPass(batchPixelSums(batch, film.pixels()), samples, seconds);
-  // What both policies' variances are relative to: the smoothed estimate with this pass's samples too (an estimate
-  // from the few samples before it left pixels near veach_mis's small lamps near 0, and V in the hundreds).
-  earsGuardScale_ = earsPixelEstimate(runningPixelEstimate(film, batch), settings_.width, settings_.height).smoothed;
-  film_.zero();
-  resetEarsBatchSums();
-  if (throughputTally_.samples >= kEarsGuardSamples) decideEarsGuard(sampleIndex, false);
-}
-
-void PathRenderer::addEarsPassToTally(const std::vector<PixelSums>& pass, uint32_t samples, double seconds) {
-  earsTally_.addPass(pass, samples, seconds);
-  earsTally_.trainSeconds += earsPassTrainSeconds_;
-  earsTally_.leanSeconds += earsPassLeanSeconds_;
-  earsTally_.trainPixelSamples += earsPassTrainPixelSamples_;
-  earsTally_.leanPixelSamples += earsPassLeanPixelSamples_;
-}
-
-// Each policy's measure from its tally, its variances relative to `scale`: EARS's seconds a sample as in a pass of
-// its later size.
-PolicyPass PathRenderer::earsMeasure(const std::vector<glm::vec4>& scale) const {
-  const uint32_t later = samplesPerPass();
-  return {relativeSampleVariance(earsTally_.sums, scale, gpu::kEarsEpsilon),
-          earsSecondsPerSample(earsTally_, double(settings_.width) * settings_.height, later, earsTrainingPixelSamples(later)),
-          earsTally_.samples};
-}
-PolicyPass PathRenderer::throughputMeasure(const std::vector<glm::vec4>& scale) const {
-  return {relativeSampleVariance(throughputTally_.sums, scale, gpu::kEarsEpsilon),
-          throughputTally_.seconds / throughputTally_.samples, throughputTally_.samples};
-}
-
-// EARS's passes after auto chose it, measured together against throughput roulette's pass, both relative to the
-// latest estimate: where EARS falls behind, throughput roulette renders the rest (EarsGuardOutcome::watched).
-void PathRenderer::watchEars(const std::vector<PixelSums>& pass, uint32_t samples, double seconds, uint32_t nextSample) {
-  addEarsPassToTally(pass, samples, seconds);
-  // Judged on no fewer samples a pixel than throughput roulette's measure, nor than the choice's.
-  if (earsTally_.samples < std::max(kEarsGuardSamples, throughputTally_.samples)) return;
-  const PolicyPass ears = earsMeasure(earsEstimate_.smoothed), throughput = throughputMeasure(earsEstimate_.smoothed);
-  if (!(std::isfinite(ears.relativeVariance) && std::isfinite(throughput.relativeVariance))) return;
-  earsGuard_.watchedEars = ears;
-  if (!earsFallsBack(EarsFallback::Auto, ears, throughput)) return;
-  earsGuard_.fellBack = earsGuard_.switchedLater = true;
-  earsGuard_.switchedAt = nextSample;
-  earsPhase_ = EarsPhase::Throughput;
-  earsTally_ = throughputTally_ = PolicyTally{};
-}
-
-void PathRenderer::decideEarsGuard(uint32_t nextSample, bool secondLook) {
-  earsPhase_ = EarsPhase::Ears;
-  // A second look's estimate holds EARS's next pass: as many samples as the first look's scale, or more.
-  const std::vector<glm::vec4>& scale = secondLook ? earsEstimate_.smoothed : earsGuardScale_;
-  const PolicyPass ears = earsMeasure(scale), throughput = throughputMeasure(scale);
-  const double vEars = ears.relativeVariance, vThroughput = throughput.relativeVariance;
-  const EarsFallback mode = settings_.estimator.earsFallback;
-  if (!(std::isfinite(vEars) && std::isfinite(vThroughput))) {
-    // Nothing to compare (no pixel with two samples): EARS as chosen, or after a first look that EARS lost, the
-    // first look's verdict.
-    if (secondLook) {
-      earsGuard_.ears = earsGuard_.firstEars;
-      earsGuard_.compared = earsGuard_.fellBack = true;
-      earsGuard_.fromSample = nextSample;
-      earsGuard_.decidedAtSeconds = since(passesStart_);
-      earsPhase_ = EarsPhase::Throughput;
-    }
-  } else if (!secondLook && earsGuardLooksAgain(mode, ears, throughput)) {
-    earsGuard_.secondLook = true;
-    earsGuard_.firstEars = ears;
-    earsGuard_.throughput = throughput;
-    earsTally_ = PolicyTally{};  // throughput roulette's tally stays, measured against the later estimate
-    earsPhase_ = EarsPhase::MeasureEarsAgain;
-    return;
-  } else {
-    earsGuard_.ears = ears;
-    earsGuard_.throughput = throughput;
-    earsGuard_.compared = true;
-    earsGuard_.fellBack = earsFallsBack(mode, ears, throughput);
-    earsGuard_.fromSample = nextSample;
-    earsGuard_.decidedAtSeconds = since(passesStart_);
-    if (earsGuard_.fellBack) earsPhase_ = EarsPhase::Throughput;
-  }
-  earsGuardPending_ = false;
-  earsTally_ = PolicyTally{};
-  // Chosen under auto, EARS is watched from here on against throughput roulette's pass, which stays.
-  earsGuard_.watched = earsGuard_.compared && !earsGuard_.fellBack && earsGuardWatches(mode);
-  if (!earsGuard_.watched) throughputTally_ = PolicyTally{};
-}
-
 void PathRenderer::refreshPixelEstimate(const Film& film) {
   std::vector<gpu::FilmPixel> copy;
   setPixelEstimate(runningPixelEstimate(film, currentBatch(copy)));
@@ -665,8 +429,8 @@ void PathRenderer::foldFilm(Film& film) {
     film.addBatch(batch.data());
   }
   // Under EARS the estimate of the passes so far, as updateEarsStatistics computed it from the film this folds
-  // (once the guard has fallen back, the film's own, as without EARS).
-  if (ears_->enabled() && earsHaveEstimate_ && earsPhase_ != EarsPhase::Throughput)
+  // (once the guard has fallen back to passes that do not learn, the film's own, as without EARS).
+  if (ears_->enabled() && earsHaveEstimate_ && lastPassLearned_)
     setPixelEstimate(earsEstimate_.smoothed);
   else
     uploadPixelEstimate(film);
@@ -813,9 +577,8 @@ uint32_t PathRenderer::prepareFilm(RenderState& state, bool shadowRoulette) {
   return inBatch;
 }
 
-// EARS before the render's own passes: its estimate, its guard's state, and its training passes. Returns the
-// next EARS pass's size; folds the batch (inBatch 0) and, under a budget, sets the next pass's seconds a sample.
-uint32_t PathRenderer::startEars(RenderState& state, uint32_t& inBatch, Clock::time_point start, double& secondsPerSample) {
+// EARS before the render's passes: its statistics' start, from a resumed render's folded film where there is one.
+void PathRenderer::startEars(RenderState& state, uint32_t& inBatch) {
   const uint32_t pixels = settings_.width * settings_.height;
   earsHaveEstimate_ = false;                           // nothing from an earlier render() on this renderer
   if (inBatch > 0) foldFilm(state.film), inBatch = 0;  // the training passes' samples are dropped from the batch
@@ -825,40 +588,71 @@ uint32_t PathRenderer::startEars(RenderState& state, uint32_t& inBatch, Clock::t
     earsEstimate_ = earsPixelEstimate(runningPixelEstimate(state.film), settings_.width, settings_.height);
     setPixelEstimate(earsEstimate_.smoothed);
   }
-  // The guard starts over (before the training passes, which must run EARS's kernels).
-  earsGuard_ = EarsGuardOutcome{};
-  earsTally_ = throughputTally_ = PolicyTally{};
-  earsGuardPending_ = settings_.estimator.earsMayFallBack();
-  earsWarmPasses_ = 0;
-  earsPhase_ = EarsPhase::Ears;
-  const uint32_t earsSamples = trainEarsPasses(state.film, state.nextSample, state.stats, start);
-  // Under a budget the next pass is sized from the training's last, as the loop's own passes are from theirs (it
-  // would otherwise start over at 1 sample a pixel: one more pass of fixed cost).
-  if (settings_.timeBudget > 0.0) secondsPerSample = earsLastPassSecondsPerSample_;
-  if (earsGuardPending_ && kEarsGuardWarmPasses == 0) earsPhase_ = EarsPhase::MeasureEars;
-  if (earsOutOfBudget_) {  // no comparison: throughput roulette where the guard may fall back, else EARS
-    earsGuardPending_ = false;
-    earsGuard_.outOfBudget = true;
-    earsGuard_.fromSample = state.nextSample;
-    earsGuard_.decidedAtSeconds = since(start);
-    earsGuard_.fellBack = settings_.estimator.earsFallback != EarsFallback::Never;
-    earsPhase_ = earsGuard_.fellBack ? EarsPhase::Throughput : EarsPhase::Ears;
-  }
-  return earsSamples;
 }
 
-// The next pass's samples a pixel from sample s: the guard's measured EARS samples, EARS's doubling passes, shadow
-// roulette's s + 1, or the pass size; never past spp.
-uint32_t PathRenderer::nextPassSamples(uint32_t s, uint32_t perPass, uint32_t earsSamples, bool shadowRoulette) const {
-  // The guard measures kEarsGuardSamples a pixel of EARS at each look, in passes no larger than the others: the
-  // cache learns from a pass's first samples only (earsTrainingSamples), so a larger second look learns no more.
-  const bool measuresEars = earsPhase_ == EarsPhase::MeasureEars || earsPhase_ == EarsPhase::MeasureEarsAgain;
-  const bool earsPass = ears_->enabled() && !throughputPass();
-  uint32_t samples = measuresEars                          ? std::min(perPass, kEarsGuardSamples - earsTally_.samples)
-                     : earsPass                            ? std::min(perPass, earsSamples)
-                     : shadowRoulette && !ears_->enabled() ? std::min(perPass, s + 1)
-                                                           : perPass;
-  return std::min(samples, settings_.spp - s);
+std::unique_ptr<PassPolicy> PathRenderer::passPolicy(bool shadowRoulette) const {
+  if (ears_->enabled()) {
+    EarsGuardSettings s;
+    s.fallback = settings_.estimator.earsFallback;
+    s.compares = settings_.estimator.earsMayFallBack();
+    s.timeBudget = settings_.timeBudget;
+    s.maxPassSamples = samplesPerPass();
+    s.pixels = double(settings_.width) * settings_.height;
+    s.trainingPixelSamples = earsTrainingPixelSamples(samplesPerPass());
+    return std::make_unique<EarsGuardPolicy>(s);
+  }
+  if (shadowRoulette) return std::make_unique<ShadowRoulettePacing>();
+  return std::make_unique<UniformPasses>();
+}
+
+void PathRenderer::dropBatch() {
+  film_.zero();
+  resetEarsBatchSums();
+  batchHoldsTraining_ = false;
+}
+
+// Carries out one plan: its batch (a measured pass gets one of its own and drops it; training passes follow the
+// kept samples' fold, and their batch is dropped when training ends), its seed and kernels, then what learns from
+// it: EARS's statistics, or the plain pixel estimate that shadow roulette reads.
+PassOutcome PathRenderer::runPlannedPass(const PassPlan& plan, RenderState& state, uint32_t& inBatch, bool shadowRoulette) {
+  const uint32_t pixels = settings_.width * settings_.height;
+  if (plan.use != PassUse::Image && inBatch > 0) foldFilm(state.film), inBatch = 0;
+  if (plan.use != PassUse::Training && batchHoldsTraining_) dropBatch();
+  plan_ = plan;
+  PassOutcome o;
+  o.plan = plan;
+  const uint64_t raysBefore = state.stats.rays();
+  const double passStart = since(passesStart_);
+  renderSamples(plan.use == PassUse::Training ? droppedIndex_ : state.nextSample, plan.samples, state.stats);
+  o.seconds = since(passesStart_) - passStart;
+  o.trainSeconds = earsPassTrainSeconds_, o.leanSeconds = earsPassLeanSeconds_;
+  o.trainPixelSamples = earsPassTrainPixelSamples_, o.leanPixelSamples = earsPassLeanPixelSamples_;
+  std::vector<PixelSums>& sums = passSums_;
+  std::vector<glm::vec4>& scale = passScale_;
+  if (plan.use == PassUse::Measured) {
+    std::vector<gpu::FilmPixel> copy;
+    const gpu::FilmPixel* batch = currentBatch(copy);
+    sums = batchPixelSums(batch, state.film.pixels());
+    scale = earsPixelEstimate(runningPixelEstimate(state.film, batch), settings_.width, settings_.height).smoothed;
+    dropBatch();
+  } else if (plan.learns) {
+    sums = updateEarsStatistics(state.film, double(state.stats.rays() - raysBefore) / (double(pixels) * plan.samples));
+    scale = earsEstimate_.smoothed;
+  } else if (shadowRoulette) {
+    refreshPixelEstimate(state.film);
+  }
+  if (plan.use == PassUse::Measured || plan.learns) o.sums = &sums, o.scale = &scale;
+  if (plan.use == PassUse::Image) state.nextSample += plan.samples, inBatch += plan.samples;
+  if (plan.use == PassUse::Training) {
+    droppedIndex_ += plan.samples;
+    batchHoldsTraining_ = true;
+    ears_->noteTrainingSamples(plan.samples);
+  }
+  if (plan.use != PassUse::Measured) lastPassLearned_ = plan.learns;
+  o.nextSample = state.nextSample;
+  o.elapsed = since(passesStart_);
+  plan_ = PassPlan{};
+  return o;
 }
 
 void PathRenderer::printProgress(uint32_t s, uint32_t firstSample, double elapsed, double secondsBefore,
@@ -870,82 +664,64 @@ void PathRenderer::printProgress(uint32_t s, uint32_t firstSample, double elapse
   std::fflush(stderr);
 }
 
+// The pass loop: the policy plans each pass (pass_policy.h); a time budget sizes them and stops the render, as a
+// stop request does. Image passes are folded, checkpointed and shown; the others only measure or train.
 void PathRenderer::render(RenderState& state, const RenderControl& control) {
-  const uint32_t pixels = settings_.width * settings_.height;
   RenderStats& stats = state.stats;
   const RenderStats before = stats;
   const double secondsBefore = stats.seconds;
-  bool showProgress = settings_.progress && isatty(STDERR_FILENO);
+  const bool showProgress = settings_.progress && isatty(STDERR_FILENO);
   const bool shadowRoulette = settings_.estimator.shadowRrThreshold > 0.0f && ctx_.unifiedMemory();
   uint32_t inBatch = prepareFilm(state, shadowRoulette);
-  auto start = Clock::now();
-  passesStart_ = start;
-  double lastProgress = 0.0, lastCheckpoint = 0.0;
-  // Small images take several samples per pixel per pass, so that a pass fills the wavefront.
-  const uint32_t maxPerPass = samplesPerPass();
+  passesStart_ = Clock::now();
+  droppedIndex_ = 0, batchHoldsTraining_ = false, lastPassLearned_ = ears_->enabled();
+  if (ears_->enabled()) startEars(state, inBatch);
+  std::unique_ptr<PassPolicy> policy = passPolicy(shadowRoulette);
+  const double budget = settings_.timeBudget;
+  PassContext context;
+  context.spp = settings_.spp;
+  context.maxPassSamples = samplesPerPass();
   // A time budget (time_budget.h): the first pass takes one sample (a slow scene must not overrun by much), the
   // later ones are sized from the last pass's seconds a sample.
-  uint32_t perPass = settings_.timeBudget > 0.0 ? 1u : maxPerPass;
-  const double budget = settings_.timeBudget;
-  double secondsPerSample = 0.0;  // the last pass's, per sample a pixel
-  auto budgetSpent = [&] { return timeBudgetSpent(budget, since(start)); };
+  context.passSamples = budget > 0.0 ? 1u : context.maxPassSamples;
+  double secondsPerSample = 0.0, lastProgress = 0.0, lastCheckpoint = 0.0;
   const uint32_t firstSample = state.nextSample;
-  // EARS and shadow-ray roulette learn between passes (the cache and image statistics; the pixel estimate), so
-  // their passes start small and double: what they compare against is known early. Shadow roulette's pass from
-  // sample s takes s + 1 samples (1, 2, 4, ...), a function of s alone, so a resumed render passes where the
-  // uninterrupted one did; EARS's passes double from where its training passes left off.
-  uint32_t earsSamples = 1;
-  auto stopRequested = [&] { return control.stop && control.stop->load() != 0; };
-  if (ears_->enabled() && state.nextSample < settings_.spp && !stopRequested())
-    earsSamples = startEars(state, inBatch, start, secondsPerSample);
-  for (uint32_t s = state.nextSample; s < settings_.spp;) {
-    if (s > firstSample && budgetSpent()) break;
-    // Sized here, after the last pass's fold, checkpoint and any measuring pass, by the time left now.
-    if (secondsPerSample > 0.0) perPass = timeBudgetPassSamples(budget, since(start), secondsPerSample, maxPerPass);
-    if (stopRequested()) {
+  auto budgetSpent = [&] { return timeBudgetSpent(budget, since(passesStart_)); };
+  while (true) {
+    if (state.nextSample > firstSample && budgetSpent()) break;
+    if (control.stop && control.stop->load() != 0) {
       state.interrupted = true;
       state.stopSignal = control.stop->load();
       break;
     }
-    if (ears_->enabled() && earsPhase_ == EarsPhase::MeasureThroughput) {
-      // As large as throughput roulette's later passes, whose per-pass overhead (a pass's bounces, each a
-      // dispatch and most nearly empty) it then shares as they will: on veach_mis a 4-sample pass took twice the
-      // seconds a sample of a 28-sample one. Dropped, so it advances no sample.
-      if (inBatch > 0) foldFilm(state.film), inBatch = 0;
-      measureThroughputForGuard(state.film, s, maxPerPass, stats);
-      continue;
-    }
-    const bool earsPass = ears_->enabled() && !throughputPass();
-    const uint32_t samples = nextPassSamples(s, perPass, earsSamples, shadowRoulette);
-    double passStart = since(start);
-    const uint64_t raysBefore = stats.rays();
-    renderSamples(s, samples, stats);
-    if (ears_->enabled())
-      afterEarsPass(state.film, double(stats.rays() - raysBefore) / (double(pixels) * samples), since(start) - passStart, samples,
-                    s + samples);
-    else if (shadowRoulette)
-      refreshPixelEstimate(state.film);
-    if (earsPass) earsSamples = std::min(2 * earsSamples, maxPerPass);
-    s += samples;
-    state.nextSample = s;
-    inBatch += samples;
-    if (budget > 0.0) secondsPerSample = std::max(since(start) - passStart, 1e-6) / samples;
-    bool last = s == settings_.spp || budgetSpent();
-    if (inBatch + maxPerPass > kSamplesPerBatch || last) foldFilm(state.film), inBatch = 0;
-    double elapsed = since(start);
+    context.nextSample = state.nextSample;
+    context.elapsed = since(passesStart_);
+    if (secondsPerSample > 0.0)
+      context.passSamples = timeBudgetPassSamples(budget, context.elapsed, secondsPerSample, context.maxPassSamples);
+    const PassPlan plan = policy->next(context);
+    if (plan.stop()) break;
+    const PassOutcome outcome = runPlannedPass(plan, state, inBatch, shadowRoulette);
+    policy->record(outcome);
+    if (budget > 0.0 && plan.use != PassUse::Measured) secondsPerSample = std::max(outcome.seconds, 1e-6) / plan.samples;
+    if (plan.use != PassUse::Image) continue;
+    const bool last = state.nextSample == settings_.spp || budgetSpent();
+    if (inBatch + context.maxPassSamples > kSamplesPerBatch || last) foldFilm(state.film), inBatch = 0;
+    const double elapsed = since(passesStart_);
     if (control.checkpoint && control.checkpointEvery > 0.0 && elapsed - lastCheckpoint >= control.checkpointEvery && !last) {
       snapshot(state, inBatch, secondsBefore + elapsed, before);
       control.checkpoint(state);
-      lastCheckpoint = since(start);
+      lastCheckpoint = since(passesStart_);
     }
     if (showProgress && (elapsed - lastProgress > 0.25 || last))
-      lastProgress = elapsed, printProgress(s, firstSample, elapsed, secondsBefore, stats);
+      lastProgress = elapsed, printProgress(state.nextSample, firstSample, elapsed, secondsBefore, stats);
   }
   if (showProgress) std::fprintf(stderr, "\n");
-  if (ears_->enabled())
-    earsGuard_.learningCostSeconds = earsLearningCostSeconds(earsGuard_.decidedAtSeconds, earsGuard_.fromSample - firstSample,
-                                                             since(start), state.nextSample - earsGuard_.fromSample);
-  snapshot(state, inBatch, secondsBefore + since(start), before);
+  if (batchHoldsTraining_) dropBatch();  // stopped during training: its samples are not the image's
+  context.nextSample = state.nextSample;
+  context.elapsed = since(passesStart_);
+  policy->finish(context, firstSample);
+  if (const auto* ears = dynamic_cast<const EarsGuardPolicy*>(policy.get())) earsGuard_ = ears->outcome();
+  snapshot(state, inBatch, secondsBefore + since(passesStart_), before);
 }
 
 }  // namespace vkmc

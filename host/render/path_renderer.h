@@ -19,8 +19,9 @@
 #include "render/render_kernels.h"
 #include "render/render_settings.h"
 #include "render/ears_cache.h"
-#include "render/ears_guard.h"
-#include "render/ears_image_statistics.h"
+#include "passes/ears_guard.h"
+#include "passes/pass_policy.h"
+#include "passes/ears_image_statistics.h"
 #include "render/film.h"
 #include "render/gpu_scene.h"
 #include "scene/camera_rig.h"
@@ -95,21 +96,22 @@ class PathRenderer {
   void foldFilm(Film& film);
   // EARS after a training wavefront of `cameras` camera paths: their sums into the cache.
   void trainEars(uint32_t cameras, RenderStats& stats);
-  // Under a time budget (from `start`) training stops where it and the guard's comparison would not fit
-  // (earsLearningFits): earsOutOfBudget_.
-  // The first training pass is an image pass (kept: state's film and next sample), the later ones are dropped.
-  uint32_t trainEarsPasses(Film& film, uint32_t& nextSample, RenderStats& stats, std::chrono::steady_clock::time_point start);
-  double measureThroughputPassOverhead(Film& film, uint32_t& nextSample, RenderStats& stats, double firstPassSeconds);
-  // render()'s steps: the film before the passes, EARS's start, each pass's size, the progress line.
+  // render()'s steps: the film before the passes, EARS's start, the pass policy, one planned pass, the progress line.
   uint32_t prepareFilm(RenderState& state, bool shadowRoulette);
-  uint32_t startEars(RenderState& state, uint32_t& inBatch, std::chrono::steady_clock::time_point start,
-                     double& secondsPerSample);
-  uint32_t nextPassSamples(uint32_t s, uint32_t perPass, uint32_t earsSamples, bool shadowRoulette) const;
+  void startEars(RenderState& state, uint32_t& inBatch);
+  std::unique_ptr<PassPolicy> passPolicy(bool shadowRoulette) const;
+  PassOutcome runPlannedPass(const PassPlan& plan, RenderState& state, uint32_t& inBatch, bool shadowRoulette);
   void printProgress(uint32_t s, uint32_t firstSample, double elapsed, double secondsBefore, const RenderStats& stats) const;
-  bool earsOutOfBudget_ = false;
-  double earsLastPassSecondsPerSample_ = 0.0;  // the training passes' last, which sizes the next pass under a budget
-  bool earsTrainingKept_ = false;              // the training pass in progress is kept (its seed: the render's)
-  bool earsTraining_ = false;                  // a training pass: its own seed, its samples dropped
+  // The plan of the pass in flight (kernels and seed), and what the device's batch holds.
+  PassPlan plan_;
+  uint32_t droppedIndex_ = 0;        // training passes' samples follow each other in their own seed's sequence
+  bool batchHoldsTraining_ = false;  // the batch holds training samples, zeroed when training ends
+  bool lastPassLearned_ = false;     // the last pass's plan learned: a fold uploads EARS's estimate
+  std::chrono::steady_clock::time_point passesStart_;
+  std::vector<PixelSums> passSums_;  // what a measured or learning pass tells its policy (PassOutcome)
+  std::vector<glm::vec4> passScale_;
+  void dropBatch();
+  // EARS after a pass: V_img of the pass against the earlier passes' estimate, then the next pass's estimate.
   // Returns the pass's sums (after - before).
   std::vector<PixelSums> updateEarsStatistics(const Film& film, double raysPerSample);
   // What V_img measures a pass against: the batch's sums before it (zeroed with the batch), and the pixel
@@ -118,29 +120,7 @@ class PathRenderer {
   std::vector<PixelSums> earsBatchBefore_;
   EarsPixelEstimate earsEstimate_;
   bool earsHaveEstimate_ = false;
-  // EARS's guard (ears_guard.h): which policy the next pass runs. MeasureEars and MeasureThroughput are the
-  // comparison's two passes; Throughput renders the rest with the guard's shade kernel.
-  enum class EarsPhase { Ears, MeasureEars, MeasureThroughput, MeasureEarsAgain, Throughput };
-  EarsPhase earsPhase_ = EarsPhase::Ears;
-  bool throughputPass() const { return earsPhase_ == EarsPhase::MeasureThroughput || earsPhase_ == EarsPhase::Throughput; }
-  // After each pass under EARS: the EARS statistics, or the guard's measurement and choice.
-  void afterEarsPass(const Film& film, double raysPerSample, double seconds, uint32_t samples, uint32_t nextSample);
-  // The guard's throughput roulette pass of `samples` a pixel (from a folded film): measured, then dropped.
-  void measureThroughputForGuard(const Film& film, uint32_t sampleIndex, uint32_t samples, RenderStats& stats);
-  std::vector<glm::vec4> earsGuardScale_;  // the first look's variances are relative to it (measureThroughputForGuard)
-  // The guard's choice from the tallies, against the estimate after the last measured pass (or a second look).
-  void decideEarsGuard(uint32_t nextSample, bool secondLook);
-  // An EARS pass's sums, seconds and training share into earsTally_; each policy's measure from its tally.
-  void addEarsPassToTally(const std::vector<PixelSums>& pass, uint32_t samples, double seconds);
-  PolicyPass earsMeasure(const std::vector<glm::vec4>& scale) const;
-  PolicyPass throughputMeasure(const std::vector<glm::vec4>& scale) const;
-  // After a pass of EARS chosen under auto: its measure so far against throughput roulette's, and the switch.
-  void watchEars(const std::vector<PixelSums>& pass, uint32_t samples, double seconds, uint32_t nextSample);
-  EarsGuardOutcome earsGuard_;
-  std::chrono::steady_clock::time_point passesStart_;  // render()'s passes began: the guard's decidedAtSeconds count from it
-  bool earsGuardPending_ = false;                      // the comparison is still to come
-  uint32_t earsWarmPasses_ = 0;                        // EARS passes before it
-  PolicyTally earsTally_, throughputTally_;            // the measured passes of each policy
+  EarsGuardOutcome earsGuard_;  // the last render's (EarsGuardPolicy::outcome)
   // The EARS pass in progress, over its tiles: its training part (wavefront and cache update) and the rest.
   double earsPassTrainSeconds_ = 0.0, earsPassLeanSeconds_ = 0.0;
   double earsPassTrainPixelSamples_ = 0.0, earsPassLeanPixelSamples_ = 0.0;

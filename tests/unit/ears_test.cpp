@@ -1,5 +1,5 @@
 // EARS's pure functions (shaders/shared/ears.h), the image statistic its factors are scaled by
-// (host/render/ears_image_statistics.h) and its guard's measure and choice (host/render/ears_guard.h).
+// (host/passes/ears_image_statistics.h) and its guard's measure and choice (host/passes/ears_guard.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,8 +9,8 @@
 #include "../shaders/shared/roulette.h"
 #include "analysis/error_metrics.h"
 #include "error.h"
-#include "render/ears_guard.h"
-#include "render/ears_image_statistics.h"
+#include "passes/ears_guard.h"
+#include "passes/ears_image_statistics.h"
 
 using namespace vkmc;
 using namespace vkmc::gpu;

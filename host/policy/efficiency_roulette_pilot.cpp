@@ -1,5 +1,5 @@
 // Efficiency-roulette pilot: render, weigh each path by its pixel's relative error, optimize the scales.
-#include "app/roulette_pilot.h"
+#include "policy/efficiency_roulette_pilot.h"
 
 #include <algorithm>
 

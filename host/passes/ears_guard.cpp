@@ -1,5 +1,5 @@
 // rr ears's guard (ears_guard.h).
-#include "render/ears_guard.h"
+#include "passes/ears_guard.h"
 
 #include <algorithm>
 #include <cmath>

@@ -16,8 +16,6 @@ struct PixelSums {
   glm::dvec3 sum{0.0}, sumSq{0.0};
 };
 
-// The device batch's sums per pixel, its high-range sums added back (null batch: zeros).
-std::vector<PixelSums> batchPixelSums(const gpu::FilmPixel* batch, size_t pixels);
 // after - before, pixel by pixel: the samples one pass added to the batch. before is taken by value, so a caller
 // done with it moves it in and its storage holds the result (a frame's sums are 56 bytes a pixel).
 std::vector<PixelSums> passPixelSums(const std::vector<PixelSums>& after, std::vector<PixelSums> before);

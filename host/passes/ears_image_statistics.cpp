@@ -1,27 +1,13 @@
 // EARS's image statistics between passes (ears_image_statistics.h).
-#include "render/ears_image_statistics.h"
+#include "passes/ears_image_statistics.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 
 #include "error.h"
-#include "render/film.h"
 
 namespace vkmc {
-
-std::vector<PixelSums> batchPixelSums(const gpu::FilmPixel* batch, size_t pixels) {
-  std::vector<PixelSums> sums(pixels);
-  if (!batch) return sums;
-  for (size_t p = 0; p < pixels; ++p) {
-    sums[p].n = batch[p].sum.w;
-    for (int c = 0; c < 3; ++c) {
-      sums[p].sum[c] = batchChannelSum(batch[p], c);
-      sums[p].sumSq[c] = batchChannelSumSq(batch[p], c);
-    }
-  }
-  return sums;
-}
 
 std::vector<PixelSums> passPixelSums(const std::vector<PixelSums>& after, std::vector<PixelSums> before) {
   before.resize(after.size());  // none before: zeros

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "estimators/estimator_config.h"
-#include "render/ears_image_statistics.h"
+#include "passes/ears_image_statistics.h"
 
 namespace vkmc {
 
