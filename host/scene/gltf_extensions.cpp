@@ -54,8 +54,9 @@ std::vector<std::string> checkExtensions(const std::vector<std::string>& used, c
     const ExtensionRow* row = find(name);
     if (!row) throw Error("the file requires extension " + name + ", which vkmc does not know");
     if (!row->ignored.empty())
-      throw Error("the file requires extension " + name +
-                  ", which vkmc does not implement in full: " + std::string(row->ignored));
+      // The row says what a file that only uses it loses; a file that requires it is refused, so say that.
+      throw Error("the file requires extension " + name + ", which vkmc does not implement in full (" +
+                  std::string(row->ignored) + "), so it cannot render the file as required");
   }
   std::vector<std::string> names = used;
   for (const std::string& name : required)

@@ -155,14 +155,27 @@ PrimitiveData readPrimitive(const tinygltf::Model& model, const tinygltf::Primit
   applyMorphTargets(model, prim, request, data);
   std::vector<bool> mirrored;  // per vertex, by the skin
   if (request.joints) {
-    // Joint indices are unsigned bytes or shorts; anything else (a float past a uint's range) reads as no joint.
-    for (const glm::vec4& j : readAttribute<glm::vec4>(model, prim.attributes, "JOINTS_0", {TINYGLTF_TYPE_VEC4}, n, limit)) {
-      glm::uvec4 index(UINT32_MAX);
-      for (int k = 0; k < 4; ++k)
-        if (j[k] >= 0.0f && j[k] < 65536.0f) index[k] = uint32_t(j[k]);
-      data.joints.push_back(index);
+    // Every set of four influences, JOINTS_n with WEIGHTS_n, set after set. Joint indices are unsigned bytes or
+    // shorts; anything else (a float past a uint's range) reads as no joint.
+    for (uint32_t set = 0;; ++set) {
+      const std::string joints = "JOINTS_" + std::to_string(set), weights = "WEIGHTS_" + std::to_string(set);
+      if (set > 0 && attributeAccessor(prim.attributes, joints.c_str()) < 0 &&
+          attributeAccessor(prim.attributes, weights.c_str()) < 0)
+        break;
+      const size_t before = data.joints.size();
+      for (const glm::vec4& j :
+           readAttribute<glm::vec4>(model, prim.attributes, joints.c_str(), {TINYGLTF_TYPE_VEC4}, n, limit)) {
+        glm::uvec4 index(UINT32_MAX);
+        for (int k = 0; k < 4; ++k)
+          if (j[k] >= 0.0f && j[k] < 65536.0f) index[k] = uint32_t(j[k]);
+        data.joints.push_back(index);
+      }
+      const std::vector<glm::vec4> w =
+          readAttribute<glm::vec4>(model, prim.attributes, weights.c_str(), {TINYGLTF_TYPE_VEC4}, n, limit);
+      if (data.joints.size() - before != n || w.size() != n)
+        throw Error("a skinned mesh's primitive lacks " + joints + " or " + weights + " for some vertex");
+      data.weights.insert(data.weights.end(), w.begin(), w.end());
     }
-    data.weights = readAttribute<glm::vec4>(model, prim.attributes, "WEIGHTS_0", {TINYGLTF_TYPE_VEC4}, n, limit);
     mirrored = applySkin(data, *request.joints);
   }
   if (isPointOrLineMode(prim.mode)) {

@@ -16,7 +16,7 @@ struct PrimitiveData {
   std::vector<glm::vec4> tangents;  // TANGENT, generated ones, or empty (see PrimitiveRequest::generateTangents)
   bool tangentsPerCorner = false;   // generated (MikkTSpace): one per corner of `triangles`, not per vertex
   std::vector<glm::vec4> colors;    // COLOR_0 as RGBA, empty when absent
-  std::vector<glm::uvec4> joints;   // JOINTS_0 and WEIGHTS_0, read for a skinned mesh only
+  std::vector<glm::uvec4> joints;   // JOINTS_n and WEIGHTS_n, set after set (n vertices each), for a skinned mesh only
   std::vector<glm::vec4> weights;
   std::vector<uint32_t> triangles;  // 3 vertex indices per triangle, each checked < positions.size()
   std::vector<uint32_t> segments;   // points and lines: 2 vertex indices per segment (a point: the same twice)

@@ -31,20 +31,25 @@ std::vector<glm::mat4> jointMatrices(const tinygltf::Model& model, int skinIndex
 }
 
 std::vector<bool> applySkin(PrimitiveData& data, const std::vector<glm::mat4>& joints) {
-  if (data.joints.size() != data.positions.size() || data.weights.size() != data.positions.size())
+  const size_t n = data.positions.size();
+  if (n == 0) return {};
+  const size_t sets = data.joints.size() / n;
+  if (sets == 0 || data.joints.size() != sets * n || data.weights.size() != sets * n)
     throw Error("a skinned mesh's primitive lacks JOINTS_0 and WEIGHTS_0 for every vertex");
-  std::vector<bool> mirrored(data.positions.size(), false);
-  for (size_t v = 0; v < data.positions.size(); ++v) {
+  std::vector<bool> mirrored(n, false);
+  for (size_t v = 0; v < n; ++v) {
     glm::mat4 m(0.0f);
     float total = 0.0f;
-    for (int k = 0; k < 4; ++k) {
-      const float w = data.weights[v][k];
-      if (w == 0.0f) continue;
-      if (data.joints[v][k] >= joints.size())
-        throw Error("vertex " + std::to_string(v) + " names joint " + std::to_string(data.joints[v][k]) + " of a skin of " +
-                    std::to_string(joints.size()));
-      m += w * joints[data.joints[v][k]];
-      total += w;
+    for (size_t i = v; i < sets * n; i += n) {  // the vertex's influences, four a set
+      for (int k = 0; k < 4; ++k) {
+        const float w = data.weights[i][k];
+        if (w == 0.0f) continue;
+        if (data.joints[i][k] >= joints.size())
+          throw Error("vertex " + std::to_string(v) + " names joint " + std::to_string(data.joints[i][k]) + " of a skin of " +
+                      std::to_string(joints.size()));
+        m += w * joints[data.joints[i][k]];
+        total += w;
+      }
     }
     // Weights should sum to 1; exporters round them, and a vertex with none stays where its bind pose puts it.
     m = total > 0.0f ? m / total : glm::mat4(1.0f);

@@ -45,6 +45,9 @@ TEST(GltfExtensions, RequiredExtensionsVkmcDoesNotImplementAreRefusedByName) {
   EXPECT_NE(iridescence.find("requires extension KHR_materials_iridescence, which vkmc does not implement in full"),
             std::string::npos)
       << iridescence;
+  // A refusal does not read as if the file were rendered with the extension ignored.
+  EXPECT_NE(iridescence.find("so it cannot render the file as required"), std::string::npos) << iridescence;
+  EXPECT_FALSE(iridescence.ends_with("is ignored")) << iridescence;
   // Implemented in full: a file that requires them loads.
   for (const char* name :
        {"KHR_materials_emissive_strength", "KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_mesh_quantization",
