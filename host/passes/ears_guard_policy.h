@@ -40,6 +40,7 @@ class EarsGuardPolicy : public PassPolicy {
   PassPlan next(const PassContext& c) override;
   void record(const PassOutcome& o) override;
   void finish(const PassContext& c, uint32_t firstSample) override;
+  bool learning() const override { return phase_ != Phase::Throughput; }
   const EarsGuardOutcome& outcome() const { return outcome_; }
 
   enum class Phase { Training, Ears, MeasureEars, MeasureThroughput, MeasureEarsAgain, Throughput };

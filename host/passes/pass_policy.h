@@ -67,6 +67,8 @@ class PassPolicy {
   virtual ~PassPolicy() = default;
   virtual PassPlan next(const PassContext& c) = 0;
   virtual void record(const PassOutcome&) {}
+  // Whether the passes to come still learn (EARS's statistics and its smoothed estimate in use), as of now.
+  virtual bool learning() const { return false; }
   // After the last pass, from the render's first sample (firstSample) to c.nextSample.
   virtual void finish(const PassContext&, uint32_t /*firstSample*/) {}
 };

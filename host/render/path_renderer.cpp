@@ -430,7 +430,7 @@ void PathRenderer::foldFilm(Film& film) {
   }
   // Under EARS the estimate of the passes so far, as updateEarsStatistics computed it from the film this folds
   // (once the guard has fallen back to passes that do not learn, the film's own, as without EARS).
-  if (ears_->enabled() && earsHaveEstimate_ && lastPassLearned_)
+  if (ears_->enabled() && earsHaveEstimate_ && (!policy_ || policy_->learning()))
     setPixelEstimate(earsEstimate_.smoothed);
   else
     uploadPixelEstimate(film);
@@ -648,7 +648,6 @@ PassOutcome PathRenderer::runPlannedPass(const PassPlan& plan, RenderState& stat
     batchHoldsTraining_ = true;
     ears_->noteTrainingSamples(plan.samples);
   }
-  if (plan.use != PassUse::Measured) lastPassLearned_ = plan.learns;
   o.nextSample = state.nextSample;
   o.elapsed = since(passesStart_);
   plan_ = PassPlan{};
@@ -674,9 +673,10 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   const bool shadowRoulette = settings_.estimator.shadowRrThreshold > 0.0f && ctx_.unifiedMemory();
   uint32_t inBatch = prepareFilm(state, shadowRoulette);
   passesStart_ = Clock::now();
-  droppedIndex_ = 0, batchHoldsTraining_ = false, lastPassLearned_ = ears_->enabled();
+  droppedIndex_ = 0, batchHoldsTraining_ = false;
+  policy_ = passPolicy(shadowRoulette);
+  PassPolicy* policy = policy_.get();
   if (ears_->enabled()) startEars(state, inBatch);
-  std::unique_ptr<PassPolicy> policy = passPolicy(shadowRoulette);
   const double budget = settings_.timeBudget;
   PassContext context;
   context.spp = settings_.spp;
@@ -700,9 +700,11 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
       context.passSamples = timeBudgetPassSamples(budget, context.elapsed, secondsPerSample, context.maxPassSamples);
     const PassPlan plan = policy->next(context);
     if (plan.stop()) break;
-    const PassOutcome outcome = runPlannedPass(plan, state, inBatch, shadowRoulette);
-    policy->record(outcome);
-    if (budget > 0.0 && plan.use != PassUse::Measured) secondsPerSample = std::max(outcome.seconds, 1e-6) / plan.samples;
+    const double passStart = since(passesStart_);
+    policy->record(runPlannedPass(plan, state, inBatch, shadowRoulette));
+    // The pass's seconds with what the host does after it (EARS's statistics, the guard): the next pass pays them too.
+    if (budget > 0.0 && plan.use != PassUse::Measured)
+      secondsPerSample = std::max(since(passesStart_) - passStart, 1e-6) / plan.samples;
     if (plan.use != PassUse::Image) continue;
     const bool last = state.nextSample == settings_.spp || budgetSpent();
     if (inBatch + context.maxPassSamples > kSamplesPerBatch || last) foldFilm(state.film), inBatch = 0;
@@ -720,7 +722,7 @@ void PathRenderer::render(RenderState& state, const RenderControl& control) {
   context.nextSample = state.nextSample;
   context.elapsed = since(passesStart_);
   policy->finish(context, firstSample);
-  if (const auto* ears = dynamic_cast<const EarsGuardPolicy*>(policy.get())) earsGuard_ = ears->outcome();
+  if (const auto* ears = dynamic_cast<const EarsGuardPolicy*>(policy)) earsGuard_ = ears->outcome();
   snapshot(state, inBatch, secondsBefore + since(passesStart_), before);
 }
 

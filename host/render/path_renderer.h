@@ -104,9 +104,9 @@ class PathRenderer {
   void printProgress(uint32_t s, uint32_t firstSample, double elapsed, double secondsBefore, const RenderStats& stats) const;
   // The plan of the pass in flight (kernels and seed), and what the device's batch holds.
   PassPlan plan_;
-  uint32_t droppedIndex_ = 0;        // training passes' samples follow each other in their own seed's sequence
-  bool batchHoldsTraining_ = false;  // the batch holds training samples, zeroed when training ends
-  bool lastPassLearned_ = false;     // the last pass's plan learned: a fold uploads EARS's estimate
+  uint32_t droppedIndex_ = 0;           // training passes' samples follow each other in their own seed's sequence
+  bool batchHoldsTraining_ = false;     // the batch holds training samples, zeroed when training ends
+  std::unique_ptr<PassPolicy> policy_;  // the render's (render() makes it; a fold asks it whether EARS still learns)
   std::chrono::steady_clock::time_point passesStart_;
   std::vector<PixelSums> passSums_;  // what a measured or learning pass tells its policy (PassOutcome)
   std::vector<glm::vec4> passScale_;

@@ -173,7 +173,7 @@ PrimitiveData readPrimitive(const tinygltf::Model& model, const tinygltf::Primit
       const std::vector<glm::vec4> w =
           readAttribute<glm::vec4>(model, prim.attributes, weights.c_str(), {TINYGLTF_TYPE_VEC4}, n, limit);
       if (data.joints.size() - before != n || w.size() != n)
-        throw Error("a skinned mesh's primitive lacks " + joints + " or " + weights + " for some vertex");
+        throw Error("a skinned mesh's primitive lacks " + joints + " and " + weights + " for every vertex");
       data.weights.insert(data.weights.end(), w.begin(), w.end());
     }
     mirrored = applySkin(data, *request.joints);

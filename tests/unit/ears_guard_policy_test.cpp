@@ -123,8 +123,10 @@ TEST(EarsGuardPolicy, FallsBackWhereThroughputRouletteIsMoreEfficient) {
   FakeRenderer r;
   r.earsVariance = 1.0, r.throughputVariance = 0.1;
   EarsGuardPolicy policy(settings(EarsFallback::Auto));
+  EXPECT_TRUE(policy.learning());
   while (!policy.outcome().compared) r.step(policy);
   EXPECT_TRUE(policy.outcome().fellBack);
+  EXPECT_FALSE(policy.learning()) << "a fold now uploads the film's own estimate, as without EARS";
   EXPECT_FALSE(policy.outcome().secondLook);  // a tenth: far below the second look's ratio
   EXPECT_FALSE(policy.outcome().watched);
   for (int i = 0; i < 3; ++i) {
