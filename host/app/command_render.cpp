@@ -532,8 +532,8 @@ Command addRenderCommand(CLI::App& app) {
   // Flags override the file; both are the keys of host/estimators/estimator_params.cpp.
   render
       ->add_option("--estimator", a->estimatorFile,
-                   "JSON estimator file (the keys of the flags below), or auto: short pilots on the scene choose light "
-                   "and BSDF samples, MIS and roulette by measured efficiency; flags pin their keys")
+                   "JSON estimator file (the keys of the flags below), or auto: short pilots on the scene (at most 5% of "
+                   "a time budget) choose roulette, light and BSDF samples and MIS by measured efficiency; flags pin their keys")
       ->group(kEstimatorGroup);
   for (const EstimatorParam& p : estimatorParams())
     render->add_option(p.flag(), a->estimatorValues[p.key], p.helpText())->group(kEstimatorGroup);

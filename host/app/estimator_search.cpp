@@ -135,7 +135,7 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
                                 const std::set<std::string>& pinned, double timeBudget, RoundFilm& film) {
   EstimatorChoice out;
   const SceneFeatures& f = settings.features;
-  const std::vector<SearchStep> steps = estimatorSearchSteps(pinned, SearchScene{f.lights(), ctx.hasFloatAtomics()});
+  const std::vector<SearchStep> steps = estimatorSearchSteps(pinned, SearchScene{f.lights(), ctx.hasFloatAtomics(), f.glossy});
   const uint32_t candidates = 1 + uint32_t(steps.size());  // at least one value a key
   const uint32_t imagePixels = settings.width * settings.height;
   const std::vector<uint32_t> order = pixelOrder(imagePixels, settings.seed);
@@ -163,22 +163,29 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
     out.candidates.push_back({label, e, {}, false, pilots.back()->seconds()});
   };
   measure("start", settings.estimator);
-  // Under a time budget too short for the pilots to pay, the start renders.
-  out.cutShort = timeBudget > 0.0 && pilots[0]->seconds() * (candidates - 1) > kChoiceMaxShare * timeBudget;
   const PilotPixels where{settings.width, settings.height, std::vector<uint32_t>(order.begin(), order.begin() + shape.pixels)};
   size_t best = 0;
-  for (const SearchStep& step : out.cutShort ? std::vector<SearchStep>{} : steps) {
+  double pilotSeconds = pilots[0]->seconds();
+  for (const SearchStep& step : steps) {
     // Each value against the best so far, every candidate read against the values pooled so far; the key's
-    // next value only where this one won.
+    // next value only where this one won. Under a time budget, only what fits its share (the next key may).
     for (double value : step.values) {
+      const double incumbentValue = findEstimatorParam(step.key)->get(out.candidates[best].config);
+      const double expected = pilots[best]->seconds() * expectedPilotCost(step.key, value, incumbentValue);
+      if (!pilotFitsBudget(pilotSeconds, expected, timeBudget)) {
+        out.skippedForBudget.push_back(label(step.key, value));
+        break;
+      }
       EstimatorConfig e = out.candidates[best].config;
       findEstimatorParam(step.key)->set(e, value);
       measure(label(step.key, value), e);
+      pilotSeconds += pilots.back()->seconds();
       const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
       if (!beats(readings.back(), readings[best])) break;
       best = readings.size() - 1;
     }
   }
+  out.cutShort = out.candidates.size() == 1 && !out.skippedForBudget.empty();
   const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
   for (size_t c = 0; c < readings.size(); ++c) out.candidates[c].reading = readings[c];
   out.candidates[best].chosen = true;

@@ -34,7 +34,8 @@ struct EstimatorChoice {
   double pipelineSeconds = 0.0;    // the candidates' kernels' set-up
   double pixelSamples = 0.0;       // the pilots' samples, all in the image
   double share = 0.0;              // their share of the render's planned pixel-samples
-  bool cutShort = false;           // the time budget was too short for the pilots to pay: the start renders
+  bool cutShort = false;           // the time budget's share fitted no challenger: the start renders
+  std::vector<std::string> skippedForBudget;  // challengers left out because they would not fit it
   std::vector<RenderStats> stats;  // each pilot's counters (the report's rays include them)
 };
 

@@ -727,6 +727,7 @@ json choiceJson(const EstimatorChoice& c) {
           {"candidates", candidates},
           {"cost_unit", "GPU seconds"},
           {"cut_short", c.cutShort},
+          {"skipped_for_budget", c.skippedForBudget},
           {"pilot_pixel_samples", c.pixelSamples},
           {"pilot_pixels", c.pilotPixels},
           {"pilot_spp", c.pilotSpp},
@@ -754,7 +755,7 @@ std::string choiceLine(const EstimatorChoice& c) {
                 "choice      %s, of %zu candidates%s (%.2fx the start's measured efficiency); pilots %.3f s, %.1f%% of "
                 "the samples (in the image); their kernels %.3f s\n",
                 changed.empty() ? "the defaults" : changed.c_str(), c.candidates.size(),
-                c.cutShort ? " (the time budget was too short to measure more)" : "",
+                c.skippedForBudget.empty() ? "" : " (the time budget's share fitted no more)",
                 startEfficiency > 0.0 ? chosenEfficiency / startEfficiency : 0.0, c.seconds, 100.0 * c.share, c.pipelineSeconds);
   return buf;
 }

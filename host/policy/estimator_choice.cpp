@@ -12,14 +12,28 @@ std::vector<SearchStep> estimatorSearchSteps(const std::set<std::string>& pinned
   auto add = [&](const char* key, std::vector<double> values) {
     if (!pinned.count(key)) steps.push_back({key, std::move(values)});
   };
-  // Splitting first: it changes a sample's variance most, and what MIS and roulette weigh against it.
+  // Roulette first: the per-depth pilot paid most over vkmc's scenes (basement 4.5x, dark_room 3.5x under auto;
+  // 1.25-1.8x on several more in docs/estimators.md), and under a budget's share the first challengers are the ones
+  // that fit. Then splitting, then MIS, each against the best so far.
+  add("rr", {double(RouletteMode::Efficiency)});
   if (scene.lights && scene.floatAtomics) add("light_samples", {2, 4});
   if (scene.floatAtomics) add("bsdf_samples", {2, 4});
-  if (scene.lights) add("mis", {double(MisHeuristic::Balance)});
+  if (scene.lights && scene.glossy) add("mis", {double(MisHeuristic::Balance)});
   // Not light_sampling solid-angle: in the white furnace it reads 1.99636 for 2 (z = -10 at 2048 spp, 16x16), a
   // bias the search would pass on to the image wherever it chose it.
-  add("rr", {double(RouletteMode::Efficiency)});
   return steps;
+}
+
+double expectedPilotCost(const std::string& key, double value, double incumbentValue) {
+  const double from = std::max(incumbentValue, 1.0);
+  if (key == "light_samples") return (1.0 + 0.5 * (value - 1.0)) / (1.0 + 0.5 * (from - 1.0));
+  if (key == "bsdf_samples") return value / from;
+  if (key == "rr") return 2.5;
+  return 1.2;
+}
+
+bool pilotFitsBudget(double pilotSecondsSoFar, double expectedSeconds, double timeBudget) {
+  return !(timeBudget > 0.0) || pilotSecondsSoFar + expectedSeconds <= kChoiceMaxShare * timeBudget;
 }
 
 namespace {

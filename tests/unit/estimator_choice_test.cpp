@@ -36,8 +36,8 @@ TEST(EstimatorChoice, SearchesTheKeysTheUserLeftAndTheSceneCanUse) {
   const std::vector<SearchStep> all = estimatorSearchSteps({}, SearchScene{true, true});
   for (const char* key : {"light_samples", "bsdf_samples", "mis", "rr"}) EXPECT_TRUE(hasKey(all, key)) << key;
   EXPECT_FALSE(hasKey(all, "light_sampling"));  // solid-angle sampling reads the furnace 0.18% low: not offered
-  // Splitting first: what MIS and roulette weigh depends on it.
-  EXPECT_EQ(all.front().key, "light_samples");
+  // Roulette first: it paid most, and under a budget's share the first challengers are the ones that fit.
+  EXPECT_EQ(all.front().key, "rr");
   const std::vector<SearchStep> pinned = estimatorSearchSteps({"light_samples", "rr"}, SearchScene{true, true});
   EXPECT_FALSE(hasKey(pinned, "light_samples"));
   EXPECT_FALSE(hasKey(pinned, "rr"));
@@ -52,6 +52,23 @@ TEST(EstimatorChoice, SearchesTheKeysTheUserLeftAndTheSceneCanUse) {
   EXPECT_FALSE(hasKey(noAtomics, "light_samples"));
   EXPECT_FALSE(hasKey(noAtomics, "bsdf_samples"));
   EXPECT_TRUE(hasKey(noAtomics, "mis"));
+  // On Lambertian surfaces alone the MIS heuristics weigh nearly alike: mis is not searched.
+  const std::vector<SearchStep> matte = estimatorSearchSteps({}, SearchScene{true, true, false});
+  EXPECT_FALSE(hasKey(matte, "mis"));
+  EXPECT_TRUE(hasKey(matte, "light_samples"));
+}
+
+TEST(EstimatorChoice, UnderABudgetThePilotsFitItsShare) {
+  // A 30-s budget leaves the pilots 1.5 s: with 1 s spent, a pilot expected at 0.4 s fits and one at 0.6 s not.
+  EXPECT_TRUE(pilotFitsBudget(1.0, 0.4, 30.0));
+  EXPECT_FALSE(pilotFitsBudget(1.0, 0.6, 30.0));
+  EXPECT_TRUE(pilotFitsBudget(1e9, 1e9, 0.0));  // no budget: the samples' share bounds the pilots (pilotShape)
+  // A continuation or a light sample more costs about what the first did; rr efficiency runs its own pilot first.
+  // Against the incumbent, which may have taken the key's smaller value already.
+  EXPECT_DOUBLE_EQ(expectedPilotCost("bsdf_samples", 4, 1), 4.0);
+  EXPECT_DOUBLE_EQ(expectedPilotCost("bsdf_samples", 4, 2), 2.0);
+  EXPECT_DOUBLE_EQ(expectedPilotCost("light_samples", 2, 1), 1.5);
+  EXPECT_GT(expectedPilotCost("rr", 3, 0), expectedPilotCost("mis", 1, 0));
 }
 
 TEST(EstimatorChoice, ReadsEfficiencyAsInverseRelativeVarianceTimesCost) {
