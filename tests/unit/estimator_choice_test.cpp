@@ -120,12 +120,12 @@ TEST(EstimatorChoice, AChallengerWinsByTheMarginAndBeyondItsNoise) {
 }
 
 TEST(EstimatorChoice, APilotFillsAPassAndStaysAShareOfTheRender) {
-  // 192 x 192 under a long budget: a pass of 2^18 paths at 16 samples a pixel (the fewest a pilot takes; a
-  // multiple of the 2 replicates), over 16384 pixels.
+  // 192 x 192 under a long budget: a pass of 2^18 paths at 64 samples a pixel (the fewest a pilot takes; a
+  // multiple of the 2 replicates), over 4096 pixels.
   PilotShape s = pilotShape(1u << 18, 1e12, 8, 192 * 192, 2);
   EXPECT_EQ(s.spp, kChoiceMinPilotSpp);
   EXPECT_EQ(s.pixels, (1u << 18) / kChoiceMinPilotSpp);
-  // A large image: still 16 a pixel, over fewer of its pixels.
+  // A large image: still 64 a pixel, over fewer of its pixels.
   s = pilotShape(1u << 18, 1e12, 8, 1920 * 1080, 2);
   EXPECT_EQ(uint64_t(s.pixels) * s.spp, 1u << 18);
   // A small render: the pilots stay within kChoiceMaxShare of its pixel-samples.
