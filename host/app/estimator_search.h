@@ -30,13 +30,13 @@ struct EstimatorChoice {
   std::vector<MeasuredCandidate> candidates;  // in the order measured
   std::optional<RouletteTable> roulette;      // rr efficiency chosen: its pilot's scales
   uint32_t pilotPixels = 0, pilotSpp = 0;
-  double seconds = 0.0;            // the pilots' rendering (rr efficiency's own pilot included)
-  double pipelineSeconds = 0.0;    // the candidates' kernels' set-up
-  double pixelSamples = 0.0;       // the pilots' samples, all in the image
-  double share = 0.0;              // their share of the render's planned pixel-samples
-  bool cutShort = false;           // the time budget's share fitted no challenger: the start renders
+  double seconds = 0.0;                       // the pilots' rendering (rr efficiency's own pilot included)
+  double pipelineSeconds = 0.0;               // the candidates' kernels' set-up
+  double pixelSamples = 0.0;                  // the pilots' samples, all in the image
+  double share = 0.0;                         // their share of the render's planned pixel-samples
+  bool cutShort = false;                      // the time budget's share fitted no challenger: the start renders
   std::vector<std::string> skippedForBudget;  // challengers left out because they would not fit it
-  std::vector<RenderStats> stats;  // each pilot's counters (the report's rays include them)
+  std::vector<RenderStats> stats;             // each pilot's counters (the report's rays include them)
 };
 
 // settings: the render's (its estimator the start, with the user's keys in `pinned`); timeBudget > 0: the render's
