@@ -627,21 +627,19 @@ PassOutcome PathRenderer::runPlannedPass(const PassPlan& plan, RenderState& stat
   o.seconds = since(passesStart_) - passStart;
   o.trainSeconds = earsPassTrainSeconds_, o.leanSeconds = earsPassLeanSeconds_;
   o.trainPixelSamples = earsPassTrainPixelSamples_, o.leanPixelSamples = earsPassLeanPixelSamples_;
-  std::vector<PixelSums>& sums = passSums_;
-  std::vector<glm::vec4>& scale = passScale_;
   if (plan.use == PassUse::Measured) {
     std::vector<gpu::FilmPixel> copy;
     const gpu::FilmPixel* batch = currentBatch(copy);
-    sums = batchPixelSums(batch, state.film.pixels());
-    scale = earsPixelEstimate(runningPixelEstimate(state.film, batch), settings_.width, settings_.height).smoothed;
+    passSums_ = batchPixelSums(batch, state.film.pixels());
+    passScale_ = earsPixelEstimate(runningPixelEstimate(state.film, batch), settings_.width, settings_.height).smoothed;
     dropBatch();
+    o.sums = &passSums_, o.scale = &passScale_;
   } else if (plan.learns) {
-    sums = updateEarsStatistics(state.film, double(state.stats.rays() - raysBefore) / (double(pixels) * plan.samples));
-    scale = earsEstimate_.smoothed;
+    passSums_ = updateEarsStatistics(state.film, double(state.stats.rays() - raysBefore) / (double(pixels) * plan.samples));
+    o.sums = &passSums_, o.scale = &earsEstimate_.smoothed;  // the estimate the next pass reads
   } else if (shadowRoulette) {
     refreshPixelEstimate(state.film);
   }
-  if (plan.use == PassUse::Measured || plan.learns) o.sums = &sums, o.scale = &scale;
   if (plan.use == PassUse::Image) state.nextSample += plan.samples, inBatch += plan.samples;
   if (plan.use == PassUse::Training) {
     droppedIndex_ += plan.samples;

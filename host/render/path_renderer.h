@@ -108,8 +108,8 @@ class PathRenderer {
   bool batchHoldsTraining_ = false;     // the batch holds training samples, zeroed when training ends
   std::unique_ptr<PassPolicy> policy_;  // the render's (render() makes it; a fold asks it whether EARS still learns)
   std::chrono::steady_clock::time_point passesStart_;
-  std::vector<PixelSums> passSums_;  // what a measured or learning pass tells its policy (PassOutcome)
-  std::vector<glm::vec4> passScale_;
+  std::vector<PixelSums> passSums_;   // what a measured or learning pass tells its policy (PassOutcome)
+  std::vector<glm::vec4> passScale_;  // a measured pass's (a learning pass's is EARS's own estimate)
   void dropBatch();
   // EARS after a pass: V_img of the pass against the earlier passes' estimate, then the next pass's estimate.
   // Returns the pass's sums (after - before).
