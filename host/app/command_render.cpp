@@ -35,7 +35,8 @@
 
 namespace vkmc {
 namespace {
-constexpr const char* kEstimatorAuto = "auto";  // --estimator auto (app/estimator_search.h)
+constexpr const char* kEstimatorAuto = "auto";          // --estimator auto (app/estimator_search.h)
+constexpr const char* kEstimatorDefaults = "defaults";  // the fixed defaults, not chosen
 
 struct RenderArgs {
   RenderOptions options;
@@ -153,7 +154,8 @@ void applyEstimatorFlag(EstimatorConfig& e, const EstimatorParam& p, const std::
 // `--estimator auto` starts from the defaults and pins the keys the flags give.
 EstimatorConfig estimatorFrom(const RenderArgs& a, const CLI::App& cmd, std::set<std::string>& pinned) {
   EstimatorConfig e;
-  if (!a.estimatorFile.empty() && a.estimatorFile != kEstimatorAuto) e = loadEstimatorFile(a.estimatorFile);
+  if (!a.estimatorFile.empty() && a.estimatorFile != kEstimatorAuto && a.estimatorFile != kEstimatorDefaults)
+    e = loadEstimatorFile(a.estimatorFile);
   std::string overrides;
   for (const EstimatorParam& p : estimatorParams()) {
     if (!cmd.count(p.flag())) continue;
@@ -179,7 +181,8 @@ void fillOptions(RenderArgs& a, const CLI::App& cmd) {
   ro.adaptive = a.adaptive == "on";
   ro.estimator = estimatorFrom(a, cmd, ro.pinnedKeys);
   ro.estimatorAuto = a.estimatorFile == kEstimatorAuto;
-  if (!ro.estimatorAuto) ro.pinnedKeys.clear();
+  ro.estimatorAutoWherePossible = a.estimatorFile.empty();
+  if (!ro.estimatorAuto && !ro.estimatorAutoWherePossible) ro.pinnedKeys.clear();
   ro.seed = static_cast<uint32_t>(a.seed);
   if (a.width > 0) ro.width = static_cast<uint32_t>(a.width);
   if (a.height > 0) ro.height = static_cast<uint32_t>(a.height);
@@ -241,7 +244,7 @@ void checkOutputs(const RenderArgs& a, const std::string& checkpoint) {
   if (!RankGroup::world().isRoot()) return;
   const RenderOptions& ro = a.options;
   std::vector<std::string> inputs = gltfInputFiles(ro.scenePath);
-  inputs.insert(inputs.end(), {ro.referencePath, ro.estimatorAuto ? "" : a.estimatorFile,
+  inputs.insert(inputs.end(), {ro.referencePath, ro.estimatorAuto || a.estimatorFile == kEstimatorDefaults ? "" : a.estimatorFile,
                                ro.environmentPath == kStudioEnvironment ? "" : ro.environmentPath});
   checkOutputPaths({{"--output", a.out},
                     {"--png", a.png},
@@ -532,8 +535,9 @@ Command addRenderCommand(CLI::App& app) {
   // Flags override the file; both are the keys of host/estimators/estimator_params.cpp.
   render
       ->add_option("--estimator", a->estimatorFile,
-                   "JSON estimator file (the keys of the flags below), or auto: short pilots on the scene (at most 5% of "
-                   "a time budget) choose roulette, light and BSDF samples and MIS by measured efficiency; flags pin their keys")
+                   "JSON estimator file (the keys of the flags below), defaults (fixed), or auto: short pilots on the "
+                   "scene (at most 5% of a time budget) choose roulette, light and BSDF samples and MIS by measured "
+                   "efficiency; flags pin their keys. Unset: auto where it can run, the defaults elsewhere (the report says why)")
       ->group(kEstimatorGroup);
   for (const EstimatorParam& p : estimatorParams())
     render->add_option(p.flag(), a->estimatorValues[p.key], p.helpText())->group(kEstimatorGroup);

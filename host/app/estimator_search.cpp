@@ -43,30 +43,32 @@ class CandidatePilot {
     out.pipelineSeconds += renderer_->pipelineSeconds();
   }
   uint32_t pathsPerPass() const { return renderer_->pathsPerPass(); }
-  // Pixels order[0, shape.pixels) at shape.spp samples each, then the renderer is let go.
+  // Pixels order[0, shape.pixels) at shape.spp samples each, in two runs: the early count's, read, and the rest.
+  // Then the renderer is let go.
   void render(const std::vector<uint32_t>& order, PilotShape shape) {
-    std::vector<PathRenderer::PixelSamples> work;
-    for (uint32_t i = 0; i < shape.pixels; ++i) work.push_back({order[i], 0, shape.spp});
     const auto start = std::chrono::steady_clock::now();
-    renderer_->renderSampleRuns(work, stats_, [&] {
-      const std::vector<gpu::FilmPixel> batch = renderer_->takeBatch();
-      film_.addBatch(batch.data());
-      return true;
-    });
+    const uint32_t early = earlySpp(shape.spp);
+    run(order, shape.pixels, 0, early);
+    earlyVariance_ = sampleVariances(order, shape.pixels);
+    run(order, shape.pixels, early, shape.spp - early);
     renderer_.reset();
     pixelSamples_ = double(shape.pixels) * shape.spp;
+    spp_ = shape.spp, earlySpp_ = early;
     passSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     seconds_ += passSeconds_;
   }
-  // What the choice reads, over order[0, pixels): means, a sample's variances, and a sample's GPU seconds.
+  // What the choice reads, over order[0, pixels): means and a sample's variances (at the pilot's count and its early
+  // one), and a sample's GPU seconds.
   PilotSamples samples(const std::vector<uint32_t>& order, uint32_t pixels) const {
     PilotSamples s;
     for (uint32_t i = 0; i < pixels; ++i) {
-      const uint32_t p = order[i];
-      glm::dvec3 mean, variance;
-      for (int c = 0; c < 3; ++c) mean[c] = film_.mean(p, c), variance[c] = film_.varianceOfMean(p, c) * double(film_.count[p]);
-      s.mean.push_back(mean), s.sampleVariance.push_back(variance);
+      glm::dvec3 mean;
+      for (int c = 0; c < 3; ++c) mean[c] = film_.mean(order[i], c);
+      s.mean.push_back(mean);
     }
+    s.sampleVariance = sampleVariances(order, pixels);
+    s.earlySampleVariance = earlyVariance_;
+    s.spp = spp_, s.earlySpp = earlySpp_;
     s.cost = stats_.gpuSeconds / pixelSamples_;
     return s;
   }
@@ -78,11 +80,36 @@ class CandidatePilot {
   const std::optional<RouletteTable>& roulette() const { return roulette_; }
 
  private:
+  // A quarter of the pilot's samples, whole replicates' worth (each replicate's first points: a prefix of its
+  // sequence, stratified on its own).
+  uint32_t earlySpp(uint32_t spp) const {
+    const uint32_t r = std::max(film_.replicates, 1u);
+    return std::max(spp / 4 / r * r, r);
+  }
+  void run(const std::vector<uint32_t>& order, uint32_t pixels, uint32_t first, uint32_t samples) {
+    if (samples == 0) return;
+    std::vector<PathRenderer::PixelSamples> work;
+    for (uint32_t i = 0; i < pixels; ++i) work.push_back({order[i], first, samples});
+    renderer_->renderSampleRuns(work, stats_, [&] {
+      const std::vector<gpu::FilmPixel> batch = renderer_->takeBatch();
+      film_.addBatch(batch.data());
+      return true;
+    });
+  }
+  std::vector<glm::dvec3> sampleVariances(const std::vector<uint32_t>& order, uint32_t pixels) const {
+    std::vector<glm::dvec3> v(pixels);
+    for (uint32_t i = 0; i < pixels; ++i)
+      for (int c = 0; c < 3; ++c) v[i][c] = film_.varianceOfMean(order[i], c) * double(film_.count[order[i]]);
+    return v;
+  }
+
   RenderSettings settings_;
   Film film_;
   RenderStats stats_;
   std::unique_ptr<PathRenderer> renderer_;
   std::optional<RouletteTable> roulette_;
+  std::vector<glm::dvec3> earlyVariance_;
+  uint32_t spp_ = 1, earlySpp_ = 1;
   double pixelSamples_ = 0.0, seconds_ = 0.0, passSeconds_ = 0.0;
 };
 
@@ -132,7 +159,7 @@ class PilotRounds {
 }  // namespace
 
 EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings,
-                                const std::set<std::string>& pinned, double timeBudget, RoundFilm& film) {
+                                const std::set<std::string>& pinned, double timeBudget, bool shareOfSeconds, RoundFilm& film) {
   EstimatorChoice out;
   const SceneFeatures& f = settings.features;
   const std::vector<SearchStep> steps = estimatorSearchSteps(pinned, SearchScene{f.lights(), ctx.hasFloatAtomics(), f.glossy});
@@ -164,22 +191,31 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   };
   measure("start", settings.estimator);
   const PilotPixels where{settings.width, settings.height, std::vector<uint32_t>(order.begin(), order.begin() + shape.pixels)};
+  // How far the readings are carried: to the render's samples a pixel (planned from the start's pace under a budget).
+  auto forecastReach = [&] { return forecastSteps(plannedSpp, shape.spp, measured.front().earlySpp); };
+  // The pilots' share is of the render's seconds: its budget, or (where asked) its samples at the start's pace.
+  // The pilots' kernels count (each candidate's about the start's).
+  const double budget = timeBudget > 0.0 ? timeBudget
+                        : shareOfSeconds ? pilots[0]->secondsPerPixelSample() * renderSpp * imagePixels
+                                         : 0.0;
+  const double kernelSeconds = out.pipelineSeconds;
   size_t best = 0;
-  double pilotSeconds = pilots[0]->seconds();
+  double pilotSeconds = pilots[0]->seconds() + kernelSeconds;
   for (const SearchStep& step : steps) {
     // Each value against the best so far, every candidate read against the values pooled so far; the key's
     // next value only where this one won. Under a time budget, only what fits its share (the next key may).
     for (double value : step.values) {
       const double incumbentValue = findEstimatorParam(step.key)->get(out.candidates[best].config);
-      const double expected = pilots[best]->seconds() * expectedPilotCost(step.key, value, incumbentValue);
-      if (!pilotFitsBudget(pilotSeconds, expected, timeBudget)) {
+      const double expected = pilots[best]->seconds() * expectedPilotCost(step.key, value, incumbentValue) + kernelSeconds;
+      if (!pilotFitsBudget(pilotSeconds, expected, budget)) {
         out.skippedForBudget.push_back(label(step.key, value));
         break;
       }
       EstimatorConfig e = out.candidates[best].config;
       findEstimatorParam(step.key)->set(e, value);
+      const double kernelsBefore = out.pipelineSeconds;
       measure(label(step.key, value), e);
-      pilotSeconds += pilots.back()->seconds();
+      pilotSeconds += pilots.back()->seconds() + out.pipelineSeconds - kernelsBefore;
       const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
       if (!beats(readings.back(), readings[best])) break;
       best = readings.size() - 1;
@@ -193,6 +229,7 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   out.roulette = pilots[best]->roulette();
   for (const auto& p : pilots) out.seconds += p->seconds(), out.stats.push_back(p->stats());
   out.pilotPixels = shape.pixels, out.pilotSpp = shape.spp;
+  out.forecastSteps = forecastReach();
   out.pixelSamples = rounds.pixelSamples();
   out.share = rounds.pixelSamples() / (plannedSpp * imagePixels);
   return out;

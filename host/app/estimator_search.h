@@ -30,18 +30,21 @@ struct EstimatorChoice {
   std::vector<MeasuredCandidate> candidates;  // in the order measured
   std::optional<RouletteTable> roulette;      // rr efficiency chosen: its pilot's scales
   uint32_t pilotPixels = 0, pilotSpp = 0;
+  double forecastSteps = 0.0;                 // how far the readings were carried (policy/estimator_choice.h)
   double seconds = 0.0;                       // the pilots' rendering (rr efficiency's own pilot included)
   double pipelineSeconds = 0.0;               // the candidates' kernels' set-up
   double pixelSamples = 0.0;                  // the pilots' samples, all in the image
   double share = 0.0;                         // their share of the render's planned pixel-samples
-  bool cutShort = false;                      // the time budget's share fitted no challenger: the start renders
+  bool cutShort = false;                      // the share of the render's time fitted no challenger: the start renders
   std::vector<std::string> skippedForBudget;  // challengers left out because they would not fit it
   std::vector<RenderStats> stats;             // each pilot's counters (the report's rays include them)
 };
 
 // settings: the render's (its estimator the start, with the user's keys in `pinned`); timeBudget > 0: the render's
-// samples are planned from the start's pace. The pilots' rounds go into `film` (the render's, empty).
+// samples are planned from the start's pace. The pilots take at most kChoiceMaxShare of the render's samples, and of
+// its seconds: the budget's, or with shareOfSeconds (the default's choosing, which must pay for itself on a short
+// render) its samples' at the start pilot's pace. The pilots' rounds go into `film` (the render's, empty).
 EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings,
-                                const std::set<std::string>& pinned, double timeBudget, RoundFilm& film);
+                                const std::set<std::string>& pinned, double timeBudget, bool shareOfSeconds, RoundFilm& film);
 
 }  // namespace vkmc

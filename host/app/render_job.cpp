@@ -419,15 +419,42 @@ void addPilotStats(RenderStats& to, const RenderStats& s) {
   to.stagesUntimed |= s.stagesUntimed;
 }
 
+// Where auto is the default, why this render keeps the fixed defaults (empty: auto runs). What --estimator auto
+// refuses with an error (validateOptions) is said here instead, and so is a render too short to choose in.
+std::string whyFixedEstimator(const vk::Context& ctx, const RenderOptions& o, const RunControl& run,
+                              const RenderSettings& settings) {
+  if (!o.estimatorAutoWherePossible || o.estimatorAuto) return "";
+  if (o.estimator.rr == RouletteMode::Ears) return "rr ears runs passes of its own";
+  if (o.estimator.sampler == Sampler::ZSobol) return "zsobol's index bounds a pixel's samples";
+  if (o.estimator.sampler != Sampler::Independent && o.estimator.replicates < 2) return "one replicate measures no variance";
+  if (!run.checkpointPath.empty() || run.resumeState) return "a checkpoint records one estimator";
+  if (RankGroup::world().distributed()) return "under mpirun each rank would choose on its own";
+  if (o.timeBudget > 0.0 && o.timeBudget < kChoiceMinBudgetSeconds)
+    return "a time budget under " + formatNumber(kChoiceMinBudgetSeconds) + " s is too short to choose in";
+  if (o.timeBudget > 0.0) return "";  // the share of its seconds decides what fits (cut_short)
+  const double spp = settings.spp == kMaxSpp ? double(kChoiceNominalSpp) : double(settings.spp);
+  const uint32_t candidates =
+      1 + uint32_t(estimatorSearchSteps(o.pinnedKeys,
+                                        SearchScene{settings.features.lights(), ctx.hasFloatAtomics(), settings.features.glossy})
+                       .size());
+  if (!renderFitsPilots(spp * settings.width * settings.height, candidates))
+    return "the render is too small for its pilots (" + std::to_string(candidates) + " candidates of " +
+           std::to_string(kChoiceMinPilotPixels) + " pixels at " + std::to_string(kChoiceMinPilotSpp) + " samples, in " +
+           formatNumber(100.0 * kChoiceMaxShare) + "% of its samples)";
+  return "";
+}
+
 // --estimator auto: the pilots choose, and are the render's first rounds (`earlier`); the render then runs the
 // chosen configuration, its integrator the wavefront where it splits. The pilots' counters join the render's.
 void chooseEstimatorFor(vk::Context& ctx, const GpuScene& gpuScene, const RenderOptions& options, RenderSettings& settings,
                         RenderOutcome& out, LearnedBeforePasses& learned, RenderState& state,
                         std::optional<EarlierRounds>& earlier) {
-  if (!options.estimatorAuto) return;
+  if (!options.estimatorAuto && !(options.estimatorAutoWherePossible && out.choiceLeftOut.empty())) return;
+  checkDeviceLimits(settings, ctx.properties().limits);  // before the pilots' films: an image too large is said so
   earlier.emplace(EarlierRounds{RoundFilm(settings.width, settings.height, settings.estimator.replicates,
                                           settings.estimator.sampler != Sampler::Independent)});
-  out.choice = chooseEstimator(ctx, gpuScene, settings, options.pinnedKeys, options.timeBudget, earlier->film);
+  out.choice =
+      chooseEstimator(ctx, gpuScene, settings, options.pinnedKeys, options.timeBudget, !options.estimatorAuto, earlier->film);
   earlier->spp = out.choice->pixelSamples / (double(settings.width) * settings.height);
   // Without a time budget the pilots' samples count toward --spp (on average over the pixels); rounds count them
   // themselves (EarlierRounds::spp).
@@ -557,6 +584,7 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
                           {"device", out.device},
                           {"outputs", run.outputs}};
   LearnedBeforePasses learned;
+  out.choiceLeftOut = whyFixedEstimator(ctx, options, run, settings);
   if ((settings.sampleRuns || options.estimatorAuto) && (!run.checkpointPath.empty() || run.resumeState))
     throw Error("--adaptive on, --target-error and --estimator auto do not write or resume checkpoints yet");
   RenderState state = startOrResume(run, fingerprint.hex(), framing, out, learned);
@@ -709,19 +737,30 @@ void addLearnedFields(json& j, const RenderOutcome& r) {
 // choice, and what choosing cost.
 json choiceJson(const EstimatorChoice& c) {
   json candidates = json::array();
-  const double start = c.candidates.front().reading.efficiency();
+  const CandidateReading& start = c.candidates.front().reading;
   for (const MeasuredCandidate& m : c.candidates) {
     const CandidateReading& r = m.reading;
-    const double spread = std::exp(1.96 * r.relativeSe());
+    const Forecast now = forecast(r, 0.0), later = forecast(r, c.forecastSteps);
+    const Comparison vsStart = compare(r, start, 0.0), laterVsStart = compare(r, start, c.forecastSteps);
+    auto interval = [](double value, double logSe) {
+      return json::array({value / std::exp(1.96 * logSe), value * std::exp(1.96 * logSe)});
+    };
+    const double ratio = vsStart.measured ? std::exp(vsStart.logRatio) : 0.0;
+    const double laterRatio = laterVsStart.measured ? std::exp(laterVsStart.logRatio) : 0.0;
     candidates.push_back({{"candidate", m.label},
                           {"chosen", m.chosen},
                           {"seconds", m.seconds},
                           {"rel_variance_per_sample", r.relVariance},
                           {"rel_variance_standard_error", r.relVarianceSe},
+                          {"early_rel_variance_per_sample", r.earlyRelVariance},
                           {"cost_per_sample", r.cost},
-                          {"efficiency", r.efficiency()},
-                          {"efficiency_95", {r.efficiency() / spread, r.efficiency() * spread}},
-                          {"vs_start", start > 0.0 ? r.efficiency() / start : 0.0}});
+                          {"efficiency", now.efficiency},
+                          {"efficiency_95", interval(now.efficiency, now.logSe)},
+                          {"vs_start", ratio},
+                          {"vs_start_95", interval(ratio, vsStart.se)},
+                          {"convergence_rate", later.rate},
+                          {"forecast_vs_start", laterRatio},
+                          {"forecast_vs_start_95", interval(laterRatio, laterVsStart.se)}});
   }
   return {{"chosen", c.chosen.toJson()},
           {"candidates", candidates},
@@ -731,6 +770,7 @@ json choiceJson(const EstimatorChoice& c) {
           {"pilot_pixel_samples", c.pixelSamples},
           {"pilot_pixels", c.pilotPixels},
           {"pilot_spp", c.pilotSpp},
+          {"forecast_steps", c.forecastSteps},
           {"seconds", c.seconds},
           {"pipeline_seconds", c.pipelineSeconds},
           {"share_of_samples", c.share},
@@ -755,7 +795,7 @@ std::string choiceLine(const EstimatorChoice& c) {
                 "choice      %s, of %zu candidates%s (%.2fx the start's measured efficiency); pilots %.3f s, %.1f%% of "
                 "the samples (in the image); their kernels %.3f s\n",
                 changed.empty() ? "the defaults" : changed.c_str(), c.candidates.size(),
-                c.skippedForBudget.empty() ? "" : " (the time budget's share fitted no more)",
+                c.skippedForBudget.empty() ? "" : " (the pilots' share of the render's time fitted no more)",
                 startEfficiency > 0.0 ? chosenEfficiency / startEfficiency : 0.0, c.seconds, 100.0 * c.share, c.pipelineSeconds);
   return buf;
 }
@@ -880,6 +920,7 @@ nlohmann::json makeReport(const RenderOptions& o, const RenderOutcome& r) {
   j["estimator"] = e.toJson();
   j["estimator"]["unbiased"] = e.unbiased();
   if (r.choice) j["estimator_choice"] = choiceJson(*r.choice);
+  if (!r.choiceLeftOut.empty()) j["estimator_choice"] = {{"chosen", nullptr}, {"left_out", r.choiceLeftOut}};
   j["estimator"]["bias"] = e.unbiased() ? "none: paths end by Russian roulette only"
                                         : "truncation: paths are cut after " + std::to_string(e.maxDepth) +
                                               " scattering events, so the image is biased low";
@@ -924,6 +965,7 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
             " vertices found the path pool full and went on unsplit (unbiased: q = 1 there; fewer splits than asked)\n";
   if (r.ears) text += earsLine(*r.ears) + earsGuardLine(r.earsGuard);
   if (r.choice) text += choiceLine(*r.choice);
+  if (!r.choiceLeftOut.empty()) text += "choice      the defaults, not chosen: " + r.choiceLeftOut + "\n";
   if (r.error)
     text += "error       relMSE " + std::to_string(r.error->relmse) + ", MSE " + std::to_string(r.error->mse) +
             ", efficiency 1/(relMSE x s) " + std::to_string(r.error->relmse > 0 ? 1.0 / (r.error->relmse * s.seconds) : 0.0) +

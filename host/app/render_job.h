@@ -58,6 +58,9 @@ struct RenderOptions {
   // --estimator auto: short pilots on the scene choose every estimator key not in pinnedKeys (the user's flags),
   // starting from `estimator` (app/estimator_search.h).
   bool estimatorAuto = false;
+  // The command line's default: auto where it can run, the fixed defaults where it cannot (rr ears, zsobol, one
+  // replicate, checkpoints, mpirun, a render too small for its pilots), the report saying which and why.
+  bool estimatorAutoWherePossible = false;
   std::set<std::string> pinnedKeys;
   std::string referencePath;        // EXR to compare with: mse, relmse, efficiency in the report
   bool specialize = true;           // false: pipelines with every feature on (for comparison)
@@ -137,6 +140,7 @@ struct RenderOutcome {
   std::optional<SampleRoundsOutcome> rounds;  // rendered in rounds (adaptive sampling, --target-error)
   EstimatorConfig estimator;                  // the one that rendered (--estimator auto's choice)
   std::optional<EstimatorChoice> choice;      // --estimator auto: what its pilots measured and chose
+  std::string choiceLeftOut;                  // auto where possible, not possible here: why
 };
 
 // Throws vkmc::Error on bad options or input, before anything is written. Both runRender call it first, so

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 #include "estimators/estimator_config.h"
 
@@ -68,6 +70,49 @@ std::vector<glm::dvec3> windowMeans(const PilotPixels& where, const std::vector<
 }
 }  // namespace
 
+namespace {
+// The mean of `x` and its standard error.
+std::pair<double, double> meanAndSe(const std::vector<double>& x) {
+  const double n = double(std::max<size_t>(x.size(), 1));
+  double mean = 0.0, squares = 0.0;
+  for (double v : x) mean += v / n;
+  for (double v : x) squares += (v - mean) * (v - mean);
+  return {mean, x.size() > 1 ? std::sqrt(squares / (n - 1.0) / n) : 0.0};
+}
+
+// Each pixel's relative variance a sample: over the value (the others' means, windowed) squared, channels averaged.
+std::vector<double> relativeVariances(const std::vector<glm::dvec3>& sampleVariance, const std::vector<glm::dvec3>& value,
+                                      double epsilon) {
+  std::vector<double> r(value.size(), 0.0);
+  for (size_t i = 0; i < value.size() && i < sampleVariance.size(); ++i) {
+    const glm::dvec3 rel = sampleVariance[i] / (value[i] * value[i] + epsilon);
+    r[i] = (rel.x + rel.y + rel.z) / 3.0;
+  }
+  return r;
+}
+
+// A reading's log relative variance forecast `steps` on, and each pixel's influence on it (the delta method: the
+// log's standard error is the influences' over sqrt(pixels)). fall = full / early, held to [1/stepRatio, 1]; unheld,
+// log v = (1 + steps) log full - steps log early.
+struct Linearized {
+  double logRelVariance = 0.0, fall = 1.0;
+  std::vector<double> influence;
+};
+Linearized linearize(const CandidateReading& r, double steps) {
+  Linearized l;
+  const bool early = r.earlyRelVariance > 0.0 && r.stepRatio > 1.0;
+  const double raw = early ? r.relVariance / r.earlyRelVariance : 1.0;
+  l.fall = std::clamp(raw, 1.0 / std::max(r.stepRatio, 1.0), 1.0);
+  const bool held = !early || l.fall != raw;
+  l.logRelVariance = std::log(r.relVariance) + steps * std::log(l.fall);
+  l.influence.resize(r.pixels.size());
+  for (size_t i = 0; i < r.pixels.size(); ++i)
+    l.influence[i] = held ? r.pixels[i] / r.relVariance
+                          : (1.0 + steps) * r.pixels[i] / r.relVariance - steps * r.earlyPixels[i] / r.earlyRelVariance;
+  return l;
+}
+}  // namespace
+
 std::vector<CandidateReading> readCandidates(const PilotPixels& where, const std::vector<PilotSamples>& pilots, double epsilon) {
   std::vector<CandidateReading> readings(pilots.size());
   if (pilots.empty()) return readings;
@@ -80,27 +125,49 @@ std::vector<CandidateReading> readCandidates(const PilotPixels& where, const std
     std::vector<glm::dvec3> value(pixels);
     for (size_t i = 0; i < pixels; ++i) value[i] = pilots.size() > 1 ? (total[i] - pilots[c].mean[i]) / others : total[i];
     value = windowMeans(where, value);
-    std::vector<double> r(pixels);
-    for (size_t i = 0; i < pixels; ++i) {
-      const glm::dvec3 rel = pilots[c].sampleVariance[i] / (value[i] * value[i] + epsilon);
-      r[i] = (rel.x + rel.y + rel.z) / 3.0;
+    CandidateReading& r = readings[c];
+    r.pixels = relativeVariances(pilots[c].sampleVariance, value, epsilon);
+    std::tie(r.relVariance, r.relVarianceSe) = meanAndSe(r.pixels);
+    r.cost = pilots[c].cost;
+    if (pilots[c].earlySampleVariance.size() == pixels && pilots[c].earlySpp < pilots[c].spp) {
+      r.earlyPixels = relativeVariances(pilots[c].earlySampleVariance, value, epsilon);
+      r.earlyRelVariance = meanAndSe(r.earlyPixels).first;
+      r.stepRatio = double(pilots[c].spp) / double(std::max(pilots[c].earlySpp, 1u));
     }
-    const double n = double(std::max<size_t>(pixels, 1));
-    double mean = 0.0, squares = 0.0;
-    for (double x : r) mean += x / n;
-    for (double x : r) squares += (x - mean) * (x - mean);
-    const double spread = pixels > 1 ? squares / (n - 1.0) : 0.0;
-    readings[c] = {mean, std::sqrt(spread / n), pilots[c].cost};
   }
   return readings;
 }
 
+double forecastSteps(double renderSpp, uint32_t pilotSpp, uint32_t earlySpp) {
+  if (!(renderSpp > pilotSpp) || earlySpp == 0 || earlySpp >= pilotSpp) return 0.0;
+  return std::min(std::log(renderSpp / pilotSpp) / std::log(double(pilotSpp) / earlySpp), kChoiceMaxSteps);
+}
+
+Forecast forecast(const CandidateReading& r, double steps) {
+  if (!(r.relVariance > 0.0) || !(r.cost > 0.0)) return {};
+  const Linearized l = linearize(r, steps);
+  const double rate = r.stepRatio > 1.0 ? -std::log(l.fall) / std::log(r.stepRatio) : 0.0;
+  return {std::exp(-l.logRelVariance) / r.cost, meanAndSe(l.influence).second, rate};
+}
+
+Comparison compare(const CandidateReading& challenger, const CandidateReading& incumbent, double steps) {
+  if (!(challenger.relVariance > 0.0 && challenger.cost > 0.0 && incumbent.relVariance > 0.0 && incumbent.cost > 0.0)) return {};
+  const Linearized c = linearize(challenger, steps), i = linearize(incumbent, steps);
+  std::vector<double> difference(c.influence.size());
+  for (size_t p = 0; p < difference.size() && p < i.influence.size(); ++p) difference[p] = i.influence[p] - c.influence[p];
+  const double logRatio = (i.logRelVariance + std::log(incumbent.cost)) - (c.logRelVariance + std::log(challenger.cost));
+  return {logRatio, meanAndSe(difference).second, true};
+}
+
 bool beats(const CandidateReading& challenger, const CandidateReading& incumbent) {
-  if (challenger.efficiency() <= 0.0) return false;
-  if (incumbent.efficiency() <= 0.0) return true;
-  const double logRatio = std::log(challenger.efficiency() / incumbent.efficiency());
-  const double se = std::hypot(challenger.relativeSe(), incumbent.relativeSe());
-  return logRatio >= std::log(kChoiceMargin) && logRatio - 1.645 * se > 0.0;
+  if (forecast(challenger, 0.0).efficiency <= 0.0) return false;
+  if (forecast(incumbent, 0.0).efficiency <= 0.0) return true;
+  const Comparison c = compare(challenger, incumbent, 0.0);
+  return c.logRatio >= std::log(kChoiceMargin) && c.logRatio - 1.645 * c.se > 0.0;
+}
+
+bool renderFitsPilots(double plannedPixelSamples, uint32_t candidates) {
+  return kChoiceMaxShare * plannedPixelSamples / std::max(candidates, 1u) >= double(kChoiceMinPilotPixels) * kChoiceMinPilotSpp;
 }
 
 PilotShape pilotShape(uint32_t pathsPerPass, double plannedPixelSamples, uint32_t candidates, uint32_t imagePixels,

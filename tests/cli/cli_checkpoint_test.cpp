@@ -71,7 +71,9 @@ TEST(CliCheckpoint, ASignalStopsTheRenderAndResumeFinishesItBitForBit) {
     EXPECT_GT(r["gpu_seconds"].get<double>(), j["gpu_seconds"].get<double>()) << "the resumed part's GPU time adds";
     EXPECT_EQ(r["spp"].get<int>(), 512);
     EXPECT_FALSE(fs::exists(ck)) << "a finished render removes its checkpoint";
-    RunResult uninterrupted = runVkmc("render " + cornell() + kRender + " -o " + (d / "whole.exr").string());
+    EXPECT_EQ(j["estimator_choice"]["left_out"], "a checkpoint records one estimator");
+    // A checkpointed render renders the fixed defaults; so does the uninterrupted one asked for them.
+    RunResult uninterrupted = runVkmc("render " + cornell() + kRender + " --estimator defaults -o " + (d / "whole.exr").string());
     ASSERT_EQ(uninterrupted.code, 0) << uninterrupted.err;
     EXPECT_TRUE(slurp(out) == slurp(d / "whole.exr")) << "the resumed render (written to the original -o) differs";
   }

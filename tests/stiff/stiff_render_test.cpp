@@ -75,6 +75,35 @@ TEST(StiffRender, TinyIntenseLightMatchesTheAnalyticRadiance) {
                b.film.totalNonfinite() == 0);
 }
 
+// The estimator chosen by its pilots, and each pixel's samples by its measured variance: whatever they choose,
+// the tiny light's image mean and pixels stay the analytic radiance (the pilots and the rounds are rounds of the
+// image with weights fixed before their samples are seen). 32x32 at 512 samples: pilots of 64 a pixel.
+class TinyIntenseLightChosen : public ::testing::TestWithParam<bool> {};
+
+TEST_P(TinyIntenseLightChosen, MeanAndPixelsAreTheAnalyticRadiance) {
+  const uint32_t n = 32;
+  EstimatorConfig start;
+  start.sampler = Sampler::Independent;  // pixel variances with many degrees of freedom, for the pixels' z-tests
+  RenderOptions o = optionsFor("stiff/tiny_light.gltf", start, n, n, 512, 61);
+  o.estimatorAuto = true;
+  o.adaptive = GetParam();
+  const RenderOutcome r = runRender(sharedContext(), o);
+  ASSERT_TRUE(r.choice);
+  EXPECT_GE(r.choice->candidates.size(), 2u);
+  ASSERT_EQ(r.film.totalNonfinite(), 0u);
+  const RegionStats s = whole(r.film);
+  EXPECT_TRUE(belowSigmas(zTest(s.mean.x, tinyLightImageMean(n), std::sqrt(s.variance.x)), 4.0)) << "image mean";
+  for (auto [i, j] : {std::pair{16u, 16u}, std::pair{6u, 25u}, std::pair{0u, 0u}}) {
+    const size_t p = size_t(j) * n + i;
+    const ZTest pixel = zTest(r.film.mean(p, 0), tinyLightPixel(i, j, n), std::sqrt(r.film.varianceOfMean(p, 0)));
+    EXPECT_TRUE(belowSigmas(pixel, 4.0)) << "pixel " << i << "," << j;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(StiffRender, TinyIntenseLightChosen, ::testing::Bool(), [](const ::testing::TestParamInfo<bool>& p) {
+  return p.param ? std::string("AdaptiveRounds") : std::string("UniformRest");
+});
+
 // The same light under rr ears: a pixel's few bright vertices get split, the rest rouletted; the image mean and
 // the pixels stay the analytic radiance. With learned light samples too, the light cells split or roulette each
 // copy's light samples.
