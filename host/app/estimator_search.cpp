@@ -194,28 +194,27 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   // How far the readings are carried: to the render's samples a pixel (planned from the start's pace under a budget).
   auto forecastReach = [&] { return forecastSteps(plannedSpp, shape.spp, measured.front().earlySpp); };
   // The pilots' share is of the render's seconds: its budget, or (where asked) its samples at the start's pace.
-  // The pilots' kernels count (each candidate's about the start's).
+  // Their kernels are set-up, reported apart: Mesa's shader cache keeps them for the next render (counted, they
+  // left the basement's per-depth pilot out of a 24-s budget on a loaded machine, and its 4.7x with it).
   const double budget = timeBudget > 0.0 ? timeBudget
                         : shareOfSeconds ? pilots[0]->secondsPerPixelSample() * renderSpp * imagePixels
                                          : 0.0;
-  const double kernelSeconds = out.pipelineSeconds;
   size_t best = 0;
-  double pilotSeconds = pilots[0]->seconds() + kernelSeconds;
+  double pilotSeconds = pilots[0]->seconds();
   for (const SearchStep& step : steps) {
     // Each value against the best so far, every candidate read against the values pooled so far; the key's
     // next value only where this one won. Under a time budget, only what fits its share (the next key may).
     for (double value : step.values) {
       const double incumbentValue = findEstimatorParam(step.key)->get(out.candidates[best].config);
-      const double expected = pilots[best]->seconds() * expectedPilotCost(step.key, value, incumbentValue) + kernelSeconds;
+      const double expected = pilots[best]->seconds() * expectedPilotCost(step.key, value, incumbentValue);
       if (!pilotFitsBudget(pilotSeconds, expected, budget)) {
         out.skippedForBudget.push_back(label(step.key, value));
         break;
       }
       EstimatorConfig e = out.candidates[best].config;
       findEstimatorParam(step.key)->set(e, value);
-      const double kernelsBefore = out.pipelineSeconds;
       measure(label(step.key, value), e);
-      pilotSeconds += pilots.back()->seconds() + out.pipelineSeconds - kernelsBefore;
+      pilotSeconds += pilots.back()->seconds();
       const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
       if (!beats(readings.back(), readings[best])) break;
       best = readings.size() - 1;
