@@ -326,6 +326,9 @@ gpu::Material gpuMaterial(const Material& m) {
   g.sheenRoughnessTexture = textureSlot(m.sheenRoughnessTexture);
   g.specularTexture = textureSlot(m.specularTexture);
   g.specularColorTexture = textureSlot(m.specularColorTexture);
+  g.iridescence = glm::vec4(m.iridescence, m.iridescenceIor, m.iridescenceThicknessMin, m.iridescenceThicknessMax);
+  g.iridescenceTexture = textureSlot(m.iridescenceTexture);
+  g.iridescenceThicknessTexture = textureSlot(m.iridescenceThicknessTexture);
   return g;
 }
 }  // namespace

@@ -24,7 +24,7 @@ constexpr ExtensionRow kExtensions[] = {
     {"KHR_materials_ior", ""},
     {"KHR_materials_clearcoat", ""},
     {"KHR_materials_sheen", ""},
-    {"KHR_materials_iridescence", "iridescence is ignored"},
+    {"KHR_materials_iridescence", ""},
     {"KHR_materials_anisotropy", "anisotropy is ignored"},
     {"KHR_materials_dispersion", "dispersion is ignored"},
     {"KHR_materials_diffuse_transmission", "diffuse transmission is ignored"},

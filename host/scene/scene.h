@@ -53,12 +53,25 @@ struct Material {
   float clearcoat = 0.0f, clearcoatRoughness = 0.0f;
   glm::vec3 sheenColor{0.0f};
   float sheenRoughness = 0.0f;
+  // KHR_materials_iridescence: the film's strength, ior and thickness range (nm).
+  float iridescence = 0.0f, iridescenceIor = 1.3f, iridescenceThicknessMin = 100.0f, iridescenceThicknessMax = 400.0f;
   TextureRef transmissionTexture, clearcoatTexture, clearcoatRoughnessTexture, clearcoatNormalTexture, sheenColorTexture,
-      sheenRoughnessTexture, specularTexture, specularColorTexture;
-  std::array<const TextureRef*, 12> textureRefs() const {
-    return {&baseColorTexture, &metallicRoughnessTexture,  &normalTexture,          &emissiveTexture,   &transmissionTexture,
-            &clearcoatTexture, &clearcoatRoughnessTexture, &clearcoatNormalTexture, &sheenColorTexture, &sheenRoughnessTexture,
-            &specularTexture,  &specularColorTexture};
+      sheenRoughnessTexture, specularTexture, specularColorTexture, iridescenceTexture, iridescenceThicknessTexture;
+  std::array<const TextureRef*, 14> textureRefs() const {
+    return {&baseColorTexture,
+            &metallicRoughnessTexture,
+            &normalTexture,
+            &emissiveTexture,
+            &transmissionTexture,
+            &clearcoatTexture,
+            &clearcoatRoughnessTexture,
+            &clearcoatNormalTexture,
+            &sheenColorTexture,
+            &sheenRoughnessTexture,
+            &specularTexture,
+            &specularColorTexture,
+            &iridescenceTexture,
+            &iridescenceThicknessTexture};
   }
   bool textured() const {
     for (const TextureRef* t : textureRefs())
@@ -69,6 +82,8 @@ struct Material {
   // and leave again (transmission: a refracting volume is entered through front faces and left through back ones).
   bool culledFromBehind() const { return !doubleSided && transmission <= 0.0f; }
   bool hasSheen() const { return sheenColor.x > 0.0f || sheenColor.y > 0.0f || sheenColor.z > 0.0f; }
+  // A film that changes the Fresnel term somewhere (a zero thickness everywhere is no film).
+  bool hasIridescence() const { return iridescence > 0.0f && std::max(iridescenceThicknessMin, iridescenceThicknessMax) > 0.0f; }
   bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
 

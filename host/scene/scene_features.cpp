@@ -21,7 +21,8 @@ SceneFeatures scanFeatures(const Scene& scene) {
   for (size_t i = 0; i < scene.materials.size(); ++i) {
     if (!used[i]) continue;
     const Material& m = scene.materials[i];
-    f.glossy |= m.metallic > 0.0f || m.specular > 0.0f || m.transmission > 0.0f || m.clearcoat > 0.0f || m.hasSheen();
+    f.glossy |= m.metallic > 0.0f || m.specular > 0.0f || m.transmission > 0.0f || m.clearcoat > 0.0f || m.hasSheen() ||
+                m.hasIridescence();
     f.metallic |= m.metallic > 0.0f;
     f.nonDefaultSpecular |= m.specular != 1.0f;
     f.doubleSided |= m.doubleSided;
@@ -33,6 +34,7 @@ SceneFeatures scanFeatures(const Scene& scene) {
     f.volumes |= m.transmission > 0.0f && m.volumetric;
     f.clearcoat |= m.clearcoat > 0.0f;
     f.sheen |= m.hasSheen();
+    f.iridescence |= m.hasIridescence();
     // Textures only scale roughness down: a roughness texture can make any lobe smooth.
     auto canBeSmooth = [](float roughness, const TextureRef& texture) {
       return roughness * roughness < gpu::kDeltaAlpha || texture.present();
@@ -61,6 +63,7 @@ SceneFeatures allFeatures(const SceneFeatures& scene) {
   f.volumes = true;
   f.clearcoat = true;
   f.sheen = true;
+  f.iridescence = true;
   f.delta = true;
   f.punctualLights = std::max(f.punctualLights, 1u);
   f.environment = true;

@@ -26,6 +26,7 @@ struct SceneFeatures {
   bool volumes = false;         // transmission into a KHR_materials_volume (refraction, attenuation)
   bool clearcoat = false;       // KHR_materials_clearcoat
   bool sheen = false;           // KHR_materials_sheen
+  bool iridescence = false;     // KHR_materials_iridescence
   bool delta = false;           // a lobe can be smooth (roughness^2 below kDeltaAlpha): delta BSDF samples
   uint32_t punctualLights = 0;  // KHR_lights_punctual instances
   // An environment light (Scene::environment): --environment, or the constant one that lights a scene with no

@@ -28,6 +28,8 @@ uint64_t sceneFingerprint(const Scene& s) {
                            m.clearcoat,       m.clearcoatRoughness, m.sheenColor.x,      m.sheenColor.y,
                            m.sheenColor.z,    m.sheenRoughness,     float(m.volumetric), 0.0f};
     h.add(ext, sizeof(ext));
+    const float film[4] = {m.iridescence, m.iridescenceIor, m.iridescenceThicknessMin, m.iridescenceThicknessMax};
+    h.add(film, sizeof(film));
     for (const TextureRef* t : m.textureRefs()) addTextureRef(h, *t);
   }
   for (const Texture& t : s.textures) {

@@ -45,6 +45,7 @@ layout(constant_id = SPEC_CULLS_BACK_FACES) const uint kCullsBackFaces = 1u;
 layout(constant_id = SPEC_HAS_TRANSMISSION) const uint kHasTransmission = 1u;
 layout(constant_id = SPEC_HAS_CLEARCOAT) const uint kHasClearcoat = 1u;
 layout(constant_id = SPEC_HAS_SHEEN) const uint kHasSheen = 1u;
+layout(constant_id = SPEC_HAS_IRIDESCENCE) const uint kHasIridescence = 1u;
 layout(constant_id = SPEC_HAS_DELTA) const uint kHasDelta = 1u;
 layout(constant_id = SPEC_SAMPLER) const uint kSampler = 0u;
 layout(constant_id = SPEC_SAMPLER_LOG2_SPP) const uint kSamplerLog2Spp = 0u;
@@ -227,6 +228,9 @@ Material loadMaterial(uint index) {
   m.sheenRoughnessTexture = materialSlot(t + 34);
   m.specularTexture = materialSlot(t + 37);
   m.specularColorTexture = materialSlot(t + 40);
+  m.iridescence = materialTexel(t + 43);
+  m.iridescenceTexture = materialSlot(t + 44);
+  m.iridescenceThicknessTexture = materialSlot(t + 47);
   return m;
 }
 

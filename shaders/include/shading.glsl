@@ -71,7 +71,8 @@ vec3 texturedColor(vec3 factor, TextureSlot slot, SurfacePoint s) {
 }
 
 // The material extensions at s (bsdf_gltf.h): specular colour and ior, transmission (refracting into a volume
-// from a front face, out of it from a back face), clearcoat over the unmapped normal or its own normal map, sheen.
+// from a front face, out of it from a back face), clearcoat over the unmapped normal or its own normal map, sheen,
+// and a thin film's iridescence.
 void shadeExtensions(Material m, SurfacePoint s, vec3 unmappedNormal, inout GltfMaterial gm) {
   vec3 specularColor = texturedColor(m.specularColor.rgb, m.specularColorTexture, s);
   setIor(gm, m.specularColor.w, specularColor);
@@ -96,6 +97,11 @@ void shadeExtensions(Material m, SurfacePoint s, vec3 unmappedNormal, inout Gltf
   }
   if (kHasSheen != 0u && maxComponent(m.sheen.rgb) > 0.0)
     setSheen(gm, texturedColor(m.sheen.rgb, m.sheenColorTexture, s), texturedFactor(m.sheen.w, m.sheenRoughnessTexture, s, 3u));
+  if (kHasIridescence != 0u && m.iridescence.x > 0.0) {
+    // The thickness texture's green channel blends the range (without one, the loader made both ends the maximum).
+    float thickness = mix(m.iridescence.z, m.iridescence.w, texturedFactor(1.0, m.iridescenceThicknessTexture, s, 1u));
+    setIridescence(gm, texturedFactor(m.iridescence.x, m.iridescenceTexture, s, 0u), m.iridescence.y, thickness);
+  }
 }
 
 // The material's parameters at s (factors times textures and vertex colours), its emission into s.emission

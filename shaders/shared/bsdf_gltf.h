@@ -19,6 +19,7 @@
 #include "layer_albedo.h"
 #include "microfacet.h"
 #include "sampling.h"
+#include "iridescence.h"
 #include "sheen.h"
 VKMC_BEGIN_NAMESPACE
 
@@ -36,6 +37,10 @@ struct GltfMaterial {
   vec3 clearcoatNormal;  // local frame
   vec3 sheenColor;
   float sheenAlpha;
+  float iridescence;           // KHR_materials_iridescence: the film's weight in the Fresnel terms (0: no film)
+  float iridescenceIor;        // the film's
+  float iridescenceThickness;  // nm
+  float iridescenceOutside;    // the ior above the film: the clearcoat's where there is one
 };
 
 VKMC_FN bool isDeltaAlpha(float alpha) { return alpha < kDeltaAlpha; }
@@ -55,6 +60,10 @@ VKMC_FN GltfMaterial makeGltfMaterial(vec3 baseColor, float metallic, float roug
   m.clearcoatNormal = vec3(0.0f, 0.0f, 1.0f);
   m.sheenColor = vec3(0.0f);
   m.sheenAlpha = 1.0f;
+  m.iridescence = 0.0f;
+  m.iridescenceIor = 1.3f;
+  m.iridescenceThickness = 0.0f;
+  m.iridescenceOutside = 1.0f;
   return m;
 }
 
@@ -81,6 +90,27 @@ VKMC_FN void setClearcoat(INOUT(GltfMaterial) m, float clearcoat, float roughnes
 VKMC_FN void setSheen(INOUT(GltfMaterial) m, vec3 color, float roughness) {
   m.sheenColor = clamp(color, vec3(0.0f), vec3(1.0f));
   m.sheenAlpha = max(roughness * roughness, kMinSheenAlpha);
+}
+
+// KHR_materials_iridescence, after the clearcoat: under a coat the film's outside is the coat's ior 1.5 (the
+// extension's rule), blended by the coat's factor.
+VKMC_FN void setIridescence(INOUT(GltfMaterial) m, float iridescence, float ior, float thicknessNm) {
+  m.iridescence = clamp(iridescence, 0.0f, 1.0f);
+  m.iridescenceIor = max(ior, 1.0f);
+  m.iridescenceThickness = max(thicknessNm, 0.0f);
+  m.iridescenceOutside = mix(1.0f, 1.5f, m.clearcoat);
+}
+
+// The film's Fresnel mixed into a base's: F = mix(F, iridescentFresnel(baseF0), iridescence).
+VKMC_FN vec3 withFilm(GltfMaterial m, vec3 f, vec3 baseF0, float cosTheta) {
+  if (m.iridescence <= 0.0f) return f;
+  vec3 film = iridescentFresnel(m.iridescenceOutside, m.iridescenceIor, cosTheta, m.iridescenceThickness, baseF0);
+  return mix(f, film, m.iridescence);
+}
+
+// The metal's Fresnel: Schlick on the base colour, under the film where there is one.
+VKMC_FN vec3 metalFresnel(GltfMaterial m, float cosTheta) {
+  return withFilm(m, schlickFresnel(m.baseColor, 1.0f, cosTheta), m.baseColor, cosTheta);
 }
 
 // A shading normal ns (a normal map's, or interpolated normals near a silhouette) can mirror wo below the
@@ -118,7 +148,7 @@ VKMC_FN vec3 interfaceFresnel(GltfMaterial m, float cosO) {
     if (sin2T >= 1.0f) return vec3(1.0f);
     c = sqrt(1.0f - sin2T);
   }
-  return schlickFresnel(m.f0, m.specular, c);
+  return withFilm(m, schlickFresnel(m.f0, m.specular, c), m.f0, c);
 }
 
 // What the coat and sheen leave to the layers under them for the pair (wo, wi): one minus weight x albedo, the
@@ -148,7 +178,7 @@ VKMC_FN vec3 baseReflectionEval(GltfMaterial m, vec3 wo, vec3 wi) {
   vec3 f = ((1.0f - m.metallic) * (1.0f - m.transmission) * kInvPi) * diffuseWeight * m.baseColor;
   if (!isSmooth) {
     float dv = ggxD(h, m.alpha) * smithVisibility(wi.z, wo.z, m.alpha);
-    vec3 fm = schlickFresnel(m.baseColor, 1.0f, vh);
+    vec3 fm = metalFresnel(m, vh);
     f += ((1.0f - m.metallic) * fd + m.metallic * fm) * dv;
   }
   return f;
@@ -203,8 +233,8 @@ VKMC_FN LobeProbabilities lobeProbabilities(GltfMaterial m, vec3 wo) {
   float base = under * sheenTransmittance(m, wo, wo);
   float f = luminance(interfaceFresnel(m, wo.z));
   float c = luminance(m.baseColor);
-  p.specular = base * ((1.0f - m.metallic) * (f + m.transmission * (1.0f - f) * c) +
-                       m.metallic * luminance(schlickFresnel(m.baseColor, 1.0f, wo.z)));
+  p.specular =
+      base * ((1.0f - m.metallic) * (f + m.transmission * (1.0f - f) * c) + m.metallic * luminance(metalFresnel(m, wo.z)));
   p.diffuse = base * (1.0f - m.metallic) * (1.0f - m.transmission) * (1.0f - f) * c;
   float total = p.coat + p.sheen + p.specular + p.diffuse;
   if (!(total > 0.0f)) return p;
@@ -226,7 +256,7 @@ VKMC_FN float reflectProbability(GltfMaterial m, vec3 wo, vec3 h) {
   if (m.transmission <= 0.0f || m.metallic >= 1.0f) return 1.0f;
   float vh = dot(wo, h);
   vec3 fd = interfaceFresnel(m, vh);
-  float r = luminance((1.0f - m.metallic) * fd + m.metallic * schlickFresnel(m.baseColor, 1.0f, vh));
+  float r = luminance((1.0f - m.metallic) * fd + m.metallic * metalFresnel(m, vh));
   float t = luminance(((1.0f - m.metallic) * m.transmission) * (vec3(1.0f) - fd) * m.baseColor);
   return r + t > 0.0f ? r / (r + t) : 1.0f;
 }
@@ -282,7 +312,7 @@ VKMC_FN BsdfSample deltaSample(vec3 wi, vec3 weight) {
 // their Fresnel weights with x; pLobe is the probability of having picked the interface.
 VKMC_FN BsdfSample sampleSmoothInterface(GltfMaterial m, vec3 wo, float x, float pLobe) {
   vec3 fd = interfaceFresnel(m, wo.z);
-  vec3 r = (1.0f - m.metallic) * fd + m.metallic * schlickFresnel(m.baseColor, 1.0f, wo.z);
+  vec3 r = (1.0f - m.metallic) * fd + m.metallic * metalFresnel(m, wo.z);
   vec3 t = ((1.0f - m.metallic) * m.transmission) * (vec3(1.0f) - fd) * m.baseColor;
   float pr = luminance(r) + luminance(t) > 0.0f ? luminance(r) / (luminance(r) + luminance(t)) : 1.0f;
   vec3 wi = vec3(-wo.x, -wo.y, wo.z);

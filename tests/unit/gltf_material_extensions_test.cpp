@@ -65,6 +65,31 @@ TEST(MaterialExtensions, DefaultsAndSmoothLobes) {
   EXPECT_TRUE(f.singleSided);
 }
 
+// KHR_materials_iridescence: every value (the ratified spelling of the film's ior and the draft's), its defaults,
+// and a thickness that is the maximum without a thickness texture.
+TEST(MaterialExtensions, IridescenceIsRead) {
+  Scene s = loadGltf(quadWith("film", R"("KHR_materials_iridescence":{"iridescenceFactor":0.8,"iridescenceIor":1.6,
+      "iridescenceThicknessMinimum":150,"iridescenceThicknessMaximum":500})"));
+  const Material& m = s.materials[0];
+  EXPECT_FLOAT_EQ(m.iridescence, 0.8f);
+  EXPECT_FLOAT_EQ(m.iridescenceIor, 1.6f);
+  EXPECT_FLOAT_EQ(m.iridescenceThicknessMin, 500.0f) << "no thickness texture: the maximum throughout";
+  EXPECT_FLOAT_EQ(m.iridescenceThicknessMax, 500.0f);
+  SceneFeatures f = scanFeatures(s);
+  EXPECT_TRUE(f.iridescence && f.glossy);
+  const Material draft =
+      loadGltf(quadWith("draft", R"("KHR_materials_iridescence":{"iridescenceFactor":1,"iridescenceIOR":2.0})")).materials[0];
+  EXPECT_FLOAT_EQ(draft.iridescenceIor, 2.0f);
+  EXPECT_FLOAT_EQ(draft.iridescenceThicknessMax, 400.0f);
+  const Material off = loadGltf(quadWith("off", R"("KHR_materials_iridescence":{})")).materials[0];
+  EXPECT_FLOAT_EQ(off.iridescenceIor, 1.3f);
+  EXPECT_FALSE(scanFeatures(loadGltf(quadWith("off2", R"("KHR_materials_iridescence":{})"))).iridescence)
+      << "a factor of 0 (the default) is no film: compiled out";
+  EXPECT_NE(test::loadError(quadWith("bad", R"("KHR_materials_iridescence":{"iridescenceIor":0.5})"))
+                .find("KHR_materials_iridescence.iridescenceIor"),
+            std::string::npos);
+}
+
 // KHR_materials_ior has no upper bound: 1000 is valid (a near-perfect mirror); beyond 1e4 it renders as 1e4.
 TEST(MaterialExtensions, LargeIorsAreAccepted) {
   EXPECT_FLOAT_EQ(loadGltf(quadWith("ior1000", R"("KHR_materials_ior":{"ior":1000})")).materials[0].ior, 1000.0f);
