@@ -43,22 +43,16 @@ class CandidatePilot {
     out.pipelineSeconds += renderer_->pipelineSeconds();
   }
   uint32_t pathsPerPass() const { return renderer_->pathsPerPass(); }
-  // Pixels order[0, shape.pixels) at shape.spp samples each, in two runs: the early count's, read, and the rest.
-  // Then the renderer is let go.
+  // Pixels order[0, shape.pixels) at shape.spp samples each, then the renderer is let go.
   void render(const std::vector<uint32_t>& order, PilotShape shape) {
     const auto start = std::chrono::steady_clock::now();
-    const uint32_t early = earlySpp(shape.spp);
-    run(order, shape.pixels, 0, early);
-    earlyVariance_ = sampleVariances(order, shape.pixels);
-    run(order, shape.pixels, early, shape.spp - early);
+    run(order, shape.pixels, 0, shape.spp);
     renderer_.reset();
     pixelSamples_ = double(shape.pixels) * shape.spp;
-    spp_ = shape.spp, earlySpp_ = early;
     passSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     seconds_ += passSeconds_;
   }
-  // What the choice reads, over order[0, pixels): means and a sample's variances (at the pilot's count and its early
-  // one), and a sample's GPU seconds.
+  // What the choice reads, over order[0, pixels): means, a sample's variances, and a sample's GPU seconds.
   PilotSamples samples(const std::vector<uint32_t>& order, uint32_t pixels) const {
     PilotSamples s;
     for (uint32_t i = 0; i < pixels; ++i) {
@@ -67,8 +61,6 @@ class CandidatePilot {
       s.mean.push_back(mean);
     }
     s.sampleVariance = sampleVariances(order, pixels);
-    s.earlySampleVariance = earlyVariance_;
-    s.spp = spp_, s.earlySpp = earlySpp_;
     s.cost = stats_.gpuSeconds / pixelSamples_;
     return s;
   }
@@ -80,12 +72,6 @@ class CandidatePilot {
   const std::optional<RouletteTable>& roulette() const { return roulette_; }
 
  private:
-  // A quarter of the pilot's samples, whole replicates' worth (each replicate's first points: a prefix of its
-  // sequence, stratified on its own).
-  uint32_t earlySpp(uint32_t spp) const {
-    const uint32_t r = std::max(film_.replicates, 1u);
-    return std::max(spp / 4 / r * r, r);
-  }
   void run(const std::vector<uint32_t>& order, uint32_t pixels, uint32_t first, uint32_t samples) {
     if (samples == 0) return;
     std::vector<PathRenderer::PixelSamples> work;
@@ -108,8 +94,6 @@ class CandidatePilot {
   RenderStats stats_;
   std::unique_ptr<PathRenderer> renderer_;
   std::optional<RouletteTable> roulette_;
-  std::vector<glm::dvec3> earlyVariance_;
-  uint32_t spp_ = 1, earlySpp_ = 1;
   double pixelSamples_ = 0.0, seconds_ = 0.0, passSeconds_ = 0.0;
 };
 
@@ -191,8 +175,6 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   };
   measure("start", settings.estimator);
   const PilotPixels where{settings.width, settings.height, std::vector<uint32_t>(order.begin(), order.begin() + shape.pixels)};
-  // How far the readings are carried: to the render's samples a pixel (planned from the start's pace under a budget).
-  auto forecastReach = [&] { return forecastSteps(plannedSpp, shape.spp, measured.front().earlySpp); };
   // The pilots' share is of the render's seconds: its budget, or (where asked) its samples at the start's pace.
   // Their kernels are set-up, reported apart: Mesa's shader cache keeps them for the next render (counted, they
   // left the basement's per-depth pilot out of a 24-s budget on a loaded machine, and its 4.7x with it).
@@ -228,7 +210,6 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   out.roulette = pilots[best]->roulette();
   for (const auto& p : pilots) out.seconds += p->seconds(), out.stats.push_back(p->stats());
   out.pilotPixels = shape.pixels, out.pilotSpp = shape.spp;
-  out.forecastSteps = forecastReach();
   out.pixelSamples = rounds.pixelSamples();
   out.share = rounds.pixelSamples() / (plannedSpp * imagePixels);
   return out;

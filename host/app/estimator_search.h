@@ -30,7 +30,6 @@ struct EstimatorChoice {
   std::vector<MeasuredCandidate> candidates;  // in the order measured
   std::optional<RouletteTable> roulette;      // rr efficiency chosen: its pilot's scales
   uint32_t pilotPixels = 0, pilotSpp = 0;
-  double forecastSteps = 0.0;                 // how far the readings were carried (policy/estimator_choice.h)
   double seconds = 0.0;                       // the pilots' rendering (rr efficiency's own pilot included)
   double pipelineSeconds = 0.0;               // the candidates' kernels' set-up
   double pixelSamples = 0.0;                  // the pilots' samples, all in the image

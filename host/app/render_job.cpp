@@ -738,29 +738,23 @@ void addLearnedFields(json& j, const RenderOutcome& r) {
 json choiceJson(const EstimatorChoice& c) {
   json candidates = json::array();
   const CandidateReading& start = c.candidates.front().reading;
+  auto interval = [](double value, double logSe) {
+    return json::array({value / std::exp(1.96 * logSe), value * std::exp(1.96 * logSe)});
+  };
   for (const MeasuredCandidate& m : c.candidates) {
     const CandidateReading& r = m.reading;
-    const Forecast now = forecast(r, 0.0), later = forecast(r, c.forecastSteps);
-    const Comparison vsStart = compare(r, start, 0.0), laterVsStart = compare(r, start, c.forecastSteps);
-    auto interval = [](double value, double logSe) {
-      return json::array({value / std::exp(1.96 * logSe), value * std::exp(1.96 * logSe)});
-    };
+    const Comparison vsStart = compare(r, start);
     const double ratio = vsStart.measured ? std::exp(vsStart.logRatio) : 0.0;
-    const double laterRatio = laterVsStart.measured ? std::exp(laterVsStart.logRatio) : 0.0;
     candidates.push_back({{"candidate", m.label},
                           {"chosen", m.chosen},
                           {"seconds", m.seconds},
                           {"rel_variance_per_sample", r.relVariance},
                           {"rel_variance_standard_error", r.relVarianceSe},
-                          {"early_rel_variance_per_sample", r.earlyRelVariance},
                           {"cost_per_sample", r.cost},
-                          {"efficiency", now.efficiency},
-                          {"efficiency_95", interval(now.efficiency, now.logSe)},
+                          {"efficiency", r.efficiency()},
+                          {"efficiency_95", interval(r.efficiency(), r.relativeSe())},
                           {"vs_start", ratio},
-                          {"vs_start_95", interval(ratio, vsStart.se)},
-                          {"convergence_rate", later.rate},
-                          {"forecast_vs_start", laterRatio},
-                          {"forecast_vs_start_95", interval(laterRatio, laterVsStart.se)}});
+                          {"vs_start_95", interval(ratio, vsStart.se)}});
   }
   return {{"chosen", c.chosen.toJson()},
           {"candidates", candidates},
@@ -770,7 +764,6 @@ json choiceJson(const EstimatorChoice& c) {
           {"pilot_pixel_samples", c.pixelSamples},
           {"pilot_pixels", c.pilotPixels},
           {"pilot_spp", c.pilotSpp},
-          {"forecast_steps", c.forecastSteps},
           {"seconds", c.seconds},
           {"pipeline_seconds", c.pipelineSeconds},
           {"share_of_samples", c.share},

@@ -91,26 +91,6 @@ std::vector<double> relativeVariances(const std::vector<glm::dvec3>& sampleVaria
   return r;
 }
 
-// A reading's log relative variance forecast `steps` on, and each pixel's influence on it (the delta method: the
-// log's standard error is the influences' over sqrt(pixels)). fall = full / early, held to [1/stepRatio, 1]; unheld,
-// log v = (1 + steps) log full - steps log early.
-struct Linearized {
-  double logRelVariance = 0.0, fall = 1.0;
-  std::vector<double> influence;
-};
-Linearized linearize(const CandidateReading& r, double steps) {
-  Linearized l;
-  const bool early = r.earlyRelVariance > 0.0 && r.stepRatio > 1.0;
-  const double raw = early ? r.relVariance / r.earlyRelVariance : 1.0;
-  l.fall = std::clamp(raw, 1.0 / std::max(r.stepRatio, 1.0), 1.0);
-  const bool held = !early || l.fall != raw;
-  l.logRelVariance = std::log(r.relVariance) + steps * std::log(l.fall);
-  l.influence.resize(r.pixels.size());
-  for (size_t i = 0; i < r.pixels.size(); ++i)
-    l.influence[i] = held ? r.pixels[i] / r.relVariance
-                          : (1.0 + steps) * r.pixels[i] / r.relVariance - steps * r.earlyPixels[i] / r.earlyRelVariance;
-  return l;
-}
 }  // namespace
 
 std::vector<CandidateReading> readCandidates(const PilotPixels& where, const std::vector<PilotSamples>& pilots, double epsilon) {
@@ -129,40 +109,24 @@ std::vector<CandidateReading> readCandidates(const PilotPixels& where, const std
     r.pixels = relativeVariances(pilots[c].sampleVariance, value, epsilon);
     std::tie(r.relVariance, r.relVarianceSe) = meanAndSe(r.pixels);
     r.cost = pilots[c].cost;
-    if (pilots[c].earlySampleVariance.size() == pixels && pilots[c].earlySpp < pilots[c].spp) {
-      r.earlyPixels = relativeVariances(pilots[c].earlySampleVariance, value, epsilon);
-      r.earlyRelVariance = meanAndSe(r.earlyPixels).first;
-      r.stepRatio = double(pilots[c].spp) / double(std::max(pilots[c].earlySpp, 1u));
-    }
   }
   return readings;
 }
 
-double forecastSteps(double renderSpp, uint32_t pilotSpp, uint32_t earlySpp) {
-  if (!(renderSpp > pilotSpp) || earlySpp == 0 || earlySpp >= pilotSpp) return 0.0;
-  return std::min(std::log(renderSpp / pilotSpp) / std::log(double(pilotSpp) / earlySpp), kChoiceMaxSteps);
-}
-
-Forecast forecast(const CandidateReading& r, double steps) {
-  if (!(r.relVariance > 0.0) || !(r.cost > 0.0)) return {};
-  const Linearized l = linearize(r, steps);
-  const double rate = r.stepRatio > 1.0 ? -std::log(l.fall) / std::log(r.stepRatio) : 0.0;
-  return {std::exp(-l.logRelVariance) / r.cost, meanAndSe(l.influence).second, rate};
-}
-
-Comparison compare(const CandidateReading& challenger, const CandidateReading& incumbent, double steps) {
-  if (!(challenger.relVariance > 0.0 && challenger.cost > 0.0 && incumbent.relVariance > 0.0 && incumbent.cost > 0.0)) return {};
-  const Linearized c = linearize(challenger, steps), i = linearize(incumbent, steps);
-  std::vector<double> difference(c.influence.size());
-  for (size_t p = 0; p < difference.size() && p < i.influence.size(); ++p) difference[p] = i.influence[p] - c.influence[p];
-  const double logRatio = (i.logRelVariance + std::log(incumbent.cost)) - (c.logRelVariance + std::log(challenger.cost));
+Comparison compare(const CandidateReading& challenger, const CandidateReading& incumbent) {
+  if (challenger.efficiency() <= 0.0 || incumbent.efficiency() <= 0.0) return {};
+  // log(E_c / E_i) = log v_i + log c_i - log v_c - log c_c; each pixel's influence on it, v's by the delta method.
+  std::vector<double> difference(std::min(challenger.pixels.size(), incumbent.pixels.size()));
+  for (size_t p = 0; p < difference.size(); ++p)
+    difference[p] = incumbent.pixels[p] / incumbent.relVariance - challenger.pixels[p] / challenger.relVariance;
+  const double logRatio = std::log(incumbent.relVariance * incumbent.cost) - std::log(challenger.relVariance * challenger.cost);
   return {logRatio, meanAndSe(difference).second, true};
 }
 
 bool beats(const CandidateReading& challenger, const CandidateReading& incumbent) {
-  if (forecast(challenger, 0.0).efficiency <= 0.0) return false;
-  if (forecast(incumbent, 0.0).efficiency <= 0.0) return true;
-  const Comparison c = compare(challenger, incumbent, 0.0);
+  if (challenger.efficiency() <= 0.0) return false;
+  if (incumbent.efficiency() <= 0.0) return true;
+  const Comparison c = compare(challenger, incumbent);
   return c.logRatio >= std::log(kChoiceMargin) && c.logRatio - 1.645 * c.se > 0.0;
 }
 

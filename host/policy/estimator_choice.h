@@ -43,11 +43,9 @@ std::vector<SearchStep> estimatorSearchSteps(const std::set<std::string>& pinned
 double expectedPilotCost(const std::string& key, double value, double incumbentValue);
 
 // A candidate's pilot over the subset's pixels (`PilotPixels`, the same for every candidate): each pixel's mean and
-// one sample's variance, per channel, at the pilot's count and at its early count (the same samples' first
-// spp/earlySpp share: a prefix of each replicate's sequence), and the cost of one sample.
+// one sample's variance, per channel, and the cost of one sample.
 struct PilotSamples {
-  std::vector<glm::dvec3> mean, sampleVariance, earlySampleVariance;
-  uint32_t spp = 1, earlySpp = 1;
+  std::vector<glm::dvec3> mean, sampleVariance;
   double cost = 0.0;
 };
 
@@ -58,18 +56,16 @@ struct PilotPixels {
 };
 
 // What the choice compares: the mean over the subset of a sample's variance relative to the pixel's value (as in
-// relMSE: over value^2 + epsilon), at the pilot's count and at its early count, and the cost of a sample.
+// relMSE: over value^2 + epsilon), its standard error over pixels, and the efficiency 1 / (relVariance x cost).
 // The value a candidate's variance is relative to comes from the other candidates (all unbiased for it) over a
 // window of kChoiceWindowRadius pixels around: a pilot has two samples a pixel, and a value from the candidate's
 // own samples would shrink its relative variance where a rare bright sample raises both, while one pixel's
 // others alone read 0 too often where the value is not.
 struct CandidateReading {
-  double relVariance = 0.0, relVarianceSe = 0.0, cost = 0.0;  // at the pilot's count: mean over pixels, its SE
-  double earlyRelVariance = 0.0;                              // at the early count
-  double stepRatio = 1.0;                                     // the pilot's count over its early count
-  std::vector<double> pixels, earlyPixels;                    // each subset pixel's, at the two counts
-  // At the pilot's count.
+  double relVariance = 0.0, relVarianceSe = 0.0, cost = 0.0;
+  std::vector<double> pixels;  // each subset pixel's relative variance a sample (what compare pairs)
   double efficiency() const { return relVariance > 0.0 && cost > 0.0 ? 1.0 / (relVariance * cost) : 0.0; }
+  // The efficiency's relative standard error (the cost counted exact: a pass's GPU time).
   double relativeSe() const { return relVariance > 0.0 ? relVarianceSe / relVariance : 0.0; }
 };
 
@@ -77,35 +73,17 @@ struct CandidateReading {
 inline constexpr int kChoiceWindowRadius = 2;
 std::vector<CandidateReading> readCandidates(const PilotPixels& where, const std::vector<PilotSamples>& pilots, double epsilon);
 
-// Under Owen-scrambled Sobol a sample's variance keeps falling as a pixel's samples grow, and faster for some
-// estimators than others (one light sample gains most from stratification): a pilot's reading is carried to the
-// render's count at the rate it fell from the early count to the pilot's, a rate between 1/n (independent
-// samples) and 1/n^2 for the variance of the mean. `steps`: how far, in the pilot's own steps (log(render / pilot)
-// / log(stepRatio)), at most kChoiceMaxSteps: further out a rate read over one step is a guess.
-inline constexpr double kChoiceMaxSteps = 2.0;
-double forecastSteps(double renderSpp, uint32_t pilotSpp, uint32_t earlySpp);
-
-// A candidate's efficiency forecast at the render's count, with the standard error of its log (the delta method
-// over the subset's pixels) and the rate its variance a sample fell at (0: as independent samples, 1: as 1/n).
-struct Forecast {
-  double efficiency = 0.0, logSe = 0.0, rate = 0.0;
-};
-Forecast forecast(const CandidateReading& r, double steps);
-
-// A challenger against the incumbent at the render's count: the log of their forecast efficiencies' ratio and its
-// standard error, paired pixel by pixel (the same pixels: a hard pixel is hard for both, and the spread of pixels'
+// A challenger against the incumbent: the log of their efficiencies' ratio and its standard error, paired pixel by
+// pixel (the delta method over the same pixels: a hard pixel is hard for both, and the spread of pixels'
 // difficulty cancels).
 struct Comparison {
   double logRatio = 0.0, se = 0.0;
   bool measured = false;  // both have a reading
 };
-Comparison compare(const CandidateReading& challenger, const CandidateReading& incumbent, double steps);
+Comparison compare(const CandidateReading& challenger, const CandidateReading& incumbent);
 
-// A challenger replaces the incumbent where, at the pilot's count, it measures at least kChoiceMargin times as
-// efficient and the one-sided 95% bound of the (paired) ratio is above 1: a pilot is short, and a switch on noise
-// costs more than staying. The forecast is reported, not used: as a veto (2026-12-07) it kept veach_mis from its
-// gains (0.92x the defaults, was 1.42x) and soft_shadows still lost a pair to a pilot's noisy cost; a rate read
-// over one step is noisy where a few bright samples carry a pixel's variance (many_lights forecast 5.8x from 1.2x).
+// A challenger replaces the incumbent where it measures at least kChoiceMargin times as efficient and the one-sided
+// 95% bound of the (paired) ratio is above 1: a pilot is short, and a switch on noise costs more than staying.
 inline constexpr double kChoiceMargin = 1.05;
 bool beats(const CandidateReading& challenger, const CandidateReading& incumbent);
 

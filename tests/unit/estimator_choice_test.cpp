@@ -144,39 +144,11 @@ TEST(EstimatorChoice, PairedPixelsCancelTheirDifficulty) {
     incumbent.sampleVariance[i] = glm::dvec3(d), challenger.sampleVariance[i] = glm::dvec3(d / 1.2);
   }
   const auto [i, c] = readPair(incumbent, challenger);
-  EXPECT_GT(forecast(c, 0.0).logSe, 0.15);  // each on its own is uncertain by the pixels' spread
-  const Comparison paired = compare(c, i, 0.0);
+  EXPECT_GT(c.relativeSe(), 0.15);  // each on its own is uncertain by the pixels' spread
+  const Comparison paired = compare(c, i);
   EXPECT_NEAR(std::exp(paired.logRatio), 1.2, 1e-9);
   EXPECT_LT(paired.se, 1e-9);
   EXPECT_TRUE(beats(c, i));
-}
-
-// A pilot reads each candidate at two counts; the forecast (reported) carries it to the render's at the rate its
-// variance a sample fell. One light sample gains most from Sobol's stratification: a challenger that reads 1.5x at
-// the pilot's count but falls as independent samples do is forecast to lose to an incumbent whose variance halves
-// with each step.
-TEST(EstimatorChoice, TheForecastCarriesEachCandidatesConvergenceRate) {
-  auto pilot = [](double early, double full) {
-    PilotSamples p = flatPilot(16, 1.0, full, 1.0);
-    p.earlySampleVariance.assign(16, glm::dvec3(early));
-    p.spp = 64, p.earlySpp = 16;
-    return p;
-  };
-  const auto [incumbent, challenger] = readPair(pilot(2.0, 1.0), pilot(1.0 / 1.5, 1.0 / 1.5));
-  EXPECT_NEAR(forecast(incumbent, 0.0).rate, 0.5, 1e-9);
-  EXPECT_NEAR(forecast(challenger, 0.0).rate, 0.0, 1e-9);
-  EXPECT_NEAR(std::exp(compare(challenger, incumbent, 0.0).logRatio), 1.5, 1e-9);
-  EXPECT_NEAR(std::exp(compare(challenger, incumbent, 1.0).logRatio), 1.5 / 2.0, 1e-9);
-  // Rates are held between independent samples' (0) and 1/n^2 for the variance of the mean (1).
-  const auto [rising, steep] = readPair(pilot(0.5, 1.0), pilot(100.0, 1.0));
-  EXPECT_NEAR(forecast(rising, 1.0).rate, 0.0, 1e-9);
-  EXPECT_NEAR(forecast(steep, 1.0).rate, 1.0, 1e-9);
-  EXPECT_NEAR(forecast(steep, 1.0).efficiency, 4.0, 1e-9);
-  // Steps: the render's count in the pilot's own (x4) steps, none below the pilot's count, at most kChoiceMaxSteps.
-  EXPECT_NEAR(forecastSteps(256.0, 64, 16), 1.0, 1e-12);
-  EXPECT_EQ(forecastSteps(32.0, 64, 16), 0.0);
-  EXPECT_EQ(forecastSteps(1e6, 64, 16), kChoiceMaxSteps);
-  EXPECT_EQ(forecastSteps(1e6, 64, 64), 0.0);  // no early count: no rate
 }
 
 TEST(EstimatorChoice, APilotFillsAPassAndStaysAShareOfTheRender) {

@@ -74,6 +74,8 @@ def cycles_render(args, out, spp=None, seconds=None, seed=1):
            "--width", str(args.width), "--height", str(args.height), "--seed", str(seed),
            "--threads", str(args.threads), "--min-bounces", str(args.min_bounces), "--pattern", args.pattern]
     cmd += ["--time-limit", str(seconds)] if seconds is not None else ["--spp", str(spp)]
+    if args.cycles_adaptive > 0:
+        cmd += ["--adaptive-threshold", str(args.cycles_adaptive)]
     t0 = time.perf_counter()
     text = run(cmd)
     wall = time.perf_counter() - t0
@@ -167,6 +169,8 @@ def print_table(args, rows, ref_path, ref_report):
         print(f"reference {ref_path}")
     if args.vkmc_args:
         print(f"vkmc's renders also take: {args.vkmc_args}")
+    if args.cycles_adaptive > 0:
+        print(f"Cycles' renders use adaptive sampling at noise threshold {args.cycles_adaptive}")
     print(f"roulette: vkmc --rr-depth {args.rr_depth}, Cycles min_light_bounces {args.min_bounces} (its first rouletted "
           f"light sample at vertex {args.min_bounces + 2}; vkmc's at vertex {max(args.rr_depth, 1)}; the camera's hit is "
           f"vertex 0)")
@@ -213,6 +217,9 @@ def main():
     p.add_argument("--pattern", default="PROGRESSIVE_MULTI_JITTER", help="Cycles' sampling pattern (or SOBOL)")
     p.add_argument("--vkmc-args", default="", help="more options for vkmc's compared renders (not the reference), "
                    "e.g. \"--replicates 1 --light-sampling solid-angle\"")
+    p.add_argument("--cycles-adaptive", type=float, default=0.0, metavar="THRESHOLD",
+                   help="Cycles' adaptive sampling at this noise threshold (e.g. 0.01; 0: off), to set beside vkmc's "
+                   "--adaptive on (--vkmc-args)")
     p.add_argument("--blender", default="blender")
     p.add_argument("--out", help="folder for the renders (default build/cycles_baseline/<scene>-<hash>)")
     p.add_argument("--json", help="write every run as JSON")

@@ -52,6 +52,8 @@ def parse_args(argv):
     p.add_argument("--min-bounces", type=int, default=2)
     p.add_argument("--pattern", default="PROGRESSIVE_MULTI_JITTER", choices=["PROGRESSIVE_MULTI_JITTER", "SOBOL"])
     p.add_argument("--json", default="")
+    p.add_argument("--adaptive-threshold", type=float, default=0.0,
+                   help="Cycles' adaptive sampling at this noise threshold (0: off, every pixel the same samples)")
     return p.parse_args(argv)
 
 
@@ -176,7 +178,10 @@ def setup_scene(args, rows):
     c = scene.cycles
     c.device = "CPU"
     c.feature_set = "SUPPORTED"
-    c.use_adaptive_sampling = False
+    c.use_adaptive_sampling = args.adaptive_threshold > 0
+    if args.adaptive_threshold > 0:
+        c.adaptive_threshold = args.adaptive_threshold
+        c.adaptive_min_samples = 0  # Cycles' automatic minimum
     c.use_denoising = False
     c.use_preview_denoising = False
     c.sample_clamp_direct = 0.0
