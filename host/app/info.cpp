@@ -8,6 +8,7 @@
 #include "app/malloc_tuning.h"
 #include "bvh/bvh.h"
 #include "estimators/estimator_params.h"
+#include "policy/estimator_choice.h"
 #include "render/gpu_scene.h"
 #include "render/path_renderer.h"
 #include "render/render_kernels.h"
@@ -53,6 +54,19 @@ bool isFloatSpec(uint32_t id) {
     if (p.specId == int(id)) return p.kind == ParamKind::Real;
   return false;
 }
+
+// What `vkmc render` would choose between on this scene, in two lines (estimator_choice.h).
+void printEstimatorChoice(const vk::Context& ctx, const SceneFeatures& f) {
+  std::string keys;
+  for (const SearchStep& step : estimatorSearchSteps({}, SearchScene{f.lights(), ctx.hasFloatAtomics(), f.glossy})) {
+    const EstimatorParam* p = findEstimatorParam(step.key);
+    for (double v : step.values) keys += (keys.empty() ? "" : ", ") + step.key + " " + p->text(v);
+  }
+  std::printf(
+      "estimator    chosen by vkmc render: short pilots (at most 5%% of the render) measure the defaults against\n"
+      "             %s; --estimator defaults renders the defaults unmeasured\n",
+      keys.empty() ? "nothing (no key changes this scene)" : keys.c_str());
+}
 }  // namespace
 
 int runInfo(const RenderOptions& options) {
@@ -97,6 +111,7 @@ int runInfo(const RenderOptions& options) {
   settings.spp = options.spp;
   Camera cam = scene.cameras.empty() ? autoCamera(framingBounds(scene).bounds, 1.0f) : scene.cameras[0];
   settings.camera = makeCameraRig(cam, settings.width, settings.height);
+  printEstimatorChoice(ctx, settings.features);
   KernelPlan plan = planKernels(settings);
   const std::string spirv = plan.spirvVariant.empty() ? "general SPIR-V" : "SPIR-V pre-specialized for " + plan.spirvVariant;
   std::printf("kernels      %s pipelines on %s, %s:\n", options.specialize ? "specialized" : "general", ctx.deviceName().c_str(),
