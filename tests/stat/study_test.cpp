@@ -3,6 +3,8 @@
 // time the slope of such tiny renders is steeper than -1: per-pass overhead dominates their few samples.)
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -126,8 +128,12 @@ TEST(Study, TimeBudgetRendersReachMoreSamplesWithMoreTime) {
     EXPECT_GE(r.seconds, r.rung) << "a budget is spent";
     EXPECT_LT(r.seconds, 2.0 * r.rung + 0.1) << "and not overrun by much more than a pass (a quarter budget)";
   }
-  EXPECT_GT(rows[1].spp, 2 * rows[0].spp);
-  EXPECT_LT(rows[1].relmse, rows[0].relmse);
+  // Four times the time renders more samples even where the machine is twice as busy for the longer rung (how many
+  // more depends on the load: 249 against 141 under a parallel ctest, 411 against 39 alone).
+  EXPECT_GT(rows[1].spp, rows[0].spp);
+  // The error follows the samples, not the seconds: relMSE x spp about constant (it read 0.143 and 0.154, 0.159
+  // and 0.176), where a rung that dropped or double-counted samples would be off by its factor.
+  EXPECT_NEAR(std::log(rows[1].relmse * rows[1].spp / (rows[0].relmse * rows[0].spp)), 0.0, std::log(2.0));
 }
 
 // A reference the scene's physics gives exactly: the furnace (every surface albedo 0.5, emission 1, seen from
