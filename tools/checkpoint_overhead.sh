@@ -13,7 +13,8 @@ args=("$@")
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 for ((r = 0; r < rounds; ++r)); do
-  build/vkmc render "${args[@]}" -q -o "$out/plain.exr" --report "$out/plain-$r.json"
+  # The fixed defaults on both sides: a checkpointed render does not choose its estimator, a plain one would.
+  build/vkmc render "${args[@]}" --estimator defaults -q -o "$out/plain.exr" --report "$out/plain-$r.json"
   build/vkmc render "${args[@]}" -q -o "$out/ckpt.exr" --report "$out/ckpt-$r.json" --checkpoint "$out/c.ckpt" \
     --checkpoint-every "$every"
 done

@@ -35,7 +35,10 @@ for c in "${configs[@]}"; do
     # shellcheck disable=SC2086
     spp=(--spp 16)
     [[ " $args " == *" --spp "* ]] && spp=()
-    "$bin" render "$scene" --width 64 "${spp[@]}" --seed 3 -q -o "$work/$name.$side.exr" $args
+    # --estimator defaults unless the configuration names one: a chosen estimator depends on measured time.
+    est=(--estimator defaults)
+    [[ " $args " == *" --estimator "* ]] && est=()
+    "$bin" render "$scene" --width 64 "${spp[@]}" --seed 3 "${est[@]}" -q -o "$work/$name.$side.exr" $args
   done
   if cmp -s "$work/$name.old.exr" "$work/$name.new.exr"; then
     echo "same    $name"

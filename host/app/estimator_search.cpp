@@ -157,7 +157,8 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   // Without a sample count (--target-error alone) the pilots plan for kChoiceNominalSpp.
   const bool noCount = settings.spp == kMaxSpp && timeBudget <= 0.0;
   const double renderSpp = noCount ? double(kChoiceNominalSpp) : double(settings.spp);
-  const double plannedPixelSamples = timeBudget > 0.0 ? 1e300 : renderSpp * imagePixels;
+  // A budget with --spp as its cap plans for the cap at most.
+  const double plannedPixelSamples = timeBudget > 0.0 && settings.spp == kMaxSpp ? 1e300 : renderSpp * imagePixels;
   const PilotShape shape =
       pilotShape(pilots[0]->pathsPerPass(), plannedPixelSamples, candidates, imagePixels, settings.estimator.replicates);
   PilotRounds rounds(film, order, shape);

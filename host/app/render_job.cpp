@@ -431,7 +431,10 @@ std::string whyFixedEstimator(const vk::Context& ctx, const RenderOptions& o, co
   if (RankGroup::world().distributed()) return "under mpirun each rank would choose on its own";
   if (o.timeBudget > 0.0 && o.timeBudget < kChoiceMinBudgetSeconds)
     return "a time budget under " + formatNumber(kChoiceMinBudgetSeconds) + " s is too short to choose in";
-  if (o.timeBudget > 0.0) return "";  // the share of its seconds decides what fits (cut_short)
+  if (uint64_t(settings.width) * settings.height < kChoiceMinPilotPixels)
+    return "the image is too small for its pilots (fewer than " + std::to_string(kChoiceMinPilotPixels) + " pixels)";
+  // Under a budget without a sample cap, the share of its seconds decides what fits (cut_short).
+  if (o.timeBudget > 0.0 && settings.spp == kMaxSpp) return "";
   const double spp = settings.spp == kMaxSpp ? double(kChoiceNominalSpp) : double(settings.spp);
   const uint32_t candidates =
       1 + uint32_t(estimatorSearchSteps(o.pinnedKeys,
@@ -453,8 +456,10 @@ void chooseEstimatorFor(vk::Context& ctx, const GpuScene& gpuScene, const Render
   checkDeviceLimits(settings, ctx.properties().limits);  // before the pilots' films: an image too large is said so
   earlier.emplace(EarlierRounds{RoundFilm(settings.width, settings.height, settings.estimator.replicates,
                                           settings.estimator.sampler != Sampler::Independent)});
-  out.choice =
-      chooseEstimator(ctx, gpuScene, settings, options.pinnedKeys, options.timeBudget, !options.estimatorAuto, earlier->film);
+  // A megakernel the user named has no path pool: BSDF splitting is not offered (it would need the wavefront).
+  std::set<std::string> pinned = options.pinnedKeys;
+  if (options.integrator == Integrator::Megakernel) pinned.insert("bsdf_samples");
+  out.choice = chooseEstimator(ctx, gpuScene, settings, pinned, options.timeBudget, !options.estimatorAuto, earlier->film);
   earlier->spp = out.choice->pixelSamples / (double(settings.width) * settings.height);
   // Without a time budget the pilots' samples count toward --spp (on average over the pixels); rounds count them
   // themselves (EarlierRounds::spp).

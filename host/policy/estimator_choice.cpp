@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 #include <utility>
 
@@ -120,7 +121,9 @@ Comparison compare(const CandidateReading& challenger, const CandidateReading& i
   for (size_t p = 0; p < difference.size(); ++p)
     difference[p] = incumbent.pixels[p] / incumbent.relVariance - challenger.pixels[p] / challenger.relVariance;
   const double logRatio = std::log(incumbent.relVariance * incumbent.cost) - std::log(challenger.relVariance * challenger.cost);
-  return {logRatio, meanAndSe(difference).second, true};
+  // One pixel has no spread to read: no interval, so no switch on it.
+  const double se = difference.size() > 1 ? meanAndSe(difference).second : std::numeric_limits<double>::infinity();
+  return {logRatio, se, true};
 }
 
 bool beats(const CandidateReading& challenger, const CandidateReading& incumbent) {

@@ -28,9 +28,14 @@ uint64_t sceneFingerprint(const Scene& s) {
                            m.clearcoat,       m.clearcoatRoughness, m.sheenColor.x,      m.sheenColor.y,
                            m.sheenColor.z,    m.sheenRoughness,     float(m.volumetric), 0.0f};
     h.add(ext, sizeof(ext));
-    const float film[4] = {m.iridescence, m.iridescenceIor, m.iridescenceThicknessMin, m.iridescenceThicknessMax};
-    h.add(film, sizeof(film));
-    for (const TextureRef* t : m.textureRefs()) addTextureRef(h, *t);
+    // The film only where there is one, so a scene without it keeps the fingerprint older checkpoints recorded.
+    for (const TextureRef* t : m.textureRefs())
+      if (t != &m.iridescenceTexture && t != &m.iridescenceThicknessTexture) addTextureRef(h, *t);
+    if (m.iridescence > 0.0f) {
+      const float film[4] = {m.iridescence, m.iridescenceIor, m.iridescenceThicknessMin, m.iridescenceThicknessMax};
+      h.add(film, sizeof(film));
+      addTextureRef(h, m.iridescenceTexture), addTextureRef(h, m.iridescenceThicknessTexture);
+    }
   }
   for (const Texture& t : s.textures) {
     h.addValue(uint64_t(t.width) << 32 | t.height);

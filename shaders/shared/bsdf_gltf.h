@@ -101,16 +101,20 @@ VKMC_FN void setIridescence(INOUT(GltfMaterial) m, float iridescence, float ior,
   m.iridescenceOutside = mix(1.0f, 1.5f, m.clearcoat);
 }
 
-// The film's Fresnel mixed into a base's: F = mix(F, iridescentFresnel(baseF0), iridescence).
-VKMC_FN vec3 withFilm(GltfMaterial m, vec3 f, vec3 baseF0, float cosTheta) {
+// The film's Fresnel mixed into a base's: F = mix(F, strength x iridescentFresnel(baseF0), iridescence), strength
+// the dielectric's specularFactor (its f90) or 1 for the metal. cosTheta is in air; under a coat it is carried into
+// the coat (Snell) before the film, whose outside the coat is.
+VKMC_FN vec3 withFilm(GltfMaterial m, vec3 f, vec3 baseF0, float cosTheta, float strength) {
   if (m.iridescence <= 0.0f) return f;
-  vec3 film = iridescentFresnel(m.iridescenceOutside, m.iridescenceIor, cosTheta, m.iridescenceThickness, baseF0);
-  return mix(f, film, m.iridescence);
+  float n = m.iridescenceOutside;
+  float cosOutside = sqrt(max(0.0f, 1.0f - max(0.0f, 1.0f - cosTheta * cosTheta) / (n * n)));
+  vec3 film = iridescentFresnel(n, m.iridescenceIor, cosOutside, m.iridescenceThickness, baseF0);
+  return mix(f, strength * film, m.iridescence);
 }
 
 // The metal's Fresnel: Schlick on the base colour, under the film where there is one.
 VKMC_FN vec3 metalFresnel(GltfMaterial m, float cosTheta) {
-  return withFilm(m, schlickFresnel(m.baseColor, 1.0f, cosTheta), m.baseColor, cosTheta);
+  return withFilm(m, schlickFresnel(m.baseColor, 1.0f, cosTheta), m.baseColor, cosTheta, 1.0f);
 }
 
 // A shading normal ns (a normal map's, or interpolated normals near a silhouette) can mirror wo below the
@@ -148,7 +152,7 @@ VKMC_FN vec3 interfaceFresnel(GltfMaterial m, float cosO) {
     if (sin2T >= 1.0f) return vec3(1.0f);
     c = sqrt(1.0f - sin2T);
   }
-  return withFilm(m, schlickFresnel(m.f0, m.specular, c), m.f0, c);
+  return withFilm(m, schlickFresnel(m.f0, m.specular, c), m.f0, c, min(m.specular, 1.0f));
 }
 
 // What the coat and sheen leave to the layers under them for the pair (wo, wi): one minus weight x albedo, the

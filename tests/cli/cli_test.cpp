@@ -552,3 +552,30 @@ TEST(Cli, ASceneWithoutEmittersIsLitByAWhiteEnvironmentAndSaysSo) {
   EXPECT_NE(black.err.find("the image is black"), std::string::npos) << black.err;
   EXPECT_EQ(nlohmann::json::parse(slurp(report))["mean"][0].get<double>(), 0.0);
 }
+
+// The default chooses its estimator only where its pilots fit; elsewhere the fixed defaults render and the report
+// says why (a tiny image, a render of too few samples, --spp capping a budget, a budget too short).
+TEST(Cli, TheDefaultEstimatorChoiceSaysWhereItDoesNotChoose) {
+  struct Row {
+    std::string args, why;
+  } rows[] = {{"--width 8 --height 8 --spp 4 --time-budget 20", "the image is too small"},
+              {"--width 64 --height 64 --spp 8", "the render is too small for its pilots"},
+              {"--width 64 --height 64 --spp 8 --time-budget 12", "the render is too small for its pilots"},
+              {"--width 32 --height 32 --time-budget 0.2", "too short to choose in"}};
+  for (const Row& row : rows) {
+    fs::path report = workDir() / "left_out.json";
+    RunResult r = runVkmc("render " + cornell() + " " + row.args + " -q -o " + (workDir() / "left_out.exr").string() +
+                          " --report " + report.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    auto j = nlohmann::json::parse(slurp(report));
+    EXPECT_TRUE(j["estimator_choice"]["chosen"].is_null()) << row.args;
+    EXPECT_NE(j["estimator_choice"].value("left_out", "").find(row.why), std::string::npos) << row.args << "\n"
+                                                                                            << j["estimator_choice"];
+  }
+  // Asked for, it chooses however small the render (and says what it measured).
+  fs::path report = workDir() / "asked.json";
+  RunResult r = runVkmc("render " + cornell() + " --width 32 --height 32 --spp 64 --estimator auto -q -o " +
+                        (workDir() / "asked.exr").string() + " --report " + report.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_GE(nlohmann::json::parse(slurp(report))["estimator_choice"]["candidates"].size(), 2u);
+}

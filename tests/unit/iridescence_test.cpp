@@ -64,7 +64,8 @@ TEST(Iridescence, AThinFilmInterferes) {
   EXPECT_GT(largestChange, 0.05f) << "red against blue: the film colours nothing";
 }
 
-// Under a coat (outside ior 1.5) a film of ior 1.2 totally reflects beyond the critical angle.
+// From inside a coat (outside ior 1.5, the cosine on the coat's side) a film of ior 1.2 totally reflects beyond the
+// critical angle; light that entered the coat from air never reaches it (bsdf_gltf.h carries the cosine in first).
 TEST(Iridescence, TotalInternalReflectionInsideTheFilm) {
   expectNear(iridescentFresnel(1.5f, 1.2f, 0.3f, 300.0f, vec3(0.04f)), vec3(1.0f), 0.0f, "past the critical angle");
   const vec3 below = iridescentFresnel(1.5f, 1.2f, 0.95f, 300.0f, vec3(0.04f));
