@@ -1,5 +1,6 @@
 // --estimator auto on the device (app/estimator_search.h): whatever its pilots choose, the image stays unbiased
-// (the white furnace's analytic L = 2; the Cornell box against a uniform render of the defaults), its variance is
+// (the white furnace's analytic L = 2, the albedo-0.99 furnace's 100; the Cornell box against a uniform render of
+// the defaults), its variance is
 // the spread it has, the user's keys stay pinned, and the report names what was measured. Sized by samples; fixed
 // seeds. What they would catch: a pilot's samples dropped from or written twice into the image, written with
 // another pilot's weights, or a variance that forgets the rounds' weights.
@@ -92,3 +93,28 @@ TEST(EstimatorAuto, FindsTheClearlyBestCandidate) {
   ASSERT_GE(r.choice->candidates.size(), 2u);
   EXPECT_EQ(r.choice->candidates[1].label, "rr=efficiency");  // searched first
 }
+
+// The stiff furnace (its own binary here, not stiff_furnace_test's, whose probes are the suite's longest test):
+// the estimator chosen by its pilots on the albedo-0.99 furnace (paths of about a hundred vertices, where the
+// per-depth roulette pilot is among the candidates), with and without adaptive rounds: the image stays L = 100.
+class StiffFurnaceChosen : public ::testing::TestWithParam<bool> {};
+
+TEST_P(StiffFurnaceChosen, StaysTheAnalyticValue) {
+  EstimatorConfig start;
+  start.maxDepth = 0;
+  RenderOptions o = optionsFor("furnace_stiff.gltf", start, 16, 16, 256, 67);
+  o.estimatorAuto = true;
+  o.adaptive = GetParam();
+  const RenderOutcome r = runRender(sharedContext(), o);
+  ASSERT_TRUE(r.choice);
+  EXPECT_GE(r.choice->candidates.size(), 2u);
+  EXPECT_EQ(r.film.totalNonfinite(), 0u);
+  const RegionStats s = whole(r.film);
+  const ZTest t = zTest(s.mean.x, 100.0, std::sqrt(s.variance.x));
+  EXPECT_TRUE(withinSigmas(t, 5.0)) << "mean " << s.mean.x << " sigma " << std::sqrt(s.variance.x);
+  EXPECT_LT(std::sqrt(s.variance.x), 0.01 * 100.0) << "the test must resolve a 5% bias";
+}
+
+INSTANTIATE_TEST_SUITE_P(EstimatorAuto, StiffFurnaceChosen, ::testing::Bool(), [](const ::testing::TestParamInfo<bool>& p) {
+  return p.param ? std::string("AdaptiveRounds") : std::string("UniformRest");
+});

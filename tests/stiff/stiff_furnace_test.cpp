@@ -170,30 +170,6 @@ TEST_P(HighAlbedoFurnace, RouletteIsUnbiasedToATenthOfAPercent) {
   }
 }
 
-// The estimator chosen by its pilots on the albedo-0.99 furnace (paths of about a hundred vertices, where the
-// per-depth roulette pilot is among the candidates), with and without adaptive rounds: the image stays L = 100.
-class StiffFurnaceChosen : public ::testing::TestWithParam<bool> {};
-
-TEST_P(StiffFurnaceChosen, StaysTheAnalyticValue) {
-  EstimatorConfig start;
-  start.maxDepth = 0;
-  RenderOptions o = optionsFor("furnace_stiff.gltf", start, 16, 16, 256, 67);
-  o.estimatorAuto = true;
-  o.adaptive = GetParam();
-  const RenderOutcome r = runRender(sharedContext(), o);
-  ASSERT_TRUE(r.choice);
-  EXPECT_GE(r.choice->candidates.size(), 2u);
-  EXPECT_EQ(r.film.totalNonfinite(), 0u);
-  const RegionStats s = whole(r.film);
-  const ZTest t = zTest(s.mean.x, 100.0, std::sqrt(s.variance.x));
-  EXPECT_TRUE(withinSigmas(t, 5.0)) << "mean " << s.mean.x << " sigma " << std::sqrt(s.variance.x);
-  EXPECT_LT(std::sqrt(s.variance.x), 0.01 * 100.0) << "the test must resolve a 5% bias";
-}
-
-INSTANTIATE_TEST_SUITE_P(Stiff, StiffFurnaceChosen, ::testing::Bool(), [](const ::testing::TestParamInfo<bool>& p) {
-  return p.param ? std::string("AdaptiveRounds") : std::string("UniformRest");
-});
-
 INSTANTIATE_TEST_SUITE_P(Stiff, HighAlbedoFurnace,
                          ::testing::Values(FurnaceCase{"furnace_stiff.gltf", 0.99f},
                                            FurnaceCase{"stiff/furnace_albedo_0999.gltf", 0.999f}),
