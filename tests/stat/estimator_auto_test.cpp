@@ -1,9 +1,8 @@
 // --estimator auto on the device (app/estimator_search.h): whatever its pilots choose, the image stays unbiased
 // (the white furnace's analytic L = 2, the albedo-0.99 furnace's 100; the Cornell box against a uniform render of
-// the defaults), its variance is
-// the spread it has, the user's keys stay pinned, and the report names what was measured. Sized by samples; fixed
-// seeds. What they would catch: a pilot's samples dropped from or written twice into the image, written with
-// another pilot's weights, or a variance that forgets the rounds' weights.
+// the defaults), its variance is the spread it has, the user's keys stay pinned, and the report names what was
+// measured. Sized by samples; fixed seeds. What they would catch: a pilot's samples dropped from or written twice into the image,
+// written with another pilot's weights, or a variance that forgets the rounds' weights.
 #include <gtest/gtest.h>
 
 #include "support/render_helpers.h"
