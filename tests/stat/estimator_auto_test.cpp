@@ -10,19 +10,6 @@
 using namespace vkmc;
 using namespace vkmc::test;
 
-namespace {
-
-RenderOutcome renderAuto(const std::string& scene, uint32_t w, uint32_t h, uint32_t spp, uint32_t seed,
-                         const EstimatorConfig& start = {}, std::set<std::string> pinned = {}, bool adaptive = false) {
-  RenderOptions o = optionsFor(scene, start, w, h, spp, seed);
-  o.estimatorAuto = true;
-  o.adaptive = adaptive;
-  o.pinnedKeys = std::move(pinned);
-  return runRender(sharedContext(), o);
-}
-
-}  // namespace
-
 TEST(EstimatorAuto, FurnaceMatchesTheAnalyticValue) {
   const RenderOutcome r = renderAuto("furnace.gltf", 16, 16, 512, 23);
   ASSERT_TRUE(r.choice);
@@ -101,10 +88,7 @@ class StiffFurnaceChosen : public ::testing::TestWithParam<bool> {};
 TEST_P(StiffFurnaceChosen, StaysTheAnalyticValue) {
   EstimatorConfig start;
   start.maxDepth = 0;
-  RenderOptions o = optionsFor("furnace_stiff.gltf", start, 16, 16, 256, 67);
-  o.estimatorAuto = true;
-  o.adaptive = GetParam();
-  const RenderOutcome r = runRender(sharedContext(), o);
+  const RenderOutcome r = renderAuto("furnace_stiff.gltf", 16, 16, 256, 67, start, {}, GetParam());
   ASSERT_TRUE(r.choice);
   EXPECT_GE(r.choice->candidates.size(), 2u);
   EXPECT_EQ(r.film.totalNonfinite(), 0u);

@@ -84,10 +84,7 @@ TEST_P(TinyIntenseLightChosen, MeanAndPixelsAreTheAnalyticRadiance) {
   const uint32_t n = 32;
   EstimatorConfig start;
   start.sampler = Sampler::Independent;  // pixel variances with many degrees of freedom, for the pixels' z-tests
-  RenderOptions o = optionsFor("stiff/tiny_light.gltf", start, n, n, 512, 61);
-  o.estimatorAuto = true;
-  o.adaptive = GetParam();
-  const RenderOutcome r = runRender(sharedContext(), o);
+  const RenderOutcome r = renderAuto("stiff/tiny_light.gltf", n, n, 512, 61, start, {}, GetParam());
   ASSERT_TRUE(r.choice);
   EXPECT_GE(r.choice->candidates.size(), 2u);
   ASSERT_EQ(r.film.totalNonfinite(), 0u);

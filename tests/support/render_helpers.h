@@ -3,6 +3,7 @@
 #pragma once
 #include <glm/glm.hpp>
 
+#include <set>
 #include <string>
 
 #include <algorithm>
@@ -74,6 +75,16 @@ inline RenderOptions optionsFor(const std::string& scene, const EstimatorConfig&
 inline RenderOutcome renderWith(const std::string& scene, const EstimatorConfig& e, uint32_t w, uint32_t h, uint32_t spp,
                                 uint32_t seed = 4242) {
   return runRender(sharedContext(), optionsFor(scene, e, w, h, spp, seed));
+}
+
+// --estimator auto from `start`, the keys in `pinned` kept, with adaptive rounds where asked.
+inline RenderOutcome renderAuto(const std::string& scene, uint32_t w, uint32_t h, uint32_t spp, uint32_t seed,
+                                const EstimatorConfig& start = {}, std::set<std::string> pinned = {}, bool adaptive = false) {
+  RenderOptions o = optionsFor(scene, start, w, h, spp, seed);
+  o.estimatorAuto = true;
+  o.adaptive = adaptive;
+  o.pinnedKeys = std::move(pinned);
+  return runRender(sharedContext(), o);
 }
 
 // Mean over a pixel rectangle [x0, x1) x [y0, y1) and the variance of that mean (pixels are independent).
