@@ -143,8 +143,9 @@ class PilotRounds {
 }  // namespace
 
 EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings,
-                                const std::set<std::string>& pinned, double timeBudget, bool shareOfSeconds, RoundFilm& film) {
+                                const std::set<std::string>& pinned, const ChoiceBounds& bounds, RoundFilm& film) {
   EstimatorChoice out;
+  const double timeBudget = bounds.timeBudget;
   const SceneFeatures& f = settings.features;
   const std::vector<SearchStep> steps = estimatorSearchSteps(pinned, SearchScene{f.lights(), ctx.hasFloatAtomics(), f.glossy});
   const uint32_t candidates = 1 + uint32_t(steps.size());  // at least one value a key
@@ -172,16 +173,18 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
     rounds.add(pilots.back()->film(), plannedSpp);
     measured.push_back(pilots.back()->samples(order, shape.pixels));
     pilots.back()->releaseFilm();  // a full image's sums, of which the rounds and the reading keep what they need
-    out.candidates.push_back({label, e, {}, false, pilots.back()->seconds()});
+    MeasuredCandidate m;
+    m.label = label, m.config = e, m.seconds = pilots.back()->seconds();
+    out.candidates.push_back(m);
   };
   measure("start", settings.estimator);
   const PilotPixels where{settings.width, settings.height, std::vector<uint32_t>(order.begin(), order.begin() + shape.pixels)};
   // The pilots' share is of the render's seconds: its budget, or (where asked) its samples at the start's pace.
   // Their kernels are set-up, reported apart: Mesa's shader cache keeps them for the next render (counted, they
   // left the basement's per-depth pilot out of a 24-s budget on a loaded machine, and its 4.7x with it).
-  const double budget = timeBudget > 0.0 ? timeBudget
-                        : shareOfSeconds ? pilots[0]->secondsPerPixelSample() * renderSpp * imagePixels
-                                         : 0.0;
+  const double budget = timeBudget > 0.0        ? timeBudget
+                        : bounds.shareOfSeconds ? pilots[0]->secondsPerPixelSample() * renderSpp * imagePixels
+                                                : 0.0;
   size_t best = 0;
   double pilotSeconds = pilots[0]->seconds();
   for (const SearchStep& step : steps) {
@@ -200,6 +203,10 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
       pilotSeconds += pilots.back()->seconds();
       const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
       if (!beats(readings.back(), readings[best])) break;
+      if (bounds.sampleCountEnds && !affordableAtSampleCount(readings.back(), readings[0])) {
+        out.candidates.back().tooCostly = true;
+        break;
+      }
       best = readings.size() - 1;
     }
   }

@@ -22,7 +22,8 @@ struct MeasuredCandidate {
   EstimatorConfig config;
   CandidateReading reading;  // against the values pooled over every candidate (readCandidates)
   bool chosen = false;
-  double seconds = 0.0;  // its pilot's passes (and rr efficiency's own pilot), wall time
+  bool tooCostly = false;  // it beat the best so far, at a cost a sample-count render does not afford
+  double seconds = 0.0;    // its pilot's passes (and rr efficiency's own pilot), wall time
 };
 
 struct EstimatorChoice {
@@ -39,11 +40,20 @@ struct EstimatorChoice {
   std::vector<RenderStats> stats;             // each pilot's counters (the report's rays include them)
 };
 
-// settings: the render's (its estimator the start, with the user's keys in `pinned`); timeBudget > 0: the render's
-// samples are planned from the start's pace. The pilots take at most kChoiceMaxShare of the render's samples, and of
-// its seconds: the budget's, or with shareOfSeconds (the default's choosing, which must pay for itself on a short
-// render) its samples' at the start pilot's pace. The pilots' rounds go into `film` (the render's, empty).
+// What ends the render, and so bounds the choosing. timeBudget > 0: the render's samples are planned from the start's
+// pace. The pilots take at most kChoiceMaxShare of the render's samples, and of its seconds: the budget's, or with
+// shareOfSeconds (the default's choosing, which must pay for itself on a short render) its samples' at the start
+// pilot's pace. sampleCountEnds: no budget or target error, so a costly challenger must be affordable
+// (affordableAtSampleCount).
+struct ChoiceBounds {
+  double timeBudget = 0.0;
+  bool shareOfSeconds = false;
+  bool sampleCountEnds = false;
+};
+
+// settings: the render's (its estimator the start, with the user's keys in `pinned`). The pilots' rounds go into
+// `film` (the render's, empty).
 EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings,
-                                const std::set<std::string>& pinned, double timeBudget, bool shareOfSeconds, RoundFilm& film);
+                                const std::set<std::string>& pinned, const ChoiceBounds& bounds, RoundFilm& film);
 
 }  // namespace vkmc

@@ -459,7 +459,8 @@ void chooseEstimatorFor(vk::Context& ctx, const GpuScene& gpuScene, const Render
   // A megakernel the user named has no path pool: BSDF splitting is not offered (it would need the wavefront).
   std::set<std::string> pinned = options.pinnedKeys;
   if (options.integrator == Integrator::Megakernel) pinned.insert("bsdf_samples");
-  out.choice = chooseEstimator(ctx, gpuScene, settings, pinned, options.timeBudget, !options.estimatorAuto, earlier->film);
+  const ChoiceBounds bounds{options.timeBudget, !options.estimatorAuto, options.timeBudget <= 0.0 && options.targetError <= 0.0};
+  out.choice = chooseEstimator(ctx, gpuScene, settings, pinned, bounds, earlier->film);
   earlier->spp = out.choice->pixelSamples / (double(settings.width) * settings.height);
   // Without a time budget the pilots' samples count toward --spp (on average over the pixels); rounds count them
   // themselves (EarlierRounds::spp).
@@ -752,6 +753,7 @@ json choiceJson(const EstimatorChoice& c) {
     const double ratio = vsStart.measured ? std::exp(vsStart.logRatio) : 0.0;
     candidates.push_back({{"candidate", m.label},
                           {"chosen", m.chosen},
+                          {"too_costly_for_sample_count", m.tooCostly},
                           {"seconds", m.seconds},
                           {"rel_variance_per_sample", r.relVariance},
                           {"rel_variance_standard_error", r.relVarianceSe},
@@ -773,6 +775,7 @@ json choiceJson(const EstimatorChoice& c) {
           {"pipeline_seconds", c.pipelineSeconds},
           {"share_of_samples", c.share},
           {"margin", kChoiceMargin},
+          {"max_cost_at_sample_count", kChoiceMaxCostAtSampleCount},
           {"note",
            "the pilots are the render's first rounds, weighted per pixel by weights fixed before their samples were "
            "seen (round_film.h): unbiased whichever configuration they chose"}};
@@ -786,15 +789,22 @@ std::string choiceLine(const EstimatorChoice& c) {
     if (key != "name" && key != "replicates" && start.value(key, json()) != value)
       changed += (changed.empty() ? "" : ", ") + key + "=" + (value.is_string() ? value.get<std::string>() : value.dump());
   double startEfficiency = c.candidates.front().reading.efficiency(), chosenEfficiency = startEfficiency;
-  for (const MeasuredCandidate& m : c.candidates)
+  std::string tooCostly;
+  for (const MeasuredCandidate& m : c.candidates) {
     if (m.chosen) chosenEfficiency = m.reading.efficiency();
+    if (m.tooCostly)
+      tooCostly = "; " + m.label + " measured more efficient but costs " +
+                  formatNumber(std::round(10.0 * m.reading.cost / c.candidates.front().reading.cost) / 10.0) +
+                  "x the start a sample, more than a render of a sample count takes";
+  }
   char buf[512];
   std::snprintf(buf, sizeof(buf),
                 "choice      %s, of %zu candidates%s (%.2fx the start's measured efficiency); pilots %.3f s, %.1f%% of "
-                "the samples (in the image); their kernels %.3f s\n",
+                "the samples (in the image); their kernels %.3f s%s\n",
                 changed.empty() ? "the defaults" : changed.c_str(), c.candidates.size(),
                 c.skippedForBudget.empty() ? "" : " (the pilots' share of the render's time fitted no more)",
-                startEfficiency > 0.0 ? chosenEfficiency / startEfficiency : 0.0, c.seconds, 100.0 * c.share, c.pipelineSeconds);
+                startEfficiency > 0.0 ? chosenEfficiency / startEfficiency : 0.0, c.seconds, 100.0 * c.share, c.pipelineSeconds,
+                tooCostly.c_str());
   return buf;
 }
 

@@ -133,6 +133,10 @@ bool beats(const CandidateReading& challenger, const CandidateReading& incumbent
   return c.logRatio >= std::log(kChoiceMargin) && c.logRatio - 1.645 * c.se > 0.0;
 }
 
+bool affordableAtSampleCount(const CandidateReading& challenger, const CandidateReading& start) {
+  return start.cost <= 0.0 || challenger.cost <= kChoiceMaxCostAtSampleCount * start.cost;
+}
+
 bool renderFitsPilots(double plannedPixelSamples, uint32_t candidates) {
   return kChoiceMaxShare * plannedPixelSamples / std::max(candidates, 1u) >= double(kChoiceMinPilotPixels) * kChoiceMinPilotSpp;
 }

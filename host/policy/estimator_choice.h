@@ -87,6 +87,14 @@ Comparison compare(const CandidateReading& challenger, const CandidateReading& i
 inline constexpr double kChoiceMargin = 1.05;
 bool beats(const CandidateReading& challenger, const CandidateReading& incumbent);
 
+// Where a sample count ends the render (no time budget or target error), a challenger is chosen only where its sample
+// costs at most kChoiceMaxCostAtSampleCount times the start's: the efficiency it wins is lower error for more time,
+// and the user asked for samples, not for a render many times as long. On the albedo-0.99 furnace the per-depth
+// roulette pilot read 1.1x the start's efficiency at 22x its cost a sample (paths of a thousand vertices), and a
+// 10-s render of 256 samples took 67 s. Under a budget or a target error, efficiency alone decides.
+inline constexpr double kChoiceMaxCostAtSampleCount = 4.0;
+bool affordableAtSampleCount(const CandidateReading& challenger, const CandidateReading& start);
+
 // Under a time budget the pilots take at most kChoiceMaxShare of it (what the issue that asked for auto allowed):
 // a challenger is measured only where the pilots' seconds so far and its expected seconds fit.
 bool pilotFitsBudget(double pilotSecondsSoFar, double expectedSeconds, double timeBudget);

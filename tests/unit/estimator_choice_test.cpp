@@ -133,6 +133,17 @@ TEST(EstimatorChoice, AChallengerWinsByTheMarginAndBeyondItsNoise) {
   EXPECT_FALSE(beats(nothing, measured));
 }
 
+// Under a sample count a challenger may cost at most kChoiceMaxCostAtSampleCount times the start a sample, however
+// efficient: the furnace's per-depth pilot read 1.1x at 22x the cost, and its 256-sample render took 6x as long.
+TEST(EstimatorChoice, ASampleCountAffordsAFewTimesTheStartsCost) {
+  const PilotSamples start = flatPilot(16, 1.0, 1.0, 1.0);
+  const auto [s, cheap] = readPair(start, flatPilot(16, 1.0, 0.25, kChoiceMaxCostAtSampleCount));
+  EXPECT_TRUE(affordableAtSampleCount(cheap, s));
+  const auto [s2, costly] = readPair(start, flatPilot(16, 1.0, 0.04, 22.0));
+  EXPECT_TRUE(beats(costly, s2));  // more efficient: under a budget it would render
+  EXPECT_FALSE(affordableAtSampleCount(costly, s2));
+}
+
 // The same pixels for every candidate: a pixel that is hard for one is hard for the other, and the comparison's
 // noise is what differs between them, not how much pixels differ.
 TEST(EstimatorChoice, PairedPixelsCancelTheirDifficulty) {
