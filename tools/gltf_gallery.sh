@@ -49,10 +49,9 @@ convert -list font 2>/dev/null | grep -q 'Font: DejaVu-Sans$' && font=(-font Dej
 tsv=$out/results.tsv
 printf 'name\tpath\tfeatures\trc\tstatus\twall_s\trender_s\ttriangles\tmessages\n' >"$tsv"
 
-# One line of the table's "messages": the error and warning lines, without the no-emitters warning that
-# nearly every sample model gets (it is counted in the summary instead), joined by " / ".
+# One line of the table's "messages": the error and warning lines, joined by " / ".
 messages() {
-  grep -E '(^|: )(error|warning)|^warning|^vkmc: ' "$1" | grep -v 'it is lit by a uniform white environment' |
+  grep -E '(^|: )(error|warning)|^warning|^vkmc: ' "$1" |
     sed -E "s/^vkmc: error: cannot load '[^']*': /error: /; s/^warning +/warning: /; s/[[:space:]]+/ /g" |
     head -n 6 | cut -c1-300 | paste -sd'|' - | sed 's/|/ \/ /g'
 }
@@ -128,8 +127,7 @@ count = lambda s: sum(1 for r in rows if r["status"].startswith(s))
 with open(md, "w") as f:
     f.write(f"# glTF gallery\n\n`{vkmc}` on `{models}`, {width} px wide, {spp} spp{(' ' + extra) if extra else ''}.\n\n")
     f.write(f"{len(rows)} models: {count('rendered')} rendered, {count('refused')} refused, "
-            f"{len(rows) - count('rendered') - count('refused')} failed, timed out or missing. "
-            "The no-emitters warning (white environment) is left out of the messages.\n\n")
+            f"{len(rows) - count('rendered') - count('refused')} failed, timed out or missing.\n\n")
     f.write("| model | features | outcome | exit | seconds (wall / render) | messages |\n|---|---|---|---|---|---|\n")
     for r in rows:
         msg = r["messages"].replace("|", "\\|")

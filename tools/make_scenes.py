@@ -101,7 +101,9 @@ class Builder:
 
     def write(self, path, extensions_used=()):
         doc = {"asset": {"version": "2.0", "generator": "vkmc tools/make_scenes.py"},
-               "scene": 0, "scenes": [{"nodes": list(range(len(self.nodes)))}], "nodes": self.nodes,
+               "scene": 0, "nodes": self.nodes,
+               # Lab scenes: lit by their own emitters alone, in a black world (not the studio a file gets undeclared).
+               "scenes": [{"nodes": list(range(len(self.nodes))), "extras": {"vkmc_world": "lights-only"}}],
                "meshes": self.meshes, "materials": self.materials, "accessors": self.accessors,
                "bufferViews": self.views,
                "buffers": [{"byteLength": len(self.blob),

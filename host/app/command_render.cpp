@@ -460,12 +460,14 @@ void addCameraAndLightOptions(CLI::App* render, RenderArgs& a) {
       ->group(kCameraGroup);
   render
       ->add_option("--background", a.background,
-                   "uniform radiance r,g,b of escaped rays, reached by BSDF sampling only (default black)")
+                   "uniform radiance r,g,b of escaped rays, reached by BSDF sampling only; replaces the file's world "
+                   "(0,0,0: black, the file's own lights alone)")
       ->group(kLightsGroup);
   render
       ->add_option("--environment", ro.environmentPath,
                    "environment light: equirectangular .hdr or .exr, +Y up, the image's centre along -Z, or studio (a "
-                   "built-in softbox studio); default: none, a constant white one with a warning for a scene with no other light")
+                   "built-in softbox studio); default: the file's world, the studio unless its scene's extras.vkmc_world says "
+                   "lights-only or white")
       ->group(kLightsGroup);
   render->add_option("--environment-rotation", ro.environmentRotation, "rotation of the environment about +Y in degrees")
       ->capture_default_str()

@@ -73,7 +73,7 @@ int runInfo(const RenderOptions& options) {
   vk::Context ctx;
   Scene scene = loadGltf(options.scenePath, deviceLoadLimits(ctx));
   SceneFeatures f = scanFeatures(scene);
-  f.environment = getsDefaultLight(options, scene) || !options.environmentPath.empty();
+  f.environment = addedLight(options, scene) != AddedLight::None;
   std::printf("scene        %s\n", options.scenePath.c_str());
   std::printf("triangles    %u (%s), %llu zero-area skipped, %u materials, %zu cameras\n", f.triangles, f.sizeClass(),
               static_cast<unsigned long long>(scene.degenerateTriangles), f.materials, scene.cameras.size());

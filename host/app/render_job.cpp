@@ -78,16 +78,6 @@ void validateOptions(const RenderOptions& o) {
 }
 
 namespace {
-// Whether every emissive triangle's material has an emissive texture: emissive maps are decorations (a helmet's
-// lamps, a bottle's label), not the lights a scene is meant to be seen by.
-bool onlyTexturedEmitters(const Scene& scene) {
-  for (uint32_t m : scene.materialIds)
-    if (scene.materials[m].isEmissive() && !scene.materials[m].emissiveTexture.present()) return false;
-  return true;
-}
-}  // namespace
-
-namespace {
 // What rr ears learned: the cache's size and use, and each depth's vertices by factor (untrained: throughput
 // roulette; q < 1: roulette; q = 1; q > 1: splitting).
 nlohmann::json earsJson(const EarsSummary& e) {
@@ -150,28 +140,34 @@ std::string earsLine(const EarsSummary& e) {
 }
 }  // namespace
 
-bool getsDefaultLight(const RenderOptions& options, const Scene& scene) {
-  return options.environmentPath.empty() && !options.background && scene.punctualLights.empty() && onlyTexturedEmitters(scene);
+AddedLight addedLight(const RenderOptions& options, const Scene& scene) {
+  if (options.environmentPath == kStudioEnvironment) return AddedLight::Studio;
+  if (!options.environmentPath.empty()) return AddedLight::Map;
+  if (options.background) return AddedLight::None;
+  switch (scene.world) {
+    case World::LightsOnly: return AddedLight::None;
+    case World::White: return AddedLight::White;
+    case World::Studio: break;
+  }
+  return AddedLight::Studio;
 }
 
 namespace {
-// The environment light: --environment's map; else, for a scene with nothing to light it (no punctual lights, no
-// --background, and no emitters or only textured ones), a constant environment of radiance 1, importance sampled,
-// with a warning.
+// The environment light: --environment's map or the studio, the file's world where neither --environment nor
+// --background is given (the studio unless it declares another), importance sampled.
 void addEnvironmentLight(const RenderOptions& options, Scene& scene, RenderOutcome& out, uint64_t maxTexels) {
-  if (options.environmentPath == kStudioEnvironment) {
-    scene.environment = studioEnvironment();
-    scene.environment->rotationDegrees = options.environmentRotation;
-    for (glm::vec3& L : scene.environment->radiance) L *= options.environmentStrength;
-  } else if (!options.environmentPath.empty()) {
-    scene.environment =
-        readEnvironmentMap(options.environmentPath, options.environmentRotation, options.environmentStrength, maxTexels);
-  } else if (getsDefaultLight(options, scene)) {
-    scene.environment = EnvironmentMap::constant(glm::vec3(1.0f));
-    out.warnings.push_back(std::string("the scene has no punctual lights and ") +
-                           (scanFeatures(scene).emitters() ? "only textured emitters (emissive maps)" : "no emitters") +
-                           ": it is lit by a uniform white environment of radiance 1, importance sampled, and seen against a "
-                           "grey backdrop (--environment or --background sets another; --background 0,0,0 renders it black)");
+  switch (addedLight(options, scene)) {
+    case AddedLight::Studio:
+      scene.environment = studioEnvironment();
+      scene.environment->rotationDegrees = options.environmentRotation;
+      for (glm::vec3& L : scene.environment->radiance) L *= options.environmentStrength;
+      break;
+    case AddedLight::Map:
+      scene.environment =
+          readEnvironmentMap(options.environmentPath, options.environmentRotation, options.environmentStrength, maxTexels);
+      break;
+    case AddedLight::White: scene.environment = EnvironmentMap::constant(glm::vec3(1.0f)); break;
+    case AddedLight::None: break;
   }
   out.environment = scene.environment ? scene.environment->source : "";
 }
@@ -295,7 +291,8 @@ RenderSettings renderSettings(const RenderOptions& options, const Scene& scene, 
   if (options.withoutTextures) settings.features.textures = settings.features.normalMaps = settings.features.alpha = false;
   settings.seed = options.seed;
   settings.background = options.background.value_or(glm::vec3(0.0f));
-  if (getsDefaultLight(options, scene) || options.environmentPath == kStudioEnvironment) settings.backdrop = kDefaultBackdrop;
+  const AddedLight added = addedLight(options, scene);
+  if (added == AddedLight::Studio || added == AddedLight::White) settings.backdrop = kDefaultBackdrop;
   settings.filter = options.filter;
   settings.camera = makeCameraRig(f.camera, f.width, f.height);
   settings.progress = options.progress;

@@ -146,13 +146,16 @@ struct RenderOutcome {
 // Throws vkmc::Error on bad options or input, before anything is written. Both runRender call it first, so
 // their callers need not.
 void validateOptions(const RenderOptions& options);
-// The default light's backdrop: the grey radiance camera rays see where they escape, a model viewer's neutral
-// background (middle grey, what the PNG's automatic exposure keys on), while the white environment lights the scene.
+// The backdrop of the studio and the white world: the grey radiance camera rays see where they escape, a model
+// viewer's neutral background (middle grey, what the PNG's automatic exposure keys on), while the environment lights
+// the scene.
 constexpr float kDefaultBackdrop = 0.18f;
 
-// Whether a render lights the scene with the default constant environment: no --environment or --background, no
-// punctual lights, and no emitters or only textured ones (emissive maps are decorations, not lights).
-bool getsDefaultLight(const RenderOptions& options, const Scene& scene);
+// What lights a render besides the scene's own emitters and punctual lights: --environment's map or the studio;
+// nothing under --background; else the world the file declares (scene.h's World: the studio unless it says
+// lights-only or white).
+enum class AddedLight { None, Map, Studio, White };
+AddedLight addedLight(const RenderOptions& options, const Scene& scene);
 RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, const RunControl& run = {});
 // The same with a scene already in memory (options.scenePath only names it).
 RenderOutcome runRender(vk::Context& ctx, const RenderOptions& options, Scene scene, const RunControl& run = {});

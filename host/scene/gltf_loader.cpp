@@ -531,6 +531,18 @@ Scene loadGltfFromMemory(const std::vector<unsigned char>& bytes, bool binary, c
 
 namespace {
 
+// The scene's extras.vkmc_world (scene.h's World); anything else there is named in a warning and the studio lights it.
+World declaredWorld(const tinygltf::Value& extras, std::vector<std::string>& warnings) {
+  if (!extras.IsObject() || !extras.Has("vkmc_world")) return World::Studio;
+  const tinygltf::Value& v = extras.Get("vkmc_world");
+  const std::string name = v.IsString() ? v.Get<std::string>() : "";
+  if (name == "lights-only") return World::LightsOnly;
+  if (name == "white") return World::White;
+  if (name != "studio")
+    warnings.push_back("the scene's extras.vkmc_world is not studio, lights-only or white: the studio environment lights it");
+  return World::Studio;
+}
+
 Scene flattenModel(const tinygltf::Model& model, const std::string& path, const LoadLimits& limits,
                    const std::vector<std::string>& extensionWarnings) {
   Scene scene;
@@ -545,10 +557,12 @@ Scene flattenModel(const tinygltf::Model& model, const std::string& path, const 
   scene.warnings.insert(scene.warnings.end(), extensionWarnings.begin(), extensionWarnings.end());
 
   std::vector<int> roots;
+  scene.world = World::Studio;
   if (!model.scenes.empty()) {
     int sceneIndex =
         model.defaultScene >= 0 && model.defaultScene < static_cast<int>(model.scenes.size()) ? model.defaultScene : 0;
     roots = model.scenes[sceneIndex].nodes;
+    scene.world = declaredWorld(model.scenes[sceneIndex].extras, scene.warnings);
   } else {
     std::vector<bool> isChild(model.nodes.size(), false);
     for (const auto& n : model.nodes)

@@ -148,6 +148,15 @@ struct ThinSegment {
   uint32_t material = 0;
 };
 
+// What lights the scene besides its own emitters and punctual lights, as the file declares it in its scene's
+// extras (`"extras": {"vkmc_world": "lights-only"}`): a model viewer's studio unless it says otherwise. vkmc's own
+// scenes and the tests' declare theirs, so that they are measured in the world they were made for.
+enum class World {
+  Studio,      // undeclared: the built-in studio environment (scene/studio_environment.h), a grey backdrop
+  LightsOnly,  // "lights-only": nothing else; the world beyond is black (the lab scenes in scenes/)
+  White,       // "white": a uniform environment of radiance 1, a grey backdrop (a furnace's world)
+};
+
 struct Scene {
   std::vector<glm::vec3> positions;  // 3 per triangle, world space, counter-clockwise front faces
   std::vector<glm::vec3> normals;    // 3 per triangle, world space (geometric normal where the file has none)
@@ -171,7 +180,8 @@ struct Scene {
   std::vector<std::string> warnings;
   std::string path;
   std::vector<PunctualLight> punctualLights;  // KHR_lights_punctual instances in node order
-  std::optional<EnvironmentMap> environment;  // not in glTF: the render sets it (--environment, or the default)
+  std::optional<EnvironmentMap> environment;  // not in glTF: the render sets it (--environment, or the world's)
+  World world = World::LightsOnly;            // a file's: what it declares (the studio where nothing); built in code: lights-only
 
   size_t triangleCount() const { return materialIds.size(); }
   bool hasUv0() const { return !uv0.empty(); }

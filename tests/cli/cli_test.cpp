@@ -10,6 +10,7 @@
 
 #include "estimators/estimator_params.h"
 #include "io/exr.h"
+#include "support/lab_world.h"
 #include "support/cli_run.h"
 #include "support/test_scenes.h"
 
@@ -532,23 +533,23 @@ TEST(Cli, MissingOutputFolderFailsBeforeRendering) {
   EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
 }
 
-TEST(Cli, ASceneWithoutEmittersIsLitByAWhiteEnvironmentAndSaysSo) {
+// A user's file (no declared world) is lit by the studio with no warning; --background 0,0,0 leaves its own lights
+// alone, and a file without any is then black, which the render says.
+TEST(Cli, AFileIsLitByTheStudioAndBackgroundReplacesIt) {
   vkmc::test::GltfSpec dark = vkmc::test::quadSpec();
   dark.materialJson = R"({"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.5,0.5,1]}})";
-  std::string scene = vkmc::test::writeGltf(workDir(), "dark", dark);
+  std::string scene = vkmc::test::withoutWorld(vkmc::test::writeGltf(workDir(), "dark", dark));
   fs::path report = workDir() / "dark.json";
   std::string common = "render " + scene + " --width 16 --height 16 --spp 4 -q -o " + (workDir() / "dark.exr").string() +
                        " --report " + report.string();
   RunResult lit = runVkmc(common);
   ASSERT_EQ(lit.code, 0) << lit.err;
-  EXPECT_NE(lit.err.find("no punctual lights and no emitters: it is lit by a uniform white environment"), std::string::npos)
-      << lit.err;
+  EXPECT_EQ(lit.err.find("environment"), std::string::npos) << "the studio is the default, not a warning: " << lit.err;
   nlohmann::json j = nlohmann::json::parse(slurp(report));
-  EXPECT_GT(j["mean"][0].get<double>(), 0.1);
-  EXPECT_EQ(j["environment"].get<std::string>(), "constant");
+  EXPECT_GT(j["mean"][0].get<double>(), 0.01);
+  EXPECT_EQ(j["environment"].get<std::string>(), "studio");
   RunResult black = runVkmc(common + " --background 0,0,0");  // asked for: no environment, so only that it is black
   ASSERT_EQ(black.code, 0) << black.err;
-  EXPECT_EQ(black.err.find("white environment"), std::string::npos) << black.err;
   EXPECT_NE(black.err.find("the image is black"), std::string::npos) << black.err;
   EXPECT_EQ(nlohmann::json::parse(slurp(report))["mean"][0].get<double>(), 0.0);
 }

@@ -1,5 +1,6 @@
 // The environment light rendered: a Lambertian plane of albedo rho in a constant environment L has radiance
-// rho L everywhere (it cannot see itself), the default light of a scene without emitters; under a non-constant
+// rho L everywhere (it cannot see itself), a white world's light; the studio lights what the file declares no world
+// for, and a lights-only world adds nothing; under a non-constant
 // map, NEE + MIS, light sampling alone and BSDF sampling alone agree within their measured confidence intervals
 // (the MIS combination with escaped rays is unbiased).
 #include <gtest/gtest.h>
@@ -17,8 +18,9 @@ using namespace vkmc::test;
 namespace {
 constexpr float kRho = 0.5f;
 
-Scene planeScene() {
+Scene planeScene(World world = World::White) {
   Scene s;
+  s.world = world;
   Material m;
   m.baseColor = glm::vec3(kRho);
   m.metallic = 0.0f;
@@ -62,23 +64,21 @@ std::string writeSunMap() {
 }
 }  // namespace
 
-TEST(EnvironmentLight, ASceneWithoutEmittersIsLitByAConstantEnvironmentAndConverges) {
+TEST(EnvironmentLight, AWhiteWorldIsAConstantEnvironmentAndConverges) {
   // rho L = 0.5 on every pixel, by NEE + MIS (the default) and by BSDF sampling alone.
   for (bool nee : {true, false}) {
     RenderOptions o = planeView(16, nee ? 3 : 4);
     o.estimator.nee = nee;
     RenderOutcome r = runRender(sharedContext(), o, planeScene());
     EXPECT_EQ(r.environment, "constant");
-    ASSERT_FALSE(r.warnings.empty());
-    EXPECT_NE(r.warnings[0].find("uniform white environment"), std::string::npos);
     EXPECT_EQ(r.film.totalNonfinite(), 0u);
     EXPECT_TRUE(regionMatches(whole(r.film), glm::dvec3(kRho), 5.0)) << (nee ? "NEE + MIS" : "BSDF sampling");
   }
 }
 
-// Under the default light, camera rays that miss the scene see a grey backdrop (kDefaultBackdrop), exactly, while
-// the plane stays lit by the white environment (rho L); with a --background, escaped camera rays see it instead.
-TEST(EnvironmentLight, TheDefaultLightsBackdropIsGreyForCameraRaysOnly) {
+// In a white world, camera rays that miss the scene see a grey backdrop (kDefaultBackdrop), exactly, while the
+// plane stays lit by the white environment (rho L); with a --background, escaped camera rays see it instead.
+TEST(EnvironmentLight, TheWhiteWorldsBackdropIsGreyForCameraRaysOnly) {
   RenderOptions o = planeView(16, 5);
   o.fovDegrees = 90.0f;  // the plane fills the middle; the corners see the sky
   RenderOutcome r = runRender(sharedContext(), o, planeScene());
@@ -94,9 +94,10 @@ TEST(EnvironmentLight, TheDefaultLightsBackdropIsGreyForCameraRaysOnly) {
   EXPECT_NEAR(given.film.mean(0, 1), 0.25, 1e-6) << "--background: seen by escaped camera rays too";
 }
 
-// --environment studio: the Lambertian plane (facing +Z) has radiance rho / pi times the studio's cosine-weighted
-// radiance over its hemisphere, summed here over the map's texels (the texels' exact solid angles; the cosine at
-// each texel's centre, a quadrature error under 0.2% at 128 x 64), and the camera sees the grey backdrop.
+// The studio (--environment studio, or a file that declares no world): the Lambertian plane (facing +Z) has
+// radiance rho / pi times the studio's cosine-weighted radiance over its hemisphere, summed here over the map's
+// texels (the texels' exact solid angles; the cosine at each texel's centre, a quadrature error under 0.2% at
+// 128 x 64), and the camera sees the grey backdrop.
 TEST(EnvironmentLight, TheStudioEnvironmentLightsAsItsMapIntegrates) {
   const EnvironmentMap studio = studioEnvironment();
   double irradiance = 0.0;
@@ -106,16 +107,28 @@ TEST(EnvironmentLight, TheStudioEnvironmentLightsAsItsMapIntegrates) {
       const double band = std::cos(M_PI * y / studio.height) - std::cos(M_PI * (y + 1) / studio.height);
       irradiance += studio.radiance[size_t(y) * studio.width + x].x * std::max(0.0f, w.z) * band * 2.0 * M_PI / studio.width;
     }
-  RenderOptions o = planeView(64, 6);
-  o.environmentPath = kStudioEnvironment;
-  RenderOutcome r = runRender(sharedContext(), o, planeScene());
-  EXPECT_EQ(r.environment, "studio");
-  EXPECT_EQ(r.backdrop, kDefaultBackdrop);
-  EXPECT_EQ(r.film.totalNonfinite(), 0u);
-  const double expected = kRho / M_PI * irradiance;
-  const glm::dvec3 mean = r.film.imageMean(), var = r.film.imageMeanVarianceOfMean();
-  EXPECT_TRUE(withinSigmas(zTest(mean.y, expected, std::sqrt(var.y / r.film.pixels()), 2e-3 * expected), 5.0))
-      << mean.y << " against " << expected;
+  for (bool named : {true, false}) {
+    RenderOptions o = planeView(64, named ? 6 : 7);
+    if (named) o.environmentPath = kStudioEnvironment;
+    RenderOutcome r = runRender(sharedContext(), o, planeScene(named ? World::LightsOnly : World::Studio));
+    EXPECT_EQ(r.environment, "studio");
+    EXPECT_EQ(r.backdrop, kDefaultBackdrop);
+    EXPECT_EQ(r.film.totalNonfinite(), 0u);
+    const double expected = kRho / M_PI * irradiance;
+    const glm::dvec3 mean = r.film.imageMean(), var = r.film.imageMeanVarianceOfMean();
+    EXPECT_TRUE(withinSigmas(zTest(mean.y, expected, std::sqrt(var.y / r.film.pixels()), 2e-3 * expected), 5.0))
+        << (named ? "--environment studio: " : "the undeclared world: ") << mean.y << " against " << expected;
+  }
+}
+
+// A lights-only world adds no light: the plane, with none of its own, is black, and so is the sky behind it.
+TEST(EnvironmentLight, ALightsOnlyWorldAddsNothing) {
+  RenderOptions o = planeView(4, 8);
+  o.fovDegrees = 90.0f;
+  RenderOutcome r = runRender(sharedContext(), o, planeScene(World::LightsOnly));
+  EXPECT_EQ(r.environment, "");
+  EXPECT_EQ(r.backdrop, 0.0f);
+  EXPECT_EQ(r.film.imageMean(), glm::dvec3(0.0));
 }
 
 TEST(EnvironmentLight, NeeWithMisLightSamplingAloneAndBsdfSamplingAgreeUnderAMap) {

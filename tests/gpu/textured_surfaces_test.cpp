@@ -9,6 +9,7 @@
 #include "app/render_job.h"
 #include "support/gltf_builder.h"
 #include "support/render_helpers.h"
+#include "support/lab_world.h"
 #include "support/test_scenes.h"
 #include "support/z_test.h"
 
@@ -225,23 +226,25 @@ TEST(ThinRibbons, ALineCoversOnePixelOfEachColumn) {
   EXPECT_GT(darkness, 0.5) << "the line is drawn";
 }
 
-TEST(DefaultLight, EmissiveMapsAloneDoNotLightAModelButUntexturedEmittersDo) {
-  // A quad with an emissive texture (a decoration) gets the default environment; one with a plain emissive
-  // factor (a light, as in the Cornell box) does not.
+TEST(DefaultLight, TheStudioLightsAFileThatDeclaresNoWorldWithItsOwnLightsOnTop) {
+  // A file that declares no world is lit by the studio, whether it has an emissive map (a decoration), a plain
+  // emitter (a light, as in the Cornell box) or neither: its own lights are added on top, as viewers show it.
   auto dir = test::makeTempDir("defaultlight");
   std::string png = test::writePng(dir, "glow", 1, 1, {255, 128, 0, 255});
   std::string extra = R"("images":[{"uri":")" + png + R"("}],"textures":[{"source":0}])";
   std::vector<test::QuadSpec> quads = {{{-1, -1, 0}, {2, 0, 0}, {0, 2, 0}, 0}};
-  std::string mapped =
-      test::writeQuadsGltf(dir, "mapped", quads, R"({"emissiveFactor":[1,1,1],"emissiveTexture":{"index":0}})", extra);
-  std::string plain = test::writeQuadsGltf(dir, "plain", quads, R"({"emissiveFactor":[1,1,1]})");
-  RenderOutcome m = render(mapped, {0, 0, 3}, {0, 0, 0}, 30.0f, 1);
-  RenderOutcome p = render(plain, {0, 0, 3}, {0, 0, 0}, 30.0f, 1);
-  EXPECT_EQ(m.environment, "constant");
-  EXPECT_TRUE(p.environment.empty()) << p.environment;
-  bool warned = false;
-  for (const std::string& w : m.warnings) warned |= w.find("only textured emitters") != std::string::npos;
-  EXPECT_TRUE(warned);
+  for (const std::string& material :
+       {std::string(R"({"emissiveFactor":[1,1,1],"emissiveTexture":{"index":0}})"), std::string(R"({"emissiveFactor":[1,1,1]})"),
+        std::string(R"({"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.5,0.5,1]}})")}) {
+    std::string file = test::withoutWorld(test::writeQuadsGltf(dir, "undeclared", quads, material, extra));
+    RenderOutcome r = render(file, {0, 0, 3}, {0, 0, 0}, 30.0f, 1);
+    EXPECT_EQ(r.environment, "studio") << material;
+    EXPECT_EQ(r.backdrop, kDefaultBackdrop) << material;
+  }
+  // The tests' own files declare theirs: lights-only where a plain emitter lights them.
+  RenderOutcome lab =
+      render(test::writeQuadsGltf(dir, "plain", quads, R"({"emissiveFactor":[1,1,1]})"), {0, 0, 3}, {0, 0, 0}, 30.0f, 1);
+  EXPECT_TRUE(lab.environment.empty()) << lab.environment;
 }
 
 TEST(NormalMap, GreenTiltsTheNormalUpTheImage) {

@@ -1,6 +1,8 @@
 // GltfBuilder: a JSON glTF with one external .bin buffer.
 #include "gltf_builder.h"
 
+#include "lab_world.h"
+
 #include <fstream>
 #include <sstream>
 
@@ -45,7 +47,7 @@ std::string GltfBuilder::write(const std::filesystem::path& dir, const std::stri
   j << R"("accessors":[)" << list(accessors_) << R"(],"bufferViews":[)" << list(views_) << "],";
   j << R"("buffers":[{"byteLength":)" << bin.size() << R"(,"uri":")" << name << R"(.bin"})"
     << (extraBuffers.empty() ? "" : "," + extraBuffers) << "]}";
-  std::ofstream(dir / (name + ".gltf")) << j.str();
+  std::ofstream(dir / (name + ".gltf")) << withLabWorld(j.str());
   std::ofstream(dir / (name + ".bin"), std::ios::binary) << bin;
   return (dir / (name + ".gltf")).string();
 }

@@ -12,6 +12,7 @@
 #include <webp/encode.h>
 
 #include "error.h"
+#include "lab_world.h"
 
 namespace vkmc::test {
 
@@ -73,7 +74,7 @@ std::string writeGltf(const std::filesystem::path& dir, const std::string& name,
   j << "],";
   j << R"("buffers":[{"byteLength":)" << bin.size() << R"(,"uri":")" << name << R"(.bin"}]})";
   auto gltf = dir / (name + ".gltf");
-  std::ofstream(gltf) << j.str();
+  std::ofstream(gltf) << withLabWorld(j.str());
   if (spec.writeBin) std::ofstream(dir / (name + ".bin"), std::ios::binary) << bin;
   return gltf.string();
 }
@@ -117,7 +118,7 @@ std::string writeQuadsGltf(const std::filesystem::path& dir, const std::string& 
   if (!rootExtra.empty()) j << rootExtra << ",";
   j << R"("buffers":[{"byteLength":)" << bin.size() << R"(,"uri":")" << name << R"(.bin"}]})";
   auto gltf = dir / (name + ".gltf");
-  std::ofstream(gltf) << j.str();
+  std::ofstream(gltf) << withLabWorld(j.str());
   std::ofstream(dir / (name + ".bin"), std::ios::binary) << bin;
   return gltf.string();
 }

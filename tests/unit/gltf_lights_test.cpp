@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <sstream>
+#include <nlohmann/json.hpp>
 
 #include "error.h"
 #include "scene/gltf_loader.h"
@@ -19,16 +19,11 @@ std::string writeLitQuad(const std::string& name, const std::string& lights, int
                    R"("extensions":{"KHR_lights_punctual":{"light":)" +
                    std::to_string(lightIndex) + "}}";
   std::string path = test::writeGltf(dir, name, spec);
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string json = text.str();
-  const std::string head = R"({"asset":{"version":"2.0"},)";
-  EXPECT_EQ(json.rfind(head, 0), 0u);
-  json.replace(
-      0, head.size(),
-      head + R"("extensionsUsed":["KHR_lights_punctual"],"extensions":{"KHR_lights_punctual":{"lights":[)" + lights + "]}},");
-  std::ofstream(path) << json;
+  nlohmann::json gltf;
+  std::ifstream(path) >> gltf;
+  gltf["extensionsUsed"] = {"KHR_lights_punctual"};
+  gltf["extensions"]["KHR_lights_punctual"]["lights"] = nlohmann::json::parse("[" + lights + "]");
+  std::ofstream(path) << gltf.dump();
   return path;
 }
 }  // namespace

@@ -9,6 +9,8 @@
 #include "scene/gltf_loader.h"
 #include "support/test_scenes.h"
 
+#include <nlohmann/json.hpp>
+
 using namespace vkmc;
 using vkmc::test::GltfSpec;
 
@@ -34,6 +36,30 @@ TEST_P(IndexWidth, LoadsIndexedQuad) {
 INSTANTIATE_TEST_SUITE_P(GltfLoader, IndexWidth, ::testing::Values(5121, 5123, 5125), [](const auto& info) {
   return info.param == 5121 ? std::string("u8") : info.param == 5123 ? std::string("u16") : std::string("u32");
 });
+
+// The world a file declares on its scene (extras.vkmc_world): the studio where it declares none, or something else.
+TEST(GltfLoader, ReadsTheWorldTheSceneDeclares) {
+  const std::string quad = test::writeGltf(dir(), "world", test::quadSpec());
+  auto loadDeclaring = [&](const nlohmann::json* world) {
+    std::ifstream in(quad);
+    nlohmann::json gltf = nlohmann::json::parse(in);
+    gltf["scenes"][0].erase("extras");
+    if (world) gltf["scenes"][0]["extras"]["vkmc_world"] = *world;
+    std::ofstream(quad) << gltf.dump();
+    return loadGltf(quad);
+  };
+  EXPECT_EQ(loadDeclaring(nullptr).world, World::Studio);
+  const nlohmann::json lightsOnly = "lights-only", white = "white", studio = "studio", odd = "dark", number = 3;
+  EXPECT_EQ(loadDeclaring(&lightsOnly).world, World::LightsOnly);
+  EXPECT_EQ(loadDeclaring(&white).world, World::White);
+  EXPECT_EQ(loadDeclaring(&studio).world, World::Studio);
+  for (const nlohmann::json* unknown : {&odd, &number}) {
+    const Scene s = loadDeclaring(unknown);
+    EXPECT_EQ(s.world, World::Studio);
+    ASSERT_FALSE(s.warnings.empty());
+    EXPECT_NE(s.warnings.back().find("vkmc_world"), std::string::npos);
+  }
+}
 
 TEST(GltfLoader, LoadsNonIndexedAndAppliesNodeTransforms) {
   GltfSpec s = test::quadSpec();
