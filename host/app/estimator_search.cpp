@@ -210,6 +210,7 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
       best = readings.size() - 1;
     }
   }
+  out.costCapped = bounds.sampleCountEnds;
   out.cutShort = out.candidates.size() == 1 && !out.skippedForBudget.empty();
   const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
   for (size_t c = 0; c < readings.size(); ++c) out.candidates[c].reading = readings[c];

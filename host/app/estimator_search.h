@@ -36,6 +36,7 @@ struct EstimatorChoice {
   double pixelSamples = 0.0;                  // the pilots' samples, all in the image
   double share = 0.0;                         // their share of the render's planned pixel-samples
   bool cutShort = false;                      // the share of the render's time fitted no challenger: the start renders
+  bool costCapped = false;                    // a sample count ends the render: kChoiceMaxCostAtSampleCount held
   std::vector<std::string> skippedForBudget;  // challengers left out because they would not fit it
   std::vector<RenderStats> stats;             // each pilot's counters (the report's rays include them)
 };

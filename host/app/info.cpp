@@ -73,7 +73,8 @@ int runInfo(const RenderOptions& options) {
   vk::Context ctx;
   Scene scene = loadGltf(options.scenePath, deviceLoadLimits(ctx));
   SceneFeatures f = scanFeatures(scene);
-  f.environment = addedLight(options, scene) != AddedLight::None;
+  const AddedLight added = addedLight(options, scene);
+  f.environment = added != AddedLight::None;
   std::printf("scene        %s\n", options.scenePath.c_str());
   std::printf("triangles    %u (%s), %llu zero-area skipped, %u materials, %zu cameras\n", f.triangles, f.sizeClass(),
               static_cast<unsigned long long>(scene.degenerateTriangles), f.materials, scene.cameras.size());
@@ -90,9 +91,10 @@ int runInfo(const RenderOptions& options) {
       scene.textures.size(), f.normalMaps ? "yes" : "no", f.alpha ? "yes" : "no", f.transmission ? "yes" : "no",
       f.volumes ? "yes" : "no", f.clearcoat ? "yes" : "no", f.sheen ? "yes" : "no", f.iridescence ? "yes" : "no",
       f.delta ? "yes" : "no", f.punctualLights,
-      !options.environmentPath.empty() ? options.environmentPath.c_str()
-      : f.environment                  ? "constant (the default light)"
-                                       : "none (unless --environment)");
+      added == AddedLight::Map      ? options.environmentPath.c_str()
+      : added == AddedLight::Studio ? "studio (the file declares no other world)"
+      : added == AddedLight::White  ? "constant (the file's white world)"
+                                    : "none (the file's lights-only world)");
   std::vector<Aabb> bounds = scene.triangleBounds();
   Bvh bvh = buildBvh(bounds);
   const BvhStats& b = bvh.stats;

@@ -192,7 +192,7 @@ RouletteTable rouletteFromJson(const nlohmann::json& j) {
 }
 
 // What a checkpoint's film saw: the scene, the camera (an automatic one's framing follows vkmc's rules) and the
-// default light's backdrop, hashed field by field (no padding bytes).
+// backdrop, hashed field by field (no padding bytes).
 ContentHash renderFingerprint(const Scene& scene, const RenderSettings& settings) {
   ContentHash fingerprint;
   fingerprint.addValue(sceneFingerprint(scene));
@@ -772,7 +772,7 @@ json choiceJson(const EstimatorChoice& c) {
           {"pipeline_seconds", c.pipelineSeconds},
           {"share_of_samples", c.share},
           {"margin", kChoiceMargin},
-          {"max_cost_at_sample_count", kChoiceMaxCostAtSampleCount},
+          {"max_cost_at_sample_count", c.costCapped ? json(kChoiceMaxCostAtSampleCount) : json(nullptr)},
           {"note",
            "the pilots are the render's first rounds, weighted per pixel by weights fixed before their samples were "
            "seen (round_film.h): unbiased whichever configuration they chose"}};
@@ -790,19 +790,19 @@ std::string choiceLine(const EstimatorChoice& c) {
   for (const MeasuredCandidate& m : c.candidates) {
     if (m.chosen) chosenEfficiency = m.reading.efficiency();
     if (m.tooCostly)
-      tooCostly = "; " + m.label + " measured more efficient but costs " +
-                  formatNumber(std::round(10.0 * m.reading.cost / c.candidates.front().reading.cost) / 10.0) +
-                  "x the start a sample, more than a render of a sample count takes";
+      tooCostly += "; " + m.label + " measured more efficient but costs " +
+                   formatNumber(std::round(100.0 * m.reading.cost / c.candidates.front().reading.cost) / 100.0) +
+                   "x the start a sample, over the " + formatNumber(kChoiceMaxCostAtSampleCount) +
+                   "x a render of a sample count allows";
   }
   char buf[512];
   std::snprintf(buf, sizeof(buf),
                 "choice      %s, of %zu candidates%s (%.2fx the start's measured efficiency); pilots %.3f s, %.1f%% of "
-                "the samples (in the image); their kernels %.3f s%s\n",
+                "the samples (in the image); their kernels %.3f s",
                 changed.empty() ? "the defaults" : changed.c_str(), c.candidates.size(),
                 c.skippedForBudget.empty() ? "" : " (the pilots' share of the render's time fitted no more)",
-                startEfficiency > 0.0 ? chosenEfficiency / startEfficiency : 0.0, c.seconds, 100.0 * c.share, c.pipelineSeconds,
-                tooCostly.c_str());
-  return buf;
+                startEfficiency > 0.0 ? chosenEfficiency / startEfficiency : 0.0, c.seconds, 100.0 * c.share, c.pipelineSeconds);
+  return buf + tooCostly + "\n";
 }
 
 json mpiJson(const std::vector<RankReport>& ranks) {
@@ -965,6 +965,10 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z, varianceText.c_str(),
                 (unsigned long long)r.film.totalNonfinite(), (unsigned long long)r.film.totalHighRange());
   std::string text = buf;
+  if (o.environmentPath.empty() && !o.background && r.environment == kStudioEnvironment)
+    text +=
+        "world       the studio environment, the file's own lights on top (the file declares no other world; "
+        "--background 0,0,0 renders its own lights alone)\n";
   if (s.splitsRefused > 0)
     text += "splits      " + std::to_string(s.splitsRefused) +
             " vertices found the path pool full and went on unsplit (unbiased: q = 1 there; fewer splits than asked)\n";

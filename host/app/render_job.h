@@ -38,13 +38,11 @@ struct RenderOptions {
   std::optional<uint32_t> cameraIndex;
   std::optional<glm::vec3> lookFrom, lookAt;
   float fovDegrees = 45.0f;
-  // Radiance seen by escaped rays. Unset: black, except that a scene without emitters is lit by a uniform white
-  // environment (radiance 1) with a warning saying so, rather than rendering black without a word.
+  // Radiance seen by escaped rays. Set, it replaces the file's world (addedLight below); unset, the world lights it.
   std::optional<glm::vec3> background;
   // An environment light (.hdr or .exr, equirectangular, +Y up, the image's centre along -Z), importance sampled
   // and combined with BSDF sampling by MIS; rotated about +Y by environmentRotation degrees, scaled by
-  // environmentStrength. Unset in a scene with no punctual lights and no emitters or only textured ones (and no
-  // --background): a constant environment of radiance 1, with a warning.
+  // environmentStrength; or "studio" (scene/studio_environment.h). Unset: the file's world (addedLight below).
   std::string environmentPath;
   float environmentRotation = 0.0f;
   float environmentStrength = 1.0f;
@@ -125,8 +123,8 @@ struct RenderOutcome {
   std::string spirvVariant;           // pre-specialized SPIR-V used for shading (KernelPlan::spirvVariant)
   std::optional<RouletteTable> roulette;
   glm::vec3 background{0.0f};  // what escaped rays saw besides the environment light
-  float backdrop = 0.0f;       // the grey escaped camera rays saw instead (the default light's), or 0
-  std::string environment;     // the environment light: its file, "constant", or empty (none)
+  float backdrop = 0.0f;       // the grey escaped camera rays saw instead (the studio's or a white world's), or 0
+  std::string environment;     // the environment light: its file, "studio", "constant", or empty (none)
   // Checkpoints: the configuration they record, the state at the end (unfolded batch included: what a checkpoint
   // of this render holds), whether a stop request ended the render early, and what happened to the periodic ones.
   nlohmann::json checkpointConfig;

@@ -171,7 +171,7 @@ struct StudyReference {
 StudyReference renderedReference(vk::Context& ctx, const Study& study, const Scene& scene) {
   std::string key = readFile(study.scenePath) + "|" + std::to_string(study.width) + "x" + std::to_string(study.height) + "|" +
                     std::to_string(study.referenceSpp) + "|" + study.configurations[0].estimator.toJson().dump() +
-                    (study.filter.isPixelBox() ? "" : "|" + pixelFilterJson(study.filter).dump()) + "|vkmc-ref-2";
+                    (study.filter.isPixelBox() ? "" : "|" + pixelFilterJson(study.filter).dump()) + "|vkmc-ref-3";
   char hex[17];
   std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(fnv1a(key)));
   fs::path cached = fs::path(cacheDir()) / "references" / (std::string(hex) + ".exr");

@@ -29,7 +29,7 @@ struct RenderSettings {
   SceneFeatures features;     // what the pipelines are specialized for (allFeatures(): general pipelines)
   uint32_t seed = 1;
   glm::vec3 background{0.0f};
-  float backdrop = 0.0f;  // > 0: the grey camera rays see where they escape (the default light's backdrop)
+  float backdrop = 0.0f;  // > 0: the grey camera rays see where they escape (the studio's and a white world's backdrop)
   PixelFilter filter;     // pixel reconstruction filter (box of radius 0.5: plain jitter)
   CameraRig camera{};
   bool progress = false;                // progress line on stderr

@@ -29,8 +29,7 @@ struct SceneFeatures {
   bool iridescence = false;     // KHR_materials_iridescence
   bool delta = false;           // a lobe can be smooth (roughness^2 below kDeltaAlpha): delta BSDF samples
   uint32_t punctualLights = 0;  // KHR_lights_punctual instances
-  // An environment light (Scene::environment): --environment, or the constant one that lights a scene with no
-  // emitters and no punctual lights.
+  // An environment light (Scene::environment): --environment's, or the file's world's (the studio, a white world).
   bool environment = false;
   // Some BVH walk can outgrow the register stack (walksCanOutgrowRegisterStack): the deep passes are built. Known
   // only once the BVH is; true until then.

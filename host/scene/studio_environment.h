@@ -1,7 +1,7 @@
-// `--environment studio`: a neutral photographic studio as an equirectangular map of radiance, built here (no
-// file): a grey cyclorama darker below the horizon than above, a large key softbox above and to the front left
-// of the default camera's view, a dimmer fill to its right, and a rim light behind. Lit by it, a model shows its
-// shape and materials as in a model viewer; the camera sees it against the default light's grey backdrop.
+// The studio (`--environment studio`, and the world of a file that declares none): a neutral photographic studio as an
+// equirectangular map of radiance, built here (no file): a grey cyclorama darker below the horizon than above, a large key
+// softbox above and to the front left of the default camera's view, a dimmer fill to its right, and a rim light behind. Lit by
+// it, a model shows its shape and materials as in a model viewer; the camera sees it against a grey backdrop.
 #pragma once
 #include <glm/glm.hpp>
 

@@ -314,8 +314,8 @@ struct PushConstants {
 };
 
 // PushConstants::background: rgb, the uniform radiance every escaped ray brings (with the environment's); w > 0, a
-// grey backdrop that camera rays which escape see instead (the default light's: a model viewer's neutral backdrop,
-// while the scene stays lit by the environment).
+// grey backdrop that camera rays which escape see instead (the studio's and a white world's: a model viewer's
+// neutral backdrop, while the scene stays lit by the environment).
 VKMC_FN vec4 encodeBackground(vec3 radiance, float backdropGrey) { return vec4(radiance, backdropGrey); }
 VKMC_FN bool hasBackdrop(vec4 background) { return background.w > 0.0f; }
 

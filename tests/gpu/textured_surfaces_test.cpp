@@ -240,6 +240,11 @@ TEST(DefaultLight, TheStudioLightsAFileThatDeclaresNoWorldWithItsOwnLightsOnTop)
     RenderOutcome r = render(file, {0, 0, 3}, {0, 0, 0}, 30.0f, 1);
     EXPECT_EQ(r.environment, "studio") << material;
     EXPECT_EQ(r.backdrop, kDefaultBackdrop) << material;
+    // The quad fills the middle: every sample there is its emission (red 1 under both emissive materials) plus
+    // what it reflects of the studio, so the file's own light is still there, on top.
+    const test::RegionStats centre = test::region(r.film, 12, 12, 20, 20);
+    if (material.find("emissive") != std::string::npos) EXPECT_GE(centre.mean.x, 1.0 - 1e-6) << material;
+    EXPECT_GT(centre.mean.y, 0.0) << material;
   }
   // The tests' own files declare theirs: lights-only where a plain emitter lights them.
   RenderOutcome lab =

@@ -91,6 +91,11 @@ TEST_P(StiffFurnaceChosen, StaysTheAnalyticValue) {
   const RenderOutcome r = renderAuto("furnace_stiff.gltf", 16, 16, 256, 67, start, {}, GetParam());
   ASSERT_TRUE(r.choice);
   EXPECT_GE(r.choice->candidates.size(), 2u);
+  // A sample count ends this render: what renders costs at most kChoiceMaxCostAtSampleCount times the start a
+  // sample (the per-depth pilot's paths of a thousand vertices cost about 20 times as much here).
+  EXPECT_TRUE(r.choice->costCapped);
+  for (const MeasuredCandidate& m : r.choice->candidates)
+    if (m.chosen) EXPECT_LE(m.reading.cost, kChoiceMaxCostAtSampleCount * r.choice->candidates[0].reading.cost) << m.label;
   EXPECT_EQ(r.film.totalNonfinite(), 0u);
   const RegionStats s = whole(r.film);
   const ZTest t = zTest(s.mean.x, 100.0, std::sqrt(s.variance.x));

@@ -1,6 +1,8 @@
-// The world a test's glTF declares (scene.h's World): lights-only where it has lights of its own (an emissive
-// material without an emissive map, or a punctual light), else white, the uniform environment its expected values
-// assume. Without a declaration the studio environment would light every test scene as it lights a user's file.
+// The world a test's glTF declares (scene.h's World): lights-only where it has lights of its own (a material with an
+// emissive factor and no emissive map, or a KHR_lights_punctual light), else white, the uniform environment its
+// expected values assume: the rule by which the renderer lit undeclared files before the studio, read from the
+// JSON (so an unlit material, whose base colour is its emission, or an emissiveStrength of 0 reads as no light).
+// Without a declaration the studio would light every test scene as it lights a user's file.
 #pragma once
 #include <nlohmann/json.hpp>
 
@@ -23,9 +25,11 @@ inline bool hasOwnLights(const nlohmann::json& gltf) {
 inline std::string withLabWorld(const std::string& text) {
   nlohmann::json gltf = nlohmann::json::parse(text, nullptr, false);
   if (!gltf.is_object() || !gltf.contains("scenes") || !gltf["scenes"].is_array() || gltf["scenes"].empty() ||
-      !gltf["scenes"][0].is_object())
+      (gltf.contains("scene") && !gltf["scene"].is_number_unsigned()))
     return text;
-  gltf["scenes"][0]["extras"]["vkmc_world"] = hasOwnLights(gltf) ? "lights-only" : "white";
+  const size_t scene = gltf.value("scene", 0u) < gltf["scenes"].size() ? gltf.value("scene", 0u) : 0u;
+  if (!gltf["scenes"][scene].is_object()) return text;
+  gltf["scenes"][scene]["extras"]["vkmc_world"] = hasOwnLights(gltf) ? "lights-only" : "white";
   return gltf.dump();
 }
 

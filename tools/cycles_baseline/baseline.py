@@ -37,7 +37,8 @@ def run(cmd, **kw):
 def vkmc_render(args, out, spp=None, seconds=None, seed=1, ref=False):
     report = out[:-4] + ".json"
     cmd = [VKMC, "render", args.scene, "-o", out, "--report", report, "--width", str(args.width),
-           "--height", str(args.height), "--seed", str(seed), "--rr-depth", str(args.rr_depth), "-q"]
+           "--height", str(args.height), "--seed", str(seed), "--rr-depth", str(args.rr_depth), "-q",
+           "--background", "0,0,0"]  # Cycles' world is black (render_cycles.py): no studio on vkmc's side either
     if not ref:
         cmd += shlex.split(args.vkmc_args)  # the renders compared, never the reference
     if seconds is not None:
@@ -98,7 +99,7 @@ def compare(image, reference, heatmap=None):
 
 def scene_key(args):
     with open(args.scene, "rb") as f:
-        digest = hashlib.sha256(f.read()).hexdigest()[:12]
+        digest = hashlib.sha256(f.read() + b"|black-world").hexdigest()[:12]
     return digest
 
 
