@@ -17,8 +17,8 @@ struct DeviceTuning {
   bool stageTimes = true;  // a timestamp pair around every dispatch (RenderSettings::stageTimes)
 };
 
-// type: the device's VkPhysicalDeviceType; subgroupSize: its subgroup width (16 on lavapipe with AVX-512, which vkmc
-// sets: vk/lavapipe_environment.h; 8 with AVX2; 32 on NVIDIA, 32 or 64 on AMD).
+// type: the device's VkPhysicalDeviceType; subgroupSize: its subgroup width (16 on lavapipe where vkmc chooses it,
+// vk/lavapipe_environment.h; 8 with AVX2; 32 on NVIDIA, 32 or 64 on AMD).
 DeviceTuning deviceTuning(VkPhysicalDeviceType type, uint32_t subgroupSize);
 
 }  // namespace vkmc

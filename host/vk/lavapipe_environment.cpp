@@ -16,6 +16,14 @@ bool cpuHasAvx512() {
 #endif
 }
 
+bool cpuIsAmd() {
+#if defined(__x86_64__) || defined(__i386__)
+  return __builtin_cpu_is("amd");
+#else
+  return false;
+#endif
+}
+
 bool cpuHasAvx() {
 #if defined(__x86_64__) || defined(__i386__)
   return __builtin_cpu_supports("avx");
@@ -33,7 +41,7 @@ LavapipeEnvironment decide() {
   LavapipeEnvironment e;
   if (set("LP_NATIVE_VECTOR_WIDTH")) {
     e.vectorBits = unsigned(std::strtoul(std::getenv("LP_NATIVE_VECTOR_WIDTH"), nullptr, 10));
-  } else if (cpuHasAvx512()) {
+  } else if (cpuPrefersSixteenLanes()) {
     e.vectorBits = 512;
     e.vectorChosen = setenv("LP_NATIVE_VECTOR_WIDTH", "512", 0) == 0;
     if (!e.vectorChosen) e.vectorBits = 256;
@@ -56,6 +64,8 @@ LavapipeEnvironment decide() {
 }
 
 }  // namespace
+
+bool cpuPrefersSixteenLanes() { return cpuHasAvx512() && cpuIsAmd(); }
 
 const LavapipeEnvironment& prepareLavapipeEnvironment() {
   static const LavapipeEnvironment environment = decide();
