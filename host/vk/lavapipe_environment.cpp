@@ -8,22 +8,6 @@
 namespace vkmc::vk {
 namespace {
 
-bool cpuHasAvx512() {
-#if defined(__x86_64__) || defined(__i386__)
-  return __builtin_cpu_supports("avx512f");  // libgcc checks the OS's zmm state (XGETBV) too
-#else
-  return false;
-#endif
-}
-
-bool cpuIsAmd() {
-#if defined(__x86_64__) || defined(__i386__)
-  return __builtin_cpu_is("amd");
-#else
-  return false;
-#endif
-}
-
 bool cpuHasAvx() {
 #if defined(__x86_64__) || defined(__i386__)
   return __builtin_cpu_supports("avx");
@@ -65,7 +49,13 @@ LavapipeEnvironment decide() {
 
 }  // namespace
 
-bool cpuPrefersSixteenLanes() { return cpuHasAvx512() && cpuIsAmd(); }
+bool cpuPrefersSixteenLanes() {
+#if defined(__x86_64__) || defined(__i386__)
+  return __builtin_cpu_supports("avx512f") && __builtin_cpu_is("amd");  // libgcc checks the OS's zmm state too
+#else
+  return false;
+#endif
+}
 
 const LavapipeEnvironment& prepareLavapipeEnvironment() {
   static const LavapipeEnvironment environment = decide();
