@@ -270,7 +270,7 @@ bool sampleEmissiveTriangle(uint tri, float pmf, SurfacePoint s, vec2 u, out Lig
   float area = scaledCrossArea(cr);
   if (!(area > 0.0)) return false;
   vec3 nl = normalize(cr.xyz);
-  if (!pairPoint) ts = sampleTriangleLight(kLightSampling, s.p, v0, v1, v2, nl, u);
+  if (!pairPoint) ts = sampleTriangleLight(kLightSampling, s.p, v0, v1, v2, u);
   vec3 toLight = ts.point - s.p;
   float dist2 = dot(toLight, toLight);
   if (!(dist2 > 0.0)) return false;

@@ -55,6 +55,22 @@ TEST(Furnace, EveryPixelIsTwoWithinFiveSigmaWithoutDepthCap) {
   EXPECT_GT(r.stats.maxBounces, 10u) << "without a cap some paths must run long";
 }
 
+// Solid-angle light sampling of the furnace's 1280 small emitters (about 0.01 sr each): a spherical sample that
+// rounding put just past an edge was blocked by the neighbouring triangle, and the image read 1.99636 (z = -10);
+// clamped onto the triangle (light_sampling.h clampToTriangle) it reads 2.
+TEST(Furnace, SolidAngleLightSamplingLosesNoLightAtEdges) {
+  RenderOptions o = furnaceOptions(2048);
+  o.estimator.lightSampling = LightSampling::SolidAngle;
+  RenderOutcome r = runRender(context(), o);
+  ASSERT_EQ(r.film.totalNonfinite(), 0u);
+  glm::dvec3 mean = r.film.imageMean(), var = r.film.imageMeanVarianceOfMean();
+  for (int c = 0; c < 3; ++c) {
+    double sigma = std::sqrt(var[c] / r.film.pixels());
+    EXPECT_LT(sigma, 0.0005 * 2.0) << "the test must resolve a 0.18% bias at 5 sigma";
+    EXPECT_TRUE(withinSigmas(zTest(mean[c], 2.0, sigma), 5.0)) << "channel " << c << ": " << mean[c];
+  }
+}
+
 TEST(Furnace, DepthCapTruncatesToTheGeometricSeries) {
   // D scattering events collect emission at D + 1 vertices: L = Le (1 - a^(D+1)) / (1 - a) = 1.75 for D = 2.
   RenderOptions o = furnaceOptions(64);

@@ -146,14 +146,8 @@ int subTriangleCell(double b1, double b2, int n) {
   return (i * n + j) * 2 + (up ? 0 : 1);
 }
 
-// How far outside the triangle a point of its plane lies, in barycentric units (0 inside).
-double barycentricOutside(vec3 q, vec3 a, vec3 b, vec3 c) {
-  glm::dvec3 e1(b - a), e2(c - a), d(q - a);
-  double d11 = glm::dot(e1, e1), d12 = glm::dot(e1, e2), d22 = glm::dot(e2, e2), d1 = glm::dot(d, e1), d2 = glm::dot(d, e2);
-  double den = d11 * d22 - d12 * d12;
-  double b1 = (d22 * d1 - d12 * d2) / den, b2 = (d11 * d2 - d12 * d1) / den;
-  return std::max(0.0, -std::min({1.0 - b1 - b2, b1, b2}));
-}
+// How far barycentrics lie outside their triangle (0 inside).
+double outsideBy(vec3 b) { return std::max(0.0, -double(std::min({b.x, b.y, b.z}))); }
 
 double solidAngleD(glm::dvec3 p, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
   glm::dvec3 ua = glm::normalize(a - p), ub = glm::normalize(b - p), uc = glm::normalize(c - p);
@@ -196,7 +190,6 @@ TEST_P(TriangleLight, SamplingByAreaAndSolidAngle) {
   for (int k = 0; k < 2 * n * n; ++k) expectedArea[k] = cellOmega[k] > 0.0 ? double(kSamples) / cells : 0.0;
   int misses = 0;
   double worstOutside = 0.0;
-  vec3 tn = normalize(cross(t.b - t.a, t.c - t.a));
   for (uint32_t i = 0; i < kSamples; ++i) {
     vec3 u = u3(i, 6);
     vec3 b = sampleUniformTriangle(vec2(u.x, u.y));
@@ -206,7 +199,7 @@ TEST_P(TriangleLight, SamplingByAreaAndSolidAngle) {
     if (h.x <= 0.0f) {
       // A direction just outside an edge by float rounding is harmless; anything farther is a sampler bug.
       ++misses;
-      worstOutside = std::max(worstOutside, barycentricOutside(pointOnTrianglePlane(p, w, t.a, tn), t.a, t.b, t.c));
+      worstOutside = std::max(worstOutside, outsideBy(rayTriangleBarycentrics(p, w, t.a, t.b, t.c)));
       continue;
     }
     observedSolid[subTriangleCell(h.y, h.z, n)] += 1.0;
