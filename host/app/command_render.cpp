@@ -536,10 +536,11 @@ Command addRenderCommand(CLI::App& app) {
   addCameraAndLightOptions(render, *a);
   // Flags override the file; both are the keys of host/estimators/estimator_params.cpp.
   render
-      ->add_option("--estimator", a->estimatorFile,
-                   "JSON estimator file (the keys of the flags below), defaults (fixed), or auto: short pilots on the "
-                   "scene (at most 5% of a time budget) choose roulette, light and BSDF samples and MIS by measured "
-                   "efficiency; flags pin their keys. Unset: auto where it can run, the defaults elsewhere (the report says why)")
+      ->add_option(
+          "--estimator", a->estimatorFile,
+          "JSON estimator file (the keys of the flags below), defaults (fixed), or auto: short pilots on the "
+          "scene (at most 5% of a time budget) choose roulette, light and BSDF samples, MIS and light sampling by measured "
+          "efficiency; flags pin their keys. Unset: auto where it can run, the defaults elsewhere (the report says why)")
       ->group(kEstimatorGroup);
   for (const EstimatorParam& p : estimatorParams())
     render->add_option(p.flag(), a->estimatorValues[p.key], p.helpText())->group(kEstimatorGroup);

@@ -147,7 +147,8 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   EstimatorChoice out;
   const double timeBudget = bounds.timeBudget;
   const SceneFeatures& f = settings.features;
-  const std::vector<SearchStep> steps = estimatorSearchSteps(pinned, SearchScene{f.lights(), ctx.hasFloatAtomics(), f.glossy});
+  const std::vector<SearchStep> steps =
+      estimatorSearchSteps(pinned, SearchScene{f.lights(), ctx.hasFloatAtomics(), f.glossy, f.emitters()});
   const uint32_t candidates = 1 + uint32_t(steps.size());  // at least one value a key
   const uint32_t imagePixels = settings.width * settings.height;
   const std::vector<uint32_t> order = pixelOrder(imagePixels, settings.seed);

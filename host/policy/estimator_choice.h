@@ -26,13 +26,14 @@ struct SearchScene {
   bool lights = true;        // next-event estimation has something to sample (light_samples, mis)
   bool floatAtomics = true;  // the device adds split paths' and extra light samples' contributions
   bool glossy = true;        // a lobe other than Lambertian: where BSDF sampling finds lights as light sampling does
+  bool emitters = true;      // emissive triangles: what light_sampling solid-angle changes
 };
 
 // The keys searched, in order: rr efficiency (the per-depth pilot), light_samples {2, 4}, bsdf_samples {2, 4},
-// mis balance; keys in `pinned` (the user's flags) are left out, splitting where the device has no float
-// atomics, and mis where no lobe is glossy (on Lambertian surfaces a BSDF sample's pdf is far below a light
-// sample's wherever the light is small, so both heuristics give nearly the same weights: on the Cornell box balance
-// read 0.75x the start, measured at the cost of a pilot).
+// mis balance, light_sampling solid-angle; keys in `pinned` (the user's flags) are left out, splitting where the
+// device has no float atomics, light_sampling where no triangle emits, and mis where no lobe is glossy (on Lambertian surfaces a
+// BSDF sample's pdf is far below a light sample's wherever the light is small, so both heuristics give nearly the same weights:
+// on the Cornell box balance read 0.75x the start, measured at the cost of a pilot).
 std::vector<SearchStep> estimatorSearchSteps(const std::set<std::string>& pinned, const SearchScene& scene);
 
 // What a candidate's pilot is expected to cost against the incumbent's (the best so far, which differs from it in

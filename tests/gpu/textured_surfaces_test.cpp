@@ -243,7 +243,9 @@ TEST(DefaultLight, TheStudioLightsAFileThatDeclaresNoWorldWithItsOwnLightsOnTop)
     // The quad fills the middle: every sample there is its emission (red 1 under both emissive materials) plus
     // what it reflects of the studio, so the file's own light is still there, on top.
     const test::RegionStats centre = test::region(r.film, 12, 12, 20, 20);
-    if (material.find("emissive") != std::string::npos) EXPECT_GE(centre.mean.x, 1.0 - 1e-6) << material;
+    if (material.find("emissive") != std::string::npos) {
+      EXPECT_GE(centre.mean.x, 1.0 - 1e-6) << material;
+    }
     EXPECT_GT(centre.mean.y, 0.0) << material;
   }
   // The tests' own files declare theirs: lights-only where a plain emitter lights them.
