@@ -140,15 +140,17 @@ class PilotRounds {
   double pixelSamples_ = 0.0;
 };
 
+SearchScene searchScene(const SceneFeatures& f, vk::Context& ctx) {
+  return SearchScene{f.lights(), ctx.hasFloatAtomics(), f.glossy, f.emitters()};
+}
+
 }  // namespace
 
 EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings,
                                 const std::set<std::string>& pinned, const ChoiceBounds& bounds, RoundFilm& film) {
   EstimatorChoice out;
   const double timeBudget = bounds.timeBudget;
-  const SceneFeatures& f = settings.features;
-  const std::vector<SearchStep> steps =
-      estimatorSearchSteps(pinned, SearchScene{f.lights(), ctx.hasFloatAtomics(), f.glossy, f.emitters()});
+  const std::vector<SearchStep> steps = estimatorSearchSteps(pinned, searchScene(settings.features, ctx));
   const uint32_t candidates = 1 + uint32_t(steps.size());  // at least one value a key
   const uint32_t imagePixels = settings.width * settings.height;
   const std::vector<uint32_t> order = pixelOrder(imagePixels, settings.seed);
