@@ -27,10 +27,10 @@ double coatAlbedo(double cosO, double alpha) {
   double sum = 0.0;  // visible-normal sampling on a stratified grid: the weight f cos / pdf is smooth
   for (int i = 0; i < kStrata; ++i)
     for (int j = 0; j < kStrata; ++j) {
-      vec3 h = sampleGgxVisibleNormal(o, a, vec2((i + 0.5f) / kStrata, (j + 0.5f) / kStrata));
+      vec3 h = sampleGgxVisibleNormal(o, vec2(a), vec2((i + 0.5f) / kStrata, (j + 0.5f) / kStrata));
       vec3 wi = 2.0f * dot(o, h) * h - o;
       if (wi.z <= 0.0f) continue;
-      float pdf = ggxReflectionPdf(o, normalize(wi), a);
+      float pdf = ggxReflectionPdf(o, normalize(wi), vec2(a));
       if (pdf > 0.0f) sum += coatReflectionEval(o, normalize(wi), a) * wi.z / pdf;
     }
   return sum / (kStrata * kStrata);

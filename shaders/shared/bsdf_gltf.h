@@ -2,7 +2,8 @@
 //   f = coat + (1 - cc E_c) [ sheen + (1 - s E_s) base ]                 KHR_materials_clearcoat, _sheen
 //   base = (1 - m) [ (1 - T) (1 - F) c / pi + F D V + T c (1 - F) btdf ] + m F_m D V
 //   F = Schlick(f0, f90 = specularFactor) with f0 = min(((ior - 1) / (ior + 1))^2 specularColor, 1) specularFactor
-//   F_m = c + (1 - c) (1 - v.h)^5, D = GGX, V = height-correlated Smith G2 / (4 n.l n.v), alpha = roughness^2.
+//   F_m = c + (1 - c) (1 - v.h)^5, D = GGX, V = height-correlated Smith G2 / (4 n.l n.v), alpha = roughness^2;
+//   KHR_materials_anisotropy stretches alpha along the local x axis (the shading frame's anisotropy direction).
 // The coat and sheen scale what lies under them by one minus their directional albedo E (tabulated, bounded from
 // above: layer_albedo.h), the smaller of wo's and wi's so f stays reciprocal. The transmission btdf is Walter et
 // al. 2007's rough dielectric (volumetric: it refracts with eta) or, thin-walled (no KHR_materials_volume),
@@ -26,7 +27,7 @@ VKMC_BEGIN_NAMESPACE
 struct GltfMaterial {
   vec3 baseColor;
   float metallic;
-  float alpha;         // GGX alpha of the base's specular and transmission; below kDeltaAlpha they are deltas
+  vec2 alpha;          // GGX alphas of the base's specular and transmission along local x and y; deltas below kDeltaAlpha
   float specular;      // KHR_materials_specular specularFactor: the dielectric's f90
   vec3 f0;             // the dielectric's reflectance at normal incidence (specularFactor included)
   float transmission;  // KHR_materials_transmission
@@ -44,12 +45,13 @@ struct GltfMaterial {
 };
 
 VKMC_FN bool isDeltaAlpha(float alpha) { return alpha < kDeltaAlpha; }
+VKMC_FN bool isDeltaAlpha(vec2 alpha) { return max(alpha.x, alpha.y) < kDeltaAlpha; }  // pbrt-v4's EffectivelySmooth
 
 VKMC_FN GltfMaterial makeGltfMaterial(vec3 baseColor, float metallic, float roughness, float specular) {
   GltfMaterial m;
   m.baseColor = baseColor;
   m.metallic = clamp(metallic, 0.0f, 1.0f);
-  m.alpha = roughness * roughness;
+  m.alpha = vec2(roughness * roughness);
   m.specular = max(specular, 0.0f);
   m.f0 = vec3(0.04f * m.specular);  // ior 1.5
   m.transmission = 0.0f;
@@ -79,6 +81,13 @@ VKMC_FN void setTransmission(INOUT(GltfMaterial) m, float transmission, float et
   m.transmission = clamp(transmission, 0.0f, 1.0f);
   m.thinWalled = thinWalled;
   m.eta = thinWalled ? 1.0f : eta;
+}
+
+// KHR_materials_anisotropy: alpha along the anisotropy direction (local x) mix(alpha, 1, strength^2), across it
+// alpha (the extension's alphaT and alphaB).
+VKMC_FN void setAnisotropy(INOUT(GltfMaterial) m, float strength) {
+  float s = clamp(strength, 0.0f, 1.0f);
+  m.alpha.x = mix(m.alpha.y, 1.0f, s * s);
 }
 
 VKMC_FN void setClearcoat(INOUT(GltfMaterial) m, float clearcoat, float roughness, vec3 normal) {
@@ -181,7 +190,7 @@ VKMC_FN vec3 baseReflectionEval(GltfMaterial m, vec3 wo, vec3 wi) {
       isSmooth ? (vec3(1.0f) - interfaceFresnel(m, wo.z)) * (vec3(1.0f) - interfaceFresnel(m, wi.z)) : vec3(1.0f) - fd;
   vec3 f = ((1.0f - m.metallic) * (1.0f - m.transmission) * kInvPi) * diffuseWeight * m.baseColor;
   if (!isSmooth) {
-    float dv = ggxD(h, m.alpha) * smithVisibility(wi.z, wo.z, m.alpha);
+    float dv = ggxD(h, m.alpha) * smithVisibility(wi, wo, m.alpha);
     vec3 fm = metalFresnel(m, vh);
     f += ((1.0f - m.metallic) * fd + m.metallic * fm) * dv;
   }
@@ -195,12 +204,12 @@ VKMC_FN vec3 baseTransmissionEval(GltfMaterial m, vec3 wo, vec3 wi) {
   if (m.thinWalled) {
     vec3 wr = vec3(wi.x, wi.y, -wi.z);
     vec3 h = normalize(wo + wr);
-    return tint * (vec3(1.0f) - interfaceFresnel(m, dot(wo, h))) * (ggxD(h, m.alpha) * smithVisibility(wr.z, wo.z, m.alpha));
+    return tint * (vec3(1.0f) - interfaceFresnel(m, dot(wo, h))) * (ggxD(h, m.alpha) * smithVisibility(wr, wo, m.alpha));
   }
   vec3 h = refractionHalfVector(wo, wi, m.eta);
   if (h == vec3(0.0f)) return vec3(0.0f);
   float d = dot(wi, h) + dot(wo, h) / m.eta;
-  float value = ggxD(h, m.alpha) * smithG2(wo.z, wi.z, m.alpha) * abs(dot(wi, h) * dot(wo, h) / (d * d * wi.z * wo.z));
+  float value = ggxD(h, m.alpha) * smithG2(wo, wi, m.alpha) * abs(dot(wi, h) * dot(wo, h) / (d * d * wi.z * wo.z));
   return tint * (vec3(1.0f) - interfaceFresnel(m, dot(wo, h))) * (value / (m.eta * m.eta));
 }
 
@@ -287,7 +296,7 @@ VKMC_FN float gltfBsdfPdf(GltfMaterial m, vec3 wo, vec3 wi) {
     pdf += (p.sheen + p.diffuse) * cosineHemispherePdf(wi.z);
     if (p.coat > 0.0f && !isDeltaAlpha(m.clearcoatAlpha)) {
       mat3 frame = basisFromNormal(m.clearcoatNormal);
-      pdf += p.coat * ggxReflectionPdf(wo * frame, wi * frame, m.clearcoatAlpha);
+      pdf += p.coat * ggxReflectionPdf(wo * frame, wi * frame, vec2(m.clearcoatAlpha));
     }
   }
   if (p.specular > 0.0f && !isDeltaAlpha(m.alpha)) pdf += p.specular * interfacePdf(m, wo, wi);
@@ -344,7 +353,7 @@ VKMC_FN BsdfSample sampleGltfBsdf(GltfMaterial m, vec3 wo, vec3 u) {
   if (x < p.coat) {
     mat3 frame = basisFromNormal(m.clearcoatNormal);
     vec3 woC = wo * frame;
-    vec3 h = isDeltaAlpha(m.clearcoatAlpha) ? vec3(0.0f, 0.0f, 1.0f) : sampleGgxVisibleNormal(woC, m.clearcoatAlpha, v);
+    vec3 h = isDeltaAlpha(m.clearcoatAlpha) ? vec3(0.0f, 0.0f, 1.0f) : sampleGgxVisibleNormal(woC, vec2(m.clearcoatAlpha), v);
     wi = frame * (2.0f * dot(woC, h) * h - woC);
     if (isDeltaAlpha(m.clearcoatAlpha)) {
       float f = m.clearcoat * schlickFresnel(vec3(kCoatF0), 1.0f, woC.z).x;

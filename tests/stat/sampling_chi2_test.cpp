@@ -20,7 +20,7 @@ using vkmc::test::chi2Sphere;
 
 namespace {
 constexpr uint32_t kSamples = 1000000;
-constexpr int kTests = 2 + 9 + 27 + 4 + 1;  // Sidak correction over every chi-square test in this file
+constexpr int kTests = 2 + 15 + 27 + 4 + 1;  // Sidak correction over every chi-square test in this file
 
 vec3 u3(uint32_t i, uint32_t stream) {
   uint key = pathKey(stream, i, 0u);
@@ -53,12 +53,14 @@ TEST(Chi2, UniformAndCosineHemisphere) {
   EXPECT_NEAR(cos.pdfIntegral, 1.0, 2e-3);
 }
 
-// One row per roughness (alpha) and cosine of the outgoing angle.
-class GgxVisibleNormals : public ::testing::TestWithParam<std::tuple<float, float>> {};
+// One row per roughness (alpha along x and along y: isotropic where equal, KHR_materials_anisotropy's stretched
+// lobe where not) and cosine of the outgoing angle, seen at an azimuth off both axes.
+class GgxVisibleNormals : public ::testing::TestWithParam<std::tuple<vec2, float>> {};
 
 TEST_P(GgxVisibleNormals, ReflectionMatchesItsPdf) {
   const auto [alpha, cosO] = GetParam();
-  vec3 wo = fromTheta(cosO);
+  const float sinO = std::sqrt(1.0f - cosO * cosO), phi = 0.6f;
+  vec3 wo(sinO * std::cos(phi), sinO * std::sin(phi), cosO);
   auto r = chi2Sphere(
       [&](uint32_t i) {
         vec3 u = u3(i, 3);
@@ -67,15 +69,19 @@ TEST_P(GgxVisibleNormals, ReflectionMatchesItsPdf) {
         return wi.z > 0.0f ? normalize(wi) : vec3(0.0f);
       },
       [&](vec3 wi) { return double(ggxReflectionPdf(wo, wi, alpha)); }, kSamples);
-  expectFits(r, "VNDF alpha " + std::to_string(alpha) + " cos " + std::to_string(cosO));
+  expectFits(r, "VNDF alpha " + std::to_string(alpha.x) + "," + std::to_string(alpha.y) + " cos " + std::to_string(cosO));
   EXPECT_LE(r.pdfIntegral, 1.0 + 2e-3);
 }
 
 INSTANTIATE_TEST_SUITE_P(Chi2, GgxVisibleNormals,
-                         ::testing::Combine(::testing::Values(0.2f, 0.5f, 1.0f), ::testing::Values(0.95f, 0.5f, 0.15f)),
+                         ::testing::Combine(::testing::Values(vec2(0.2f), vec2(0.5f), vec2(1.0f), vec2(0.6f, 0.1f),
+                                                              vec2(0.08f, 0.5f)),
+                                            ::testing::Values(0.95f, 0.5f, 0.15f)),
                          [](const auto& info) {
-                           return test::paramName("alpha " + test::shortNumber(std::get<0>(info.param)) + " cos " +
-                                                  test::shortNumber(std::get<1>(info.param)));
+                           const vec2 a = std::get<0>(info.param);
+                           std::string alpha =
+                               a.x == a.y ? test::shortNumber(a.x) : test::shortNumber(a.x) + " " + test::shortNumber(a.y);
+                           return test::paramName("alpha " + alpha + " cos " + test::shortNumber(std::get<1>(info.param)));
                          });
 
 // One row per roughness, metallic and cosine of the outgoing angle.
