@@ -329,6 +329,8 @@ gpu::Material gpuMaterial(const Material& m) {
   g.iridescence = glm::vec4(m.iridescence, m.iridescenceIor, m.iridescenceThicknessMin, m.iridescenceThicknessMax);
   g.iridescenceTexture = textureSlot(m.iridescenceTexture);
   g.iridescenceThicknessTexture = textureSlot(m.iridescenceThicknessTexture);
+  g.anisotropy = glm::vec4(m.anisotropyStrength, std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation), 0.0f);
+  g.anisotropyTexture = textureSlot(m.anisotropyTexture);
   return g;
 }
 }  // namespace

@@ -92,11 +92,26 @@ std::vector<glm::mat4> instanceTransforms(const tinygltf::Model& model, const ti
   return out;
 }
 
-bool hasNormalTexture(const tinygltf::Model& model, int material) {
+// Whether a material needs a tangent frame: a normal texture (its own or its clearcoat's), or an anisotropic lobe
+// (KHR_materials_anisotropy with a strength: its direction is given in tangent space).
+bool needsTangents(const tinygltf::Model& model, int material) {
   if (material < 0 || material >= static_cast<int>(model.materials.size())) return false;
   const tinygltf::Material& m = model.materials[material];
   auto coat = m.extensions.find("KHR_materials_clearcoat");
-  return m.normalTexture.index >= 0 || (coat != m.extensions.end() && coat->second.Has("clearcoatNormalTexture"));
+  auto aniso = m.extensions.find("KHR_materials_anisotropy");
+  bool anisotropic = aniso != m.extensions.end() && aniso->second.Has("anisotropyStrength") &&
+                     aniso->second.Get("anisotropyStrength").IsNumber() &&
+                     aniso->second.Get("anisotropyStrength").GetNumberAsDouble() > 0.0;
+  return m.normalTexture.index >= 0 || (coat != m.extensions.end() && coat->second.Has("clearcoatNormalTexture")) || anisotropic;
+}
+
+// The texture coordinates the tangents follow: the normal texture's, else the anisotropy texture's, else the first.
+int tangentUvSet(const tinygltf::Material& m) {
+  if (m.normalTexture.index >= 0) return m.normalTexture.texCoord;
+  auto aniso = m.extensions.find("KHR_materials_anisotropy");
+  if (aniso == m.extensions.end() || !aniso->second.Has("anisotropyTexture")) return 0;
+  const tinygltf::Value& t = aniso->second.Get("anisotropyTexture");
+  return t.IsObject() && t.Has("texCoord") && t.Get("texCoord").IsInt() ? t.Get("texCoord").GetNumberAsInt() : 0;
 }
 
 class Flattener {
@@ -104,7 +119,7 @@ class Flattener {
   Flattener(const tinygltf::Model& model, Scene& scene, uint64_t maxTriangles)
       : model_(model), scene_(scene), maxTriangles_(maxTriangles), maxElements_(3 * maxTriangles + 3) {
     for (const tinygltf::Mesh& mesh : model.meshes)
-      for (const tinygltf::Primitive& prim : mesh.primitives) withTangents_ |= hasNormalTexture(model, prim.material);
+      for (const tinygltf::Primitive& prim : mesh.primitives) withTangents_ |= needsTangents(model, prim.material);
     if (!model.skins.empty()) nodeWorld_ = worldTransforms(model);  // the joints' default pose
   }
 
@@ -143,8 +158,8 @@ class Flattener {
       }
       PrimitiveRequest request;
       request.weights = node.weights.empty() ? mesh.weights : node.weights;
-      request.generateTangents = isTriangleMode(prim.mode) && hasNormalTexture(model_, prim.material);
-      if (request.generateTangents) request.tangentUvSet = model_.materials[prim.material].normalTexture.texCoord;
+      request.generateTangents = isTriangleMode(prim.mode) && needsTangents(model_, prim.material);
+      if (request.generateTangents) request.tangentUvSet = tangentUvSet(model_.materials[prim.material]);
       request.maxElements = maxElements_;
       request.joints = node.skin >= 0 ? &joints : nullptr;
       try {
@@ -310,7 +325,7 @@ class Flattener {
   const tinygltf::Model& model_;
   Scene& scene_;
   uint64_t maxTriangles_, maxElements_;
-  bool withTangents_ = false;  // some primitive's material has a normal texture
+  bool withTangents_ = false;  // some primitive's material needs tangents (needsTangents)
   std::map<std::pair<int, int>, std::vector<PrimitiveData>> meshes_;
   std::vector<glm::mat4> nodeWorld_;  // every node's world transform, for skins only
   size_t visits_ = 0;

@@ -60,6 +60,31 @@ const tinygltf::Value* extension(const tinygltf::Material& gltf, const char* nam
   return it != gltf.extensions.end() && it->second.IsObject() ? &it->second : nullptr;
 }
 
+// KHR_materials_iridescence and KHR_materials_anisotropy: a film on the base's Fresnel terms, and its specular
+// lobe stretched along a direction in the tangent plane.
+template <class Reader>
+void applyFilmAndAnisotropy(const tinygltf::Material& gltf, Material& m, const Reader& reader) {
+  constexpr double kHuge = std::numeric_limits<double>::max();
+  if (const tinygltf::Value* v = extension(gltf, "KHR_materials_iridescence")) {
+    ExtensionReader r = reader(*v, "KHR_materials_iridescence");
+    m.iridescence = r.number("iridescenceFactor", 0.0, 0.0, 1.0);
+    // The ratified spelling, or the draft's (files written before ratification use it).
+    m.iridescenceIor = r.number(v->Has("iridescenceIor") ? "iridescenceIor" : "iridescenceIOR", 1.3, 1.0, kHuge);
+    m.iridescenceThicknessMin = r.number("iridescenceThicknessMinimum", 100.0, 0.0, kHuge);
+    m.iridescenceThicknessMax = r.number("iridescenceThicknessMaximum", 400.0, 0.0, kHuge);
+    m.iridescenceTexture = r.texture("iridescenceTexture");
+    m.iridescenceThicknessTexture = r.texture("iridescenceThicknessTexture");
+    // Without a thickness texture the film is iridescenceThicknessMaximum thick (the extension's rule).
+    if (!m.iridescenceThicknessTexture.present()) m.iridescenceThicknessMin = m.iridescenceThicknessMax;
+  }
+  if (const tinygltf::Value* v = extension(gltf, "KHR_materials_anisotropy")) {
+    ExtensionReader r = reader(*v, "KHR_materials_anisotropy");
+    m.anisotropyStrength = r.number("anisotropyStrength", 0.0, 0.0, 1.0);
+    m.anisotropyRotation = r.number("anisotropyRotation", 0.0, -kHuge, kHuge);  // radians, from the tangent toward the bitangent
+    m.anisotropyTexture = r.texture("anisotropyTexture");
+  }
+}
+
 }  // namespace
 
 void applyMaterialExtensions(const tinygltf::Material& gltf, Material& m, const std::vector<Texture>& textures,
@@ -125,18 +150,7 @@ void applyMaterialExtensions(const tinygltf::Material& gltf, Material& m, const 
     m.sheenColorTexture = r.texture("sheenColorTexture");
     m.sheenRoughnessTexture = r.texture("sheenRoughnessTexture");
   }
-  if (const tinygltf::Value* v = extension(gltf, "KHR_materials_iridescence")) {
-    ExtensionReader r = reader(*v, "KHR_materials_iridescence");
-    m.iridescence = r.number("iridescenceFactor", 0.0, 0.0, 1.0);
-    // The ratified spelling, or the draft's (files written before ratification use it).
-    m.iridescenceIor = r.number(v->Has("iridescenceIor") ? "iridescenceIor" : "iridescenceIOR", 1.3, 1.0, kHuge);
-    m.iridescenceThicknessMin = r.number("iridescenceThicknessMinimum", 100.0, 0.0, kHuge);
-    m.iridescenceThicknessMax = r.number("iridescenceThicknessMaximum", 400.0, 0.0, kHuge);
-    m.iridescenceTexture = r.texture("iridescenceTexture");
-    m.iridescenceThicknessTexture = r.texture("iridescenceThicknessTexture");
-    // Without a thickness texture the film is iridescenceThicknessMaximum thick (the extension's rule).
-    if (!m.iridescenceThicknessTexture.present()) m.iridescenceThicknessMin = m.iridescenceThicknessMax;
-  }
+  applyFilmAndAnisotropy(gltf, m, reader);
   if (m.transmission > 0.0f && !m.volumetric && m.attenuation != glm::vec3(0.0f))
     warnings.push_back(name + ": KHR_materials_volume attenuation without a thickness is ignored (the surface is thin-walled)");
 }

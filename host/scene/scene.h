@@ -55,9 +55,13 @@ struct Material {
   float sheenRoughness = 0.0f;
   // KHR_materials_iridescence: the film's strength, ior and thickness range (nm).
   float iridescence = 0.0f, iridescenceIor = 1.3f, iridescenceThicknessMin = 100.0f, iridescenceThicknessMax = 400.0f;
+  // KHR_materials_anisotropy: the specular lobe's stretch along a direction rotated from the tangent (radians);
+  // its texture's red and green give the direction in tangent space, its blue scales the strength.
+  float anisotropyStrength = 0.0f, anisotropyRotation = 0.0f;
   TextureRef transmissionTexture, clearcoatTexture, clearcoatRoughnessTexture, clearcoatNormalTexture, sheenColorTexture,
-      sheenRoughnessTexture, specularTexture, specularColorTexture, iridescenceTexture, iridescenceThicknessTexture;
-  std::array<const TextureRef*, 14> textureRefs() const {
+      sheenRoughnessTexture, specularTexture, specularColorTexture, iridescenceTexture, iridescenceThicknessTexture,
+      anisotropyTexture;
+  std::array<const TextureRef*, 15> textureRefs() const {
     return {&baseColorTexture,
             &metallicRoughnessTexture,
             &normalTexture,
@@ -71,7 +75,8 @@ struct Material {
             &specularTexture,
             &specularColorTexture,
             &iridescenceTexture,
-            &iridescenceThicknessTexture};
+            &iridescenceThicknessTexture,
+            &anisotropyTexture};
   }
   bool textured() const {
     for (const TextureRef* t : textureRefs())
@@ -84,6 +89,8 @@ struct Material {
   bool hasSheen() const { return sheenColor.x > 0.0f || sheenColor.y > 0.0f || sheenColor.z > 0.0f; }
   // A film that changes the Fresnel term somewhere (a zero thickness everywhere is no film).
   bool hasIridescence() const { return iridescence > 0.0f && std::max(iridescenceThicknessMin, iridescenceThicknessMax) > 0.0f; }
+  // A stretched lobe: it needs a tangent frame (generated where the file has none).
+  bool hasAnisotropy() const { return anisotropyStrength > 0.0f; }
   bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
 

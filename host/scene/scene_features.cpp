@@ -35,11 +35,13 @@ SceneFeatures scanFeatures(const Scene& scene) {
     f.clearcoat |= m.clearcoat > 0.0f;
     f.sheen |= m.hasSheen();
     f.iridescence |= m.hasIridescence();
+    bool baseSpecular = m.metallic > 0.0f || m.specular > 0.0f || m.transmission > 0.0f;
+    f.anisotropy |= m.hasAnisotropy() && baseSpecular;
+    f.textures |= m.hasAnisotropy() && baseSpecular;  // the tangent frame is read with the texture coordinates
     // Textures only scale roughness down: a roughness texture can make any lobe smooth.
     auto canBeSmooth = [](float roughness, const TextureRef& texture) {
       return roughness * roughness < gpu::kDeltaAlpha || texture.present();
     };
-    bool baseSpecular = m.metallic > 0.0f || m.specular > 0.0f || m.transmission > 0.0f;
     f.delta |= baseSpecular && canBeSmooth(m.roughness, m.metallicRoughnessTexture);
     f.delta |= m.clearcoat > 0.0f && canBeSmooth(m.clearcoatRoughness, m.clearcoatRoughnessTexture);
   }
@@ -64,6 +66,7 @@ SceneFeatures allFeatures(const SceneFeatures& scene) {
   f.clearcoat = true;
   f.sheen = true;
   f.iridescence = true;
+  f.anisotropy = true;
   f.delta = true;
   f.punctualLights = std::max(f.punctualLights, 1u);
   f.environment = true;

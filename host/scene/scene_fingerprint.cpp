@@ -28,13 +28,19 @@ uint64_t sceneFingerprint(const Scene& s) {
                            m.clearcoat,       m.clearcoatRoughness, m.sheenColor.x,      m.sheenColor.y,
                            m.sheenColor.z,    m.sheenRoughness,     float(m.volumetric), 0.0f};
     h.add(ext, sizeof(ext));
-    // The film only where there is one, so a scene without it keeps the fingerprint older checkpoints recorded.
+    // The film and the anisotropy only where they are, so a scene without them keeps the fingerprint older
+    // checkpoints recorded.
     for (const TextureRef* t : m.textureRefs())
-      if (t != &m.iridescenceTexture && t != &m.iridescenceThicknessTexture) addTextureRef(h, *t);
+      if (t != &m.iridescenceTexture && t != &m.iridescenceThicknessTexture && t != &m.anisotropyTexture) addTextureRef(h, *t);
     if (m.iridescence > 0.0f) {
       const float film[4] = {m.iridescence, m.iridescenceIor, m.iridescenceThicknessMin, m.iridescenceThicknessMax};
       h.add(film, sizeof(film));
       addTextureRef(h, m.iridescenceTexture), addTextureRef(h, m.iridescenceThicknessTexture);
+    }
+    if (m.hasAnisotropy()) {
+      const float stretch[2] = {m.anisotropyStrength, m.anisotropyRotation};
+      h.add(stretch, sizeof(stretch));
+      addTextureRef(h, m.anisotropyTexture);
     }
   }
   for (const Texture& t : s.textures) {

@@ -46,6 +46,7 @@ layout(constant_id = SPEC_HAS_TRANSMISSION) const uint kHasTransmission = 1u;
 layout(constant_id = SPEC_HAS_CLEARCOAT) const uint kHasClearcoat = 1u;
 layout(constant_id = SPEC_HAS_SHEEN) const uint kHasSheen = 1u;
 layout(constant_id = SPEC_HAS_IRIDESCENCE) const uint kHasIridescence = 1u;
+layout(constant_id = SPEC_HAS_ANISOTROPY) const uint kHasAnisotropy = 1u;
 layout(constant_id = SPEC_HAS_DELTA) const uint kHasDelta = 1u;
 layout(constant_id = SPEC_SAMPLER) const uint kSampler = 0u;
 layout(constant_id = SPEC_SAMPLER_LOG2_SPP) const uint kSamplerLog2Spp = 0u;
@@ -231,6 +232,8 @@ Material loadMaterial(uint index) {
   m.iridescence = materialTexel(t + 43);
   m.iridescenceTexture = materialSlot(t + 44);
   m.iridescenceThicknessTexture = materialSlot(t + 47);
+  m.anisotropy = materialTexel(t + 50);
+  m.anisotropyTexture = materialSlot(t + 51);
   return m;
 }
 

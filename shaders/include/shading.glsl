@@ -104,6 +104,30 @@ void shadeExtensions(Material m, SurfacePoint s, vec3 unmappedNormal, inout Gltf
   }
 }
 
+// KHR_materials_anisotropy at s: turns s.frame about its normal so that local x is the anisotropy direction (the
+// front face's tangent rotated by anisotropyRotation toward the bitangent, after the texture's own direction) and
+// returns the strength (the factor times the texture's blue). Without a tangent the frame's own x is the tangent.
+float anisotropyAt(Material m, inout SurfacePoint s) {
+  vec2 dir = vec2(1.0, 0.0);
+  float strength = m.anisotropy.x;
+  if (hasTexture(m.anisotropyTexture)) {
+    vec3 c = sampleTexture(m.anisotropyTexture.texture, slotUv(m.anisotropyTexture, s.attributes), false).rgb;
+    dir = c.rg * 2.0 - 1.0;
+    strength *= c.b;
+  }
+  dir = vec2(m.anisotropy.y * dir.x - m.anisotropy.z * dir.y, m.anisotropy.z * dir.x + m.anisotropy.y * dir.y);
+  vec3 n = s.frame[2];
+  vec3 t = s.attributes.tangent.xyz - n * dot(n, s.attributes.tangent.xyz);
+  float tl = length(t);
+  t = tl > 0.0 ? t / tl : s.frame[0];
+  vec3 b = cross(s.frontFace ? n : -n, t) * (s.attributes.tangent.w < 0.0 ? -1.0 : 1.0);
+  vec3 a = t * dir.x + b * dir.y;
+  float al = length(a);
+  a = al > 0.0 ? a / al : t;
+  s.frame = mat3(a, cross(n, a), n);
+  return strength;
+}
+
 // The material's parameters at s (factors times textures and vertex colours), its emission into s.emission
 // and its normal map into s.frame; a material with a specular lobe gets a shading normal whose mirror
 // direction of wo stays above the surface (normalForValidReflection).
@@ -134,7 +158,10 @@ GltfMaterial shadeSurface(Material m, inout SurfacePoint s, vec3 wo) {
     vec3 n = normalForValidReflection(s.ng, wo, s.frame[2]);
     if (n != s.frame[2]) s.frame = basisFromNormal(n);
   }
+  float anisotropy = 0.0;
+  if (kHasAnisotropy != 0u && kHasTextures != 0u && m.anisotropy.x > 0.0) anisotropy = anisotropyAt(m, s);
   GltfMaterial gm = makeGltfMaterial(base.rgb, metallic, roughness, specular);
+  if (anisotropy > 0.0) setAnisotropy(gm, anisotropy);
   if (kHasGlossy != 0u) shadeExtensions(m, s, unmappedNormal, gm);
   return gm;
 }

@@ -122,6 +122,7 @@
 #define SPEC_REGISTER_STACK \
   40  // the walk's register stack entries: 4, 8 or kBvhRegisterStackEntries (bvh.h registerStackEntries)
 #define SPEC_HAS_IRIDESCENCE 41  // 0: no KHR_materials_iridescence
+#define SPEC_HAS_ANISOTROPY 42   // 0: no KHR_materials_anisotropy
 
 VKMC_BEGIN_NAMESPACE
 
@@ -196,9 +197,11 @@ struct Material {
       sheenRoughnessTexture, specularTexture, specularColorTexture;
   vec4 iridescence;  // KHR_materials_iridescence: x factor, y the film's ior, z and w its thickness range (nm)
   TextureSlot iridescenceTexture, iridescenceThicknessTexture;
+  vec4 anisotropy;  // KHR_materials_anisotropy: x strength, y and z cos and sin of its rotation, w unused
+  TextureSlot anisotropyTexture;
 };
 
-VKMC_CONST uint kMaterialTexels = 50u;  // 16-byte texels of a Material (BINDING_MATERIALS)
+VKMC_CONST uint kMaterialTexels = 54u;  // 16-byte texels of a Material (BINDING_MATERIALS)
 
 // A KHR_lights_punctual light instance in world space (punctual_light.h samples it).
 struct PunctualLight {
@@ -364,14 +367,15 @@ static_assert(sizeof(PathState) == 80);
 static_assert(offsetof(PathState, pixel) == 64 && offsetof(PathState, rootPath) == 76);
 static_assert(sizeof(ShadowRay) == 48);
 static_assert(sizeof(TextureSlot) == 48);
-static_assert(sizeof(Material) == 800 && offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32);
+static_assert(sizeof(Material) == 864 && offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32);
 static_assert(offsetof(Material, baseColorTexture) == 48 && offsetof(Material, emissiveTexture) == 192);
 // loadMaterial (common.glsl) reads these texels.
 static_assert(sizeof(Material) == 16 * kMaterialTexels && offsetof(Material, specularColor) == 16 * 15 &&
               offsetof(Material, clearcoat) == 16 * 18 && offsetof(Material, transmissionTexture) == 16 * 19 &&
               offsetof(Material, specularColorTexture) == 16 * 40 && sizeof(TextureSlot) == 16 * 3 &&
               offsetof(Material, iridescence) == 16 * 43 && offsetof(Material, iridescenceTexture) == 16 * 44 &&
-              offsetof(Material, iridescenceThicknessTexture) == 16 * 47);
+              offsetof(Material, iridescenceThicknessTexture) == 16 * 47 && offsetof(Material, anisotropy) == 16 * 50 &&
+              offsetof(Material, anisotropyTexture) == 16 * 51);
 static_assert(sizeof(PathState) == 16 * kPathTexels && sizeof(ShadowRay) == 16 * kShadowRayTexels);
 static_assert(offsetof(Material, specularColor) == 240 && offsetof(Material, transmissionTexture) == 304);
 static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, kind) == 48 && offsetof(PunctualLight, cosInner) == 56);

@@ -90,6 +90,24 @@ TEST(MaterialExtensions, IridescenceIsRead) {
             std::string::npos);
 }
 
+// KHR_materials_anisotropy: strength and rotation read, the scene's tangents generated for it (its direction is given
+// in tangent space) and the feature compiled in; a strength of 0 (the default) is no anisotropy.
+TEST(MaterialExtensions, AnisotropyIsReadWithItsTangents) {
+  Scene s = loadGltf(quadWith("brushed", R"("KHR_materials_anisotropy":{"anisotropyStrength":0.6,"anisotropyRotation":1.2})"));
+  const Material& m = s.materials[0];
+  EXPECT_FLOAT_EQ(m.anisotropyStrength, 0.6f);
+  EXPECT_FLOAT_EQ(m.anisotropyRotation, 1.2f);
+  EXPECT_FALSE(s.tangents.empty()) << "an anisotropic material needs a tangent frame";
+  const SceneFeatures f = scanFeatures(s);
+  EXPECT_TRUE(f.anisotropy && f.textures);
+  Scene off = loadGltf(quadWith("unbrushed", R"("KHR_materials_anisotropy":{"anisotropyRotation":1.2})"));
+  EXPECT_FALSE(scanFeatures(off).anisotropy);
+  EXPECT_TRUE(off.tangents.empty());
+  EXPECT_NE(test::loadError(quadWith("overstretched", R"("KHR_materials_anisotropy":{"anisotropyStrength":1.5})"))
+                .find("KHR_materials_anisotropy.anisotropyStrength"),
+            std::string::npos);
+}
+
 // KHR_materials_ior has no upper bound: 1000 is valid (a near-perfect mirror); beyond 1e4 it renders as 1e4.
 TEST(MaterialExtensions, LargeIorsAreAccepted) {
   EXPECT_FLOAT_EQ(loadGltf(quadWith("ior1000", R"("KHR_materials_ior":{"ior":1000})")).materials[0].ior, 1000.0f);
