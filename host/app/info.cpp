@@ -34,6 +34,7 @@ const char* specName(uint32_t id) {
     case SPEC_HAS_SHEEN: return "has_sheen";
     case SPEC_HAS_IRIDESCENCE: return "has_iridescence";
     case SPEC_HAS_ANISOTROPY: return "has_anisotropy";
+    case SPEC_HAS_DISPERSION: return "has_dispersion";
     case SPEC_HAS_DELTA: return "has_delta";
     case SPEC_HAS_PUNCTUAL: return "has_punctual";
     case SPEC_HAS_ENVIRONMENT: return "has_environment";
@@ -85,13 +86,13 @@ int runInfo(const RenderOptions& options) {
   std::printf(
       "features     emitters %s (%u emissive triangles), glossy %s, metallic %s, non-default specular %s,\n"
       "             double-sided %s, single-sided %s, textures %s (%zu), normal maps %s, alpha %s,\n"
-      "             transmission %s (volumes %s), clearcoat %s, sheen %s, iridescence %s, anisotropy %s,\n"
-      "             smooth (delta) lobes %s, punctual lights %u, environment %s\n",
+      "             transmission %s (volumes %s, dispersion %s), clearcoat %s, sheen %s, iridescence %s,\n"
+      "             anisotropy %s, smooth (delta) lobes %s, punctual lights %u, environment %s\n",
       f.emitters() ? "yes" : "no", f.emissiveTriangles, f.glossy ? "yes" : "no", f.metallic ? "yes" : "no",
       f.nonDefaultSpecular ? "yes" : "no", f.doubleSided ? "yes" : "no", f.singleSided ? "yes" : "no", f.textures ? "yes" : "no",
       scene.textures.size(), f.normalMaps ? "yes" : "no", f.alpha ? "yes" : "no", f.transmission ? "yes" : "no",
-      f.volumes ? "yes" : "no", f.clearcoat ? "yes" : "no", f.sheen ? "yes" : "no", f.iridescence ? "yes" : "no",
-      f.anisotropy ? "yes" : "no", f.delta ? "yes" : "no", f.punctualLights,
+      f.volumes ? "yes" : "no", f.dispersion ? "yes" : "no", f.clearcoat ? "yes" : "no", f.sheen ? "yes" : "no",
+      f.iridescence ? "yes" : "no", f.anisotropy ? "yes" : "no", f.delta ? "yes" : "no", f.punctualLights,
       added == AddedLight::Map      ? options.environmentPath.c_str()
       : added == AddedLight::Studio ? "studio (the file declares no other world)"
       : added == AddedLight::White  ? "constant (the file's white world)"

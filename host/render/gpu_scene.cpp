@@ -22,6 +22,7 @@
 #include "render/alias_table.h"
 #include "render/emitter_pairs.h"
 #include "render/gpu_textures.h"
+#include "scene/dispersion.h"
 #include "scene/scene_features.h"
 #include "scene/texture_sampler.h"
 
@@ -331,6 +332,7 @@ gpu::Material gpuMaterial(const Material& m) {
   g.iridescenceThicknessTexture = textureSlot(m.iridescenceThicknessTexture);
   g.anisotropy = glm::vec4(m.anisotropyStrength, std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation), 0.0f);
   g.anisotropyTexture = textureSlot(m.anisotropyTexture);
+  g.dispersion = glm::vec4(channelIors(m.ior, m.dispersion), m.hasDispersion() ? 1.0f : 0.0f);
   return g;
 }
 }  // namespace

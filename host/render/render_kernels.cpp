@@ -123,6 +123,7 @@ KernelPlan planKernels(const RenderSettings& s) {
                 {SPEC_HAS_SHEEN, s.features.sheen ? 1u : 0u},
                 {SPEC_HAS_IRIDESCENCE, s.features.iridescence ? 1u : 0u},
                 {SPEC_HAS_ANISOTROPY, s.features.anisotropy ? 1u : 0u},
+                {SPEC_HAS_DISPERSION, s.features.dispersion ? 1u : 0u},
                 {SPEC_HAS_DELTA, s.features.delta ? 1u : 0u},
                 {SPEC_RECORD_DEPTH_STATS, s.recordDepthStats ? 1u : 0u},
                 {SPEC_PIXEL_FILTER, s.filter.specSampling()},

@@ -26,7 +26,7 @@ constexpr ExtensionRow kExtensions[] = {
     {"KHR_materials_sheen", ""},
     {"KHR_materials_iridescence", ""},
     {"KHR_materials_anisotropy", ""},  // anisotropic GGX (microfacet.h) in the tangent frame
-    {"KHR_materials_dispersion", "dispersion is ignored"},
+    {"KHR_materials_dispersion", ""},  // a colour channel per path past a dispersive volume (scene/dispersion.h)
     {"KHR_materials_diffuse_transmission", "diffuse transmission is ignored"},
     {"KHR_materials_unlit", ""},                  // an emission shader of the base colour (gltf_loader.cpp, makeUnlit)
     {"KHR_materials_pbrSpecularGlossiness", ""},  // converted to metallic-roughness per texel (scene/spec_gloss.h)

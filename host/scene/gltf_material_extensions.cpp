@@ -60,8 +60,8 @@ const tinygltf::Value* extension(const tinygltf::Material& gltf, const char* nam
   return it != gltf.extensions.end() && it->second.IsObject() ? &it->second : nullptr;
 }
 
-// KHR_materials_iridescence and KHR_materials_anisotropy: a film on the base's Fresnel terms, and its specular
-// lobe stretched along a direction in the tangent plane.
+// KHR_materials_iridescence, _anisotropy and _dispersion: a film on the base's Fresnel terms, its specular lobe
+// stretched along a direction in the tangent plane, and its volume's ior by wavelength.
 template <class Reader>
 void applyFilmAndAnisotropy(const tinygltf::Material& gltf, Material& m, const Reader& reader) {
   constexpr double kHuge = std::numeric_limits<double>::max();
@@ -83,6 +83,8 @@ void applyFilmAndAnisotropy(const tinygltf::Material& gltf, Material& m, const R
     m.anisotropyRotation = r.number("anisotropyRotation", 0.0, -kHuge, kHuge);  // radians, from the tangent toward the bitangent
     m.anisotropyTexture = r.texture("anisotropyTexture");
   }
+  if (const tinygltf::Value* v = extension(gltf, "KHR_materials_dispersion"))
+    m.dispersion = reader(*v, "KHR_materials_dispersion").number("dispersion", 0.0, 0.0, kHuge);
 }
 
 }  // namespace

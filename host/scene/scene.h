@@ -58,6 +58,7 @@ struct Material {
   // KHR_materials_anisotropy: the specular lobe's stretch along a direction rotated from the tangent (radians);
   // its texture's red and green give the direction in tangent space, its blue scales the strength.
   float anisotropyStrength = 0.0f, anisotropyRotation = 0.0f;
+  float dispersion = 0.0f;  // KHR_materials_dispersion: 20 / the Abbe number (scene/dispersion.h)
   TextureRef transmissionTexture, clearcoatTexture, clearcoatRoughnessTexture, clearcoatNormalTexture, sheenColorTexture,
       sheenRoughnessTexture, specularTexture, specularColorTexture, iridescenceTexture, iridescenceThicknessTexture,
       anisotropyTexture;
@@ -91,6 +92,8 @@ struct Material {
   bool hasIridescence() const { return iridescence > 0.0f && std::max(iridescenceThicknessMin, iridescenceThicknessMax) > 0.0f; }
   // A stretched lobe: it needs a tangent frame (generated where the file has none).
   bool hasAnisotropy() const { return anisotropyStrength > 0.0f; }
+  // Dispersion acts where light refracts into a volume (the extension's rule).
+  bool hasDispersion() const { return dispersion > 0.0f && transmission > 0.0f && volumetric; }
   bool isEmissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
 

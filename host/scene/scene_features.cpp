@@ -37,6 +37,7 @@ SceneFeatures scanFeatures(const Scene& scene) {
     f.iridescence |= m.hasIridescence();
     bool baseSpecular = m.metallic > 0.0f || m.specular > 0.0f || m.transmission > 0.0f;
     f.anisotropy |= m.hasAnisotropy() && baseSpecular;
+    f.dispersion |= m.hasDispersion();
     f.textures |= m.hasAnisotropy() && baseSpecular;  // the tangent frame is read with the texture coordinates
     // Textures only scale roughness down: a roughness texture can make any lobe smooth.
     auto canBeSmooth = [](float roughness, const TextureRef& texture) {
@@ -67,6 +68,7 @@ SceneFeatures allFeatures(const SceneFeatures& scene) {
   f.sheen = true;
   f.iridescence = true;
   f.anisotropy = true;
+  f.dispersion = true;
   f.delta = true;
   f.punctualLights = std::max(f.punctualLights, 1u);
   f.environment = true;

@@ -28,6 +28,7 @@ struct SceneFeatures {
   bool sheen = false;           // KHR_materials_sheen
   bool iridescence = false;     // KHR_materials_iridescence
   bool anisotropy = false;      // KHR_materials_anisotropy (its tangent frames come with the textures' attributes)
+  bool dispersion = false;      // KHR_materials_dispersion on a volume: paths carry a colour channel past it
   bool delta = false;           // a lobe can be smooth (roughness^2 below kDeltaAlpha): delta BSDF samples
   uint32_t punctualLights = 0;  // KHR_lights_punctual instances
   // An environment light (Scene::environment): --environment's, or the file's world's (the studio, a white world).

@@ -37,6 +37,7 @@ uint64_t sceneFingerprint(const Scene& s) {
       h.add(film, sizeof(film));
       addTextureRef(h, m.iridescenceTexture), addTextureRef(h, m.iridescenceThicknessTexture);
     }
+    if (m.dispersion > 0.0f) h.add(&m.dispersion, sizeof(m.dispersion));
     if (m.hasAnisotropy()) {
       const float stretch[2] = {m.anisotropyStrength, m.anisotropyRotation};
       h.add(stretch, sizeof(stretch));

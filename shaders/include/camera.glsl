@@ -30,6 +30,7 @@ PathState cameraPath(uint id) {
   p.throughput = vec4(1.0);
   p.radiance = vec4(0.0, 0.0, 0.0, fs.weight);
   p.pixel = pixel;
+  if (kHasDispersion != 0u) p.pixel |= min(uint(sampleU(stream, kDimSpectralChannel) * 3.0), 2u) << kPathPixelBits;
   p.rngKey = stream.key;
   p.depth = 0u;
   p.rootPath = id;

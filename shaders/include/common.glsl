@@ -47,6 +47,7 @@ layout(constant_id = SPEC_HAS_CLEARCOAT) const uint kHasClearcoat = 1u;
 layout(constant_id = SPEC_HAS_SHEEN) const uint kHasSheen = 1u;
 layout(constant_id = SPEC_HAS_IRIDESCENCE) const uint kHasIridescence = 1u;
 layout(constant_id = SPEC_HAS_ANISOTROPY) const uint kHasAnisotropy = 1u;
+layout(constant_id = SPEC_HAS_DISPERSION) const uint kHasDispersion = 1u;
 layout(constant_id = SPEC_HAS_DELTA) const uint kHasDelta = 1u;
 layout(constant_id = SPEC_SAMPLER) const uint kSampler = 0u;
 layout(constant_id = SPEC_SAMPLER_LOG2_SPP) const uint kSamplerLog2Spp = 0u;
@@ -234,6 +235,7 @@ Material loadMaterial(uint index) {
   m.iridescenceThicknessTexture = materialSlot(t + 47);
   m.anisotropy = materialTexel(t + 50);
   m.anisotropyTexture = materialSlot(t + 51);
+  m.dispersion = materialTexel(t + 54);
   return m;
 }
 
@@ -284,7 +286,7 @@ bool allFinite(vec3 v) { return !any(isnan(v)) && !any(isinf(v)); }
 
 // A path's sample stream (sampler.h): its key, its pixel's sample number (the pass's first plus the root
 // path's sample slot), its pixel; and dimension `dim` of it from the sampler the kernels are specialized for.
-SampleStream pathStream(PathState p) { return SampleStream(p.rngKey, cameraPathSample(p.rootPath).y, p.pixel); }
+SampleStream pathStream(PathState p) { return SampleStream(p.rngKey, cameraPathSample(p.rootPath).y, pathPixelOf(p.pixel)); }
 SamplerShape samplerShape() { return SamplerShape(kSampleReplicates, pc.width, kSamplerLog2Spp, kSamplerDigits); }
 float sampleU(SampleStream s, uint dim) { return sampleDimension(kSampler, s, dim, samplerShape()); }
 vec2 sampleU2(SampleStream s, uint dim) { return samplePair(kSampler, s, dim, samplerShape()); }  // dim even

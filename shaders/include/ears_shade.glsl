@@ -54,7 +54,7 @@ EarsReading earsRead(uint key) {
 
 // The vertex's relative throughput t = beta / sqrt(I^2 + eps) per channel (the pixel's smoothed estimate I).
 vec3 earsRelativeThroughput(PathState path) {
-  vec3 estimate = loadPixelEstimate(path.pixel).rgb;
+  vec3 estimate = loadPixelEstimate(pathPixelOf(path.pixel)).rgb;
   return path.throughput.rgb / sqrt(estimate * estimate + earsHeader.epsilon);
 }
 

@@ -128,6 +128,22 @@ float anisotropyAt(Material m, inout SurfacePoint s) {
   return strength;
 }
 
+// KHR_materials_dispersion at a vertex of `path` on material m: a path past a dispersive volume's interface carries
+// one colour channel (chosen at the camera, each with probability 1/3) at the ior of that channel's wavelength. The
+// first time, its throughput is masked to the channel and scaled by 3, so every channel's expectation is kept; m's
+// ior becomes the channel's, for the Fresnel terms and the refraction alike.
+void takeSpectralChannel(inout PathState path, inout Material m) {
+  if (kHasDispersion == 0u || m.dispersion.w <= 0.0) return;
+  uint c = pathChannelOf(path.pixel);
+  if ((path.pixel & kPathChannelTaken) == 0u) {
+    vec3 mask = vec3(0.0);
+    mask[c] = 3.0;
+    path.throughput.rgb *= mask;
+    path.pixel |= kPathChannelTaken;
+  }
+  m.specularColor.w = m.dispersion[c];
+}
+
 // The material's parameters at s (factors times textures and vertex colours), its emission into s.emission
 // and its normal map into s.frame; a material with a specular lobe gets a shading normal whose mirror
 // direction of wo stays above the surface (normalForValidReflection).
@@ -370,7 +386,7 @@ bool prepareLightSample(PathState path, uint slot, SurfacePoint s, GltfMaterial 
   vec3 contribution = path.throughput.rgb * f * ls.arriving * (abs(wiLocal.z) * weight * share / ls.pdf);
   if (!allFinite(contribution)) ++rareCounts.y;  // still queued: it poisons the sample
   else if (!(maxComponent(contribution) > 0.0)) return false;
-  if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * loadPixelEstimate(path.pixel).w) {
+  if (kShadowRouletteThreshold > 0.0 && luminance(contribution) < kShadowRouletteThreshold * loadPixelEstimate(pathPixelOf(path.pixel)).w) {
     RouletteStep rr = fixedRoulette(kShadowRouletteQ, sampleU(stream, lightDim(depth, j, 3u)));
     if (!rr.survives) return false;
     contribution /= rr.survival;

@@ -14,7 +14,9 @@ void shadeCopy(uint i) {
   vec4 hit = loadHit(floatBitsToUint(path.radiance.z));  // the parent's: no stage writes hits before the next intersect
   vec3 wo = -path.direction.xyz;
   SurfacePoint s = surfaceAt(floatBitsToUint(hit.w), hit.yz, wo);
-  GltfMaterial gm = shadeSurface(loadMaterial(s.material), s, wo);
+  Material m = loadMaterial(s.material);
+  takeSpectralChannel(path, m);  // taken already where the parent took it (its queued path is after that)
+  GltfMaterial gm = shadeSurface(m, s, wo);
   vec3 poisoned;
   // qL is 0 unless the light cells decide (kEarsLightMax > 0): as a constant it folds the copy's light-sample loop
   // into straight code, which llvmpipe otherwise runs as a loop with its live state spilled around it.

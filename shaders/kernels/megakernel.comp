@@ -60,6 +60,7 @@ void tracePath(uint id) {
       s = surfaceAt(tri, hit.yz, wo);
       Material m = loadMaterial(s.material);
       path.throughput.rgb *= volumeTransmittance(m, s, hit.x);
+      takeSpectralChannel(path, m);
       uint depth = path.depth;
       gm = shadeSurface(m, s, wo);
       gathered = emissionAt(path, s, m, tri, hit, wo);

@@ -31,6 +31,7 @@ void shadeQueued(uint slot) {
   SurfacePoint s = surfaceAt(tri, hit.yz, wo);
   Material m = loadMaterial(s.material);
   path.throughput.rgb *= volumeTransmittance(m, s, hit.x);
+  takeSpectralChannel(path, m);
   uint depth = path.depth;
   GltfMaterial gm = shadeSurface(m, s, wo);
   vec3 gathered = emissionAt(path, s, m, tri, hit, wo);

@@ -37,7 +37,7 @@ void echoStructs() {
   putSlot(m.clearcoatNormalTexture); putSlot(m.sheenColorTexture); putSlot(m.sheenRoughnessTexture);
   putSlot(m.specularTexture); putSlot(m.specularColorTexture);
   put4(m.iridescence); putSlot(m.iridescenceTexture); putSlot(m.iridescenceThicknessTexture);
-  put4(m.anisotropy); putSlot(m.anisotropyTexture);
+  put4(m.anisotropy); putSlot(m.anisotropyTexture); put4(m.dispersion);
   FilmPixel f = film[0];
   put4(f.sum); put4(f.sumSq); put4(f.sumHigh); put4(f.sumSqHigh);
   for (uint r = 0u; r + 1u < kMaxSampleReplicates; ++r) put4(f.replicate[r]);

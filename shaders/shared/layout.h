@@ -123,6 +123,7 @@
   40  // the walk's register stack entries: 4, 8 or kBvhRegisterStackEntries (bvh.h registerStackEntries)
 #define SPEC_HAS_IRIDESCENCE 41  // 0: no KHR_materials_iridescence
 #define SPEC_HAS_ANISOTROPY 42   // 0: no KHR_materials_anisotropy
+#define SPEC_HAS_DISPERSION 43   // 0: no KHR_materials_dispersion
 
 VKMC_BEGIN_NAMESPACE
 
@@ -153,11 +154,18 @@ struct PathState {
   vec4 direction;   // xyz: unit direction, w: pdf of the direction
   vec4 throughput;  // rgb: path throughput, w: product of the split factors that divided it (roulette undoes none)
   vec4 radiance;    // rgb: radiance gathered so far, w: the sample's pixel-filter weight (accumulate applies it)
-  uint pixel;
-  uint rngKey;    // random-number key (a split child gets its own)
-  uint depth;     // scattering events so far
-  uint rootPath;  // the slot of the path's sample, where its radiance accumulates
+  uint pixel;       // the pixel (low kPathPixelBits), then its spectral channel (pathChannel) and whether it is taken
+  uint rngKey;      // random-number key (a split child gets its own)
+  uint depth;       // scattering events so far
+  uint rootPath;    // the slot of the path's sample, where its radiance accumulates
 };
+
+// KHR_materials_dispersion: a path's colour channel (0-2, chosen at the camera) above its pixel's bits, and the bit
+// that says its throughput has been masked to that channel (shading.glsl takeSpectralChannel).
+VKMC_CONST uint kPathPixelBits = 29u;
+VKMC_CONST uint kPathChannelTaken = 0x80000000u;
+VKMC_FN uint pathPixelOf(uint packed) { return packed & ((1u << kPathPixelBits) - 1u); }
+VKMC_FN uint pathChannelOf(uint packed) { return (packed >> kPathPixelBits) & 3u; }
 
 VKMC_CONST uint kPathTexels = 5u;       // 16-byte texels of a PathState (BINDING_PATH_TEXELS)
 VKMC_CONST uint kShadowRayTexels = 3u;  // and of a ShadowRay (BINDING_SHADOW_TEXELS)
@@ -199,9 +207,12 @@ struct Material {
   TextureSlot iridescenceTexture, iridescenceThicknessTexture;
   vec4 anisotropy;  // KHR_materials_anisotropy: x strength, y and z cos and sin of its rotation, w unused
   TextureSlot anisotropyTexture;
+  // KHR_materials_dispersion: rgb the volume's ior at the red, green and blue channels' wavelengths; w 1 where it
+  // disperses (a volume that transmits), else 0.
+  vec4 dispersion;
 };
 
-VKMC_CONST uint kMaterialTexels = 54u;  // 16-byte texels of a Material (BINDING_MATERIALS)
+VKMC_CONST uint kMaterialTexels = 55u;  // 16-byte texels of a Material (BINDING_MATERIALS)
 
 // A KHR_lights_punctual light instance in world space (punctual_light.h samples it).
 struct PunctualLight {
@@ -367,7 +378,7 @@ static_assert(sizeof(PathState) == 80);
 static_assert(offsetof(PathState, pixel) == 64 && offsetof(PathState, rootPath) == 76);
 static_assert(sizeof(ShadowRay) == 48);
 static_assert(sizeof(TextureSlot) == 48);
-static_assert(sizeof(Material) == 864 && offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32);
+static_assert(sizeof(Material) == 880 && offsetof(Material, flags) == 28 && offsetof(Material, metallic) == 32);
 static_assert(offsetof(Material, baseColorTexture) == 48 && offsetof(Material, emissiveTexture) == 192);
 // loadMaterial (common.glsl) reads these texels.
 static_assert(sizeof(Material) == 16 * kMaterialTexels && offsetof(Material, specularColor) == 16 * 15 &&
@@ -375,7 +386,7 @@ static_assert(sizeof(Material) == 16 * kMaterialTexels && offsetof(Material, spe
               offsetof(Material, specularColorTexture) == 16 * 40 && sizeof(TextureSlot) == 16 * 3 &&
               offsetof(Material, iridescence) == 16 * 43 && offsetof(Material, iridescenceTexture) == 16 * 44 &&
               offsetof(Material, iridescenceThicknessTexture) == 16 * 47 && offsetof(Material, anisotropy) == 16 * 50 &&
-              offsetof(Material, anisotropyTexture) == 16 * 51);
+              offsetof(Material, anisotropyTexture) == 16 * 51 && offsetof(Material, dispersion) == 16 * 54);
 static_assert(sizeof(PathState) == 16 * kPathTexels && sizeof(ShadowRay) == 16 * kShadowRayTexels);
 static_assert(offsetof(Material, specularColor) == 240 && offsetof(Material, transmissionTexture) == 304);
 static_assert(sizeof(PunctualLight) == 64 && offsetof(PunctualLight, kind) == 48 && offsetof(PunctualLight, cosInner) == 56);

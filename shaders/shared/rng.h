@@ -7,12 +7,13 @@
 #include "glsl_cpp.h"
 VKMC_BEGIN_NAMESPACE
 
-VKMC_CONST uint kDimsCamera = 4u;         // pixel jitter (pair 0), camera-ray roulette, unused
-VKMC_CONST uint kDimCameraRoulette = 2u;  // within the camera block
-VKMC_CONST uint kDimsPerBounce = 10u;     // five pairs: bsdf, light point, (lobe, roulette), (light select,
-                                          // shadow roulette), (split, light split)
-VKMC_CONST uint kDimBsdf = 0u;            // and 1
-VKMC_CONST uint kDimLightPoint = 2u;      // and 3
+VKMC_CONST uint kDimsCamera = 4u;          // pixel jitter (pair 0), camera-ray roulette, spectral channel
+VKMC_CONST uint kDimCameraRoulette = 2u;   // within the camera block
+VKMC_CONST uint kDimSpectralChannel = 3u;  // the colour channel a path keeps past a dispersive volume
+VKMC_CONST uint kDimsPerBounce = 10u;      // five pairs: bsdf, light point, (lobe, roulette), (light select,
+                                           // shadow roulette), (split, light split)
+VKMC_CONST uint kDimBsdf = 0u;             // and 1
+VKMC_CONST uint kDimLightPoint = 2u;       // and 3
 VKMC_CONST uint kDimBsdfLobe = 4u;
 VKMC_CONST uint kDimRoulette = 5u;
 VKMC_CONST uint kDimLightSelect = 6u;

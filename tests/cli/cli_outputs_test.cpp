@@ -333,7 +333,7 @@ TEST(CliOutputs, AnOutputNamingTheScenesBufferIsRefused) {
   fs::create_directories(d);
   const std::string scene = writeGltf(d, "quad", quadSpec());  // quad.gltf and its buffer quad.bin
   const std::string bin = (d / "quad.bin").string(), before = slurp(bin);
-  for (const std::string& flag : {"-o", "--png", "--checkpoint"}) {
+  for (const std::string flag : {"-o", "--png", "--checkpoint"}) {
     const std::string extra = flag == "-o" ? "" : " -o " + (d / "out.exr").string();
     RunResult r = runVkmc(render(scene) + extra + " " + flag + " " + bin);
     EXPECT_EQ(r.code, 1) << flag << ": " << r.err;

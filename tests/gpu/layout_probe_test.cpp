@@ -64,7 +64,7 @@ Words echoedByName(const gpu::PathState& p, const gpu::ShadowRay& r, const gpu::
         &m.sheenColorTexture, &m.sheenRoughnessTexture, &m.specularTexture, &m.specularColorTexture})
     putSlot(*t);
   e.put4(m.iridescence), putSlot(m.iridescenceTexture), putSlot(m.iridescenceThicknessTexture);
-  e.put4(m.anisotropy), putSlot(m.anisotropyTexture);
+  e.put4(m.anisotropy), putSlot(m.anisotropyTexture), e.put4(m.dispersion);
   e.put4(f.sum), e.put4(f.sumSq), e.put4(f.sumHigh), e.put4(f.sumSqHigh);
   for (const glm::vec4& r : f.replicate) e.put4(r);
   e.put(c.rayQueueCount[0]), e.put(c.rayQueueCount[1]), e.put(c.shadowQueueCount), e.put(c.splitChildren);

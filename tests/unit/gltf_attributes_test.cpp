@@ -17,12 +17,6 @@ std::filesystem::path dir() {
   return d;
 }
 
-bool hasWarning(const Scene& s, const std::string& text) {
-  for (const std::string& w : s.warnings)
-    if (w.find(text) != std::string::npos) return true;
-  return false;
-}
-
 // The unit quad (z = 0, facing +z, u along x and v along y): its POSITION, index and TEXCOORD accessors.
 struct Quad {
   int position, indices, uv;

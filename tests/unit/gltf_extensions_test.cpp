@@ -40,27 +40,29 @@ TEST(GltfExtensions, RequiredExtensionsVkmcDoesNotImplementAreRefusedByName) {
   std::string unknown = test::loadError(quadUsing("unknown", "\"VENDOR_magic\"", "\"VENDOR_magic\""));
   EXPECT_NE(unknown.find("requires extension VENDOR_magic, which vkmc does not know"), std::string::npos) << unknown;
   EXPECT_EQ(unknown.find('\n'), std::string::npos);
-  std::string dispersion =
-      test::loadError(quadUsing("dispersion", "\"KHR_materials_dispersion\"", "\"KHR_materials_dispersion\""));
-  EXPECT_NE(dispersion.find("requires extension KHR_materials_dispersion, which vkmc does not implement in full"),
+  std::string partial = test::loadError(
+      quadUsing("diffuse_transmission", "\"KHR_materials_diffuse_transmission\"", "\"KHR_materials_diffuse_transmission\""));
+  EXPECT_NE(partial.find("requires extension KHR_materials_diffuse_transmission, which vkmc does not implement in full"),
             std::string::npos)
-      << dispersion;
+      << partial;
   // A refusal does not read as if the file were rendered with the extension ignored.
-  EXPECT_NE(dispersion.find("so it cannot render the file as required"), std::string::npos) << dispersion;
-  EXPECT_FALSE(dispersion.ends_with("is ignored")) << dispersion;
+  EXPECT_NE(partial.find("so it cannot render the file as required"), std::string::npos) << partial;
+  EXPECT_FALSE(partial.ends_with("is ignored")) << partial;
   // Implemented in full: a file that requires them loads.
-  for (const char* name : {"KHR_materials_emissive_strength", "KHR_draco_mesh_compression", "EXT_meshopt_compression",
-                           "KHR_mesh_quantization", "EXT_mesh_gpu_instancing", "KHR_materials_transmission",
-                           "KHR_materials_volume", "KHR_materials_ior", "KHR_materials_clearcoat", "KHR_materials_sheen",
-                           "KHR_materials_specular", "KHR_materials_iridescence", "KHR_materials_anisotropy"}) {
+  for (const char* name :
+       {"KHR_materials_emissive_strength", "KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_mesh_quantization",
+        "EXT_mesh_gpu_instancing", "KHR_materials_transmission", "KHR_materials_volume", "KHR_materials_ior",
+        "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_specular", "KHR_materials_iridescence",
+        "KHR_materials_anisotropy", "KHR_materials_dispersion"}) {
     std::string quoted = "\"" + std::string(name) + "\"";
     EXPECT_EQ(test::loadError(quadUsing(name, quoted, quoted)), "") << name;
   }
 }
 
 TEST(GltfExtensions, UsedExtensionsThatAreIgnoredAreNamedInWarnings) {
-  Scene s = loadGltf(quadUsing("used", "\"KHR_materials_dispersion\",\"KHR_materials_emissive_strength\",\"VENDOR_magic\"", ""));
-  EXPECT_TRUE(hasWarning(s, "extension KHR_materials_dispersion: dispersion is ignored"));
+  Scene s = loadGltf(
+      quadUsing("used", "\"KHR_materials_diffuse_transmission\",\"KHR_materials_emissive_strength\",\"VENDOR_magic\"", ""));
+  EXPECT_TRUE(hasWarning(s, "extension KHR_materials_diffuse_transmission: diffuse transmission is ignored"));
   EXPECT_TRUE(hasWarning(s, "extension VENDOR_magic is unknown to vkmc"));
   EXPECT_FALSE(hasWarning(s, "KHR_materials_emissive_strength"));  // implemented
   EXPECT_EQ(s.warnings.size(), 2u);

@@ -2,6 +2,7 @@
 // and one error line naming the material, the extension and the key for a value out of range.
 #include <gtest/gtest.h>
 
+#include "scene/dispersion.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_features.h"
 #include "support/test_scenes.h"
@@ -106,6 +107,29 @@ TEST(MaterialExtensions, AnisotropyIsReadWithItsTangents) {
   EXPECT_NE(test::loadError(quadWith("overstretched", R"("KHR_materials_anisotropy":{"anisotropyStrength":1.5})"))
                 .find("KHR_materials_anisotropy.anisotropyStrength"),
             std::string::npos);
+}
+
+// KHR_materials_dispersion: read, and a feature only where the material refracts into a volume (the extension's
+// rule); the channels' iors from Cauchy's fit: the file's ior at the d line, n_F - n_C = (n_d - 1) / V with
+// V = 20 / dispersion, blue above green above red, and all equal without dispersion.
+TEST(MaterialExtensions, DispersionIsReadAndSpreadsTheIor) {
+  Scene s = loadGltf(quadWith("prism", R"("KHR_materials_dispersion":{"dispersion":2},
+    "KHR_materials_transmission":{"transmissionFactor":1},"KHR_materials_volume":{"thicknessFactor":1})"));
+  EXPECT_FLOAT_EQ(s.materials[0].dispersion, 2.0f);
+  EXPECT_TRUE(scanFeatures(s).dispersion);
+  Scene thin = loadGltf(quadWith("thin", R"("KHR_materials_dispersion":{"dispersion":2},
+    "KHR_materials_transmission":{"transmissionFactor":1})"));
+  EXPECT_FALSE(scanFeatures(thin).dispersion) << "thin-walled: nothing refracts";
+  EXPECT_NE(test::loadError(quadWith("negative", R"("KHR_materials_dispersion":{"dispersion":-1})"))
+                .find("KHR_materials_dispersion.dispersion"),
+            std::string::npos);
+  const float ior = 1.5f, dispersion = 2.0f;  // Abbe number 10
+  EXPECT_NEAR(iorAtWavelength(ior, dispersion, 587.6f), ior, 1e-6f);
+  EXPECT_NEAR(iorAtWavelength(ior, dispersion, 486.1f) - iorAtWavelength(ior, dispersion, 656.3f), (ior - 1.0f) / 10.0f, 1e-5f);
+  const glm::vec3 rgb = channelIors(ior, dispersion);
+  EXPECT_LT(rgb.r, rgb.g);
+  EXPECT_LT(rgb.g, rgb.b);
+  EXPECT_EQ(channelIors(ior, 0.0f), glm::vec3(ior));
 }
 
 // KHR_materials_ior has no upper bound: 1000 is valid (a near-perfect mirror); beyond 1e4 it renders as 1e4.
