@@ -288,7 +288,8 @@ RenderSettings renderSettings(const RenderOptions& options, const Scene& scene, 
   if (settings.estimator.sampler == Sampler::Independent)
     settings.estimator.replicates = std::max(2u, settings.estimator.replicates);
   settings.features = pipelineFeatures(scanFeatures(scene), bvh, options.specialize);
-  if (options.withoutTextures) settings.features.textures = settings.features.normalMaps = settings.features.alpha = false;
+  if (options.withoutTextures)  // anisotropy too: its direction is read with the texture coordinates' tangents
+    settings.features.textures = settings.features.normalMaps = settings.features.alpha = settings.features.anisotropy = false;
   settings.seed = options.seed;
   settings.background = options.background.value_or(glm::vec3(0.0f));
   const AddedLight added = addedLight(options, scene);

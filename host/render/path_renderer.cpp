@@ -186,7 +186,7 @@ void PathRenderer::collectPilot(uint32_t pathCount) {
     PilotPath p;
     p.radiance = gpu::luminance(glm::vec3(paths[i].radiance));
     p.lastDepth = paths[i].depth;
-    p.pixel = paths[i].pixel;
+    p.pixel = gpu::pathPixelOf(paths[i].pixel);  // without the spectral channel's bits above it
     for (uint32_t d = 0; d < kRouletteTableDepths; ++d) {
       p.beta[d] = stats[i * kRouletteTableDepths + d].x;
       p.gathered[d] = stats[i * kRouletteTableDepths + d].y;

@@ -155,6 +155,8 @@ void applyMaterialExtensions(const tinygltf::Material& gltf, Material& m, const 
   applyFilmAndAnisotropy(gltf, m, reader);
   if (m.transmission > 0.0f && !m.volumetric && m.attenuation != glm::vec3(0.0f))
     warnings.push_back(name + ": KHR_materials_volume attenuation without a thickness is ignored (the surface is thin-walled)");
+  if (m.dispersion > 0.0f && !m.hasDispersion())
+    warnings.push_back(name + ": KHR_materials_dispersion without transmission into a KHR_materials_volume is ignored");
 }
 
 }  // namespace vkmc

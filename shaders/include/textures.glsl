@@ -44,7 +44,7 @@ SurfaceAttributes attributesAt(uint tri, vec3 b) {
   a.uv1 = b.x * decodeUv(t1, 3u) + b.y * decodeUv(t2, 4u) + b.z * decodeUv(t2, 5u);
   uvec4 colors = imageLoad(triangleAttributes, base + 4);
   a.color = b.x * decodeColor(colors, 0u) + b.y * decodeColor(colors, 1u) + b.z * decodeColor(colors, 2u);
-  if (kHasNormalMaps != 0u) {
+  if (kHasNormalMaps != 0u || kHasAnisotropy != 0u) {  // the tangent frame: a normal map's, an anisotropy's direction
     uvec4 tangents = imageLoad(triangleAttributes, base + 3);
     vec4 k0 = decodeTangent(tangents, 0u), k1 = decodeTangent(tangents, 1u), k2 = decodeTangent(tangents, 2u);
     a.tangent = vec4(b.x * k0.xyz + b.y * k1.xyz + b.z * k2.xyz, k0.w);

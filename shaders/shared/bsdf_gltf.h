@@ -85,9 +85,12 @@ VKMC_FN void setTransmission(INOUT(GltfMaterial) m, float transmission, float et
 
 // KHR_materials_anisotropy: alpha along the anisotropy direction (local x) mix(alpha, 1, strength^2), across it
 // alpha (the extension's alphaT and alphaB).
+// A rough lobe keeps both alphas at least 1e-4 (pbrt-v4's clamp): a smooth base made rough along one axis would
+// otherwise divide by alpha.y = 0 in D and in its visible normals (NaN samples).
 VKMC_FN void setAnisotropy(INOUT(GltfMaterial) m, float strength) {
   float s = clamp(strength, 0.0f, 1.0f);
   m.alpha.x = mix(m.alpha.y, 1.0f, s * s);
+  if (!isDeltaAlpha(m.alpha)) m.alpha = max(m.alpha, vec2(1e-4f));
 }
 
 VKMC_FN void setClearcoat(INOUT(GltfMaterial) m, float clearcoat, float roughness, vec3 normal) {

@@ -160,11 +160,12 @@ TEST(IndexMatchedVolume, RoughIorOneIsInvisibleInTheGlassFurnace) {
 // direction: along x with anisotropyRotation 0, along y with pi/2 (the brightness's second moments about the
 // highlight's centre, x against y); and light sampling alone and BSDF sampling alone agree on the image mean.
 namespace {
-RenderOutcome brushedPlate(float rotation, const EstimatorConfig& e) {
+RenderOutcome brushedPlate(float rotation, const EstimatorConfig& e, const std::string& roughness = "0.3") {
   const auto dir = test::makeTempDir("brushed_plate");
   const std::string name = "brushed" + std::to_string(int(rotation * 100));
   const std::string materials =
-      R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":1,"roughnessFactor":0.3},)"
+      R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":1,"roughnessFactor":)" + roughness +
+      "},"
       R"("extensions":{"KHR_materials_anisotropy":{"anisotropyStrength":0.9,"anisotropyRotation":)" +
       std::to_string(rotation) + "}}}," + R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1]},"emissiveFactor":[1,1,1],)" +
       R"("extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":20}}})";
@@ -179,16 +180,25 @@ RenderOutcome brushedPlate(float rotation, const EstimatorConfig& e) {
   return runRender(sharedContext(), o);
 }
 
-// The brightness-weighted variance of x over that of y, about the brightness's centroid.
-double stretchXOverY(const Film& f) {
-  double w = 0, sx = 0, sy = 0, sxx = 0, syy = 0;
+// The brightness's second moments about its centroid, in image coordinates (x right, y down): var x, var y, cov.
+glm::dvec3 brightnessMoments(const Film& f) {
+  double w = 0, sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0;
   for (uint32_t y = 0; y < f.height; ++y)
     for (uint32_t x = 0; x < f.width; ++x) {
       double v = f.mean(y * f.width + x, 1);
-      w += v, sx += v * x, sy += v * y, sxx += v * x * x, syy += v * y * y;
+      w += v, sx += v * x, sy += v * y, sxx += v * x * x, syy += v * y * y, sxy += v * x * y;
     }
   double mx = sx / w, my = sy / w;
-  return (sxx / w - mx * mx) / (syy / w - my * my);
+  return {sxx / w - mx * mx, syy / w - my * my, sxy / w - mx * my};
+}
+double stretchXOverY(const Film& f) {
+  const glm::dvec3 m = brightnessMoments(f);
+  return m.x / m.y;
+}
+// The correlation of x and y under the brightness: positive along the image's main diagonal (right and down).
+double diagonalStretch(const Film& f) {
+  const glm::dvec3 m = brightnessMoments(f);
+  return m.z / std::sqrt(m.x * m.y);
 }
 }  // namespace
 
@@ -200,6 +210,19 @@ TEST(Anisotropy, TheHighlightStretchesAlongTheRotatedDirection) {
   const double a = stretchXOverY(along.film), c = stretchXOverY(across.film);
   EXPECT_GT(a, 2.0) << "rotation 0: stretched along x (the tangent)";
   EXPECT_LT(c, 0.5) << "rotation pi/2: stretched along y (the bitangent)";
+  // The sense of the rotation: counter-clockwise from the tangent (+x) toward the bitangent. The plate's v runs up
+  // the world's +y, so its image's +v, and with it glTF's bitangent (a normal map's green, up the image), is world
+  // -y: pi/4 is along (x, -y) in the world, right and down the picture.
+  EXPECT_GT(diagonalStretch(brushedPlate(0.7853982f, EstimatorConfig{}).film), 0.5);
+  EXPECT_LT(diagonalStretch(brushedPlate(-0.7853982f, EstimatorConfig{}).film), -0.5);
+}
+
+// A smooth base stretched along one axis (Khronos' AnisotropyDiscTest: roughness 0, strength 1): rough along the
+// direction, alpha 1e-4 across it, and no non-finite sample (alpha 0 across divided by zero).
+TEST(Anisotropy, ASmoothBaseStretchedAlongOneAxisStaysFinite) {
+  const RenderOutcome r = brushedPlate(0.3f, EstimatorConfig{}, "0.0");
+  EXPECT_EQ(r.film.totalNonfinite(), 0u);
+  EXPECT_GT(stretchXOverY(r.film), 2.0);
 }
 
 TEST(Anisotropy, LightSamplingAndBsdfSamplingAgree) {

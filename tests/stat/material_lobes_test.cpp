@@ -182,6 +182,21 @@ TEST(DeltaLobes, SmoothDielectricOverWhiteDiffuseConservesEnergy) {
     }
 }
 
+// A smooth base stretched along one axis (roughness 0, strength 0.8): rough along x, alpha clamped to 1e-4 across it
+// (alpha 0 divided by zero: every sample NaN). Its samples and their weights and pdfs stay finite.
+TEST(Anisotropy, ASmoothBaseStretchedAlongOneAxisIsFinite) {
+  GltfMaterial m = makeGltfMaterial(vec3(0.9f), 1.0f, 0.0f, 1.0f);
+  setAnisotropy(m, 0.8f);
+  ASSERT_FALSE(isDeltaAlpha(m.alpha));
+  for (float cosO : {0.9f, 0.4f})
+    for (uint32_t i = 0; i < 20000; ++i) {
+      const float sinO = std::sqrt(1.0f - cosO * cosO);
+      vec3 wo(sinO * std::cos(0.5f), sinO * std::sin(0.5f), cosO);
+      BsdfSample s = sampleGltfBsdf(m, wo, u3(i, 38));
+      ASSERT_TRUE(std::isfinite(s.weight.x) && std::isfinite(s.pdf)) << "cos " << cosO << " sample " << i;
+    }
+}
+
 // f(wo, wi) = f(wi, wo) for reflection; for refraction the generalized reciprocity of radiance,
 // f(wo, wi) / n_o^2 = f(wi, wo) / n_i^2: with wo outside and wi inside glass of index eta, f(wo, wi) eta^2 = f(wi, wo).
 TEST(Reciprocity, ReflectionAndRefraction) {

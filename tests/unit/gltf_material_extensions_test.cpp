@@ -120,6 +120,9 @@ TEST(MaterialExtensions, DispersionIsReadAndSpreadsTheIor) {
   Scene thin = loadGltf(quadWith("thin", R"("KHR_materials_dispersion":{"dispersion":2},
     "KHR_materials_transmission":{"transmissionFactor":1})"));
   EXPECT_FALSE(scanFeatures(thin).dispersion) << "thin-walled: nothing refracts";
+  ASSERT_EQ(thin.warnings.size(), 1u);
+  EXPECT_NE(thin.warnings[0].find("KHR_materials_dispersion without transmission into a KHR_materials_volume"), std::string::npos)
+      << thin.warnings[0];
   EXPECT_NE(test::loadError(quadWith("negative", R"("KHR_materials_dispersion":{"dispersion":-1})"))
                 .find("KHR_materials_dispersion.dispersion"),
             std::string::npos);
@@ -130,6 +133,7 @@ TEST(MaterialExtensions, DispersionIsReadAndSpreadsTheIor) {
   EXPECT_LT(rgb.r, rgb.g);
   EXPECT_LT(rgb.g, rgb.b);
   EXPECT_EQ(channelIors(ior, 0.0f), glm::vec3(ior));
+  EXPECT_EQ(iorAtWavelength(ior, 500.0f, 630.0f), 1.0f) << "the extension clamps the ior at 1";
 }
 
 // KHR_materials_ior has no upper bound: 1000 is valid (a near-perfect mirror); beyond 1e4 it renders as 1e4.

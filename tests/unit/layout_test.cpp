@@ -13,7 +13,7 @@ using vkmc::test::zTest;
 TEST(Layout, Std430SizesMatchGlsl) {
   EXPECT_EQ(sizeof(PathState), 80u);
   EXPECT_EQ(sizeof(ShadowRay), 48u);
-  EXPECT_EQ(sizeof(Material), 800u);
+  EXPECT_EQ(sizeof(Material), 880u);
   EXPECT_EQ(sizeof(TextureSlot), 48u);
   EXPECT_EQ(sizeof(FilmPixel), 64u + 16u * (kMaxSampleReplicates - 1u));
   EXPECT_EQ(double(kFilmHighThreshold), std::ldexp(1.0, 56));
