@@ -62,8 +62,8 @@ void validateOptions(const RenderOptions& o) {
     throw Error("--environment-rotation must be a number of degrees between -360 and 360");
   if (!(o.environmentStrength >= 0.0f && o.environmentStrength <= 1e9f))
     throw Error("--environment-strength must be between 0 and 1e9");
-  if (o.environmentPath.empty() && (o.environmentRotation != 0.0f || o.environmentStrength != 1.0f))
-    throw Error("--environment-rotation and --environment-strength need --environment");
+  if (o.environmentPath.empty() && o.background && (o.environmentRotation != 0.0f || o.environmentStrength != 1.0f))
+    throw Error("--environment-rotation and --environment-strength need an environment, and --background replaces it");
   validatePixelFilter(o.filter);
   if (!(o.timeBudget >= 0.0) || o.timeBudget > 1e6) throw Error("--time-budget must be between 0 and 1e6 seconds");
   if (!(o.targetError >= 0.0 && o.targetError < 1e6)) throw Error("--target-error must be a relMSE above 0");
@@ -166,8 +166,12 @@ void addEnvironmentLight(const RenderOptions& options, Scene& scene, RenderOutco
       scene.environment =
           readEnvironmentMap(options.environmentPath, options.environmentRotation, options.environmentStrength, maxTexels);
       break;
-    case AddedLight::White: scene.environment = EnvironmentMap::constant(glm::vec3(1.0f)); break;
-    case AddedLight::None: break;
+    case AddedLight::White: scene.environment = EnvironmentMap::constant(glm::vec3(options.environmentStrength)); break;
+    case AddedLight::None:
+      if (options.environmentRotation != 0.0f || options.environmentStrength != 1.0f)
+        throw Error("--environment-rotation and --environment-strength need an environment, and " + options.scenePath +
+                    " declares its world lights-only (give --environment studio)");
+      break;
   }
   out.environment = scene.environment ? scene.environment->source : "";
 }

@@ -555,6 +555,20 @@ TEST(Cli, AFileIsLitByTheStudioAndBackgroundReplacesIt) {
   ASSERT_EQ(black.code, 0) << black.err;
   EXPECT_NE(black.err.find("the image is black"), std::string::npos) << black.err;
   EXPECT_EQ(nlohmann::json::parse(slurp(report))["mean"][0].get<double>(), 0.0);
+  // --environment-strength scales the default studio as it scales --environment's (the lit quad, doubled; the
+  // backdrop that escaped camera rays see stays), and
+  // is refused where --background leaves no environment, or the file declares its world lights-only.
+  const double litMean = j["mean"][0].get<double>();
+  RunResult doubled = runVkmc(common + " --environment-strength 2");
+  ASSERT_EQ(doubled.code, 0) << doubled.err;
+  EXPECT_GT(nlohmann::json::parse(slurp(report))["mean"][0].get<double>(), 1.3 * litMean);
+  RunResult refused = runVkmc(common + " --background 0,0,0 --environment-rotation 30");
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_NE(refused.err.find("need an environment, and --background replaces it"), std::string::npos) << refused.err;
+  RunResult lightsOnly = runVkmc("render " + cornell() + " --width 16 --height 16 --spp 4 -q -o " +
+                                 (workDir() / "lights_only.exr").string() + " --environment-strength 2");
+  EXPECT_EQ(lightsOnly.code, 1);
+  EXPECT_NE(lightsOnly.err.find("declares its world lights-only"), std::string::npos) << lightsOnly.err;
 }
 
 // The default chooses its estimator only where its pilots fit; elsewhere the fixed defaults render and the report
