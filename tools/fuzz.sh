@@ -7,7 +7,7 @@
 #   bash tools/fuzz.sh build                      only builds the harnesses (tools/test.sh does, so a run is a run)
 # First it replays tests/fuzz/regressions/ (crafted files that once crashed or over-read) under the sanitizers.
 # The glTF corpus is seeded from scenes/, ../shared/scenes (files up to 1 MB, with their .bin files beside them),
-# the regressions and tools/fuzz/make_gltf_seeds.cpp (Draco, meshopt, embedded PNG, JPEG and WebP); the readers' from tools/fuzz/make_seeds.py, small images of the scenes and a small EXR.
+# the regressions and tools/fuzz/make_gltf_seeds.cpp (Draco, meshopt, embedded PNG, JPEG and WebP); the readers' from tools/fuzz/make_seeds.py, small images of the scenes, the KTX2 test textures and a small EXR.
 # Corpora stay in build/fuzz/corpus-HARNESS between runs; findings go to build/fuzz/findings/. A hang is an input
 # that used more than its CPU time (tools/fuzz/cpu_timeout.h), so a busy machine gives no false timeouts.
 # Exits 77 (skipped) when clang or its libFuzzer runtime is missing, non-zero on a finding.
@@ -53,6 +53,7 @@ python3 tools/fuzz/make_seeds.py "$out/reader-seeds"
 mkdir -p "$out/reader-seeds/exr_fuzzer"
 find scenes ../shared/scenes -maxdepth 3 \( -name '*.png' -o -name '*.jpg' \) -size -256k 2>/dev/null | head -n 8 |
   while read -r f; do cp "$f" "$out/reader-seeds/image_fuzzer/"; done
+cp tests/unit/data/ktx2/*.ktx2 "$out/reader-seeds/image_fuzzer/"  # ETC1S and UASTC (Basis Universal's encoder)
 if [[ -x build/vkmc ]]; then
   build/vkmc render scenes/cornell_box.gltf --width 8 --height 8 --spp 2 -q -o "$out/reader-seeds/exr_fuzzer/small.exr" \
     >/dev/null 2>&1 || true

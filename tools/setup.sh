@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config libvulkan-dev mesa-vulkan-drivers glslang-tools spirv-tools libglm-dev libtinygltf-dev
           libopenexr-dev openexr libgtest-dev libcli11-dev nlohmann-json3-dev libpng-dev libstb-dev libdraco-dev
-          libmeshoptimizer-dev libjpeg-dev libwebp-dev libxml2-utils python3)
+          libmeshoptimizer-dev libjpeg-dev libwebp-dev libzstd-dev libxml2-utils python3)
 [[ ${1:-} == --test-tools ]] && packages+=(openmpi-bin libopenmpi-dev clang clang-format libclang-rt-dev)
 missing=()
 for p in "${packages[@]}"; do

@@ -16,9 +16,9 @@ constexpr ExtensionRow kExtensions[] = {
     {"KHR_materials_specular", ""},  // factor, colour and textures (scene/gltf_material_extensions.cpp)
     {"KHR_lights_punctual", ""},     // range is ignored (physically based), with a warning
     {"KHR_texture_transform", ""},
-    {"KHR_texture_basisu", "KTX2 images are not decoded (a texture whose core source is PNG, JPEG or WebP uses that)"},
-    {"EXT_texture_webp", ""},  // libwebp (scene/image_decode.cpp); the core source is the fallback
-    {"EXT_texture_avif", "AVIF images are not decoded (a texture whose core source is PNG, JPEG or WebP uses that)"},
+    {"KHR_texture_basisu", ""},  // KTX2 transcoded by the vendored Basis Universal (scene/ktx2_decode.cpp)
+    {"EXT_texture_webp", ""},    // libwebp (scene/image_decode.cpp); the core source is the fallback
+    {"EXT_texture_avif", "AVIF images are not decoded (a texture whose core source is PNG, JPEG, WebP or KTX2 uses that)"},
     {"KHR_materials_transmission", ""},  // bsdf_gltf.h; shadow rays do not pass it (docs/manual/scenes.md)
     {"KHR_materials_volume", ""},        // refraction and Beer-Lambert attenuation; thicknessTexture is not needed
     {"KHR_materials_ior", ""},

@@ -1,4 +1,4 @@
-// PNG, JPEG and WebP decoding (see the header).
+// PNG, JPEG, WebP and KTX2 decoding (see the header).
 #include "scene/image_decode.h"
 
 #include <png.h>
@@ -14,6 +14,7 @@
 #include <string>
 
 #include "error.h"
+#include "scene/ktx2_decode.h"
 
 namespace vkmc {
 namespace {
@@ -128,6 +129,7 @@ ImageFormat imageFormatOf(const unsigned char* bytes, size_t size) {
   if (size >= 8 && std::memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0) return ImageFormat::Png;
   if (size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF) return ImageFormat::Jpeg;
   if (size >= 12 && std::memcmp(bytes, "RIFF", 4) == 0 && std::memcmp(bytes + 8, "WEBP", 4) == 0) return ImageFormat::WebP;
+  if (isKtx2(bytes, size)) return ImageFormat::Ktx2;
   return ImageFormat::Other;
 }
 
@@ -142,9 +144,10 @@ DecodedImage decodeImage(const unsigned char* bytes, size_t size, uint32_t maxSi
       throw Error(why);
     }
     case ImageFormat::WebP: return decodeWebp(bytes, size, maxSide, maxTexels);
+    case ImageFormat::Ktx2: return decodeKtx2(bytes, size, maxSide, maxTexels);
     case ImageFormat::Other: break;
   }
-  throw Error("not PNG, JPEG or WebP (the image formats vkmc reads)");
+  throw Error("not PNG, JPEG, WebP or KTX2 (the image formats vkmc reads)");
 }
 
 }  // namespace vkmc

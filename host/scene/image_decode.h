@@ -1,7 +1,8 @@
 // PNG, JPEG and WebP decoding through Debian's maintained libraries (libpng's simplified API, libjpeg-turbo,
-// libwebp), for glTF textures. The header is read first, so a size past the caller's limit is refused before the pixels are
-// allocated; a truncated or corrupt file is refused (a libjpeg warning counts: it would fill the rest with grey).
-// stb_image is not used: Debian's 2.27 writes past a Huffman table on a crafted JPEG (found by image_fuzzer).
+// libwebp), and KTX2 through the vendored Basis Universal transcoder (scene/ktx2_decode.h), for glTF textures. The header is read
+// first, so a size past the caller's limit is refused before the pixels are allocated; a truncated or corrupt file is refused (a
+// libjpeg warning counts: it would fill the rest with grey). stb_image is not used: Debian's 2.27 writes past a Huffman table on
+// a crafted JPEG (found by image_fuzzer).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -9,7 +10,7 @@
 
 namespace vkmc {
 
-enum class ImageFormat { Png, Jpeg, WebP, Other };
+enum class ImageFormat { Png, Jpeg, WebP, Ktx2, Other };
 ImageFormat imageFormatOf(const unsigned char* bytes, size_t size);  // by the file's signature
 
 struct DecodedImage {
@@ -18,7 +19,7 @@ struct DecodedImage {
 };
 
 // Throws vkmc::Error with the reason (not naming the image: the caller does) when the bytes are not a whole PNG,
-// JPEG or still WebP, or when a side exceeds maxSide or the texels exceed maxTexels.
+// JPEG, still WebP or single-image KTX2, or when a side exceeds maxSide or the texels exceed maxTexels.
 DecodedImage decodeImage(const unsigned char* bytes, size_t size, uint32_t maxSide, uint64_t maxTexels);
 
 }  // namespace vkmc

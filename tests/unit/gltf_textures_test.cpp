@@ -8,7 +8,9 @@
 #include <cstdio>  // jpeglib.h needs FILE first
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include <jpeglib.h>
 
@@ -90,7 +92,7 @@ TEST(GltfTextures, AMissingImageFileIsNamed) {
   EXPECT_FALSE(s.materials[0].baseColorTexture.present());
 }
 
-// Only PNG, JPEG and WebP, by their signatures: a Radiance .hdr, a GIF or a BMP as a texture is ignored with a
+// Only PNG, JPEG, WebP and KTX2, by their signatures: a Radiance .hdr, a GIF or a BMP as a texture is ignored with a
 // warning, never handed to another decoder (stb_image's HDR decoder, which the loader once reached, looped forever
 // on a cut file).
 TEST(GltfTextures, ImagesOtherThanPngJpegAndWebpAreIgnoredWithAWarning) {
@@ -100,8 +102,8 @@ TEST(GltfTextures, ImagesOtherThanPngJpegAndWebpAreIgnoredWithAWarning) {
   std::string material = R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}},"emissiveTexture":{"index":1}})";
   std::string extra = R"("images":[{"uri":"sky.hdr"},{"uri":"anim.gif"}],"textures":[{"source":0},{"source":1}])";
   Scene s = loadGltf(test::writeQuadsGltf(dir, "formats", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
-  EXPECT_TRUE(anyWarningHas(s, "image 0: not PNG, JPEG or WebP"));
-  EXPECT_TRUE(anyWarningHas(s, "image 1: not PNG, JPEG or WebP"));
+  EXPECT_TRUE(anyWarningHas(s, "image 0: not PNG, JPEG, WebP or KTX2"));
+  EXPECT_TRUE(anyWarningHas(s, "image 1: not PNG, JPEG, WebP or KTX2"));
   EXPECT_FALSE(s.materials[0].baseColorTexture.present());
 }
 
@@ -160,6 +162,37 @@ TEST(GltfTextures, WebpTexturesAreReadWithTheirFallback) {
               std::find_if(s.warnings.begin(), s.warnings.end(),
                            [](const std::string& w) { return w.find("EXT_texture_webp") != std::string::npos; }))
       << "EXT_texture_webp is implemented: no warning";
+}
+
+// KHR_texture_basisu: the KTX2 source is preferred over the core source (its fallback), a texture may name only the
+// KTX2 (the spec lets a file that requires the extension leave the core source out), and a cut KTX2 falls back.
+TEST(GltfTextures, Ktx2TexturesAreTranscodedWithTheirFallback) {
+  auto dir = test::makeTempDir("textures_ktx2");
+  const std::string data = std::string(VKMC_SOURCE_DIR) + "/tests/unit/data/ktx2/";
+  std::filesystem::copy_file(data + "quadrants_uastc_zstd.ktx2", dir / "q.ktx2",
+                             std::filesystem::copy_options::overwrite_existing);
+  std::ifstream whole(data + "quadrants_etc1s.ktx2", std::ios::binary);
+  std::string bytes{std::istreambuf_iterator<char>(whole), std::istreambuf_iterator<char>()};
+  std::ofstream(dir / "cut.ktx2", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  std::string png = test::writePng(dir, "fallback", 1, 1, {1, 2, 3, 255});
+  std::string material = R"({"pbrMetallicRoughness":{"baseColorTexture":{"index":0}},"emissiveTexture":{"index":1},
+      "normalTexture":{"index":2}})";
+  std::string extra = R"("extensionsUsed":["KHR_texture_basisu"],"extensionsRequired":["KHR_texture_basisu"],
+      "images":[{"uri":"q.ktx2","mimeType":"image/ktx2"},{"uri":")" +
+                      png + R"("},{"uri":"cut.ktx2"}],
+      "textures":[{"source":1,"extensions":{"KHR_texture_basisu":{"source":0}}},{"extensions":{"KHR_texture_basisu":{"source":0}}},
+      {"source":1,"extensions":{"KHR_texture_basisu":{"source":2}}}])";
+  Scene s = loadGltf(test::writeQuadsGltf(dir, "ktx2", {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0}}, material, extra));
+  ASSERT_EQ(s.textures.size(), 3u);
+  EXPECT_EQ(s.textures[0].width, 16u) << "the KTX2, not the fallback";
+  EXPECT_EQ(s.textures[1].width, 16u) << "a KTX2 with no core source";
+  EXPECT_NEAR(int(s.textures[0].texels[0] & 0xFF), 200, 2) << "the top-left quadrant's red";
+  ASSERT_EQ(s.textures[2].width, 1u) << "a cut KTX2 falls back to the core source";
+  EXPECT_TRUE(anyWarningHas(s, "image 2:"));
+  EXPECT_TRUE(s.warnings.end() ==
+              std::find_if(s.warnings.begin(), s.warnings.end(),
+                           [](const std::string& w) { return w.find("KHR_texture_basisu") != std::string::npos; }))
+      << "KHR_texture_basisu is implemented: no warning";
 }
 
 // A progressive JPEG (libjpeg's own encoder) decodes within the working memory vkmc allows libjpeg for its size.
