@@ -119,6 +119,7 @@ class PilotRounds {
  public:
   PilotRounds(RoundFilm& film, const std::vector<uint32_t>& order, PilotShape shape)
       : film_(film), order_(order), shape_(shape), done_(order.size(), 0) {}
+  void setShape(PilotShape shape) { shape_ = shape; }
   void add(const Film& pilot, double plannedSpp) {
     std::vector<double> weight(order_.size(), 0.0);
     for (uint32_t i = 0; i < shape_.pixels; ++i) {
@@ -144,6 +145,65 @@ SearchScene searchScene(const SceneFeatures& f, vk::Context& ctx) {
   return SearchScene{f.lights(), ctx.hasFloatAtomics(), f.glossy, f.emitters()};
 }
 
+// The pilots as they run: each a round of the image, its reading kept; the shape and pixel order they share.
+struct PilotRun {
+  vk::Context& ctx;
+  const GpuScene& scene;
+  const RenderSettings& settings;
+  const std::vector<uint32_t>& order;
+  PilotShape shape;
+  PilotRounds& rounds;
+  EstimatorChoice& out;
+  std::vector<std::unique_ptr<CandidatePilot>> pilots;
+  double plannedSpp = 0.0;
+  std::unique_ptr<CandidatePilot> pending;  // the start's, made before the shape (which its pass size sets)
+
+  // A pilot of `e`, its seed its index's; the start's (the first) sets the plan's pace under a time budget.
+  PilotSamples run(const EstimatorConfig& e, double timeBudget, uint32_t imagePixels) {
+    if (!pending) pending = std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out);
+    pilots.push_back(std::move(pending));
+    pilots.back()->render(order, shape);
+    if (timeBudget > 0.0 && pilots.size() == 1)
+      plannedSpp = std::min(plannedSpp, timeBudget / (pilots[0]->secondsPerPixelSample() * imagePixels));
+    rounds.add(pilots.back()->film(), plannedSpp);
+    PilotSamples samples = pilots.back()->samples(order, shape.pixels);
+    pilots.back()->releaseFilm();  // a full image's sums, of which the rounds and the reading keep what they need
+    return samples;
+  }
+};
+
+// The winner against the start again, on fresh pilots of both (their own seeds, the same pixels): the search's
+// readings chose it from several comparisons, so its lead there is biased up (the winner's curse); a fresh pair is
+// one comparison. Where it does not beat the start again, the start renders.
+bool confirmWinner(PilotRun& run, size_t best, double& pilotSeconds, double budget, double timeBudget, uint32_t imagePixels,
+                   const PilotPixels& where) {
+  Confirmation& c = run.out.confirmation;
+  const double expected = run.pilots[0]->seconds() + run.pilots[best]->seconds();
+  if (!pilotFitsBudget(pilotSeconds, expected, budget)) return true;  // unconfirmed, as the report says
+  std::vector<PilotSamples> again;
+  for (size_t candidate : {size_t(0), best}) {
+    again.push_back(run.run(run.out.candidates[candidate].config, timeBudget, imagePixels));
+    pilotSeconds += run.pilots.back()->seconds();
+  }
+  const std::vector<CandidateReading> readings = readCandidates(where, again, kRelMseEpsilon);
+  c.ran = true, c.candidate = run.out.candidates[best].label;
+  c.start = readings[0], c.winner = readings[1];
+  c.confirmed = beats(readings[1], readings[0]);
+  return c.confirmed;
+}
+
+void finishChoice(EstimatorChoice& out, const PilotRun& run, size_t best, const ChoiceBounds& bounds) {
+  out.costCapped = bounds.sampleCountEnds;
+  out.cutShort = out.candidates.size() == 1 && !out.skippedForBudget.empty();
+  out.candidates[best].chosen = true;
+  out.chosen = out.candidates[best].config;
+  out.roulette = run.pilots[best]->roulette();
+  for (const auto& p : run.pilots) out.seconds += p->seconds(), out.stats.push_back(p->stats());
+  out.pilotPixels = run.shape.pixels, out.pilotSpp = run.shape.spp;
+  out.pixelSamples = run.rounds.pixelSamples();
+  out.share = run.rounds.pixelSamples() / (run.plannedSpp * run.settings.width * run.settings.height);
+}
+
 }  // namespace
 
 EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const RenderSettings& settings,
@@ -151,51 +211,43 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   EstimatorChoice out;
   const double timeBudget = bounds.timeBudget;
   const std::vector<SearchStep> steps = estimatorSearchSteps(pinned, searchScene(settings.features, ctx));
-  const uint32_t candidates = 1 + uint32_t(steps.size());  // at least one value a key
   const uint32_t imagePixels = settings.width * settings.height;
   const std::vector<uint32_t> order = pixelOrder(imagePixels, settings.seed);
-  std::vector<std::unique_ptr<CandidatePilot>> pilots;
-  std::vector<PilotSamples> measured;
-  pilots.push_back(std::make_unique<CandidatePilot>(ctx, scene, settings, settings.estimator, 0u, out));
-  // Under a time budget the plan is known only from the start's pace.
   // Without a sample count (--target-error alone) the pilots plan for kChoiceNominalSpp.
   const bool noCount = settings.spp == kMaxSpp && timeBudget <= 0.0;
   const double renderSpp = noCount ? double(kChoiceNominalSpp) : double(settings.spp);
   // A budget with --spp as its cap plans for the cap at most.
   const double plannedPixelSamples = timeBudget > 0.0 && settings.spp == kMaxSpp ? 1e300 : renderSpp * imagePixels;
-  const PilotShape shape =
-      pilotShape(pilots[0]->pathsPerPass(), plannedPixelSamples, candidates, imagePixels, settings.estimator.replicates);
-  PilotRounds rounds(film, order, shape);
-  double plannedSpp = renderSpp;
+  std::vector<PilotSamples> measured;
+  PilotRounds rounds(film, order, PilotShape{});
+  PilotRun run{ctx, scene, settings, order, PilotShape{}, rounds, out, {}, renderSpp};
+  run.pending = std::make_unique<CandidatePilot>(ctx, scene, settings, settings.estimator, 0u, out);
+  run.shape = pilotShape(run.pending->pathsPerPass(), plannedPixelSamples, pilotsPlanned(steps.size()), imagePixels,
+                         settings.estimator.replicates);
+  rounds.setShape(run.shape);
   auto measure = [&](const std::string& label, const EstimatorConfig& e) {
-    if (!out.candidates.empty())
-      pilots.push_back(std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out));
-    pilots.back()->render(order, shape);
-    if (timeBudget > 0.0 && out.candidates.empty())
-      plannedSpp = std::min(plannedSpp, timeBudget / (pilots[0]->secondsPerPixelSample() * imagePixels));
-    rounds.add(pilots.back()->film(), plannedSpp);
-    measured.push_back(pilots.back()->samples(order, shape.pixels));
-    pilots.back()->releaseFilm();  // a full image's sums, of which the rounds and the reading keep what they need
+    measured.push_back(run.run(e, timeBudget, imagePixels));
     MeasuredCandidate m;
-    m.label = label, m.config = e, m.seconds = pilots.back()->seconds();
+    m.label = label, m.config = e, m.seconds = run.pilots.back()->seconds();
     out.candidates.push_back(m);
   };
   measure("start", settings.estimator);
-  const PilotPixels where{settings.width, settings.height, std::vector<uint32_t>(order.begin(), order.begin() + shape.pixels)};
+  const PilotPixels where{settings.width, settings.height,
+                          std::vector<uint32_t>(order.begin(), order.begin() + run.shape.pixels)};
   // The pilots' share is of the render's seconds: its budget, or (where asked) its samples at the start's pace.
   // Their kernels are set-up, reported apart: Mesa's shader cache keeps them for the next render (counted, they
   // left the basement's per-depth pilot out of a 24-s budget on a loaded machine, and its 4.7x with it).
   const double budget = timeBudget > 0.0        ? timeBudget
-                        : bounds.shareOfSeconds ? pilots[0]->secondsPerPixelSample() * renderSpp * imagePixels
+                        : bounds.shareOfSeconds ? run.pilots[0]->secondsPerPixelSample() * renderSpp * imagePixels
                                                 : 0.0;
   size_t best = 0;
-  double pilotSeconds = pilots[0]->seconds();
+  double pilotSeconds = run.pilots[0]->seconds();
   for (const SearchStep& step : steps) {
     // Each value against the best so far, every candidate read against the values pooled so far; the key's
     // next value only where this one won. Under a time budget, only what fits its share (the next key may).
     for (double value : step.values) {
       const double incumbentValue = findEstimatorParam(step.key)->get(out.candidates[best].config);
-      const double expected = pilots[best]->seconds() * expectedPilotCost(step.key, value, incumbentValue);
+      const double expected = run.pilots[best]->seconds() * expectedPilotCost(step.key, value, incumbentValue);
       if (!pilotFitsBudget(pilotSeconds, expected, budget)) {
         out.skippedForBudget.push_back(label(step.key, value));
         break;
@@ -203,7 +255,7 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
       EstimatorConfig e = out.candidates[best].config;
       findEstimatorParam(step.key)->set(e, value);
       measure(label(step.key, value), e);
-      pilotSeconds += pilots.back()->seconds();
+      pilotSeconds += run.pilots.back()->seconds();
       const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
       if (!beats(readings.back(), readings[best])) break;
       if (bounds.sampleCountEnds && !affordableAtSampleCount(readings.back(), readings[0])) {
@@ -213,17 +265,10 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
       best = readings.size() - 1;
     }
   }
-  out.costCapped = bounds.sampleCountEnds;
-  out.cutShort = out.candidates.size() == 1 && !out.skippedForBudget.empty();
   const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
   for (size_t c = 0; c < readings.size(); ++c) out.candidates[c].reading = readings[c];
-  out.candidates[best].chosen = true;
-  out.chosen = out.candidates[best].config;
-  out.roulette = pilots[best]->roulette();
-  for (const auto& p : pilots) out.seconds += p->seconds(), out.stats.push_back(p->stats());
-  out.pilotPixels = shape.pixels, out.pilotSpp = shape.spp;
-  out.pixelSamples = rounds.pixelSamples();
-  out.share = rounds.pixelSamples() / (plannedSpp * imagePixels);
+  if (best != 0 && !confirmWinner(run, best, pilotSeconds, budget, timeBudget, imagePixels, where)) best = 0;
+  finishChoice(out, run, best, bounds);
   return out;
 }
 

@@ -26,6 +26,14 @@ struct MeasuredCandidate {
   double seconds = 0.0;    // its pilot's passes (and rr efficiency's own pilot), wall time
 };
 
+// The search's winner against the start again, on fresh pilots of both (estimator_search.cpp, confirmWinner).
+struct Confirmation {
+  bool ran = false;        // false: the start won the search, or the share of the render's time left no room
+  bool confirmed = false;  // the winner beat the start again (beats); otherwise the start rendered
+  std::string candidate;   // the winner's label
+  CandidateReading start, winner;
+};
+
 struct EstimatorChoice {
   EstimatorConfig chosen;
   std::vector<MeasuredCandidate> candidates;  // in the order measured
@@ -38,7 +46,8 @@ struct EstimatorChoice {
   bool cutShort = false;                      // the share of the render's time fitted no challenger: the start renders
   bool costCapped = false;                    // a sample count ends the render: kChoiceMaxCostAtSampleCount held
   std::vector<std::string> skippedForBudget;  // challengers left out because they would not fit it
-  std::vector<RenderStats> stats;             // each pilot's counters (the report's rays include them)
+  Confirmation confirmation;
+  std::vector<RenderStats> stats;  // each pilot's counters (the report's rays include them)
 };
 
 // What ends the render, and so bounds the choosing. timeBudget > 0: the render's samples are planned from the start's

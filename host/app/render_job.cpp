@@ -439,11 +439,11 @@ std::string whyFixedEstimator(const vk::Context& ctx, const RenderOptions& o, co
   if (o.timeBudget > 0.0 && settings.spp == kMaxSpp) return "";
   const double spp = settings.spp == kMaxSpp ? double(kChoiceNominalSpp) : double(settings.spp);
   const uint32_t candidates =
-      1 + uint32_t(estimatorSearchSteps(o.pinnedKeys,
-                                        SearchScene{settings.features.lights(), ctx.hasFloatAtomics(), settings.features.glossy})
-                       .size());
+      pilotsPlanned(estimatorSearchSteps(o.pinnedKeys, SearchScene{settings.features.lights(), ctx.hasFloatAtomics(),
+                                                                   settings.features.glossy, settings.features.emitters()})
+                        .size());
   if (!renderFitsPilots(spp * settings.width * settings.height, candidates))
-    return "the render is too small for its pilots (" + std::to_string(candidates) + " candidates of " +
+    return "the render is too small for its pilots (" + std::to_string(candidates) + " pilots of " +
            std::to_string(kChoiceMinPilotPixels) + " pixels at " + std::to_string(kChoiceMinPilotSpp) + " samples, in " +
            formatNumber(100.0 * kChoiceMaxShare) + "% of its samples)";
   return "";
@@ -741,14 +741,35 @@ void addLearnedFields(json& j, const RenderOutcome& r) {
   if (json guard = earsGuardJson(r.earsGuard); !guard.is_null()) j["ears"]["guard"] = guard;
 }
 
+json ratioInterval(double value, double logSe) {
+  return json::array({value / std::exp(1.96 * logSe), value * std::exp(1.96 * logSe)});
+}
+
+// The winner against the start on fresh pilots: what it measured, and whether it held.
+json confirmationJson(const EstimatorChoice& c) {
+  const Confirmation& k = c.confirmation;
+  const bool startWon = c.candidates.front().chosen && !k.ran;
+  if (!k.ran)
+    return {
+        {"ran", false},
+        {"why", startWon ? "the start won the search" : "the pilots' share of the render's time fitted no more: unconfirmed"}};
+  const Comparison vs = compare(k.winner, k.start);
+  const double ratio = vs.measured ? std::exp(vs.logRatio) : 0.0;
+  return {{"ran", true},
+          {"candidate", k.candidate},
+          {"confirmed", k.confirmed},
+          {"vs_start", ratio},
+          {"vs_start_95", ratioInterval(ratio, vs.se)},
+          {"start_efficiency", k.start.efficiency()},
+          {"winner_efficiency", k.winner.efficiency()}};
+}
+
 // --estimator auto: every candidate's measurement (efficiency with a 95% interval, relative to the start's), the
-// choice, and what choosing cost.
+// choice, its confirmation, and what choosing cost.
 json choiceJson(const EstimatorChoice& c) {
   json candidates = json::array();
   const CandidateReading& start = c.candidates.front().reading;
-  auto interval = [](double value, double logSe) {
-    return json::array({value / std::exp(1.96 * logSe), value * std::exp(1.96 * logSe)});
-  };
+  auto interval = ratioInterval;
   for (const MeasuredCandidate& m : c.candidates) {
     const CandidateReading& r = m.reading;
     const Comparison vsStart = compare(r, start);
@@ -770,6 +791,7 @@ json choiceJson(const EstimatorChoice& c) {
           {"cost_unit", "GPU seconds"},
           {"cut_short", c.cutShort},
           {"skipped_for_budget", c.skippedForBudget},
+          {"confirmation", confirmationJson(c)},
           {"pilot_pixel_samples", c.pixelSamples},
           {"pilot_pixels", c.pilotPixels},
           {"pilot_spp", c.pilotSpp},
@@ -781,6 +803,14 @@ json choiceJson(const EstimatorChoice& c) {
           {"note",
            "the pilots are the render's first rounds, weighted per pixel by weights fixed before their samples were "
            "seen (round_film.h): unbiased whichever configuration they chose"}};
+}
+
+std::string confirmationNote(const Confirmation& k) {
+  if (!k.ran) return "";
+  const Comparison vs = compare(k.winner, k.start);
+  const std::string ratio = formatNumber(std::round(100.0 * std::exp(vs.logRatio)) / 100.0) + "x";
+  return k.confirmed ? "; confirmed on fresh pilots (" + ratio + ")"
+                     : "; " + k.candidate + " won the search but not on fresh pilots (" + ratio + "), so the start renders";
 }
 
 std::string choiceLine(const EstimatorChoice& c) {
@@ -807,7 +837,7 @@ std::string choiceLine(const EstimatorChoice& c) {
                 changed.empty() ? "the defaults" : changed.c_str(), c.candidates.size(),
                 c.skippedForBudget.empty() ? "" : " (the pilots' share of the render's time fitted no more)",
                 startEfficiency > 0.0 ? chosenEfficiency / startEfficiency : 0.0, c.seconds, 100.0 * c.share, c.pipelineSeconds);
-  return buf + tooCostly + "\n";
+  return buf + tooCostly + confirmationNote(c.confirmation) + "\n";
 }
 
 json mpiJson(const std::vector<RankReport>& ranks) {

@@ -595,5 +595,12 @@ TEST(Cli, TheDefaultEstimatorChoiceSaysWhereItDoesNotChoose) {
   RunResult r = runVkmc("render " + cornell() + " --width 32 --height 32 --spp 64 --estimator auto -q -o " +
                         (workDir() / "asked.exr").string() + " --report " + report.string());
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_GE(nlohmann::json::parse(slurp(report))["estimator_choice"]["candidates"].size(), 2u);
+  const nlohmann::json choice = nlohmann::json::parse(slurp(report))["estimator_choice"];
+  EXPECT_GE(choice["candidates"].size(), 2u);
+  // The confirmation says whether it ran; where it did, what the winner measured against the start again.
+  ASSERT_TRUE(choice["confirmation"].is_object()) << choice;
+  if (choice["confirmation"]["ran"].get<bool>())
+    EXPECT_TRUE(choice["confirmation"]["vs_start_95"].is_array()) << choice["confirmation"];
+  else
+    EXPECT_FALSE(choice["confirmation"].value("why", "").empty()) << choice["confirmation"];
 }

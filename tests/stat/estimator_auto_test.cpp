@@ -79,6 +79,7 @@ TEST(EstimatorAuto, FindsTheClearlyBestCandidate) {
   EXPECT_EQ(r.estimator.rr, RouletteMode::Efficiency);
   ASSERT_GE(r.choice->candidates.size(), 2u);
   EXPECT_EQ(r.choice->candidates[1].label, "rr=efficiency");  // searched first
+  EXPECT_TRUE(r.choice->confirmation.ran && r.choice->confirmation.confirmed) << "a clear lead holds on fresh pilots";
 }
 
 // The second: an emitting wall standing on a floor, seen from above the line where they meet. Area sampling's
@@ -100,6 +101,7 @@ TEST(EstimatorAuto, FindsSolidAngleSamplingWhereAnEmittingWallMeetsTheFloor) {
   const RenderOutcome r = runRender(sharedContext(), o);
   ASSERT_TRUE(r.choice);
   EXPECT_EQ(r.estimator.lightSampling, LightSampling::SolidAngle);
+  EXPECT_TRUE(r.choice->confirmation.ran && r.choice->confirmation.confirmed) << "a clear lead holds on fresh pilots";
   EXPECT_EQ(r.film.totalNonfinite(), 0u);
 }
 

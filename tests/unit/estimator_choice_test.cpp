@@ -175,9 +175,11 @@ TEST(EstimatorChoice, APilotFillsAPassAndStaysAShareOfTheRender) {
   // A large image: still 64 a pixel, over fewer of its pixels.
   s = pilotShape(1u << 18, 1e12, 8, 1920 * 1080, 2);
   EXPECT_EQ(uint64_t(s.pixels) * s.spp, 1u << 18);
-  // A small render: the pilots stay within kChoiceMaxShare of its pixel-samples.
-  s = pilotShape(1u << 18, 128.0 * 128 * 256, 8, 128 * 128, 2);
-  EXPECT_LE(8.0 * s.pixels * s.spp, kChoiceMaxShare * 128 * 128 * 256);
+  // A small render: the pilots, the confirmation's two among them, stay within kChoiceMaxShare of its pixel-samples.
+  const uint32_t pilots = pilotsPlanned(5);  // the start, five steps, the winner and the start again
+  EXPECT_EQ(pilots, 8u);
+  s = pilotShape(1u << 18, 128.0 * 128 * 256, pilots, 128 * 128, 2);
+  EXPECT_LE(double(pilots) * s.pixels * s.spp, kChoiceMaxShare * 128 * 128 * 256);
   EXPECT_EQ(s.spp % 2, 0u);
   // Three replicates: a multiple of 3.
   s = pilotShape(1u << 18, 1e12, 8, 192 * 192, 3);
