@@ -24,8 +24,10 @@ constexpr uint32_t kPilotSeedSalt = 0x5eed0a17u;
 // One candidate's pilot: its renderer (its own pipelines), and its samples over the first pixels of the order.
 class CandidatePilot {
  public:
+  // rr efficiency learns its table in a roulette pilot of its own, unless `table` gives the one to use (a
+  // confirmation tests the table that will render).
   CandidatePilot(vk::Context& ctx, const GpuScene& scene, const RenderSettings& render, const EstimatorConfig& e, uint32_t index,
-                 EstimatorChoice& out)
+                 EstimatorChoice& out, const std::optional<RouletteTable>& table = std::nullopt)
       : settings_(render), film_(render.width, render.height) {
     settings_.estimator = e;
     settings_.seed = gpu::hashU32(render.seed ^ kPilotSeedSalt ^ gpu::hashU32(index + 1u));
@@ -33,7 +35,9 @@ class CandidatePilot {
     settings_.spp = kChoiceMaxPilotSpp;
     if (e.splitsPaths()) settings_.integrator = Integrator::Wavefront;  // splitting needs the path pool
     film_.replicates = e.replicates, film_.replicateVariance = e.sampler != Sampler::Independent;
-    if (e.rr == RouletteMode::Efficiency) {
+    if (e.rr == RouletteMode::Efficiency && table) {
+      roulette_ = table;
+    } else if (e.rr == RouletteMode::Efficiency) {
       RoulettePilot pilot = runRoulettePilot(ctx, scene, settings_);
       out.pipelineSeconds += pilot.pipelineSeconds, seconds_ += pilot.seconds;
       roulette_ = pilot.table;
@@ -159,8 +163,9 @@ struct PilotRun {
   std::unique_ptr<CandidatePilot> pending;  // the start's, made before the shape (which its pass size sets)
 
   // A pilot of `e`, its seed its index's; the start's (the first) sets the plan's pace under a time budget.
-  PilotSamples run(const EstimatorConfig& e, double timeBudget, uint32_t imagePixels) {
-    if (!pending) pending = std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out);
+  PilotSamples run(const EstimatorConfig& e, double timeBudget, uint32_t imagePixels,
+                   const std::optional<RouletteTable>& table = std::nullopt) {
+    if (!pending) pending = std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out, table);
     pilots.push_back(std::move(pending));
     pilots.back()->render(order, shape);
     if (timeBudget > 0.0 && pilots.size() == 1)
@@ -175,20 +180,22 @@ struct PilotRun {
 // The winner against the start again, on fresh pilots of both (their own seeds, the same pixels): the search's
 // readings chose it from several comparisons, so its lead there is biased up (the winner's curse); a fresh pair is
 // one comparison. Where it does not beat the start again, the start renders.
-bool confirmWinner(PilotRun& run, size_t best, double& pilotSeconds, double budget, double timeBudget, uint32_t imagePixels,
-                   const PilotPixels& where) {
+bool confirmWinner(PilotRun& run, size_t best, double& pilotSeconds, double budget, const ChoiceBounds& bounds,
+                   uint32_t imagePixels, const PilotPixels& where) {
   Confirmation& c = run.out.confirmation;
   const double expected = run.pilots[0]->seconds() + run.pilots[best]->seconds();
   if (!pilotFitsBudget(pilotSeconds, expected, budget)) return true;  // unconfirmed, as the report says
   std::vector<PilotSamples> again;
   for (size_t candidate : {size_t(0), best}) {
-    again.push_back(run.run(run.out.candidates[candidate].config, timeBudget, imagePixels));
+    // Each with the roulette table its search pilot learnt: the configuration that will render, table and all.
+    again.push_back(
+        run.run(run.out.candidates[candidate].config, bounds.timeBudget, imagePixels, run.pilots[candidate]->roulette()));
     pilotSeconds += run.pilots.back()->seconds();
   }
   const std::vector<CandidateReading> readings = readCandidates(where, again, kRelMseEpsilon);
   c.ran = true, c.candidate = run.out.candidates[best].label;
   c.start = readings[0], c.winner = readings[1];
-  c.confirmed = beats(readings[1], readings[0]);
+  c.confirmed = beats(readings[1], readings[0]) && (!bounds.sampleCountEnds || affordableAtSampleCount(readings[1], readings[0]));
   return c.confirmed;
 }
 
@@ -222,7 +229,7 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   PilotRounds rounds(film, order, PilotShape{});
   PilotRun run{ctx, scene, settings, order, PilotShape{}, rounds, out, {}, renderSpp};
   run.pending = std::make_unique<CandidatePilot>(ctx, scene, settings, settings.estimator, 0u, out);
-  run.shape = pilotShape(run.pending->pathsPerPass(), plannedPixelSamples, pilotsPlanned(steps.size()), imagePixels,
+  run.shape = pilotShape(run.pending->pathsPerPass(), plannedPixelSamples, pilotsPlanned(steps), imagePixels,
                          settings.estimator.replicates);
   rounds.setShape(run.shape);
   auto measure = [&](const std::string& label, const EstimatorConfig& e) {
@@ -267,7 +274,7 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   }
   const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
   for (size_t c = 0; c < readings.size(); ++c) out.candidates[c].reading = readings[c];
-  if (best != 0 && !confirmWinner(run, best, pilotSeconds, budget, timeBudget, imagePixels, where)) best = 0;
+  if (best != 0 && !confirmWinner(run, best, pilotSeconds, budget, bounds, imagePixels, where)) best = 0;
   finishChoice(out, run, best, bounds);
   return out;
 }

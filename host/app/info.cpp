@@ -60,7 +60,8 @@ bool isFloatSpec(uint32_t id) {
 // What `vkmc render` would choose between on this scene, in two lines (estimator_choice.h).
 void printEstimatorChoice(const vk::Context& ctx, const SceneFeatures& f) {
   std::string keys;
-  for (const SearchStep& step : estimatorSearchSteps({}, SearchScene{f.lights(), ctx.hasFloatAtomics(), f.glossy})) {
+  for (const SearchStep& step :
+       estimatorSearchSteps({}, SearchScene{f.lights(), ctx.hasFloatAtomics(), f.glossy, f.emitters()})) {
     const EstimatorParam* p = findEstimatorParam(step.key);
     for (double v : step.values) keys += (keys.empty() ? "" : ", ") + step.key + " " + p->text(v);
   }

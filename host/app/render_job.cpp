@@ -440,8 +440,7 @@ std::string whyFixedEstimator(const vk::Context& ctx, const RenderOptions& o, co
   const double spp = settings.spp == kMaxSpp ? double(kChoiceNominalSpp) : double(settings.spp);
   const uint32_t candidates =
       pilotsPlanned(estimatorSearchSteps(o.pinnedKeys, SearchScene{settings.features.lights(), ctx.hasFloatAtomics(),
-                                                                   settings.features.glossy, settings.features.emitters()})
-                        .size());
+                                                                   settings.features.glossy, settings.features.emitters()}));
   if (!renderFitsPilots(spp * settings.width * settings.height, candidates))
     return "the render is too small for its pilots (" + std::to_string(candidates) + " pilots of " +
            std::to_string(kChoiceMinPilotPixels) + " pixels at " + std::to_string(kChoiceMinPilotSpp) + " samples, in " +
@@ -748,11 +747,13 @@ json ratioInterval(double value, double logSe) {
 // The winner against the start on fresh pilots: what it measured, and whether it held.
 json confirmationJson(const EstimatorChoice& c) {
   const Confirmation& k = c.confirmation;
-  const bool startWon = c.candidates.front().chosen && !k.ran;
-  if (!k.ran)
-    return {
-        {"ran", false},
-        {"why", startWon ? "the start won the search" : "the pilots' share of the render's time fitted no more: unconfirmed"}};
+  if (!k.ran) {
+    const char* why = c.cutShort ? "no challenger fitted the pilots' share of the render's time"
+                      : c.candidates.front().chosen
+                          ? "the start won the search"
+                          : "the pilots' share of the render's time fitted no more: the winner renders unconfirmed";
+    return {{"ran", false}, {"why", why}};
+  }
   const Comparison vs = compare(k.winner, k.start);
   const double ratio = vs.measured ? std::exp(vs.logRatio) : 0.0;
   return {{"ran", true},
@@ -805,10 +806,11 @@ json choiceJson(const EstimatorChoice& c) {
            "seen (round_film.h): unbiased whichever configuration they chose"}};
 }
 
-std::string confirmationNote(const Confirmation& k) {
-  if (!k.ran) return "";
+std::string confirmationNote(const EstimatorChoice& c) {
+  const Confirmation& k = c.confirmation;
+  if (!k.ran) return c.candidates.front().chosen ? "" : "; unconfirmed (the pilots' share fitted no more)";
   const Comparison vs = compare(k.winner, k.start);
-  const std::string ratio = formatNumber(std::round(100.0 * std::exp(vs.logRatio)) / 100.0) + "x";
+  const std::string ratio = vs.measured ? formatNumber(std::round(100.0 * std::exp(vs.logRatio)) / 100.0) + "x" : "unmeasured";
   return k.confirmed ? "; confirmed on fresh pilots (" + ratio + ")"
                      : "; " + k.candidate + " won the search but not on fresh pilots (" + ratio + "), so the start renders";
 }
@@ -837,7 +839,7 @@ std::string choiceLine(const EstimatorChoice& c) {
                 changed.empty() ? "the defaults" : changed.c_str(), c.candidates.size(),
                 c.skippedForBudget.empty() ? "" : " (the pilots' share of the render's time fitted no more)",
                 startEfficiency > 0.0 ? chosenEfficiency / startEfficiency : 0.0, c.seconds, 100.0 * c.share, c.pipelineSeconds);
-  return buf + tooCostly + confirmationNote(c.confirmation) + "\n";
+  return buf + tooCostly + confirmationNote(c) + "\n";
 }
 
 json mpiJson(const std::vector<RankReport>& ranks) {

@@ -136,6 +136,12 @@ bool affordableAtSampleCount(const CandidateReading& challenger, const Candidate
   return start.cost <= 0.0 || challenger.cost <= kChoiceMaxCostAtSampleCount * start.cost;
 }
 
+uint32_t pilotsPlanned(const std::vector<SearchStep>& steps) {
+  uint32_t pilots = 1 + kChoiceConfirmationPilots;
+  for (const SearchStep& step : steps) pilots += uint32_t(step.values.size());
+  return pilots;
+}
+
 bool renderFitsPilots(double plannedPixelSamples, uint32_t candidates) {
   return kChoiceMaxShare * plannedPixelSamples / std::max(candidates, 1u) >= double(kChoiceMinPilotPixels) * kChoiceMinPilotSpp;
 }

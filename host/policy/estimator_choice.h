@@ -114,11 +114,11 @@ inline constexpr double kChoiceMaxShare = 0.05;
 inline constexpr uint32_t kChoiceNominalSpp = 256;  // what a render with no sample count or budget plans for
 inline constexpr uint32_t kChoiceMinPilotSpp = 64;
 inline constexpr uint32_t kChoiceMaxPilotSpp = 64;
-// The pilots a search plans for: the start, one a step (at least one value a key), and the confirmation's two (the
-// winner and the start again, on fresh samples: the search's readings chose the winner from several comparisons,
-// and so read its lead high). The share of the samples holds them all.
+// The most pilots a search runs: the start, every value of every step, and the confirmation's two (the winner and
+// the start again, on fresh samples: the search's readings chose the winner from several comparisons, and so read
+// its lead high). The share of the samples holds them all.
 inline constexpr uint32_t kChoiceConfirmationPilots = 2;
-inline uint32_t pilotsPlanned(size_t searchSteps) { return 1 + uint32_t(searchSteps) + kChoiceConfirmationPilots; }
+uint32_t pilotsPlanned(const std::vector<SearchStep>& steps);
 // Whether a render of plannedPixelSamples leaves its pilots at least kChoiceMinPilotPixels pixels each (at
 // kChoiceMinPilotSpp) within kChoiceMaxShare: a smaller one is too short to choose in.
 inline constexpr uint32_t kChoiceMinPilotPixels = 256;

@@ -30,13 +30,20 @@ void checkRegions(const unsigned char* bytes, size_t size) {
   if (size < kHeaderBytes) throw Error("a truncated KTX2 (" + std::to_string(size) + " bytes, shorter than its header)");
   if (size > (size_t(1) << 30)) throw Error("a KTX2 over 1 GiB");
   const auto inside = [size](uint64_t offset, uint64_t length) { return offset <= size && length <= size - offset; };
+  if (readLittleEndian(bytes + 28, 4) > 0) throw Error("a KTX2 volume (a texture is one 2D image)");
   const uint64_t levels = std::max<uint64_t>(1, readLittleEndian(bytes + 40, 4));
-  if (levels > 32 || !inside(kHeaderBytes, levels * kLevelEntryBytes))
+  if (levels > 32) throw Error("a corrupt KTX2 (" + std::to_string(levels) + " mip levels; a 2D image has at most 32)");
+  if (!inside(kHeaderBytes, levels * kLevelEntryBytes))
     throw Error("a corrupt KTX2 (its level index lies past the end of the file)");
-  const bool regions = inside(readLittleEndian(bytes + 48, 4), readLittleEndian(bytes + 52, 4)) &&  // data format
-                       inside(readLittleEndian(bytes + 56, 4), readLittleEndian(bytes + 60, 4)) &&  // key/value data
-                       inside(readLittleEndian(bytes + 64, 8), readLittleEndian(bytes + 72, 8));    // supercompression
-  if (!regions) throw Error("a corrupt KTX2 (a region its header names lies past the end of the file)");
+  const struct {
+    const char* name;
+    uint64_t offset, length;
+  } regions[] = {{"data format descriptor", readLittleEndian(bytes + 48, 4), readLittleEndian(bytes + 52, 4)},
+                 {"key/value data", readLittleEndian(bytes + 56, 4), readLittleEndian(bytes + 60, 4)},
+                 {"supercompression data", readLittleEndian(bytes + 64, 8), readLittleEndian(bytes + 72, 8)}};
+  for (const auto& region : regions)
+    if (!inside(region.offset, region.length))
+      throw Error(std::string("a corrupt KTX2 (its ") + region.name + " lies past the end of the file)");
   for (uint64_t level = 0; level < levels; ++level) {
     const unsigned char* entry = bytes + kHeaderBytes + level * kLevelEntryBytes;
     if (!inside(readLittleEndian(entry, 8), readLittleEndian(entry + 8, 8)) || readLittleEndian(entry + 16, 8) > UINT32_MAX)
@@ -51,7 +58,6 @@ void initialiseTranscoderOnce() {
 
 void checkShape(const basist::ktx2_transcoder& file, uint32_t maxSide, uint64_t maxTexels) {
   const uint32_t width = file.get_width(), height = file.get_height();
-  if (file.get_header().m_pixel_depth > 1) throw Error("a KTX2 volume (a texture is one 2D image)");
   if (file.get_layers() > 1) throw Error("a KTX2 array of " + std::to_string(file.get_layers()) + " images (a texture is one)");
   if (file.get_faces() != 1) throw Error("a KTX2 cube map (a texture is one 2D image)");
   if (width == 0 || height == 0) throw Error("a KTX2 with no pixels");
@@ -60,9 +66,14 @@ void checkShape(const basist::ktx2_transcoder& file, uint32_t maxSide, uint64_t 
   if (uint64_t(width) * height > maxTexels)
     throw Error(std::to_string(width) + "x" + std::to_string(height) + " exceeds the " + std::to_string(maxTexels) +
                 " texels left to the scene's images");
-  // Zstandard's output is allocated at the size the level index declares (the transcoder allows up to 2 GiB): one
-  // that is not the UASTC blocks of an image this size is refused before a forged length allocates it.
-  if (file.is_uastc() && file.get_header().m_supercompression_scheme == basist::KTX2_SS_ZSTANDARD) {
+  // ETC1S data comes in BasisLZ and nothing else; UASTC raw or in Zstandard. Zstandard's output is allocated at the
+  // size the level index declares (the transcoder allows up to 2 GiB, and inflates a level before it reads its
+  // format): one that is not the UASTC blocks of an image this size is refused before a forged length allocates it.
+  const uint32_t scheme = file.get_header().m_supercompression_scheme;
+  if (file.is_etc1s() != (scheme == basist::KTX2_SS_BASISLZ))
+    throw Error(std::string("a corrupt KTX2 (") + (file.is_etc1s() ? "ETC1S" : "UASTC") + " data in supercompression scheme " +
+                std::to_string(scheme) + ")");
+  if (scheme == basist::KTX2_SS_ZSTANDARD) {
     const uint64_t blocks = uint64_t((width + 3) / 4) * ((height + 3) / 4);
     const uint64_t declared = file.get_level_index()[0].m_uncompressed_byte_length;
     if (declared != blocks * 16)

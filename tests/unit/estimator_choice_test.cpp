@@ -176,7 +176,9 @@ TEST(EstimatorChoice, APilotFillsAPassAndStaysAShareOfTheRender) {
   s = pilotShape(1u << 18, 1e12, 8, 1920 * 1080, 2);
   EXPECT_EQ(uint64_t(s.pixels) * s.spp, 1u << 18);
   // A small render: the pilots, the confirmation's two among them, stay within kChoiceMaxShare of its pixel-samples.
-  const uint32_t pilots = pilotsPlanned(5);  // the start, five steps, the winner and the start again
+  // The start, every value of every step (two light sample counts, two BSDF counts, balance MIS), the winner and
+  // the start again.
+  const uint32_t pilots = pilotsPlanned({{"light_samples", {2, 4}}, {"bsdf_samples", {2, 4}}, {"mis", {1}}});
   EXPECT_EQ(pilots, 8u);
   s = pilotShape(1u << 18, 128.0 * 128 * 256, pilots, 128 * 128, 2);
   EXPECT_LE(double(pilots) * s.pixels * s.spp, kChoiceMaxShare * 128 * 128 * 256);

@@ -1,4 +1,4 @@
-// KTX2 textures (KHR_texture_basisu) through the vendored Basis Universal transcoder: ETC1S and UASTC (raw,
+// KTX2 textures (KHR_texture_basisu) through the vendored Basis Universal transcoder: ETC1S and UASTC (in
 // Zstandard, with mips) decode to the texels they were encoded from; arrays, forged lengths, oversized and cut
 // files are refused with a reason. The files in data/ktx2/ were written by basisu 1.16.4 from quadrants.png
 // (data/ktx2/README.md).
@@ -78,13 +78,26 @@ TEST(Ktx2Decode, AForgedUncompressedLengthIsRefused) {
   EXPECT_NE(refusal(bytes).find("declares 1073741824 bytes"), std::string::npos) << refusal(bytes);
 }
 
+// An ETC1S file that names Zstandard (the review's case): the transcoder would inflate its forged 2-GiB level before
+// reading its format; it is refused from its header. A depth names a volume.
+TEST(Ktx2Decode, ASchemeThatDoesNotFitTheDataAndAVolumeAreRefused) {
+  std::vector<unsigned char> bytes = readData("quadrants_etc1s.ktx2");
+  bytes[44] = 2;  // supercompressionScheme: Zstandard
+  const uint64_t forged = 0x7FFFFFFF;
+  std::memcpy(bytes.data() + 96, &forged, sizeof(forged));
+  EXPECT_NE(refusal(bytes).find("ETC1S data in supercompression scheme 2"), std::string::npos) << refusal(bytes);
+  std::vector<unsigned char> volume = readData("quadrants_uastc_zstd.ktx2");
+  volume[28] = 4;  // pixelDepth
+  EXPECT_NE(refusal(volume).find("a KTX2 volume"), std::string::npos) << refusal(volume);
+}
+
 // image_fuzzer's finding: a supercompression-data offset past 4 GiB, which the transcoder's 32-bit reading of the
 // header wrapped into bounds and read 4 GiB before the file (tests/fuzz/regressions/images/).
 TEST(Ktx2Decode, AnOffsetPastFourGibibytesIsRefusedNotWrapped) {
   std::ifstream in(std::string(VKMC_SOURCE_DIR) + "/tests/fuzz/regressions/images/ktx2_sgd_offset_wraps.ktx2", std::ios::binary);
   const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   ASSERT_GT(bytes.size(), 80u);
-  EXPECT_NE(refusal(bytes).find("a region its header names lies past the end of the file"), std::string::npos) << refusal(bytes);
+  EXPECT_NE(refusal(bytes).find("its supercompression data lies past the end of the file"), std::string::npos) << refusal(bytes);
 }
 
 // image_fuzzer's second finding: an ETC1S file whose Huffman table made the transcoder's tree read past its end
