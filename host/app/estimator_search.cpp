@@ -27,12 +27,13 @@ class CandidatePilot {
   // rr efficiency learns its table in a roulette pilot of its own, unless `table` gives the one to use (a
   // confirmation tests the table that will render).
   CandidatePilot(vk::Context& ctx, const GpuScene& scene, const RenderSettings& render, const EstimatorConfig& e, uint32_t index,
-                 EstimatorChoice& out, const std::optional<RouletteTable>& table = std::nullopt)
+                 EstimatorChoice& out, const std::optional<RouletteTable>& table = std::nullopt,
+                 uint32_t spp = kChoiceMaxPilotSpp)
       : settings_(render), film_(render.width, render.height) {
     settings_.estimator = e;
     settings_.seed = gpu::hashU32(render.seed ^ kPilotSeedSalt ^ gpu::hashU32(index + 1u));
     settings_.sampleRuns = true, settings_.progress = false, settings_.timeBudget = 0.0;
-    settings_.spp = kChoiceMaxPilotSpp;
+    settings_.spp = spp;
     if (e.splitsPaths()) settings_.integrator = Integrator::Wavefront;  // splitting needs the path pool
     film_.replicates = e.replicates, film_.replicateVariance = e.sampler != Sampler::Independent;
     if (e.rr == RouletteMode::Efficiency && table) {
@@ -71,7 +72,8 @@ class CandidatePilot {
   const Film& film() const { return film_; }
   void releaseFilm() { film_ = Film(); }
   const RenderStats& stats() const { return stats_; }
-  double seconds() const { return seconds_; }  // the pilot's passes, wall time
+  double seconds() const { return seconds_; }          // the pilot's passes, wall time
+  double passSeconds() const { return passSeconds_; }  // its passes alone (without rr efficiency's own pilot)
   double secondsPerPixelSample() const { return passSeconds_ / pixelSamples_; }
   const std::optional<RouletteTable>& roulette() const { return roulette_; }
 
@@ -121,26 +123,23 @@ std::string label(const std::string& key, double value) {
 // or its time budget at the start's pace).
 class PilotRounds {
  public:
-  PilotRounds(RoundFilm& film, const std::vector<uint32_t>& order, PilotShape shape)
-      : film_(film), order_(order), shape_(shape), done_(order.size(), 0) {}
-  void setShape(PilotShape shape) { shape_ = shape; }
-  void add(const Film& pilot, double plannedSpp) {
+  PilotRounds(RoundFilm& film, const std::vector<uint32_t>& order) : film_(film), order_(order), done_(order.size(), 0) {}
+  void add(const Film& pilot, double plannedSpp, PilotShape shape) {
     std::vector<double> weight(order_.size(), 0.0);
-    for (uint32_t i = 0; i < shape_.pixels; ++i) {
+    for (uint32_t i = 0; i < shape.pixels; ++i) {
       const uint32_t p = order_[i];
-      const double later = std::max(plannedSpp - done_[p] - shape_.spp, double(shape_.spp));
-      weight[p] = roundWeight(film_.weightSoFar(p), shape_.spp, later, false);
-      done_[p] += shape_.spp;
+      const double later = std::max(plannedSpp - done_[p] - shape.spp, double(shape.spp));
+      weight[p] = roundWeight(film_.weightSoFar(p), shape.spp, later, false);
+      done_[p] += shape.spp;
     }
     film_.addRound(pilot, weight);
-    pixelSamples_ += double(shape_.pixels) * shape_.spp;
+    pixelSamples_ += double(shape.pixels) * shape.spp;
   }
   double pixelSamples() const { return pixelSamples_; }
 
  private:
   RoundFilm& film_;
   const std::vector<uint32_t>& order_;
-  PilotShape shape_;
   std::vector<uint32_t> done_;
   double pixelSamples_ = 0.0;
 };
@@ -163,39 +162,49 @@ struct PilotRun {
   std::unique_ptr<CandidatePilot> pending;  // the start's, made before the shape (which its pass size sets)
 
   // A pilot of `e`, its seed its index's; the start's (the first) sets the plan's pace under a time budget.
+  // `at`: the confirmation's shape (a search pilot's where none is given), and `table` its roulette table.
   PilotSamples run(const EstimatorConfig& e, double timeBudget, uint32_t imagePixels,
-                   const std::optional<RouletteTable>& table = std::nullopt) {
-    if (!pending) pending = std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out, table);
+                   const std::optional<RouletteTable>& table = std::nullopt, std::optional<PilotShape> at = std::nullopt) {
+    const PilotShape here = at.value_or(shape);
+    // A search pilot's settings as the start's (made before the shape); a confirming one's its own samples a pixel.
+    const uint32_t spp = at ? at->spp : kChoiceMaxPilotSpp;
+    if (!pending) pending = std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out, table, spp);
     pilots.push_back(std::move(pending));
-    pilots.back()->render(order, shape);
+    pilots.back()->render(order, here);
     if (timeBudget > 0.0 && pilots.size() == 1)
       plannedSpp = std::min(plannedSpp, timeBudget / (pilots[0]->secondsPerPixelSample() * imagePixels));
-    rounds.add(pilots.back()->film(), plannedSpp);
-    PilotSamples samples = pilots.back()->samples(order, shape.pixels);
+    rounds.add(pilots.back()->film(), plannedSpp, here);
+    PilotSamples samples = pilots.back()->samples(order, here.pixels);
     pilots.back()->releaseFilm();  // a full image's sums, of which the rounds and the reading keep what they need
     return samples;
   }
 };
 
-// The winner against the start again, on fresh pilots of both (their own seeds, the same pixels): the search's
-// readings chose it from several comparisons, so its lead there is biased up (the winner's curse); a fresh pair is
-// one comparison. Where it does not beat the start again, the start renders.
+// The winner against the start again, on fresh pilots of both (their own seeds, a prefix of the search's pixels at
+// more samples each: confirmationShape): the search's readings chose it from several comparisons, so its lead there
+// reads high (the winner's curse), and at 64 samples a pixel, earlier in the convergence than the render. Where its
+// fresh reading is not ahead by the margin (confirms), the start renders.
 bool confirmWinner(PilotRun& run, size_t best, double& pilotSeconds, double budget, const ChoiceBounds& bounds,
-                   uint32_t imagePixels, const PilotPixels& where) {
+                   uint32_t imagePixels, const std::vector<glm::dvec3>& searchValues) {
   Confirmation& c = run.out.confirmation;
-  const double expected = run.pilots[0]->seconds() + run.pilots[best]->seconds();
+  const double expected = run.pilots[0]->passSeconds() + run.pilots[best]->passSeconds();
   if (!pilotFitsBudget(pilotSeconds, expected, budget)) return true;  // unconfirmed, as the report says
+  c.shape = confirmationShape(run.shape, run.plannedSpp, run.settings.estimator.replicates);
   std::vector<PilotSamples> again;
   for (size_t candidate : {size_t(0), best}) {
     // Each with the roulette table its search pilot learnt: the configuration that will render, table and all.
-    again.push_back(
-        run.run(run.out.candidates[candidate].config, bounds.timeBudget, imagePixels, run.pilots[candidate]->roulette()));
+    again.push_back(run.run(run.out.candidates[candidate].config, bounds.timeBudget, imagePixels,
+                            run.pilots[candidate]->roulette(), c.shape));
     pilotSeconds += run.pilots.back()->seconds();
   }
-  const std::vector<CandidateReading> readings = readCandidates(where, again, kRelMseEpsilon);
+  // The value each pixel's variance is relative to: the search's pilots', independent of both confirming ones.
+  const std::vector<glm::dvec3> values(searchValues.begin(),
+                                       searchValues.begin() + std::min<size_t>(c.shape.pixels, searchValues.size()));
+  const std::vector<CandidateReading> readings = readAgainst(values, again, kRelMseEpsilon);
   c.ran = true, c.candidate = run.out.candidates[best].label;
   c.start = readings[0], c.winner = readings[1];
-  c.confirmed = beats(readings[1], readings[0]) && (!bounds.sampleCountEnds || affordableAtSampleCount(readings[1], readings[0]));
+  c.confirmed =
+      confirms(readings[1], readings[0]) && (!bounds.sampleCountEnds || affordableAtSampleCount(readings[1], readings[0]));
   return c.confirmed;
 }
 
@@ -226,12 +235,11 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   // A budget with --spp as its cap plans for the cap at most.
   const double plannedPixelSamples = timeBudget > 0.0 && settings.spp == kMaxSpp ? 1e300 : renderSpp * imagePixels;
   std::vector<PilotSamples> measured;
-  PilotRounds rounds(film, order, PilotShape{});
+  PilotRounds rounds(film, order);
   PilotRun run{ctx, scene, settings, order, PilotShape{}, rounds, out, {}, renderSpp};
   run.pending = std::make_unique<CandidatePilot>(ctx, scene, settings, settings.estimator, 0u, out);
   run.shape = pilotShape(run.pending->pathsPerPass(), plannedPixelSamples, pilotsPlanned(steps), imagePixels,
                          settings.estimator.replicates);
-  rounds.setShape(run.shape);
   auto measure = [&](const std::string& label, const EstimatorConfig& e) {
     measured.push_back(run.run(e, timeBudget, imagePixels));
     MeasuredCandidate m;
@@ -255,7 +263,14 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
     for (double value : step.values) {
       const double incumbentValue = findEstimatorParam(step.key)->get(out.candidates[best].config);
       const double expected = run.pilots[best]->seconds() * expectedPilotCost(step.key, value, incumbentValue);
-      if (!pilotFitsBudget(pilotSeconds, expected, budget)) {
+      // After the first challenger, room kept for the confirmation of whichever wins (the start again and the winner
+      // again: a confirmation reuses rr efficiency's table, so the incumbent's passes alone, and the challenger's
+      // expected seconds, its own roulette pilot included, to be safe). The first is measured wherever it
+      // fits alone: on a loaded machine the per-depth roulette pilot and a confirmation after it do not fit 5% of
+      // 24 s, and its 4-6x on the dark interiors renders unconfirmed rather than not at all.
+      const double confirming =
+          out.candidates.size() == 1 ? 0.0 : run.pilots[0]->passSeconds() + std::max(expected, run.pilots[best]->passSeconds());
+      if (!pilotFitsBudget(pilotSeconds, expected + confirming, budget)) {
         out.skippedForBudget.push_back(label(step.key, value));
         break;
       }
@@ -274,7 +289,7 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   }
   const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
   for (size_t c = 0; c < readings.size(); ++c) out.candidates[c].reading = readings[c];
-  if (best != 0 && !confirmWinner(run, best, pilotSeconds, budget, bounds, imagePixels, where)) best = 0;
+  if (best != 0 && !confirmWinner(run, best, pilotSeconds, budget, bounds, imagePixels, pooledValues(where, measured))) best = 0;
   finishChoice(out, run, best, bounds);
   return out;
 }

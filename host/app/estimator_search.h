@@ -26,11 +26,13 @@ struct MeasuredCandidate {
   double seconds = 0.0;    // its pilot's passes (and rr efficiency's own pilot), wall time
 };
 
-// The search's winner against the start again, on fresh pilots of both (estimator_search.cpp, confirmWinner).
+// The search's winner against the start again, on fresh pilots of both nearer the render's stage of convergence
+// (estimator_search.cpp, confirmWinner).
 struct Confirmation {
   bool ran = false;        // false: the start won the search, or the share of the render's time left no room
-  bool confirmed = false;  // the winner beat the start again (beats); otherwise the start rendered
+  bool confirmed = false;  // the winner beat the start again (confirms); otherwise the start rendered
   std::string candidate;   // the winner's label
+  PilotShape shape;        // its pilots' pixels and samples a pixel (confirmationShape)
   CandidateReading start, winner;
 };
 

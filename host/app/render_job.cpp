@@ -761,6 +761,8 @@ json confirmationJson(const EstimatorChoice& c) {
           {"confirmed", k.confirmed},
           {"vs_start", ratio},
           {"vs_start_95", ratioInterval(ratio, vs.se)},
+          {"pilot_pixels", k.shape.pixels},
+          {"pilot_spp", k.shape.spp},
           {"start_efficiency", k.start.efficiency()},
           {"winner_efficiency", k.winner.efficiency()}};
 }

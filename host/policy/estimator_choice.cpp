@@ -113,6 +113,36 @@ std::vector<CandidateReading> readCandidates(const PilotPixels& where, const std
   return readings;
 }
 
+std::vector<glm::dvec3> pooledValues(const PilotPixels& where, const std::vector<PilotSamples>& pilots) {
+  std::vector<glm::dvec3> total(where.index.size(), glm::dvec3(0.0));
+  for (const PilotSamples& p : pilots)
+    for (size_t i = 0; i < total.size(); ++i) total[i] += p.mean[i] / double(pilots.size());
+  return windowMeans(where, total);
+}
+
+std::vector<CandidateReading> readAgainst(const std::vector<glm::dvec3>& values, const std::vector<PilotSamples>& pilots,
+                                          double epsilon) {
+  std::vector<CandidateReading> readings(pilots.size());
+  for (size_t c = 0; c < pilots.size(); ++c) {
+    CandidateReading& r = readings[c];
+    r.pixels = relativeVariances(pilots[c].sampleVariance, values, epsilon);
+    std::tie(r.relVariance, r.relVarianceSe) = meanAndSe(r.pixels);
+    r.cost = pilots[c].cost;
+  }
+  return readings;
+}
+
+PilotShape confirmationShape(PilotShape search, double plannedSpp, uint32_t replicates) {
+  replicates = std::max(replicates, 1u);
+  const double samples = double(search.pixels) * search.spp;
+  double spp = std::clamp(std::floor(plannedSpp / kChoiceConfirmationStage / replicates) * replicates, double(search.spp),
+                          double(kChoiceMaxConfirmationSpp / replicates * replicates));
+  // At least kChoiceMinPilotPixels pixels (as many as the search's where it has fewer).
+  const double leastPixels = std::min<double>(kChoiceMinPilotPixels, search.pixels);
+  spp = std::max(std::min(spp, std::floor(samples / leastPixels / replicates) * replicates), double(search.spp));
+  return PilotShape{uint32_t(std::clamp(std::floor(samples / spp), 1.0, double(search.pixels))), uint32_t(spp)};
+}
+
 Comparison compare(const CandidateReading& challenger, const CandidateReading& incumbent) {
   if (challenger.efficiency() <= 0.0 || incumbent.efficiency() <= 0.0) return {};
   // log(E_c / E_i) = log v_i + log c_i - log v_c - log c_c; each pixel's influence on it, v's by the delta method.
@@ -130,6 +160,11 @@ bool beats(const CandidateReading& challenger, const CandidateReading& incumbent
   if (incumbent.efficiency() <= 0.0) return true;
   const Comparison c = compare(challenger, incumbent);
   return c.logRatio >= std::log(kChoiceMargin) && c.logRatio - 1.645 * c.se > 0.0;
+}
+
+bool confirms(const CandidateReading& winner, const CandidateReading& start) {
+  const Comparison c = compare(winner, start);
+  return c.measured && std::isfinite(c.se) && c.logRatio >= std::log(kChoiceMargin);
 }
 
 bool affordableAtSampleCount(const CandidateReading& challenger, const CandidateReading& start) {

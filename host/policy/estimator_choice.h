@@ -74,6 +74,13 @@ struct CandidateReading {
 inline constexpr int kChoiceWindowRadius = 2;
 std::vector<CandidateReading> readCandidates(const PilotPixels& where, const std::vector<PilotSamples>& pilots, double epsilon);
 
+// The confirmation's readings (see confirmationShape): each pixel's value from every search pilot (none of them the
+// confirmation's own samples), windowed over the search's denser subset, so a value stays independent of the
+// candidates it divides; `values` holds the first pixels of the search's subset.
+std::vector<glm::dvec3> pooledValues(const PilotPixels& where, const std::vector<PilotSamples>& pilots);
+std::vector<CandidateReading> readAgainst(const std::vector<glm::dvec3>& values, const std::vector<PilotSamples>& pilots,
+                                          double epsilon);
+
 // A challenger against the incumbent: the log of their efficiencies' ratio and its standard error, paired pixel by
 // pixel (the delta method over the same pixels: a hard pixel is hard for both, and the spread of pixels'
 // difficulty cancels).
@@ -87,6 +94,13 @@ Comparison compare(const CandidateReading& challenger, const CandidateReading& i
 // 95% bound of the (paired) ratio is above 1: a pilot is short, and a switch on noise costs more than staying.
 inline constexpr double kChoiceMargin = 1.05;
 bool beats(const CandidateReading& challenger, const CandidateReading& incumbent);
+
+// The confirmation's rule: the winner's fresh reading at least kChoiceMargin times the start's. One comparison, not
+// the best of several, so its point estimate is free of the winner's curse (not of every bias: a heavy tail's
+// variance reads low more often than high), and switching where it reads ahead is what maximises the expected
+// efficiency; the search's 95% bound guards against switching on noise among many. With the bound here too,
+// veach_mis's heavy-tailed readings (a fresh ratio of 1.42x, 0.73-2.75) kept the defaults at 0.97x.
+bool confirms(const CandidateReading& winner, const CandidateReading& start);
 
 // Where a sample count ends the render (no time budget or target error), a challenger is chosen only where its sample
 // costs at most kChoiceMaxCostAtSampleCount times the start's: the efficiency it wins is lower error for more time,
@@ -126,10 +140,22 @@ inline constexpr uint32_t kChoiceMinPilotPixels = 256;
 // kernels (about 0.25 s on the Cornell box) and little else.
 inline constexpr double kChoiceMinBudgetSeconds = 10.0;
 bool renderFitsPilots(double plannedPixelSamples, uint32_t candidates);
+
 struct PilotShape {
   uint32_t pixels = 0, spp = 0;
 };
 PilotShape pilotShape(uint32_t pathsPerPass, double plannedPixelSamples, uint32_t candidates, uint32_t imagePixels,
                       uint32_t replicates);
+
+// The confirmation's pilots read the winner and the start nearer the render's stage of convergence: at most as many
+// samples as a search pilot, on fewer of its pixels at more samples each (a quarter of the render's planned samples a pixel,
+// at most kChoiceMaxConfirmationSpp, at least the search's, a multiple of the replicates, over at least
+// kChoiceMinPilotPixels pixels). Under Owen-scrambled Sobol one light sample stratifies more with every sample and
+// two gain less from it: on soft_shadows the search's 64 a pixel read two light samples 1.13-1.23x the defaults,
+// 256 read 0.87-0.95x, and the render of 2,000 found 0.9x. 128, not 256: at half the pixels veach_mis's
+// heavy-tailed readings were too wide to keep its gain (docs/journal/estimator-auto.md).
+inline constexpr double kChoiceConfirmationStage = 4.0;
+inline constexpr uint32_t kChoiceMaxConfirmationSpp = 128;
+PilotShape confirmationShape(PilotShape search, double plannedSpp, uint32_t replicates);
 
 }  // namespace vkmc

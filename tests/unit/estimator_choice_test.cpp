@@ -193,3 +193,71 @@ TEST(EstimatorChoice, APilotFillsAPassAndStaysAShareOfTheRender) {
   EXPECT_LE(s.pixels, 64u);
   EXPECT_LE(s.spp, kChoiceMaxPilotSpp);
 }
+
+// The confirmation's pilots: a search pilot's samples on fewer pixels at more each, nearer the render's stage of
+// convergence (a quarter of its planned samples a pixel, at most 128), at least 256 pixels.
+TEST(EstimatorChoice, TheConfirmationReadsNearerTheRendersStage) {
+  const PilotShape search{4096, 64};
+  PilotShape c = confirmationShape(search, 2200.0, 2);  // soft_shadows' 24 s at 128 x 128
+  EXPECT_EQ(c.spp, kChoiceMaxConfirmationSpp);
+  EXPECT_EQ(c.pixels, 4096u * 64u / kChoiceMaxConfirmationSpp);
+  c = confirmationShape(search, 256.0, 2);  // a render of 256 samples a pixel: the search's own stage
+  EXPECT_EQ(c.spp, 64u);
+  EXPECT_EQ(c.pixels, 4096u);
+  c = confirmationShape({4096, 63}, 400.0, 3);  // three replicates (the search's 63): a multiple of 3
+  EXPECT_EQ(c.spp, 99u);
+  EXPECT_LE(uint64_t(c.pixels) * c.spp, 4096u * 63u);
+  // Over a range of shapes and plans: never more pixels or samples than the search's, never fewer samples a pixel.
+  for (uint32_t pixels : {1u, 100u, 256u, 1000u, 4096u})
+    for (double planned : {1.0, 64.0, 300.0, 2200.0, 1e6})
+      for (uint32_t replicates : {1u, 2u, 3u, 4u}) {
+        const PilotShape from{pixels, 64 / replicates * replicates};
+        const PilotShape to = confirmationShape(from, planned, replicates);
+        EXPECT_LE(to.pixels, from.pixels);
+        EXPECT_LE(uint64_t(to.pixels) * to.spp, uint64_t(from.pixels) * from.spp);
+        EXPECT_GE(to.spp, from.spp);
+        EXPECT_EQ(to.spp % replicates, 0u);
+      }
+  c = confirmationShape({512, 64}, 5000.0, 2);  // few pixels: kept at kChoiceMinPilotPixels
+  EXPECT_EQ(c.pixels, kChoiceMinPilotPixels);
+  EXPECT_EQ(c.spp, 128u);
+  c = confirmationShape({100, 64}, 5000.0, 2);  // fewer still: the search's shape
+  EXPECT_EQ(c.pixels, 100u);
+  EXPECT_EQ(c.spp, 64u);
+}
+
+// The confirmation reads both pilots against values from elsewhere (the search's pilots), not against each other,
+// and confirms on its point estimate: a fresh ratio of at least kChoiceMargin, however wide its interval.
+TEST(EstimatorChoice, TheConfirmationReadsAgainstGivenValues) {
+  PilotSamples a, b;
+  a.mean = {glm::dvec3(100.0), glm::dvec3(100.0)}, b.mean = a.mean;  // their own means do not enter
+  a.sampleVariance = {glm::dvec3(4.0), glm::dvec3(16.0)}, b.sampleVariance = {glm::dvec3(1.0), glm::dvec3(1.0)};
+  a.cost = b.cost = 1.0;
+  const std::vector<CandidateReading> r = readAgainst({glm::dvec3(2.0), glm::dvec3(2.0)}, {a, b}, 0.0);
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_DOUBLE_EQ(r[0].relVariance, (1.0 + 4.0) / 2.0);
+  EXPECT_DOUBLE_EQ(r[1].relVariance, 0.25);
+  EXPECT_TRUE(beats(r[1], r[0]));
+  EXPECT_TRUE(confirms(r[1], r[0]));
+  EXPECT_FALSE(confirms(r[0], r[1]));
+  // The values pooled over the search's pilots: their mean, windowed.
+  const PilotPixels where{8, 1, {0, 1, 7}};  // pixels 0 and 1 share a window; 7 is alone in its
+  PilotSamples c = a, d = a;
+  c.mean = {glm::dvec3(2.0), glm::dvec3(4.0), glm::dvec3(10.0)};
+  d.mean = {glm::dvec3(6.0), glm::dvec3(8.0), glm::dvec3(20.0)};
+  const std::vector<glm::dvec3> v = pooledValues(where, {c, d});
+  EXPECT_DOUBLE_EQ(v[0].x, 5.0);  // (2 + 6) / 2 and (4 + 8) / 2, windowed together
+  EXPECT_DOUBLE_EQ(v[1].x, 5.0);
+  EXPECT_DOUBLE_EQ(v[2].x, 15.0);  // (10 + 20) / 2, alone
+}
+
+TEST(EstimatorChoice, TheConfirmationHoldsOnItsPointEstimate) {
+  CandidateReading start, winner;
+  start.relVariance = winner.relVariance = 1.0, start.cost = 1.0;
+  start.pixels = {1.0, 1.0, 1.0, 1.0}, winner.pixels = {0.1, 1.9, 0.1, 1.9};  // noisy: its interval spans 1
+  winner.cost = 1.0 / 1.2;                                                    // 1.2x as efficient
+  EXPECT_FALSE(beats(winner, start)) << "the search's test asks its bound too";
+  EXPECT_TRUE(confirms(winner, start));
+  winner.cost = 1.0 / 1.04;  // under the margin
+  EXPECT_FALSE(confirms(winner, start));
+}
