@@ -17,9 +17,8 @@
 #include "scene/ktx2_decode.h"
 
 namespace vkmc {
-namespace {
 
-void checkSize(uint32_t width, uint32_t height, uint32_t maxSide, uint64_t maxTexels) {
+void checkImageSize(uint32_t width, uint32_t height, uint32_t maxSide, uint64_t maxTexels) {
   if (width == 0 || height == 0) throw Error("it has no pixels");
   if (width > maxSide || height > maxSide)
     throw Error(std::to_string(width) + "x" + std::to_string(height) + " exceeds " + std::to_string(maxSide) + " texels a side");
@@ -28,12 +27,14 @@ void checkSize(uint32_t width, uint32_t height, uint32_t maxSide, uint64_t maxTe
                 " texels left to the scene's images");
 }
 
+namespace {
+
 DecodedImage decodePng(const unsigned char* bytes, size_t size, uint32_t maxSide, uint64_t maxTexels) {
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_memory(&image, bytes, size)) throw Error(std::string("not a valid PNG: ") + image.message);
   try {
-    checkSize(image.width, image.height, maxSide, maxTexels);
+    checkImageSize(image.width, image.height, maxSide, maxTexels);
   } catch (...) {
     png_image_free(&image);
     throw;
@@ -114,7 +115,7 @@ DecodedImage decodeWebp(const unsigned char* bytes, size_t size, uint32_t maxSid
   WebPBitstreamFeatures features;
   if (WebPGetFeatures(bytes, size, &features) != VP8_STATUS_OK) throw Error("not a valid WebP (its header is malformed)");
   if (features.has_animation) throw Error("an animated WebP (a texture is one still image)");
-  checkSize(uint32_t(features.width), uint32_t(features.height), maxSide, maxTexels);
+  checkImageSize(uint32_t(features.width), uint32_t(features.height), maxSide, maxTexels);
   DecodedImage out;
   out.width = uint32_t(features.width), out.height = uint32_t(features.height);
   out.rgba.resize(size_t(out.width) * out.height * 4);
@@ -140,7 +141,7 @@ DecodedImage decodeImage(const unsigned char* bytes, size_t size, uint32_t maxSi
       DecodedImage out;
       std::string why;
       if (decodeJpegInto(bytes, size, maxSide, maxTexels, &out, &why)) return out;
-      if (why.empty()) checkSize(out.width, out.height, maxSide, maxTexels);  // refused by its size: say which
+      if (why.empty()) checkImageSize(out.width, out.height, maxSide, maxTexels);  // refused by its size: say which
       throw Error(why);
     }
     case ImageFormat::WebP: return decodeWebp(bytes, size, maxSide, maxTexels);

@@ -18,6 +18,9 @@ struct DecodedImage {
   std::vector<uint8_t> rgba;  // width * height * 4, top row first
 };
 
+// Throws vkmc::Error when an image of this size has no pixels, a side past maxSide or more than maxTexels texels.
+void checkImageSize(uint32_t width, uint32_t height, uint32_t maxSide, uint64_t maxTexels);
+
 // Throws vkmc::Error with the reason (not naming the image: the caller does) when the bytes are not a whole PNG,
 // JPEG, still WebP or single-image KTX2, or when a side exceeds maxSide or the texels exceed maxTexels.
 DecodedImage decodeImage(const unsigned char* bytes, size_t size, uint32_t maxSide, uint64_t maxTexels);

@@ -60,12 +60,7 @@ void checkShape(const basist::ktx2_transcoder& file, uint32_t maxSide, uint64_t 
   const uint32_t width = file.get_width(), height = file.get_height();
   if (file.get_layers() > 1) throw Error("a KTX2 array of " + std::to_string(file.get_layers()) + " images (a texture is one)");
   if (file.get_faces() != 1) throw Error("a KTX2 cube map (a texture is one 2D image)");
-  if (width == 0 || height == 0) throw Error("a KTX2 with no pixels");
-  if (width > maxSide || height > maxSide)
-    throw Error(std::to_string(width) + "x" + std::to_string(height) + " exceeds " + std::to_string(maxSide) + " texels a side");
-  if (uint64_t(width) * height > maxTexels)
-    throw Error(std::to_string(width) + "x" + std::to_string(height) + " exceeds the " + std::to_string(maxTexels) +
-                " texels left to the scene's images");
+  checkImageSize(width, height, maxSide, maxTexels);
   // ETC1S data comes in BasisLZ and nothing else; UASTC raw or in Zstandard. Zstandard's output is allocated at the
   // size the level index declares (the transcoder allows up to 2 GiB, and inflates a level before it reads its
   // format): one that is not the UASTC blocks of an image this size is refused before a forged length allocates it.
