@@ -154,7 +154,7 @@ struct PathState {
   vec4 direction;   // xyz: unit direction, w: pdf of the direction
   vec4 throughput;  // rgb: path throughput, w: product of the split factors that divided it (roulette undoes none)
   vec4 radiance;    // rgb: radiance gathered so far, w: the sample's pixel-filter weight (accumulate applies it)
-  uint pixel;       // the pixel (low kPathPixelBits), then its spectral channel (pathChannel) and whether it is taken
+  uint pixel;       // the pixel (low kPathPixelBits), then its spectral channel (pathChannelOf) and whether it is taken
   uint rngKey;      // random-number key (a split child gets its own)
   uint depth;       // scattering events so far
   uint rootPath;    // the slot of the path's sample, where its radiance accumulates
