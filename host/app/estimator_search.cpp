@@ -171,9 +171,12 @@ struct PilotRun {
     if (!pending) pending = std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out, table, spp);
     pilots.push_back(std::move(pending));
     pilots.back()->render(order, here);
+    // Its round's weight from the plan as it stood before it ran: the start's own pace (its GPU time, which follows
+    // its paths' lengths and so its values) may set only the later rounds' weights. Under a budget with no sample
+    // cap the start's round then weighs next to nothing, about 3% of its pixels' samples set aside.
+    rounds.add(pilots.back()->film(), plannedSpp, here);
     if (timeBudget > 0.0 && pilots.size() == 1)
       plannedSpp = std::min(plannedSpp, timeBudget / (pilots[0]->secondsPerPixelSample() * imagePixels));
-    rounds.add(pilots.back()->film(), plannedSpp, here);
     PilotSamples samples = pilots.back()->samples(order, here.pixels);
     pilots.back()->releaseFilm();  // a full image's sums, of which the rounds and the reading keep what they need
     return samples;
