@@ -205,7 +205,7 @@ bool confirmWinner(PilotRun& run, size_t best, double& pilotSeconds, double budg
                                        searchValues.begin() + std::min<size_t>(c.shape.pixels, searchValues.size()));
   const std::vector<CandidateReading> readings = readAgainst(values, again, kRelMseEpsilon);
   c.ran = true, c.candidate = run.out.candidates[best].label;
-  c.start = readings[0], c.winner = readings[1];
+  c.start = readings[0], c.winner = readings[1], c.vsStart = compare(readings[1], readings[0]);
   c.confirmed =
       confirms(readings[1], readings[0]) && (!bounds.sampleCountEnds || affordableAtSampleCount(readings[1], readings[0]));
   return c.confirmed;

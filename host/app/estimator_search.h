@@ -34,6 +34,7 @@ struct Confirmation {
   std::string candidate;   // the winner's label
   PilotShape shape;        // its pilots' pixels and samples a pixel (confirmationShape)
   CandidateReading start, winner;
+  Comparison vsStart;  // the winner's fresh reading against the start's (compare)
 };
 
 struct EstimatorChoice {

@@ -754,7 +754,7 @@ json confirmationJson(const EstimatorChoice& c) {
                           : "the pilots' share of the render's time fitted no more: the winner renders unconfirmed";
     return {{"ran", false}, {"why", why}};
   }
-  const Comparison vs = compare(k.winner, k.start);
+  const Comparison& vs = k.vsStart;
   const double ratio = vs.measured ? std::exp(vs.logRatio) : 0.0;
   return {{"ran", true},
           {"candidate", k.candidate},
@@ -772,7 +772,6 @@ json confirmationJson(const EstimatorChoice& c) {
 json choiceJson(const EstimatorChoice& c) {
   json candidates = json::array();
   const CandidateReading& start = c.candidates.front().reading;
-  auto interval = ratioInterval;
   for (const MeasuredCandidate& m : c.candidates) {
     const CandidateReading& r = m.reading;
     const Comparison vsStart = compare(r, start);
@@ -785,9 +784,9 @@ json choiceJson(const EstimatorChoice& c) {
                           {"rel_variance_standard_error", r.relVarianceSe},
                           {"cost_per_sample", r.cost},
                           {"efficiency", r.efficiency()},
-                          {"efficiency_95", interval(r.efficiency(), r.relativeSe())},
+                          {"efficiency_95", ratioInterval(r.efficiency(), r.relativeSe())},
                           {"vs_start", ratio},
-                          {"vs_start_95", interval(ratio, vsStart.se)}});
+                          {"vs_start_95", ratioInterval(ratio, vsStart.se)}});
   }
   return {{"chosen", c.chosen.toJson()},
           {"candidates", candidates},
@@ -811,7 +810,7 @@ json choiceJson(const EstimatorChoice& c) {
 std::string confirmationNote(const EstimatorChoice& c) {
   const Confirmation& k = c.confirmation;
   if (!k.ran) return c.candidates.front().chosen ? "" : "; unconfirmed (the pilots' share fitted no more)";
-  const Comparison vs = compare(k.winner, k.start);
+  const Comparison& vs = k.vsStart;
   const std::string ratio = vs.measured ? formatNumber(std::round(100.0 * std::exp(vs.logRatio)) / 100.0) + "x" : "unmeasured";
   return k.confirmed ? "; confirmed on fresh pilots (" + ratio + ")"
                      : "; " + k.candidate + " won the search but not on fresh pilots (" + ratio + "), so the start renders";

@@ -91,6 +91,15 @@ std::vector<double> relativeVariances(const std::vector<glm::dvec3>& sampleVaria
   return r;
 }
 
+// A pilot's reading against the value each of its pixels is relative to.
+CandidateReading readingOf(const PilotSamples& pilot, const std::vector<glm::dvec3>& value, double epsilon) {
+  CandidateReading r;
+  r.pixels = relativeVariances(pilot.sampleVariance, value, epsilon);
+  std::tie(r.relVariance, r.relVarianceSe) = meanAndSe(r.pixels);
+  r.cost = pilot.cost;
+  return r;
+}
+
 }  // namespace
 
 std::vector<CandidateReading> readCandidates(const PilotPixels& where, const std::vector<PilotSamples>& pilots, double epsilon) {
@@ -104,11 +113,7 @@ std::vector<CandidateReading> readCandidates(const PilotPixels& where, const std
   for (size_t c = 0; c < pilots.size(); ++c) {
     std::vector<glm::dvec3> value(pixels);
     for (size_t i = 0; i < pixels; ++i) value[i] = pilots.size() > 1 ? (total[i] - pilots[c].mean[i]) / others : total[i];
-    value = windowMeans(where, value);
-    CandidateReading& r = readings[c];
-    r.pixels = relativeVariances(pilots[c].sampleVariance, value, epsilon);
-    std::tie(r.relVariance, r.relVarianceSe) = meanAndSe(r.pixels);
-    r.cost = pilots[c].cost;
+    readings[c] = readingOf(pilots[c], windowMeans(where, value), epsilon);
   }
   return readings;
 }
@@ -122,13 +127,8 @@ std::vector<glm::dvec3> pooledValues(const PilotPixels& where, const std::vector
 
 std::vector<CandidateReading> readAgainst(const std::vector<glm::dvec3>& values, const std::vector<PilotSamples>& pilots,
                                           double epsilon) {
-  std::vector<CandidateReading> readings(pilots.size());
-  for (size_t c = 0; c < pilots.size(); ++c) {
-    CandidateReading& r = readings[c];
-    r.pixels = relativeVariances(pilots[c].sampleVariance, values, epsilon);
-    std::tie(r.relVariance, r.relVarianceSe) = meanAndSe(r.pixels);
-    r.cost = pilots[c].cost;
-  }
+  std::vector<CandidateReading> readings;
+  for (const PilotSamples& pilot : pilots) readings.push_back(readingOf(pilot, values, epsilon));
   return readings;
 }
 
