@@ -21,23 +21,35 @@ namespace {
 // would weigh near-copies as if independent).
 constexpr uint32_t kPilotSeedSalt = 0x5eed0a17u;
 
+// A candidate pilot's settings: the render's with the candidate's estimator, its own seed (its index's), samples
+// run by pixel.
+RenderSettings candidateSettings(const RenderSettings& render, const EstimatorConfig& e, uint32_t index, uint32_t spp) {
+  RenderSettings s = render;
+  s.estimator = e;
+  s.seed = gpu::hashU32(render.seed ^ kPilotSeedSalt ^ gpu::hashU32(index + 1u));
+  s.sampleRuns = true, s.progress = false, s.timeBudget = 0.0;
+  s.spp = spp;
+  if (e.splitsPaths()) s.integrator = Integrator::Wavefront;  // splitting needs the path pool
+  return s;
+}
+
+// rr efficiency's table for a pilot: learnt already (its roulette pilot's seconds counted with the pilot's), or
+// reused at no cost (a confirmation tests the table that will render). Without one, the pilot learns its own.
+struct GivenRoulette {
+  RouletteTable table;
+  double learntSeconds = 0.0;
+};
+
 // One candidate's pilot: its renderer (its own pipelines), and its samples over the first pixels of the order.
 class CandidatePilot {
  public:
-  // rr efficiency learns its table in a roulette pilot of its own, unless `table` gives the one to use (a
-  // confirmation tests the table that will render).
   CandidatePilot(vk::Context& ctx, const GpuScene& scene, const RenderSettings& render, const EstimatorConfig& e, uint32_t index,
-                 EstimatorChoice& out, const std::optional<RouletteTable>& table = std::nullopt,
+                 EstimatorChoice& out, const std::optional<GivenRoulette>& given = std::nullopt,
                  uint32_t spp = kChoiceMaxPilotSpp)
-      : settings_(render), film_(render.width, render.height) {
-    settings_.estimator = e;
-    settings_.seed = gpu::hashU32(render.seed ^ kPilotSeedSalt ^ gpu::hashU32(index + 1u));
-    settings_.sampleRuns = true, settings_.progress = false, settings_.timeBudget = 0.0;
-    settings_.spp = spp;
-    if (e.splitsPaths()) settings_.integrator = Integrator::Wavefront;  // splitting needs the path pool
+      : settings_(candidateSettings(render, e, index, spp)), film_(render.width, render.height) {
     film_.replicates = e.replicates, film_.replicateVariance = e.sampler != Sampler::Independent;
-    if (e.rr == RouletteMode::Efficiency && table) {
-      roulette_ = table;
+    if (e.rr == RouletteMode::Efficiency && given) {
+      roulette_ = given->table, seconds_ += given->learntSeconds;
     } else if (e.rr == RouletteMode::Efficiency) {
       RoulettePilot pilot = runRoulettePilot(ctx, scene, settings_);
       out.pipelineSeconds += pilot.pipelineSeconds, seconds_ += pilot.seconds;
@@ -162,13 +174,13 @@ struct PilotRun {
   std::unique_ptr<CandidatePilot> pending;  // the start's, made before the shape (which its pass size sets)
 
   // A pilot of `e`, its seed its index's; the start's (the first) sets the plan's pace under a time budget.
-  // `at`: the confirmation's shape (a search pilot's where none is given), and `table` its roulette table.
+  // `at`: the confirmation's shape (a search pilot's where none is given); `given`: its roulette table.
   PilotSamples run(const EstimatorConfig& e, double timeBudget, uint32_t imagePixels,
-                   const std::optional<RouletteTable>& table = std::nullopt, std::optional<PilotShape> at = std::nullopt) {
+                   const std::optional<GivenRoulette>& given = std::nullopt, std::optional<PilotShape> at = std::nullopt) {
     const PilotShape here = at.value_or(shape);
     // A search pilot's settings as the start's (made before the shape); a confirming one's its own samples a pixel.
     const uint32_t spp = at ? at->spp : kChoiceMaxPilotSpp;
-    if (!pending) pending = std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out, table, spp);
+    if (!pending) pending = std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out, given, spp);
     pilots.push_back(std::move(pending));
     pilots.back()->render(order, here);
     // Its round's weight from the plan as it stood before it ran: the start's own pace (its GPU time, which follows
@@ -183,6 +195,30 @@ struct PilotRun {
   }
 };
 
+// rr efficiency's table for a challenger that turns it on, learnt before its kernels are built. Where the table
+// predicts at most kChoiceMinRoulettePrediction of the throughput rule's efficiency, its pilot is not rendered
+// and its learning pass is counted in the pilots' seconds alone.
+struct ChallengerRoulette {
+  std::optional<GivenRoulette> given;
+  bool predictsNoGain = false;
+};
+ChallengerRoulette learnChallengerRoulette(PilotRun& run, const EstimatorConfig& e, const EstimatorConfig& incumbent,
+                                           double& pilotSeconds) {
+  ChallengerRoulette r;
+  if (e.rr != RouletteMode::Efficiency || incumbent.rr == RouletteMode::Efficiency) return r;
+  const RenderSettings at = candidateSettings(run.settings, e, uint32_t(run.pilots.size()), kChoiceMaxPilotSpp);
+  const RoulettePilot pilot = runRoulettePilot(run.ctx, run.scene, at);
+  run.out.pipelineSeconds += pilot.pipelineSeconds;
+  run.out.roulettePrediction = pilot.table.gainOverThroughput;
+  if (pilot.table.gainOverThroughput > kChoiceMinRoulettePrediction) {
+    r.given = GivenRoulette{pilot.table, pilot.seconds};
+  } else {
+    r.predictsNoGain = true;
+    pilotSeconds += pilot.seconds, run.out.seconds += pilot.seconds;
+  }
+  return r;
+}
+
 // The winner against the start again, on fresh pilots of both (their own seeds, a prefix of the search's pixels at
 // more samples each: confirmationShape): the search's readings chose it from several comparisons, so its lead there
 // reads high (the winner's curse), and at 64 samples a pixel, earlier in the convergence than the render. Where its
@@ -196,8 +232,9 @@ bool confirmWinner(PilotRun& run, size_t best, double& pilotSeconds, double budg
   std::vector<PilotSamples> again;
   for (size_t candidate : {size_t(0), best}) {
     // Each with the roulette table its search pilot learnt: the configuration that will render, table and all.
+    const std::optional<RouletteTable>& table = run.pilots[candidate]->roulette();
     again.push_back(run.run(run.out.candidates[candidate].config, bounds.timeBudget, imagePixels,
-                            run.pilots[candidate]->roulette(), c.shape));
+                            table ? std::optional<GivenRoulette>(GivenRoulette{*table}) : std::nullopt, c.shape));
     pilotSeconds += run.pilots.back()->seconds();
   }
   // The value each pixel's variance is relative to: the search's pilots', independent of both confirming ones.
@@ -243,13 +280,13 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   run.pending = std::make_unique<CandidatePilot>(ctx, scene, settings, settings.estimator, 0u, out);
   run.shape = pilotShape(run.pending->pathsPerPass(), plannedPixelSamples, pilotsPlanned(steps), imagePixels,
                          settings.estimator.replicates);
-  auto measure = [&](const std::string& label, const EstimatorConfig& e) {
-    measured.push_back(run.run(e, timeBudget, imagePixels));
+  auto measure = [&](const std::string& label, const EstimatorConfig& e, const std::optional<GivenRoulette>& given) {
+    measured.push_back(run.run(e, timeBudget, imagePixels, given));
     MeasuredCandidate m;
     m.label = label, m.config = e, m.seconds = run.pilots.back()->seconds();
     out.candidates.push_back(m);
   };
-  measure("start", settings.estimator);
+  measure("start", settings.estimator, std::nullopt);
   const PilotPixels where{settings.width, settings.height,
                           std::vector<uint32_t>(order.begin(), order.begin() + run.shape.pixels)};
   // The pilots' share is of the render's seconds: its budget, or (where asked) its samples at the start's pace.
@@ -262,7 +299,8 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   double pilotSeconds = run.pilots[0]->seconds();
   for (const SearchStep& step : steps) {
     // Each value against the best so far, every candidate read against the values pooled so far; the key's
-    // next value only where this one won. Under a time budget, only what fits its share (the next key may).
+    // next value only where this one won (or lost: nextWhereLost). Under a time budget, only what fits its share
+    // (the next key may).
     for (double value : step.values) {
       const double incumbentValue = findEstimatorParam(step.key)->get(out.candidates[best].config);
       const double expected = run.pilots[best]->seconds() * expectedPilotCost(step.key, value, incumbentValue);
@@ -279,15 +317,19 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
       }
       EstimatorConfig e = out.candidates[best].config;
       findEstimatorParam(step.key)->set(e, value);
-      measure(label(step.key, value), e);
-      pilotSeconds += run.pilots.back()->seconds();
-      const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
-      if (!beats(readings.back(), readings[best])) break;
-      if (bounds.sampleCountEnds && !affordableAtSampleCount(readings.back(), readings[0])) {
-        out.candidates.back().tooCostly = true;
+      const ChallengerRoulette roulette = learnChallengerRoulette(run, e, out.candidates[best].config, pilotSeconds);
+      if (roulette.predictsNoGain) {
+        out.skippedByPrediction.push_back(label(step.key, value));
         break;
       }
-      best = readings.size() - 1;
+      measure(label(step.key, value), e, roulette.given);
+      pilotSeconds += run.pilots.back()->seconds();
+      const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
+      bool won = beats(readings.back(), readings[best]);
+      if (won && bounds.sampleCountEnds && !affordableAtSampleCount(readings.back(), readings[0]))
+        out.candidates.back().tooCostly = true, won = false;  // lost: with nextWhereLost a cheaper value may be affordable
+      if (won) best = readings.size() - 1;
+      if (won == step.nextWhereLost) break;
     }
   }
   const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);

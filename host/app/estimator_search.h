@@ -49,6 +49,10 @@ struct EstimatorChoice {
   bool cutShort = false;                      // the share of the render's time fitted no challenger: the start renders
   bool costCapped = false;                    // a sample count ends the render: kChoiceMaxCostAtSampleCount held
   std::vector<std::string> skippedForBudget;  // challengers left out because they would not fit it
+  // rr efficiency's learnt table against the throughput rule, as predicted on its roulette pilot's paths
+  // (RouletteTable::gainOverThroughput), where the search learnt one; a challenger it left out (kChoiceMinRoulettePrediction).
+  std::optional<double> roulettePrediction;
+  std::vector<std::string> skippedByPrediction;
   Confirmation confirmation;
   std::vector<RenderStats> stats;  // each pilot's counters (the report's rays include them)
 };

@@ -793,6 +793,8 @@ json choiceJson(const EstimatorChoice& c) {
           {"cost_unit", "GPU seconds"},
           {"cut_short", c.cutShort},
           {"skipped_for_budget", c.skippedForBudget},
+          {"roulette_predicted_gain", c.roulettePrediction ? json(*c.roulettePrediction) : json(nullptr)},
+          {"skipped_by_prediction", c.skippedByPrediction},
           {"confirmation", confirmationJson(c)},
           {"pilot_pixel_samples", c.pixelSamples},
           {"pilot_pixels", c.pilotPixels},

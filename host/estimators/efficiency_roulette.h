@@ -36,6 +36,11 @@ struct PilotPath {
 struct RouletteTable {
   std::array<float, kRouletteTableDepths> scale{};           // k_d; +inf: no roulette at that depth
   std::array<double, kRouletteTableDepths> predictedGain{};  // efficiency ratio predicted at each depth
+  // The whole table's efficiency predicted against the default throughput rule (roulette.h's sqrt rule) on the same
+  // pilot paths: V x T under that rule over V x T under the table, each path's decisions taken in sequence as the
+  // kernels take them (efficiency_roulette.cpp, rouletteProduct). 1 where paths rarely reach the roulette depth or
+  // the table learns the rule back: --estimator auto then spends no pilot pass on it.
+  double gainOverThroughput = 1.0;
 };
 
 // sampleVariance: per-sample relative variance of the pixel estimates (image mean); raysPerVertex: rays one

@@ -15,10 +15,12 @@
 namespace vkmc {
 
 // One key's alternatives to whatever value the best configuration so far has (estimator_params.cpp's values), in
-// order: a value is measured only where the one before it won (4 light samples only after 2 beat 1).
+// order: a value is measured only where the one before it won (4 BSDF continuations only after 2 beat 1), or,
+// with nextWhereLost, only where it lost (2 light samples only where 4 did not win).
 struct SearchStep {
   std::string key;
   std::vector<double> values;
+  bool nextWhereLost = false;
 };
 
 // What the scene and the device can use, so the search skips keys that change nothing or cannot run there.
@@ -29,7 +31,7 @@ struct SearchScene {
   bool emitters = true;      // emissive triangles: what light_sampling solid-angle changes
 };
 
-// The keys searched, in order: rr efficiency (the per-depth pilot), light_samples {2, 4}, bsdf_samples {2, 4},
+// The keys searched, in order: rr efficiency (the per-depth pilot), light_samples {4, 2}, bsdf_samples {2, 4},
 // mis balance, light_sampling solid-angle; keys in `pinned` (the user's flags) are left out, splitting where the
 // device has no float atomics, light_sampling where no triangle emits, and mis where no lobe is glossy (on Lambertian surfaces a
 // BSDF sample's pdf is far below a light sample's wherever the light is small, so both heuristics give nearly the same weights:
@@ -109,6 +111,15 @@ bool confirms(const CandidateReading& winner, const CandidateReading& start);
 // 10-s render of 256 samples took 67 s. Under a budget or a target error, efficiency alone decides.
 inline constexpr double kChoiceMaxCostAtSampleCount = 4.0;
 bool affordableAtSampleCount(const CandidateReading& challenger, const CandidateReading& start);
+
+// rr efficiency's pilot is rendered only where the table its roulette pilot learnt predicts more than this much of
+// the throughput rule's efficiency (RouletteTable::gainOverThroughput, a model of the pilot's paths): where paths
+// rarely reach the roulette depth, or the table loses to the rule, its pilot pass would take a short budget's share
+// from the keys after it (on veach_mis at 24 s the start and that pass left no room for light_samples, which pays 2x
+// there; its table predicts 1.0). Only where the table predicts essentially nothing: the prediction reads the
+// paths it was fitted to, and misses heavy tails both ways (glossy_room predicts 3.4 and measures 0.87x at equal
+// time, many_lights predicts 1.03 and measures 1.36x).
+inline constexpr double kChoiceMinRoulettePrediction = 1.02;
 
 // Under a time budget the pilots take at most kChoiceMaxShare of it (what the issue that asked for auto allowed):
 // a challenger is measured only where the pilots' seconds so far and its expected seconds fit.

@@ -79,7 +79,25 @@ TEST(EstimatorAuto, FindsTheClearlyBestCandidate) {
   EXPECT_EQ(r.estimator.rr, RouletteMode::Efficiency);
   ASSERT_GE(r.choice->candidates.size(), 2u);
   EXPECT_EQ(r.choice->candidates[1].label, "rr=efficiency");  // searched first
+  ASSERT_TRUE(r.choice->roulettePrediction.has_value());
+  EXPECT_GT(*r.choice->roulettePrediction, kChoiceMinRoulettePrediction) << "its table predicts the gain it measures";
   EXPECT_TRUE(r.choice->confirmation.ran && r.choice->confirmation.confirmed) << "a clear lead holds on fresh pilots";
+}
+
+// rr efficiency is screened by its learnt table's prediction: where no path reaches the roulette depth (paths of
+// one bounce, roulette from the third vertex) the table predicts exactly the throughput rule's efficiency, and its
+// pilot pass is not rendered.
+TEST(EstimatorAuto, SkipsTheRoulettePilotWhereItsTablePredictsNothing) {
+  EstimatorConfig start;
+  start.maxDepth = 1;
+  const RenderOutcome r =
+      renderAuto("cornell_box.gltf", 32, 32, 128, 43, start, {"light_samples", "bsdf_samples", "mis", "light_sampling"});
+  ASSERT_TRUE(r.choice);
+  ASSERT_TRUE(r.choice->roulettePrediction.has_value());
+  EXPECT_DOUBLE_EQ(*r.choice->roulettePrediction, 1.0);
+  EXPECT_EQ(r.choice->skippedByPrediction, std::vector<std::string>{"rr=efficiency"});
+  ASSERT_EQ(r.choice->candidates.size(), 1u) << "only the start renders a pilot";
+  EXPECT_EQ(r.estimator.rr, RouletteMode::Throughput);
 }
 
 // The second: an emitting wall standing on a floor, seen from above the line where they meet. Area sampling's

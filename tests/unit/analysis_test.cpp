@@ -7,6 +7,7 @@
 #include "analysis/error_metrics.h"
 #include "analysis/student_t.h"
 #include "error.h"
+#include "../shaders/shared/roulette.h"
 #include "estimators/efficiency_roulette.h"
 #include "estimators/estimator_config.h"
 
@@ -152,15 +153,23 @@ TEST(EstimatorConfig, RejectsUnknownKeysBadValuesAndEndlessPaths) {
   EXPECT_THROW(late.validate(), Error) << "no roulette for 100000 bounces is a hang in a closed scene";
 }
 
-TEST(EfficiencyRoulette, KillsFreelyWhereTheContinuationAddsNothing) {
-  // Every path gathers all of its estimate by depth 1: later decisions may kill at no variance cost.
+namespace {
+// 1000 pilot paths alike: each gathers `gathered` by every depth and ends at lastDepth with `radiance`.
+std::vector<PilotPath> alikePaths(float radiance, uint32_t lastDepth, float beta, float gathered) {
   std::vector<PilotPath> pilot(1000);
   for (PilotPath& p : pilot) {
-    p.radiance = 1.0f;
-    p.lastDepth = 10;
-    p.beta.fill(0.5f);
-    p.gathered.fill(1.0f);
+    p.radiance = radiance;
+    p.lastDepth = lastDepth;
+    p.beta.fill(beta);
+    p.gathered.fill(gathered);
   }
+  return pilot;
+}
+}  // namespace
+
+TEST(EfficiencyRoulette, KillsFreelyWhereTheContinuationAddsNothing) {
+  // Every path gathers all of its estimate by depth 1: later decisions may kill at no variance cost.
+  std::vector<PilotPath> pilot = alikePaths(1.0f, 10, 0.5f, 1.0f);
   RouletteTable t = optimizeRouletteScales(pilot, 0.1, 2.0, 1);
   EXPECT_TRUE(std::isinf(t.scale[0])) << "depths before the first decision are left alone";
   for (uint32_t d = 1; d < 9; ++d) {
@@ -174,16 +183,63 @@ TEST(EfficiencyRoulette, KillsFreelyWhereTheContinuationAddsNothing) {
 
 TEST(EfficiencyRoulette, KeepsPathsWhoseContinuationCarriesTheEstimate) {
   // The whole estimate arrives late and cheaply: killing would add far more variance than it saves cost.
+  std::vector<PilotPath> pilot = alikePaths(10.0f, 4, 0.9f, 0.0f);
+  RouletteTable t = optimizeRouletteScales(pilot, 1e-4, 2.0, 1);
+  for (uint32_t d = 1; d < 4; ++d) EXPECT_GE(t.scale[d], 1.0f / 0.9f) << "depth " << d << ": survival must stay 1";
+}
+
+// The table's predicted efficiency against the throughput rule (what --estimator auto reads before it spends a pilot
+// pass on rr efficiency): each path's decisions in sequence, as the kernels take them.
+TEST(EfficiencyRoulette, PredictsNoGainWherePathsEndBeforeTheRouletteDepth) {
   std::vector<PilotPath> pilot(1000);
   for (size_t i = 0; i < pilot.size(); ++i) {
     PilotPath& p = pilot[i];
-    p.radiance = 10.0f;
-    p.lastDepth = 4;
-    p.beta.fill(0.9f);
-    p.gathered.fill(0.0f);
+    p.radiance = float(i % 7);
+    p.lastDepth = 1;
+    p.beta.fill(-1.0f), p.gathered.fill(-1.0f);
+    p.beta[0] = 0.5f, p.gathered[0] = p.radiance;
   }
-  RouletteTable t = optimizeRouletteScales(pilot, 1e-4, 2.0, 1);
-  for (uint32_t d = 1; d < 4; ++d) EXPECT_GE(t.scale[d], 1.0f / 0.9f) << "depth " << d << ": survival must stay 1";
+  EXPECT_EQ(optimizeRouletteScales(pilot, 0.3, 2.0, 2).gainOverThroughput, 1.0) << "no decision: both rules alike";
+}
+
+TEST(EfficiencyRoulette, PredictsTheCostSavedWhereTheContinuationAddsNothing) {
+  // As KillsFreely...: every path has gathered its estimate by depth 1, so only the rays differ. The table's
+  // scale 0.01 at depth 1 keeps 0.005 of the paths, whose throughput is then 100, so every later decision
+  // survives with the cap (0.999): 2 + 0.005 (1 + 0.999 + ... + 0.999^8) vertices. The sqrt rule survives with
+  // sqrt(beta / P), P what survived before.
+  std::vector<PilotPath> pilot = alikePaths(1.0f, 10, 0.5f, 1.0f);
+  const RouletteTable t = optimizeRouletteScales(pilot, 0.1, 2.0, 1);
+  ASSERT_NEAR(t.scale[1], 0.01f, 1e-6f);
+  double reach = 1.0, vertices = 0.0;
+  for (uint32_t d = 0; d <= 10; ++d) {
+    vertices += reach;
+    if (d >= 1) reach *= std::min(std::sqrt(0.5 / reach), double(gpu::kRouletteMaxSurvival));
+  }
+  double capped = 0.0;
+  for (int j = 0; j < 9; ++j) capped += std::pow(double(gpu::kRouletteMaxSurvival), j);
+  const double sqrtRays = 1.0 + 2.0 * vertices, tableRays = 1.0 + 2.0 * (2.0 + 0.005 * capped);
+  EXPECT_NEAR(t.gainOverThroughput, sqrtRays / tableRays, 1e-4 * sqrtRays / tableRays);
+}
+
+TEST(EfficiencyRoulette, PredictsTheVarianceTheThroughputRuleAddsWhereTheEstimateArrivesLate) {
+  // As KeepsPaths...: the whole estimate (10, weight 1) arrives after the last decision. The table's scales keep
+  // every path but for the survival cap (0.999 at each of depths 1-4); the sqrt rule survives with sqrt(0.9 / P).
+  // Each adds 100 (1/P - 1) to the second moment of 1e-4, P the probability of surviving all four decisions.
+  std::vector<PilotPath> pilot = alikePaths(10.0f, 4, 0.9f, 0.0f);
+  const RouletteTable t = optimizeRouletteScales(pilot, 1e-4, 2.0, 1);
+  for (uint32_t d = 1; d <= 4; ++d) ASSERT_GE(t.scale[d] * 0.9f, 1.0f) << "depth " << d;
+  auto product = [](auto survival) {
+    double reach = 1.0, vertices = 0.0;
+    for (uint32_t d = 0; d <= 4; ++d) {
+      vertices += reach;
+      if (d >= 1) reach *= survival(0.9 / reach);
+    }
+    return (1e-4 + 100.0 * (1.0 / reach - 1.0)) * (1.0 + 2.0 * vertices);
+  };
+  const double cap = gpu::kRouletteMaxSurvival;
+  const double expected = product([&](double b) { return std::min(std::sqrt(b), cap); }) / product([&](double) { return cap; });
+  EXPECT_NEAR(t.gainOverThroughput, expected, 1e-4 * expected);
+  EXPECT_GT(t.gainOverThroughput, 10.0) << "the sqrt rule's variance far outweighs the rays it saves";
 }
 
 // A NaN or an infinity in either image would make every metric NaN (and `compare` exit 0 with it): refused, naming

@@ -37,6 +37,17 @@ TEST(EstimatorChoice, SearchesTheKeysTheUserLeftAndTheSceneCanUse) {
   for (const char* key : {"light_samples", "bsdf_samples", "mis", "rr", "light_sampling"}) EXPECT_TRUE(hasKey(all, key)) << key;
   // Roulette first: it paid most, and under a budget's share the first challengers are the ones that fit.
   EXPECT_EQ(all.front().key, "rr");
+  // Four light samples first, two only where four lost; two BSDF continuations first, four only where two won.
+  for (const SearchStep& s : all) {
+    if (s.key == "light_samples") {
+      EXPECT_EQ(s.values, (std::vector<double>{4, 2}));
+      EXPECT_TRUE(s.nextWhereLost);
+    }
+    if (s.key == "bsdf_samples") {
+      EXPECT_EQ(s.values, (std::vector<double>{2, 4}));
+      EXPECT_FALSE(s.nextWhereLost);
+    }
+  }
   const std::vector<SearchStep> pinned = estimatorSearchSteps({"light_samples", "rr"}, SearchScene{true, true});
   EXPECT_FALSE(hasKey(pinned, "light_samples"));
   EXPECT_FALSE(hasKey(pinned, "rr"));
