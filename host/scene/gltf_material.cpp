@@ -2,6 +2,7 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -37,9 +38,10 @@ double extensionNumber(const tinygltf::ExtensionMap& ext, const char* extension,
   return v.IsNumber() ? v.GetNumberAsDouble() : NAN;
 }
 
-// The core factors: baseColorFactor, metallicFactor, roughnessFactor and emissiveFactor in [0, 1],
-// emissiveStrength and alphaCutoff in [0, inf).
-void readCoreFactors(const tinygltf::Material& m, const std::string& name, Material& out) {
+// The core factors: baseColorFactor, metallicFactor, roughnessFactor in [0, 1], emissiveStrength and alphaCutoff
+// in [0, inf). emissiveFactor above the schema's 1 is used as given with a warning: Blender's exporter wrote a
+// strength into it before KHR_materials_emissive_strength existed, and viewers render such files.
+void readCoreFactors(const tinygltf::Material& m, const std::string& name, Material& out, std::vector<std::string>& warnings) {
   constexpr double kUnbounded = INFINITY;
   const auto& pbr = m.pbrMetallicRoughness;
   if (pbr.baseColorFactor.size() != 4) throw Error(name + ": baseColorFactor must have 4 components");
@@ -48,7 +50,10 @@ void readCoreFactors(const tinygltf::Material& m, const std::string& name, Mater
   out.metallic = factor(pbr.metallicFactor, 1.0, name + ": metallicFactor");
   out.roughness = factor(pbr.roughnessFactor, 1.0, name + ": roughnessFactor");
   if (m.emissiveFactor.size() != 3) throw Error(name + ": emissiveFactor must have 3 components");
-  for (int c = 0; c < 3; ++c) out.emission[c] = factor(m.emissiveFactor[c], 1.0, name + ": emissiveFactor");
+  for (int c = 0; c < 3; ++c) out.emission[c] = factor(m.emissiveFactor[c], kUnbounded, name + ": emissiveFactor");
+  if (const float most = std::max({out.emission.x, out.emission.y, out.emission.z}); most > 1.0 + kRoundingSlack)
+    warnings.push_back(name + ": emissiveFactor = " + number(most) +
+                       " is above the schema's 1 (an exporter's strength); used as given, as viewers do");
   double strength = extensionNumber(m.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
   out.emission *= factor(strength, kUnbounded, name + ": KHR_materials_emissive_strength.emissiveStrength");
   if (!std::isfinite(out.emission.x) || !std::isfinite(out.emission.y) || !std::isfinite(out.emission.z))
@@ -91,7 +96,7 @@ Material convertMaterial(const tinygltf::Material& m, int index, const std::vect
   Material out;
   const auto& pbr = m.pbrMetallicRoughness;
   std::string name = "material " + std::to_string(index);
-  readCoreFactors(m, name, out);
+  readCoreFactors(m, name, out, warnings);
   out.doubleSided = m.doubleSided;
   out.baseColorTexture = convertTextureRef(pbr.baseColorTexture, textures, name + " baseColorTexture", warnings);
   out.metallicRoughnessTexture =

@@ -45,6 +45,16 @@ TEST(GltfMaterial, ValuesPastABoundByRoundingAreTheBound) {
   EXPECT_EQ(m.roughness, 1.0f);
 }
 
+// An emissiveFactor above the schema's 1 (older Blender exporters wrote a strength there): rendered as given, as
+// viewers render it, with a warning naming the material.
+TEST(GltfMaterial, AnEmissiveFactorAboveOneIsUsedWithAWarning) {
+  Scene s = loadGltf(quadWith("emissive_above_one", R"({"emissiveFactor":[0,5,2]})"));
+  EXPECT_EQ(s.materials[0].emission, glm::vec3(0.0f, 5.0f, 2.0f));
+  bool warned = false;
+  for (const std::string& w : s.warnings) warned |= w.find("material 0: emissiveFactor = 5 is above") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
 TEST(GltfMaterial, ValuesOutsideTheSchemasRangesAreNamedOnOneLine) {
   struct Row {
     const char* material;
@@ -55,7 +65,7 @@ TEST(GltfMaterial, ValuesOutsideTheSchemasRangesAreNamedOnOneLine) {
       {R"({"pbrMetallicRoughness":{"baseColorFactor":[1,-0.5,1,1]}})", "baseColorFactor = -0.5 is outside"},
       {R"({"pbrMetallicRoughness":{"metallicFactor":1e30}})", "material 0: metallicFactor = 1e+30 is outside [0, 1]"},
       {R"({"pbrMetallicRoughness":{"roughnessFactor":-2}})", "material 0: roughnessFactor = -2"},
-      {R"({"emissiveFactor":[0,5,0]})", "material 0: emissiveFactor = 5 is outside [0, 1]"},
+      {R"({"emissiveFactor":[0,-5,0]})", "material 0: emissiveFactor = -5 is outside [0, inf]"},
       {R"({"emissiveFactor":[1,1,1],"extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":-1}}})",
        "emissiveStrength = -1 is outside [0, inf]"},
       {R"({"emissiveFactor":[1,1,1],"extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":"bright"}}})",
