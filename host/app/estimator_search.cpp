@@ -313,6 +313,7 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
           out.candidates.size() == 1 ? 0.0 : run.pilots[0]->passSeconds() + std::max(expected, run.pilots[best]->passSeconds());
       if (!pilotFitsBudget(pilotSeconds, expected + confirming, budget)) {
         out.skippedForBudget.push_back(label(step.key, value));
+        if (step.nextWhereLost) continue;  // the next value is cheaper: it may fit
         break;
       }
       EstimatorConfig e = out.candidates[best].config;

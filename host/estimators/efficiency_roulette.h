@@ -39,7 +39,9 @@ struct RouletteTable {
   // The whole table's efficiency predicted against the default throughput rule (roulette.h's sqrt rule) on the same
   // pilot paths: V x T under that rule over V x T under the table, each path's decisions taken in sequence as the
   // kernels take them (efficiency_roulette.cpp, rouletteProduct). 1 where paths rarely reach the roulette depth or
-  // the table learns the rule back: --estimator auto then spends no pilot pass on it.
+  // the table learns the rule back: --estimator auto then spends no pilot pass on it. Not modelled: the kernels'
+  // 1/eta^2 scale of the throughput inside glass (the pilot records beta without it) and decisions past the
+  // table's last depth.
   double gainOverThroughput = 1.0;
 };
 

@@ -16,7 +16,7 @@ namespace vkmc {
 
 // One key's alternatives to whatever value the best configuration so far has (estimator_params.cpp's values), in
 // order: a value is measured only where the one before it won (4 BSDF continuations only after 2 beat 1), or,
-// with nextWhereLost, only where it lost (2 light samples only where 4 did not win).
+// with nextWhereLost, only where it lost or did not fit a budget's share (2 light samples only where 4 did not win).
 struct SearchStep {
   std::string key;
   std::vector<double> values;

@@ -80,7 +80,8 @@ TEST(EstimatorAuto, FindsTheClearlyBestCandidate) {
   ASSERT_GE(r.choice->candidates.size(), 2u);
   EXPECT_EQ(r.choice->candidates[1].label, "rr=efficiency");  // searched first
   ASSERT_TRUE(r.choice->roulettePrediction.has_value());
-  EXPECT_GT(*r.choice->roulettePrediction, kChoiceMinRoulettePrediction) << "its table predicts the gain it measures";
+  // Far above the screen's threshold (the basement's table predicted 5.3x the throughput rule at 64x64, 1024 spp).
+  EXPECT_GT(*r.choice->roulettePrediction, 2.0) << "its learnt table predicts a large gain, as it measures";
   EXPECT_TRUE(r.choice->confirmation.ran && r.choice->confirmation.confirmed) << "a clear lead holds on fresh pilots";
 }
 
