@@ -4,11 +4,12 @@ each file as it was at the commit the list names, with a .gltf's external buffer
 it inside the repo: the models are not committed. Render them with
 `tools/gltf_gallery.sh VKMC MODELS_DIR OUT --list tools/gltf_real_models.txt`.
 
-  python3 tools/gltf_real_fetch.py CLONES_DIR MODELS_DIR
+  python3 tools/gltf_real_fetch.py CLONES_DIR MODELS_DIR [--list FILE]
 
 CLONES_DIR holds one clone (bare or not) per repository, named owner__repo, e.g.
 `git clone --bare https://github.com/pmndrs/examples CLONES_DIR/pmndrs__examples`; the script names every clone
-it lacks. A file whose blob the clone lacks (a Git LFS pointer, a partial clone) is reported and skipped.
+it lacks. A file whose blob the clone lacks (a Git LFS pointer, a partial clone) is reported and skipped. --list
+reads another list of the same form. Exits 1 where a clone or a file was missing.
 """
 import json
 import os
@@ -42,11 +43,15 @@ def git_dir_of(clone):
 
 
 def main():
-    if len(sys.argv) != 3:
+    args = sys.argv[1:]
+    listed = LIST
+    if len(args) == 4 and args[2] == "--list":
+        listed = args[3]
+    elif len(args) != 2:
         sys.exit(__doc__)
-    clones, models = sys.argv[1], sys.argv[2]
+    clones, models = args[0], args[1]
     entries = []
-    for line in open(LIST):
+    for line in open(listed):
         if line.strip() and not line.startswith("#"):
             name, path, source = [f.strip() for f in line.split(" | ")[:3]]
             repo, commit = source.split("@")
