@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <numeric>
 #include <random>
@@ -41,17 +42,18 @@ struct GivenRoulette {
 };
 
 // One candidate's pilot: its renderer (its own pipelines), and its samples over the first pixels of the order.
+// learnOn: where rr efficiency learns its table without one given (the whole image where empty).
 class CandidatePilot {
  public:
   CandidatePilot(vk::Context& ctx, const GpuScene& scene, const RenderSettings& render, const EstimatorConfig& e, uint32_t index,
                  EstimatorChoice& out, const std::optional<GivenRoulette>& given = std::nullopt,
-                 uint32_t spp = kChoiceMaxPilotSpp)
+                 uint32_t spp = kChoiceMaxPilotSpp, const std::vector<uint32_t>& learnOn = {})
       : settings_(candidateSettings(render, e, index, spp)), film_(render.width, render.height) {
     film_.replicates = e.replicates, film_.replicateVariance = e.sampler != Sampler::Independent;
     if (e.rr == RouletteMode::Efficiency && given) {
       roulette_ = given->table, seconds_ += given->learntSeconds;
     } else if (e.rr == RouletteMode::Efficiency) {
-      RoulettePilot pilot = runRoulettePilot(ctx, scene, settings_);
+      RoulettePilot pilot = runRoulettePilot(ctx, scene, settings_, learnOn);
       out.pipelineSeconds += pilot.pipelineSeconds, seconds_ += pilot.seconds;
       roulette_ = pilot.table;
     }
@@ -60,15 +62,15 @@ class CandidatePilot {
     out.pipelineSeconds += renderer_->pipelineSeconds();
   }
   uint32_t pathsPerPass() const { return renderer_->pathsPerPass(); }
-  // Pixels order[0, shape.pixels) at shape.spp samples each, then the renderer is let go.
-  void render(const std::vector<uint32_t>& order, PilotShape shape) {
+  // Pixels order[from, to) at spp samples each (the start's probe, then the rest of its pixels).
+  void render(const std::vector<uint32_t>& order, uint32_t from, uint32_t to, uint32_t spp) {
     const auto start = std::chrono::steady_clock::now();
-    run(order, shape.pixels, 0, shape.spp);
-    renderer_.reset();
-    pixelSamples_ = double(shape.pixels) * shape.spp;
-    passSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    seconds_ += passSeconds_;
+    run(order, from, to, spp);
+    pixelSamples_ += double(to - from) * spp;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    passSeconds_ += seconds, seconds_ += seconds;
   }
+  void releaseRenderer() { renderer_.reset(); }
   // What the choice reads, over order[0, pixels): means, a sample's variances, and a sample's GPU seconds.
   PilotSamples samples(const std::vector<uint32_t>& order, uint32_t pixels) const {
     PilotSamples s;
@@ -87,13 +89,14 @@ class CandidatePilot {
   double seconds() const { return seconds_; }          // the pilot's passes, wall time
   double passSeconds() const { return passSeconds_; }  // its passes alone (without rr efficiency's own pilot)
   double secondsPerPixelSample() const { return passSeconds_ / pixelSamples_; }
+  double secondsPerPixelSampleLearnt() const { return seconds_ / pixelSamples_; }  // rr efficiency's table's pilot too
   const std::optional<RouletteTable>& roulette() const { return roulette_; }
 
  private:
-  void run(const std::vector<uint32_t>& order, uint32_t pixels, uint32_t first, uint32_t samples) {
-    if (samples == 0) return;
+  void run(const std::vector<uint32_t>& order, uint32_t from, uint32_t to, uint32_t samples) {
+    if (samples == 0 || from >= to) return;
     std::vector<PathRenderer::PixelSamples> work;
-    for (uint32_t i = 0; i < pixels; ++i) work.push_back({order[i], first, samples});
+    for (uint32_t i = from; i < to; ++i) work.push_back({order[i], 0u, samples});
     renderer_->renderSampleRuns(work, stats_, [&] {
       const std::vector<gpu::FilmPixel> batch = renderer_->takeBatch();
       film_.addBatch(batch.data());
@@ -160,37 +163,65 @@ SearchScene searchScene(const SceneFeatures& f, vk::Context& ctx) {
   return SearchScene{f.lights(), ctx.hasFloatAtomics(), f.glossy, f.emitters()};
 }
 
-// The pilots as they run: each a round of the image, its reading kept; the shape and pixel order they share.
+// The pilots as they run: each a round of the image, its reading kept; the shapes and pixel order they share.
 struct PilotRun {
   vk::Context& ctx;
   const GpuScene& scene;
   const RenderSettings& settings;
   const std::vector<uint32_t>& order;
-  PilotShape shape;
+  PilotShape pass;   // a pass of the render's size (pilotShape)
+  PilotShape shape;  // the search's: the pass's first pixels, as many as the share fits (pilotPixelsInShare)
   PilotRounds& rounds;
   EstimatorChoice& out;
   std::vector<std::unique_ptr<CandidatePilot>> pilots;
   double plannedSpp = 0.0;
   std::unique_ptr<CandidatePilot> pending;  // the start's, made before the shape (which its pass size sets)
 
-  // A pilot of `e`, its seed its index's; the start's (the first) sets the plan's pace under a time budget.
-  // `at`: the confirmation's shape (a search pilot's where none is given); `given`: its roulette table.
+  // Where a configuration's search pilot runs: the search's pixels, or the whole pass where it splits paths (its
+  // cost a path depends on the pass's size).
+  PilotShape shapeFor(const EstimatorConfig& e) const { return e.splitsPaths() ? pass : shape; }
+  // Where rr efficiency learns a challenger's table.
+  std::vector<uint32_t> learnPixels() const {
+    const size_t n = std::min<size_t>(order.size(), size_t(kChoiceRoulettePilotPixels) * shape.pixels);
+    return std::vector<uint32_t>(order.begin(), order.begin() + n);
+  }
+  // A pilot's expected seconds at `at` from pilot k's pace (learnt: with its roulette table's pilot).
+  double secondsAt(size_t k, PilotShape at, bool learnt = false) const {
+    const CandidatePilot& p = *pilots[k];
+    return (learnt ? p.secondsPerPixelSampleLearnt() : p.secondsPerPixelSample()) * double(at.pixels) * at.spp;
+  }
+
+  // A pilot of `e`, its seed its index's. The start's (the first) sets the plan's pace under a time budget, and
+  // where `share` is given it renders a probe first, whose pace sets the search's pixels (share: the seconds of the
+  // share at a sample's pace). `at`: the confirmation's shape; `given`: its roulette table.
   PilotSamples run(const EstimatorConfig& e, double timeBudget, uint32_t imagePixels,
-                   const std::optional<GivenRoulette>& given = std::nullopt, std::optional<PilotShape> at = std::nullopt) {
-    const PilotShape here = at.value_or(shape);
+                   const std::optional<GivenRoulette>& given = std::nullopt, std::optional<PilotShape> at = std::nullopt,
+                   const std::function<double(double)>& share = nullptr) {
     // A search pilot's settings as the start's (made before the shape); a confirming one's its own samples a pixel.
     const uint32_t spp = at ? at->spp : kChoiceMaxPilotSpp;
-    if (!pending) pending = std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out, given, spp);
+    if (!pending)
+      pending =
+          std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out, given, spp, learnPixels());
     pilots.push_back(std::move(pending));
-    pilots.back()->render(order, here);
+    CandidatePilot& pilot = *pilots.back();
+    uint32_t done = 0;
+    if (share) {
+      done = probePixels(shape);
+      pilot.render(order, 0, done, spp);
+      const double rate = pilot.secondsPerPixelSample();
+      shape.pixels = std::max(done, pilotPixelsInShare(shape, share(rate), rate * spp));
+    }
+    const PilotShape here = at.value_or(shapeFor(e));
+    pilot.render(order, done, here.pixels, here.spp);
+    pilot.releaseRenderer();
     // Its round's weight from the plan as it stood before it ran: the start's own pace (its GPU time, which follows
     // its paths' lengths and so its values) may set only the later rounds' weights. Under a budget with no sample
     // cap the start's round then weighs next to nothing, about 3% of its pixels' samples set aside.
-    rounds.add(pilots.back()->film(), plannedSpp, here);
+    rounds.add(pilot.film(), plannedSpp, here);
     if (timeBudget > 0.0 && pilots.size() == 1)
       plannedSpp = std::min(plannedSpp, timeBudget / (pilots[0]->secondsPerPixelSample() * imagePixels));
-    PilotSamples samples = pilots.back()->samples(order, here.pixels);
-    pilots.back()->releaseFilm();  // a full image's sums, of which the rounds and the reading keep what they need
+    PilotSamples samples = pilot.samples(order, here.pixels);
+    pilot.releaseFilm();  // a full image's sums, of which the rounds and the reading keep what they need
     return samples;
   }
 };
@@ -207,7 +238,7 @@ ChallengerRoulette learnChallengerRoulette(PilotRun& run, const EstimatorConfig&
   ChallengerRoulette r;
   if (e.rr != RouletteMode::Efficiency || incumbent.rr == RouletteMode::Efficiency) return r;
   const RenderSettings at = candidateSettings(run.settings, e, uint32_t(run.pilots.size()), kChoiceMaxPilotSpp);
-  const RoulettePilot pilot = runRoulettePilot(run.ctx, run.scene, at);
+  const RoulettePilot pilot = runRoulettePilot(run.ctx, run.scene, at, run.learnPixels());
   run.out.pipelineSeconds += pilot.pipelineSeconds;
   run.out.roulettePrediction = pilot.table.gainOverThroughput;
   if (pilot.table.gainOverThroughput > kChoiceMinRoulettePrediction) {
@@ -226,9 +257,11 @@ ChallengerRoulette learnChallengerRoulette(PilotRun& run, const EstimatorConfig&
 bool confirmWinner(PilotRun& run, size_t best, double& pilotSeconds, double budget, const ChoiceBounds& bounds,
                    uint32_t imagePixels, const std::vector<glm::dvec3>& searchValues) {
   Confirmation& c = run.out.confirmation;
-  const double expected = run.pilots[0]->passSeconds() + run.pilots[best]->passSeconds();
+  const PilotShape shape =
+      confirmationShape(run.shapeFor(run.out.candidates[best].config), run.plannedSpp, run.settings.estimator.replicates);
+  const double expected = run.secondsAt(0, shape) + run.secondsAt(best, shape);
   if (!pilotFitsBudget(pilotSeconds, expected, budget)) return true;  // unconfirmed, as the report says
-  c.shape = confirmationShape(run.shape, run.plannedSpp, run.settings.estimator.replicates);
+  c.shape = shape;
   std::vector<PilotSamples> again;
   for (size_t candidate : {size_t(0), best}) {
     // Each with the roulette table its search pilot learnt: the configuration that will render, table and all.
@@ -255,10 +288,76 @@ void finishChoice(EstimatorChoice& out, const PilotRun& run, size_t best, const 
   out.chosen = out.candidates[best].config;
   out.roulette = run.pilots[best]->roulette();
   for (const auto& p : run.pilots) out.seconds += p->seconds(), out.stats.push_back(p->stats());
-  out.pilotPixels = run.shape.pixels, out.pilotSpp = run.shape.spp;
+  out.pilotPixels = run.shape.pixels, out.pilotSpp = run.shape.spp, out.passPixels = run.pass.pixels;
   out.pixelSamples = run.rounds.pixelSamples();
   out.share = run.rounds.pixelSamples() / (run.plannedSpp * run.settings.width * run.settings.height);
 }
+
+}  // namespace
+
+namespace {
+
+// The search as it goes: every candidate's samples over the search's pixels, the best so far, the share's seconds.
+struct Search {
+  PilotRun& run;
+  const ChoiceBounds& bounds;
+  uint32_t imagePixels = 0;
+  double budget = 0.0;  // the seconds the share is of (0: none)
+  std::vector<PilotSamples> measured;
+  PilotPixels where;
+  size_t best = 0;
+  double pilotSeconds = 0.0;
+
+  void measure(const std::string& label, const EstimatorConfig& e, const std::optional<GivenRoulette>& given,
+               const std::function<double(double)>& share = nullptr) {
+    measured.push_back(run.run(e, bounds.timeBudget, imagePixels, given, std::nullopt, share));
+    MeasuredCandidate m;
+    m.label = label, m.config = e, m.seconds = run.pilots.back()->seconds();
+    run.out.candidates.push_back(m);
+    pilotSeconds += m.seconds;
+  }
+  // Whether the challenger's pilot fits the share. After the first challenger, room is kept for the confirmation of
+  // whichever wins (the start again and the winner again at the winner's shape: a confirmation reuses rr efficiency's
+  // table, so the passes alone, and the challenger's expected seconds, its own roulette pilot included, to be safe).
+  // The first is measured wherever it fits alone: on a loaded machine the per-depth roulette pilot and a confirmation
+  // after it do not fit 5% of 24 s, and its 4-6x on the dark interiors renders unconfirmed rather than not at all.
+  bool fits(const SearchStep& step, double value, const EstimatorConfig& e) const {
+    const EstimatorConfig& incumbent = run.out.candidates[best].config;
+    const double factor = expectedPilotCost(step.key, value, findEstimatorParam(step.key)->get(incumbent));
+    const PilotShape at = run.shapeFor(e), bestAt = run.shapeFor(incumbent);
+    const double expected = run.secondsAt(best, at, true) * factor;
+    const PilotShape widest = double(at.pixels) * at.spp > double(bestAt.pixels) * bestAt.spp ? at : bestAt;
+    const double confirming =
+        run.out.candidates.size() == 1 ? 0.0 : run.secondsAt(0, widest) + std::max(expected, run.secondsAt(best, bestAt));
+    return pilotFitsBudget(pilotSeconds, expected + confirming, budget);
+  }
+  // One key's values against the best so far, each read against the values pooled so far; the next value only
+  // where this one won (or lost: nextWhereLost). Under a time budget, only what fits its share (the next key may).
+  void step(const SearchStep& step) {
+    EstimatorChoice& out = run.out;
+    for (double value : step.values) {
+      EstimatorConfig e = out.candidates[best].config;
+      findEstimatorParam(step.key)->set(e, value);
+      if (!fits(step, value, e)) {
+        out.skippedForBudget.push_back(label(step.key, value));
+        if (step.nextWhereLost) continue;  // the next value is cheaper: it may fit
+        break;
+      }
+      const ChallengerRoulette roulette = learnChallengerRoulette(run, e, out.candidates[best].config, pilotSeconds);
+      if (roulette.predictsNoGain) {
+        out.skippedByPrediction.push_back(label(step.key, value));
+        break;
+      }
+      measure(label(step.key, value), e, roulette.given);
+      const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
+      bool won = beats(readings.back(), readings[best]);
+      if (won && bounds.sampleCountEnds && !affordableAtSampleCount(readings.back(), readings[0]))
+        out.candidates.back().tooCostly = true, won = false;  // lost: with nextWhereLost a cheaper value may be affordable
+      if (won) best = readings.size() - 1;
+      if (won == step.nextWhereLost) break;
+    }
+  }
+};
 
 }  // namespace
 
@@ -274,68 +373,30 @@ EstimatorChoice chooseEstimator(vk::Context& ctx, const GpuScene& scene, const R
   const double renderSpp = noCount ? double(kChoiceNominalSpp) : double(settings.spp);
   // A budget with --spp as its cap plans for the cap at most.
   const double plannedPixelSamples = timeBudget > 0.0 && settings.spp == kMaxSpp ? 1e300 : renderSpp * imagePixels;
-  std::vector<PilotSamples> measured;
   PilotRounds rounds(film, order);
-  PilotRun run{ctx, scene, settings, order, PilotShape{}, rounds, out, {}, renderSpp};
+  PilotRun run{ctx, scene, settings, order, PilotShape{}, PilotShape{}, rounds, out, {}, renderSpp};
   run.pending = std::make_unique<CandidatePilot>(ctx, scene, settings, settings.estimator, 0u, out);
-  run.shape = pilotShape(run.pending->pathsPerPass(), plannedPixelSamples, pilotsPlanned(steps), imagePixels,
-                         settings.estimator.replicates);
-  auto measure = [&](const std::string& label, const EstimatorConfig& e, const std::optional<GivenRoulette>& given) {
-    measured.push_back(run.run(e, timeBudget, imagePixels, given));
-    MeasuredCandidate m;
-    m.label = label, m.config = e, m.seconds = run.pilots.back()->seconds();
-    out.candidates.push_back(m);
+  run.pass = run.shape = pilotShape(run.pending->pathsPerPass(), plannedPixelSamples, pilotsPlanned(steps), imagePixels,
+                                    settings.estimator.replicates);
+  Search search{run, bounds, imagePixels};
+  // The pilots' share is of the render's seconds: its budget, or (where asked) its samples at the start's pace
+  // (a sample's seconds, from the start's probe). Their kernels are set-up, reported apart: Mesa's shader cache keeps
+  // them for the next render (counted, they left the basement's per-depth pilot out of a 24-s budget on a loaded
+  // machine, and its 4.7x with it).
+  auto share = [&](double secondsPerSample) {
+    search.budget = timeBudget > 0.0 ? timeBudget : bounds.shareOfSeconds ? secondsPerSample * renderSpp * imagePixels : 0.0;
+    return kChoiceMaxShare * search.budget;
   };
-  measure("start", settings.estimator, std::nullopt);
-  const PilotPixels where{settings.width, settings.height,
-                          std::vector<uint32_t>(order.begin(), order.begin() + run.shape.pixels)};
-  // The pilots' share is of the render's seconds: its budget, or (where asked) its samples at the start's pace.
-  // Their kernels are set-up, reported apart: Mesa's shader cache keeps them for the next render (counted, they
-  // left the basement's per-depth pilot out of a 24-s budget on a loaded machine, and its 4.7x with it).
-  const double budget = timeBudget > 0.0        ? timeBudget
-                        : bounds.shareOfSeconds ? run.pilots[0]->secondsPerPixelSample() * renderSpp * imagePixels
-                                                : 0.0;
-  size_t best = 0;
-  double pilotSeconds = run.pilots[0]->seconds();
-  for (const SearchStep& step : steps) {
-    // Each value against the best so far, every candidate read against the values pooled so far; the key's
-    // next value only where this one won (or lost: nextWhereLost). Under a time budget, only what fits its share
-    // (the next key may).
-    for (double value : step.values) {
-      const double incumbentValue = findEstimatorParam(step.key)->get(out.candidates[best].config);
-      const double expected = run.pilots[best]->seconds() * expectedPilotCost(step.key, value, incumbentValue);
-      // After the first challenger, room kept for the confirmation of whichever wins (the start again and the winner
-      // again: a confirmation reuses rr efficiency's table, so the incumbent's passes alone, and the challenger's
-      // expected seconds, its own roulette pilot included, to be safe). The first is measured wherever it
-      // fits alone: on a loaded machine the per-depth roulette pilot and a confirmation after it do not fit 5% of
-      // 24 s, and its 4-6x on the dark interiors renders unconfirmed rather than not at all.
-      const double confirming =
-          out.candidates.size() == 1 ? 0.0 : run.pilots[0]->passSeconds() + std::max(expected, run.pilots[best]->passSeconds());
-      if (!pilotFitsBudget(pilotSeconds, expected + confirming, budget)) {
-        out.skippedForBudget.push_back(label(step.key, value));
-        if (step.nextWhereLost) continue;  // the next value is cheaper: it may fit
-        break;
-      }
-      EstimatorConfig e = out.candidates[best].config;
-      findEstimatorParam(step.key)->set(e, value);
-      const ChallengerRoulette roulette = learnChallengerRoulette(run, e, out.candidates[best].config, pilotSeconds);
-      if (roulette.predictsNoGain) {
-        out.skippedByPrediction.push_back(label(step.key, value));
-        break;
-      }
-      measure(label(step.key, value), e, roulette.given);
-      pilotSeconds += run.pilots.back()->seconds();
-      const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
-      bool won = beats(readings.back(), readings[best]);
-      if (won && bounds.sampleCountEnds && !affordableAtSampleCount(readings.back(), readings[0]))
-        out.candidates.back().tooCostly = true, won = false;  // lost: with nextWhereLost a cheaper value may be affordable
-      if (won) best = readings.size() - 1;
-      if (won == step.nextWhereLost) break;
-    }
-  }
-  const std::vector<CandidateReading> readings = readCandidates(where, measured, kRelMseEpsilon);
+  search.measure("start", settings.estimator, std::nullopt, share);
+  search.where =
+      PilotPixels{settings.width, settings.height, std::vector<uint32_t>(order.begin(), order.begin() + run.shape.pixels)};
+  for (const SearchStep& step : steps) search.step(step);
+  const std::vector<CandidateReading> readings = readCandidates(search.where, search.measured, kRelMseEpsilon);
   for (size_t c = 0; c < readings.size(); ++c) out.candidates[c].reading = readings[c];
-  if (best != 0 && !confirmWinner(run, best, pilotSeconds, budget, bounds, imagePixels, pooledValues(where, measured))) best = 0;
+  size_t best = search.best;
+  if (best != 0 && !confirmWinner(run, best, search.pilotSeconds, search.budget, bounds, imagePixels,
+                                  pooledValues(search.where, search.measured)))
+    best = 0;
   finishChoice(out, run, best, bounds);
   return out;
 }

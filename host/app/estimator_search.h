@@ -41,7 +41,8 @@ struct EstimatorChoice {
   EstimatorConfig chosen;
   std::vector<MeasuredCandidate> candidates;  // in the order measured
   std::optional<RouletteTable> roulette;      // rr efficiency chosen: its pilot's scales
-  uint32_t pilotPixels = 0, pilotSpp = 0;
+  uint32_t pilotPixels = 0, pilotSpp = 0;     // the search's pilots (a prefix of the pass's pixels: pilotPixelsInShare)
+  uint32_t passPixels = 0;                    // a pass's pixels at pilotSpp: where candidates that split paths run
   double seconds = 0.0;                       // the pilots' rendering (rr efficiency's own pilot included)
   double pipelineSeconds = 0.0;               // the candidates' kernels' set-up
   double pixelSamples = 0.0;                  // the pilots' samples, all in the image

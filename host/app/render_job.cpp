@@ -798,6 +798,7 @@ json choiceJson(const EstimatorChoice& c) {
           {"confirmation", confirmationJson(c)},
           {"pilot_pixel_samples", c.pixelSamples},
           {"pilot_pixels", c.pilotPixels},
+          {"pass_pixels", c.passPixels},
           {"pilot_spp", c.pilotSpp},
           {"seconds", c.seconds},
           {"pipeline_seconds", c.pipelineSeconds},

@@ -196,4 +196,15 @@ PilotShape pilotShape(uint32_t pathsPerPass, double plannedPixelSamples, uint32_
   return shape;
 }
 
+uint32_t probePixels(PilotShape search) {
+  return std::min(search.pixels, std::max(search.pixels / kChoiceProbeFraction, kChoiceMinPilotPixels));
+}
+
+uint32_t pilotPixelsInShare(PilotShape search, double shareSeconds, double secondsPerPixel) {
+  const uint32_t least = std::min(search.pixels, kChoiceMinPilotPixels);
+  if (!(shareSeconds > 0.0) || !(secondsPerPixel > 0.0)) return search.pixels;
+  const double fit = std::floor(shareSeconds / (kChoicePilotsInShare * secondsPerPixel));
+  return uint32_t(std::clamp(fit, double(least), double(search.pixels)));
+}
+
 }  // namespace vkmc

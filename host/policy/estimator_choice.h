@@ -158,6 +158,24 @@ struct PilotShape {
 PilotShape pilotShape(uint32_t pathsPerPass, double plannedPixelSamples, uint32_t candidates, uint32_t imagePixels,
                       uint32_t replicates);
 
+// Under a time budget, a pass of the render's size is most of the share on a short render (at 24 s and 128x128 the
+// start's pass took 0.64 s of the furnace's 1.2 s, and its roulette pilot, 26.9x there, never fitted). So the
+// search's pilots cover a prefix of the pass's pixels: as many as kChoicePilotsInShare pilots of the start's pace fit
+// into the share (a typical search: the start 1, rr efficiency 2.5 with its table's pilot, four light samples 2.5,
+// MIS 1.2, light sampling 1.2, the confirmation 3.5), at least kChoiceMinPilotPixels. The start's pace comes from a
+// probe: its pilot's first pixels (1/kChoiceProbeFraction of the pass), extended once the pace is known.
+inline constexpr double kChoicePilotsInShare = 12.0;
+inline constexpr uint32_t kChoiceProbeFraction = 8;
+uint32_t probePixels(PilotShape search);
+uint32_t pilotPixelsInShare(PilotShape search, double shareSeconds, double secondsPerPixel);
+// A candidate that splits paths runs its pilot on the whole pass all the same: its cost a path grows with the pass
+// (its path pool outgrows the caches; four BSDF continuations on many_lights read 2.1x the start's cost at 28,672
+// paths and 2.8x at 258,048), so only a pass of the render's size reads the cost it will render at. It is compared
+// with the others on their common prefix.
+// rr efficiency's own pilot (its table) renders kChoiceRoulettePilotPixels times the search's pixels at its few
+// samples each (4): a quarter of a search pilot's paths, the whole image at 128x128.
+inline constexpr uint32_t kChoiceRoulettePilotPixels = 4;
+
 // The confirmation's pilots read the winner and the start nearer the render's stage of convergence: at most as many
 // samples as a search pilot, on fewer of its pixels at more samples each (a quarter of the render's planned samples a pixel,
 // at most kChoiceMaxConfirmationSpp, at least the search's, a multiple of the replicates, over at least

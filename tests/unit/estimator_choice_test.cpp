@@ -2,6 +2,7 @@
 // is, what a candidate's reading is relative to, and when a challenger wins.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "estimators/estimator_config.h"
@@ -84,6 +85,22 @@ TEST(EstimatorChoice, UnderABudgetThePilotsFitItsShare) {
   EXPECT_DOUBLE_EQ(expectedPilotCost("bsdf_samples", 4, 2), 2.0);
   EXPECT_DOUBLE_EQ(expectedPilotCost("light_samples", 2, 1), 1.5);
   EXPECT_GT(expectedPilotCost("rr", 3, 0), expectedPilotCost("mis", 1, 0));
+}
+
+// The search's pixels from the start's probe: as many as kChoicePilotsInShare pilots of its pace fit into the share.
+TEST(EstimatorChoice, UnderABudgetThePilotsCoverAsManyPixelsAsTheShareFits) {
+  const PilotShape pass{4096, 64};
+  EXPECT_EQ(probePixels(pass), 4096u / kChoiceProbeFraction);  // the probe: an eighth of the pass
+  EXPECT_EQ(probePixels(PilotShape{300, 64}), 256u);           // at least kChoiceMinPilotPixels
+  EXPECT_EQ(probePixels(PilotShape{100, 64}), 100u);           // never past the pass
+  // The furnace at 24 s: a pixel's 64 samples took 0.64 s / 4096 pixels; 1.2 s fits 12 pilots of 640 pixels.
+  const double perPixel = 0.64 / 4096;
+  EXPECT_EQ(pilotPixelsInShare(pass, 1.2, perPixel), uint32_t(std::floor(1.2 / (kChoicePilotsInShare * perPixel))));
+  EXPECT_LT(pilotPixelsInShare(pass, 1.2, perPixel), 4096u);
+  EXPECT_EQ(pilotPixelsInShare(pass, 120.0, perPixel), 4096u);                 // a long budget: the whole pass
+  EXPECT_EQ(pilotPixelsInShare(pass, 1e-3, perPixel), kChoiceMinPilotPixels);  // never under the least a pilot reads
+  EXPECT_EQ(pilotPixelsInShare(PilotShape{100, 64}, 1e-3, perPixel), 100u);
+  EXPECT_EQ(pilotPixelsInShare(pass, 0.0, perPixel), 4096u);  // no budget: the samples' share sized the pass already
 }
 
 TEST(EstimatorChoice, ReadsEfficiencyAsInverseRelativeVarianceTimesCost) {
