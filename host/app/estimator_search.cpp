@@ -83,6 +83,19 @@ class CandidatePilot {
     s.cost = stats_.gpuSeconds / pixelSamples_;
     return s;
   }
+  // The sampler's gain over independent samples at the pilot's samples a scrambling (stageScale in
+  // estimator_choice.h): the replicates' variance of the mean over the samples' own, relative as relMSE weighs
+  // each pixel, summed over order[0, pixels). 1 without replicates to read it from.
+  double qmcGain(const std::vector<uint32_t>& order, uint32_t pixels) const {
+    if (!film_.replicateVariance || film_.replicates < 2) return 1.0;
+    double replicates = 0.0, independent = 0.0;
+    for (uint32_t i = 0; i < pixels; ++i)
+      for (int c = 0; c < 3; ++c) {
+        const double m = film_.mean(order[i], c), w = 1.0 / (m * m + kRelMseEpsilon);
+        replicates += w * film_.replicateVarianceOfMean(order[i], c), independent += w * film_.sampleVarianceOfMean(order[i], c);
+      }
+    return independent > 0.0 ? replicates / independent : 1.0;
+  }
   const Film& film() const { return film_; }
   void releaseFilm() { film_ = Film(); }
   const RenderStats& stats() const { return stats_; }
@@ -221,6 +234,8 @@ struct PilotRun {
     if (timeBudget > 0.0 && pilots.size() == 1)
       plannedSpp = std::min(plannedSpp, timeBudget / (pilots[0]->secondsPerPixelSample() * imagePixels));
     PilotSamples samples = pilot.samples(order, here.pixels);
+    const double replicates = std::max(1u, settings.estimator.replicates);
+    samples.stageScale = stageScale(pilot.qmcGain(order, here.pixels), here.spp / replicates, plannedSpp / replicates);
     pilot.releaseFilm();  // a full image's sums, of which the rounds and the reading keep what they need
     return samples;
   }

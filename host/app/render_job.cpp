@@ -782,6 +782,7 @@ json choiceJson(const EstimatorChoice& c) {
                           {"seconds", m.seconds},
                           {"rel_variance_per_sample", r.relVariance},
                           {"rel_variance_standard_error", r.relVarianceSe},
+                          {"stage_scale", r.stageScale},
                           {"cost_per_sample", r.cost},
                           {"efficiency", r.efficiency()},
                           {"efficiency_95", ratioInterval(r.efficiency(), r.relativeSe())},

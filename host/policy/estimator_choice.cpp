@@ -98,6 +98,8 @@ std::vector<double> relativeVariances(const std::vector<glm::dvec3>& sampleVaria
 CandidateReading readingOf(const PilotSamples& pilot, const std::vector<glm::dvec3>& value, double epsilon) {
   CandidateReading r;
   r.pixels = relativeVariances(pilot.sampleVariance, value, epsilon);
+  for (double& p : r.pixels) p *= pilot.stageScale;
+  r.stageScale = pilot.stageScale;
   std::tie(r.relVariance, r.relVarianceSe) = meanAndSe(r.pixels);
   r.cost = pilot.cost;
   return r;
@@ -205,6 +207,12 @@ uint32_t pilotPixelsInShare(PilotShape search, double shareSeconds, double secon
   if (!(shareSeconds > 0.0) || !(secondsPerPixel > 0.0)) return search.pixels;
   const double fit = std::floor(shareSeconds / (kChoicePilotsInShare * secondsPerPixel));
   return uint32_t(std::clamp(fit, double(least), double(search.pixels)));
+}
+
+double stageScale(double qmcGain, double pilotSamplesPerReplicate, double renderSamplesPerReplicate) {
+  const double np = pilotSamplesPerReplicate, nr = renderSamplesPerReplicate;
+  if (!(qmcGain > 0.0 && qmcGain < 1.0) || !(np > 1.0) || !(nr > np)) return 1.0;
+  return std::max(std::pow(qmcGain, std::log(nr / np) / std::log(np)), kChoiceMinStageScale);
 }
 
 }  // namespace vkmc

@@ -103,6 +103,27 @@ TEST(EstimatorChoice, UnderABudgetThePilotsCoverAsManyPixelsAsTheShareFits) {
   EXPECT_EQ(pilotPixelsInShare(pass, 0.0, perPixel), 4096u);  // no budget: the samples' share sized the pass already
 }
 
+// A pilot's variance read at the render's stage of convergence: g(n) = n^-gamma through the pilot's gain.
+TEST(EstimatorChoice, ReadsAVarianceAtTheRendersStageOfConvergence) {
+  // A gain of 1/4 at 32 samples a scrambling is gamma = 0.4; at 1,024 the gain is 1/16: a quarter of the pilot's.
+  EXPECT_NEAR(stageScale(0.25, 32.0, 1024.0), 0.25, 1e-12);
+  EXPECT_NEAR(stageScale(0.5, 32.0, 32.0 * 32.0), 0.5, 1e-12);
+  // Where a candidate gains less from the sampler its variance falls less: their ratio moves towards the one that
+  // gains more, which is what the render finds.
+  EXPECT_LT(stageScale(0.3, 32.0, 1000.0), stageScale(0.7, 32.0, 1000.0));
+  EXPECT_EQ(stageScale(1.0, 32.0, 1000.0), 1.0);                 // independent samples: no gain to extrapolate
+  EXPECT_EQ(stageScale(1.3, 32.0, 1000.0), 1.0);                 // noise above 1 is read as none
+  EXPECT_EQ(stageScale(0.5, 32.0, 16.0), 1.0);                   // a render no further on than the pilot
+  EXPECT_EQ(stageScale(0.5, 1.0, 1000.0), 1.0);                  // one sample a scrambling has no gain to read
+  EXPECT_EQ(stageScale(1e-6, 32.0, 1e6), kChoiceMinStageScale);  // an extrapolation, bounded
+  // The reading carries it: a candidate's relative variance a sample is its pilot's times the scale.
+  PilotSamples p;
+  p.mean.assign(4, glm::dvec3(1.0)), p.sampleVariance.assign(4, glm::dvec3(2.0)), p.cost = 1.0, p.stageScale = 0.25;
+  const std::vector<CandidateReading> r = readAgainst(std::vector<glm::dvec3>(4, glm::dvec3(1.0)), {p}, 0.0);
+  EXPECT_NEAR(r[0].relVariance, 0.5, 1e-12);
+  EXPECT_EQ(r[0].stageScale, 0.25);
+}
+
 TEST(EstimatorChoice, ReadsEfficiencyAsInverseRelativeVarianceTimesCost) {
   const PilotPixels where = allPixels(16, 16);
   // B: a quarter of A's variance at twice its cost, so twice as efficient; C: A's variance at A's cost.
