@@ -110,11 +110,7 @@ class CandidatePilot {
     if (samples == 0 || from >= to) return;
     std::vector<PathRenderer::PixelSamples> work;
     for (uint32_t i = from; i < to; ++i) work.push_back({order[i], 0u, samples});
-    renderer_->renderSampleRuns(work, stats_, [&] {
-      const std::vector<gpu::FilmPixel> batch = renderer_->takeBatch();
-      film_.addBatch(batch.data());
-      return true;
-    });
+    renderer_->renderSampleRunsInto(film_, work, stats_);
   }
   std::vector<glm::dvec3> sampleVariances(const std::vector<uint32_t>& order, uint32_t pixels) const {
     std::vector<glm::dvec3> v(pixels);
@@ -212,9 +208,11 @@ struct PilotRun {
                    const std::function<double(double)>& share = nullptr) {
     // A search pilot's settings as the start's (made before the shape); a confirming one's its own samples a pixel.
     const uint32_t spp = at ? at->spp : kChoiceMaxPilotSpp;
-    if (!pending)
-      pending =
-          std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out, given, spp, learnPixels());
+    if (!pending) {
+      const bool learns = e.rr == RouletteMode::Efficiency && !given;
+      pending = std::make_unique<CandidatePilot>(ctx, scene, settings, e, uint32_t(pilots.size()), out, given, spp,
+                                                 learns ? learnPixels() : std::vector<uint32_t>{});
+    }
     pilots.push_back(std::move(pending));
     CandidatePilot& pilot = *pilots.back();
     uint32_t done = 0;
@@ -307,10 +305,6 @@ void finishChoice(EstimatorChoice& out, const PilotRun& run, size_t best, const 
   out.pixelSamples = run.rounds.pixelSamples();
   out.share = run.rounds.pixelSamples() / (run.plannedSpp * run.settings.width * run.settings.height);
 }
-
-}  // namespace
-
-namespace {
 
 // The search as it goes: every candidate's samples over the search's pixels, the best so far, the share's seconds.
 struct Search {

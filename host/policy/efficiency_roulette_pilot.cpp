@@ -21,11 +21,7 @@ Film renderPixels(PathRenderer& pilot, const RenderSettings& settings, const std
   std::vector<PathRenderer::PixelSamples> work;
   for (uint32_t p : pixels) work.push_back({p, 0u, settings.spp});
   const auto start = std::chrono::steady_clock::now();
-  pilot.renderSampleRuns(work, stats, [&] {
-    const std::vector<gpu::FilmPixel> batch = pilot.takeBatch();
-    film.addBatch(batch.data());
-    return true;
-  });
+  pilot.renderSampleRunsInto(film, work, stats);
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return film;
 }

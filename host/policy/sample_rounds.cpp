@@ -80,11 +80,8 @@ bool renderRound(RoundRun& run, const std::vector<uint32_t>& counts, Film& round
   for (uint32_t from = 0; from < most; from += perBatch)
     for (uint32_t p = 0; p < counts.size(); ++p)
       if (counts[p] > from) work.push_back({p, run.nextSample[p] + from, std::min(perBatch, counts[p] - from)});
-  const bool finished = run.renderer.renderSampleRuns(work, run.stats, [&] {
-    const std::vector<gpu::FilmPixel> batch = run.renderer.takeBatch();
-    round.addBatch(batch.data());
-    return !(run.control.stop && run.control.stop->load() != 0);
-  });
+  const bool finished = run.renderer.renderSampleRunsInto(round, work, run.stats,
+                                                          [&] { return !(run.control.stop && run.control.stop->load() != 0); });
   if (finished)
     for (uint32_t p = 0; p < counts.size(); ++p) run.nextSample[p] += counts[p];
   return finished;

@@ -511,6 +511,15 @@ bool PathRenderer::renderSampleRuns(const std::vector<PixelSamples>& work, Rende
   return goOn;
 }
 
+bool PathRenderer::renderSampleRunsInto(Film& film, const std::vector<PixelSamples>& work, RenderStats& stats,
+                                        const std::function<bool()>& goOn) {
+  return renderSampleRuns(work, stats, [&] {
+    const std::vector<gpu::FilmPixel> batch = takeBatch();
+    film.addBatch(batch.data());
+    return !goOn || goOn();
+  });
+}
+
 std::vector<gpu::FilmPixel> PathRenderer::takeBatch() {
   std::vector<gpu::FilmPixel> batch(size_t(settings_.width) * settings_.height);
   film_.download(batch.data(), batch.size() * sizeof(gpu::FilmPixel));

@@ -56,6 +56,9 @@ class PathRenderer {
     uint32_t pixel, firstSample, samples;
   };
   bool renderSampleRuns(const std::vector<PixelSamples>& work, RenderStats& stats, const std::function<bool()>& afterPass);
+  // renderSampleRuns with each pass's batch folded into `film`; goOn (where given) is asked after each fold.
+  bool renderSampleRunsInto(Film& film, const std::vector<PixelSamples>& work, RenderStats& stats,
+                            const std::function<bool()>& goOn = nullptr);
   std::vector<gpu::FilmPixel> takeBatch();  // the device's batch, then zeroed
   void restoreBatch(const std::vector<gpu::FilmPixel>& batch);
   void uploadPixelEstimate(const Film& film) { setPixelEstimate(runningPixelEstimate(film)); }
