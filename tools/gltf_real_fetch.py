@@ -14,6 +14,7 @@ reads another list of the same form. Exits 1 where a clone or a file was missing
 import json
 import os
 import posixpath
+import struct
 import subprocess
 import sys
 import urllib.parse
@@ -27,9 +28,22 @@ def blob(git_dir, commit, path):
     return done.stdout if done.returncode == 0 else None
 
 
+def gltf_json(data):
+    """The JSON of a .gltf, or of a .glb's first chunk ({} for a .glb too short or malformed to hold one: vkmc
+    names what is wrong with it when it renders)."""
+    if data[:4] == b"glTF":
+        try:
+            length = struct.unpack("<I", data[12:16])[0]
+            return json.loads(data[20:20 + length])
+        except (struct.error, ValueError):
+            return {}
+    return json.loads(data)
+
+
 def external_uris(gltf_bytes):
-    """A .gltf's buffer and image files (relative URIs, decoded), not its data: URIs."""
-    doc = json.loads(gltf_bytes)
+    """A .gltf's or .glb's buffer and image files (relative URIs, decoded), not its data: URIs (a .glb may name
+    images beside it, as Kenney's kits do)."""
+    doc = gltf_json(gltf_bytes)
     uris = [b.get("uri") for b in doc.get("buffers", [])] + [i.get("uri") for i in doc.get("images", [])]
     return [urllib.parse.unquote(u) for u in uris if u and not u.startswith("data:")]
 
@@ -69,7 +83,7 @@ def main():
         in_repo = path.split("/", 1)[1]
         wanted = [in_repo]
         data = blob(git_dir, commit, in_repo)
-        if data is not None and in_repo.endswith(".gltf"):
+        if data is not None and in_repo.endswith((".gltf", ".glb")):
             wanted += [posixpath.normpath(posixpath.join(posixpath.dirname(in_repo), u)) for u in external_uris(data)]
         for file in wanted:
             content = data if file == in_repo else blob(git_dir, commit, file)

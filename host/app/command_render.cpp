@@ -315,9 +315,10 @@ void writeOutputs(const RenderArgs& a, const RenderOutcome& result, nlohmann::js
   outputs.add(a.out, encodeFilmExr(result.film));
   if (!a.png.empty()) {
     const PreviewLook look = previewLook(a);
-    FilmPreview preview = encodeFilmPng(result.film, look);
+    FilmPreview preview = encodeFilmPng(result.film, look, result.backdrop);
     report["png"] = {{"path", a.png},
                      {"exposure_stops", preview.stops},
+                     {"backdrop_share", preview.backdropShare},
                      {"exposure", look.exposureStops ? "fixed" : "auto"},
                      {"tonemap", toneMapName(look.toneMap)}};
     if (auto w = clippedPreviewWarning(preview.clippedShare, preview.stops, !look.exposureStops)) {

@@ -15,6 +15,7 @@
 #include "app/render_options_json.h"
 #include "policy/efficiency_roulette_pilot.h"
 #include "bvh/bvh.h"
+#include "bvh/seen_through_faces.h"
 #include "error.h"
 #include "io/checkpoint.h"
 #include "io/environment_image.h"
@@ -569,10 +570,13 @@ RenderOutcome renderScene(vk::Context& ctx, const RenderOptions& options, Scene 
                 std::to_string(reference->height) + ", the render is " + std::to_string(framing.width) + "x" +
                 std::to_string(framing.height));
   out.cameraName = framing.camera.name, out.width = framing.width, out.height = framing.height;
+  auto t = Clock::now();
+  out.seenThroughTriangles = removeSeenThroughFaces(scene, framing.camera, framing.width, framing.height).triangles;
+  out.setup.seenThrough = since(t);
   addThinRibbons(scene, framing.camera, framing.height);  // points and lines, one pixel wide for this camera and image
   // The map's texels are one storage buffer of vec4s (GpuScene): the device's range bounds them.
   addEnvironmentLight(options, scene, out, ctx.properties().limits.maxStorageBufferRange / sizeof(glm::vec4));
-  auto t = Clock::now();
+  t = Clock::now();
   Bvh bvh = buildBvh(scene.triangleBounds());
   out.setup.bvh = since(t);
   out.bvh = bvh.stats;
@@ -660,7 +664,11 @@ void addRunFields(json& j, const RenderOutcome& r) {
   j["spp_reached"] = s.samplesPerPixel;
   j["seconds"] = s.seconds;
   j["setup_seconds"] = r.setup.total();
-  j["setup"] = {{"load", r.setup.load}, {"bvh", r.setup.bvh}, {"upload", r.setup.upload}, {"pipelines", r.setup.pipelines}};
+  j["setup"] = {{"load", r.setup.load},
+                {"seen_through", r.setup.seenThrough},
+                {"bvh", r.setup.bvh},
+                {"upload", r.setup.upload},
+                {"pipelines", r.setup.pipelines}};
   j["gpu_seconds"] = s.gpuSeconds;
   // null where any part of the render (a resumed one's earlier part, another rank) ran without stage timestamps
   // (--stage-times off, the default on lavapipe: device_tuning.h)
@@ -918,7 +926,8 @@ void addSceneFields(json& j, const RenderOptions& o, const RenderOutcome& r) {
                      {"emissive_triangles", r.sceneInfo.emissiveTriangles},
                      {"materials", r.sceneInfo.materials},
                      {"punctual_lights", r.sceneInfo.punctualLights},
-                     {"degenerate_triangles_skipped", r.degenerateTriangles}};
+                     {"degenerate_triangles_skipped", r.degenerateTriangles},
+                     {"seen_through_triangles_removed", r.seenThroughTriangles}};
   j["bvh"] = {{"inner_nodes", r.bvh.innerNodes},
               {"leaves", r.bvh.leaves},
               {"max_depth", r.bvh.maxDepth},
@@ -994,16 +1003,17 @@ std::string summaryText(const RenderOptions& o, const RenderOutcome& r) {
                 "device      %s\n"
                 "image       %ux%u, %u spp, camera: %s, filter: %s\n"
                 "estimator   %s\n"
-                "time        %.3f s render (GPU %.3f s), set-up %.3f s (load %.3f, BVH %.3f, upload %.3f, pipelines %.3f)\n"
+                "time        %.3f s render (GPU %.3f s), set-up %.3f s (load %.3f, faces seen through %.3f, BVH %.3f, upload "
+                "%.3f, pipelines %.3f)\n"
                 "rays        %llu (camera %llu, extension %llu, shadow %llu; %llu deep walks): %.2f Mrays/s\n"
                 "mean        %.6g %.6g %.6g\n"
                 "variance    %s\n"
                 "non-finite  %llu samples excluded (%llu finite samples above 2^56 kept in the scaled sums)\n",
                 o.scenePath.c_str(), r.sceneInfo.triangles, r.sceneInfo.emissiveTriangles, r.device.c_str(), r.width, r.height,
                 s.samplesPerPixel, r.cameraName.c_str(), pixelFilterSummary(o.filter).c_str(), r.estimator.summary().c_str(),
-                s.seconds, s.gpuSeconds, r.setup.total(), r.setup.load, r.setup.bvh, r.setup.upload, r.setup.pipelines,
-                (unsigned long long)s.rays(), (unsigned long long)s.cameraRays, (unsigned long long)s.extensionRays,
-                (unsigned long long)s.shadowRays, (unsigned long long)s.deepWalks,
+                s.seconds, s.gpuSeconds, r.setup.total(), r.setup.load, r.setup.seenThrough, r.setup.bvh, r.setup.upload,
+                r.setup.pipelines, (unsigned long long)s.rays(), (unsigned long long)s.cameraRays,
+                (unsigned long long)s.extensionRays, (unsigned long long)s.shadowRays, (unsigned long long)s.deepWalks,
                 s.seconds > 0 ? s.rays() / s.seconds * 1e-6 : 0.0, mean.x, mean.y, mean.z, varianceText.c_str(),
                 (unsigned long long)r.film.totalNonfinite(), (unsigned long long)r.film.totalHighRange());
   std::string text = buf;

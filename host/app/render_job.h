@@ -91,7 +91,8 @@ struct RunControl {
 
 struct SetupTimes {
   double load = 0.0, bvh = 0.0, upload = 0.0, pipelines = 0.0;
-  double total() const { return load + bvh + upload + pipelines; }
+  double seenThrough = 0.0;  // finding the single-sided faces the camera looks through (bvh/seen_through_faces.h)
+  double total() const { return load + seenThrough + bvh + upload + pipelines; }
 };
 
 struct RenderOutcome {
@@ -101,6 +102,7 @@ struct RenderOutcome {
   BvhStats bvh;
   GpuSceneInfo sceneInfo;
   uint64_t degenerateTriangles = 0;
+  uint64_t seenThroughTriangles = 0;  // single-sided faces the camera looks through (bvh/seen_through_faces.h)
   std::vector<std::string> warnings;
   std::string cameraName;
   std::string device;

@@ -21,6 +21,9 @@ namespace {
 float asFloat(uint32_t u) { return std::bit_cast<float>(u); }
 uint32_t asUint(float f) { return std::bit_cast<uint32_t>(f); }
 
+// The count a root leaf's node gives its other, empty child (its box is empty: the host walks skip it by count).
+constexpr uint32_t kRootLeafEmptyHalf = 0xffffffffu;
+
 void writeChild(BvhGpuNode& gpu, int c, const Aabb& box, uint32_t ref, uint32_t count) {
   gpu.texels[2 * c] = glm::vec4(box.min, asFloat(ref));
   gpu.texels[2 * c + 1] = glm::vec4(box.max, asFloat(count));
@@ -201,7 +204,7 @@ std::vector<BvhWideNode> collapseToWide(const std::vector<BvhGpuNode>& binary, u
     std::array<double, 4> area{};
     auto addChildrenOf = [&](uint32_t n) {
       for (uint32_t slot = 2 * n; slot < 2 * n + 2; ++slot) {
-        if (count(slot) == 0xffffffffu) continue;  // the empty half of a root leaf
+        if (count(slot) == kRootLeafEmptyHalf) continue;
         area[plan.size] = count(slot) ? 0.0 : box(slot).halfArea();
         plan.slot[plan.size++] = slot;
       }
@@ -274,7 +277,7 @@ Bvh buildBvh(std::span<const Aabb> bounds, const BvhOptions& options) {
     BvhGpuNode& gpu = bvh.nodes[g];
     if (node.count > 0) {  // root leaf
       writeChild(gpu, 0, node.bounds, node.first, node.count);
-      writeChild(gpu, 1, Aabb{}, 0, 0xffffffffu);
+      writeChild(gpu, 1, Aabb{}, 0, kRootLeafEmptyHalf);
       s.leaves = 1;
       s.maxLeafSize = node.count;
       s.sahCost = options.triangleCost * node.count;
@@ -343,6 +346,7 @@ HostHit traceHost(const Bvh& bvh, std::span<const glm::vec3> pos, glm::vec3 orig
     for (int c = 0; c < 2; ++c) {
       if (!slabHit(Aabb{glm::vec3(node.texels[2 * c]), glm::vec3(node.texels[2 * c + 1])}, origin, inv, tBest)) continue;
       uint32_t ref = asUint(node.texels[2 * c].w), count = asUint(node.texels[2 * c + 1].w);
+      if (count == kRootLeafEmptyHalf) continue;
       if (count == 0)
         stack.push_back(ref);
       else if (intersectLeaf(shear, pos, ref, count, tBest, best, anyHit))
@@ -371,6 +375,32 @@ HostHit traceHostWide(const Bvh& bvh, std::span<const glm::vec3> pos, glm::vec3 
     }
   }
   return best;
+}
+
+float walkHost(const Bvh& bvh, std::span<const glm::vec3> pos, glm::vec3 origin, glm::vec3 dir, float tMax,
+               const HostVisit& visit) {
+  gpu::RayShear shear = gpu::makeRayShear(origin, dir);
+  glm::vec3 inv = gpu::safeInverse(dir);
+  std::vector<uint32_t> stack{0};
+  while (!stack.empty() && !bvh.nodes.empty()) {
+    const BvhGpuNode& node = bvh.nodes[stack.back()];
+    stack.pop_back();
+    for (int c = 0; c < 2; ++c) {
+      if (!slabHit(Aabb{glm::vec3(node.texels[2 * c]), glm::vec3(node.texels[2 * c + 1])}, origin, inv, tMax)) continue;
+      uint32_t ref = asUint(node.texels[2 * c].w), count = asUint(node.texels[2 * c + 1].w);
+      if (count == kRootLeafEmptyHalf) continue;
+      if (count == 0) {
+        stack.push_back(ref);
+        continue;
+      }
+      for (uint32_t tri = ref; tri < ref + count; ++tri) {
+        const glm::vec3* p = &pos[3 * tri];
+        glm::vec3 h = gpu::intersectTriangle(shear, p[0], p[1], p[2], tMax);
+        if (h.x > 0.0f) tMax = visit(tri, h.x, glm::dot(glm::cross(p[1] - p[0], p[2] - p[0]), dir) > 0.0f, tMax);
+      }
+    }
+  }
+  return tMax;
 }
 
 // origin + qs rounded to a float outwards (down for a low plane, up for a high one): the decoded box contains

@@ -3,6 +3,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -83,5 +84,13 @@ HostHit traceHost(const Bvh& bvh, std::span<const glm::vec3> orderedPositions, g
 // The same over the 4-wide layout, each child box decoded exactly as its node encodes it (wideChildBox).
 HostHit traceHostWide(const Bvh& bvh, std::span<const glm::vec3> orderedPositions, glm::vec3 origin, glm::vec3 dir, float tMax,
                       bool anyHit);
+
+// Every triangle the segment (0, tMax) crosses, in walk order, for host queries that need more than the closest
+// hit: visit(triangle, t, fromBehind, tMax) returns the segment's new end (a hit that stops the ray its t, one it
+// passes tMax), so no box beyond the nearest stop is entered. Triangles are in the BVH's order (triangleOrder maps
+// them back). Returns the segment's final end.
+using HostVisit = std::function<float(uint32_t triangle, float t, bool fromBehind, float tMax)>;
+float walkHost(const Bvh& bvh, std::span<const glm::vec3> orderedPositions, glm::vec3 origin, glm::vec3 dir, float tMax,
+               const HostVisit& visit);
 
 }  // namespace vkmc

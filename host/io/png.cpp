@@ -84,11 +84,28 @@ std::string encodeContactSheet(const std::vector<ExrImage>& images, const std::v
   return encodeRgbPng(rgb, width, height);
 }
 
-FilmPreview encodeFilmPng(const Film& film, const PreviewLook& look) {
-  std::vector<double> luminances(film.pixels());
-  for (size_t p = 0; p < film.pixels(); ++p) luminances[p] = luminance(film.mean(p, 0), film.mean(p, 1), film.mean(p, 2));
+namespace {
+// A pixel every sample of which escaped to the backdrop: the backdrop's grey in every channel, with no variance.
+bool showsOnlyBackdrop(const Film& film, size_t p, float backdrop) {
+  if (!(backdrop > 0.0f)) return false;
+  for (int c = 0; c < 3; ++c)
+    if (std::abs(film.mean(p, c) - backdrop) > 1e-5 * backdrop || film.varianceOfMean(p, c) > 1e-10 * backdrop * backdrop)
+      return false;
+  return true;
+}
+}  // namespace
+
+FilmPreview encodeFilmPng(const Film& film, const PreviewLook& look, float backdrop) {
+  // The key is the whole image's (the backdrop's grey is a grey card for the studio's light); the highlights the
+  // automatic exposure keeps are the scene's, the pixels that show more than the backdrop.
+  std::vector<double> luminances, scene;
+  for (size_t p = 0; p < film.pixels(); ++p) {
+    luminances.push_back(luminance(film.mean(p, 0), film.mean(p, 1), film.mean(p, 2)));
+    if (!showsOnlyBackdrop(film, p, backdrop)) scene.push_back(luminances.back());
+  }
   FilmPreview preview;
-  preview.stops = exposureFor(look, luminances);
+  preview.stops = exposureFor(look, luminances, scene);
+  preview.backdropShare = 1.0 - double(scene.size()) / double(std::max<size_t>(1, film.pixels()));
   std::vector<uint8_t> rgb(film.pixels() * 3);
   for (size_t p = 0; p < film.pixels(); ++p) {
     const std::array<uint8_t, 3> out =

@@ -12,10 +12,12 @@
 namespace vkmc {
 struct FilmPreview {
   std::string png;
-  double stops = 0.0;         // the exposure applied (the look's, or the automatic one)
-  double clippedShare = 0.0;  // the share of pixels white (255) in some channel
+  double stops = 0.0;          // the exposure applied (the look's, or the automatic one)
+  double clippedShare = 0.0;   // the share of pixels white (255) in some channel
+  double backdropShare = 0.0;  // the share of pixels showing only the backdrop (not in the highlights kept)
 };
-FilmPreview encodeFilmPng(const Film& film, const PreviewLook& look);
+// backdrop: the grey escaped camera rays see (RenderOutcome::backdrop), or 0 where there is none.
+FilmPreview encodeFilmPng(const Film& film, const PreviewLook& look, float backdrop = 0.0f);
 // The efficiency channel (Film::efficiency) in false colour: log10 of it from the image's 1st to 99th percentile
 // mapped onto viridis (dark blue: noise that costs much; yellow: cheap and clean); grey where the pixel shows no
 // variance; black where no efficiency can be told (no variance estimated).

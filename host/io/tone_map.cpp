@@ -68,8 +68,17 @@ uint8_t toSrgb8(double linear) {
   return static_cast<uint8_t>(std::lround(v * 255.0));
 }
 
-double exposureFor(const PreviewLook& look, const std::vector<double>& luminance) {
-  return look.exposureStops ? *look.exposureStops : autoExposureStops(luminance);
+double highlightStops(std::vector<double> scene) {
+  std::erase_if(scene, [](double l) { return !(std::isfinite(l) && l > 0.0); });
+  if (scene.empty()) return kMaxAutoStops;
+  auto high = scene.begin() + std::ptrdiff_t((1.0 - kHighlightShare) * double(scene.size() - 1));
+  std::nth_element(scene.begin(), high, scene.end());
+  return std::log2(kHighlightLimit / *high);
+}
+
+double exposureFor(const PreviewLook& look, const std::vector<double>& luminance, const std::vector<double>& scene) {
+  if (look.exposureStops) return *look.exposureStops;
+  return std::clamp(std::min(autoExposureStops(luminance), highlightStops(scene)), -kMaxAutoStops, kMaxAutoStops);
 }
 
 std::array<uint8_t, 3> previewPixel(std::array<double, 3> rgb, double stops, ToneMap toneMap) {

@@ -16,6 +16,7 @@
 
 #include <thread>
 
+#include "io/tone_map.h"
 #include "support/adversarial_geometry.h"
 #include "support/cli_run.h"
 #include "support/param_name.h"
@@ -384,4 +385,24 @@ TEST(CliOutputs, ThePreviewSaysItsExposureAndWarnsWhenClippedOrBlack) {
   EXPECT_NE(black.err.find("the image is black (100.0% of its pixels): no light reaches the camera"), std::string::npos)
       << black.err;
   EXPECT_EQ(automatic.err.find("is black"), std::string::npos) << automatic.err;
+}
+
+// A lamp-bright quad (radiance 50) against the studio's grey backdrop (0.18) over about half the image: the whole
+// image's key alone (its log-average at middle grey) would expose the quad at about 4.5, white, so the automatic
+// exposure keeps the scene's highlights (io/tone_map.h) and puts the quad at kHighlightLimit. The report gives the
+// share of pixels that show only the backdrop.
+TEST(CliOutputs, TheAutomaticExposureKeepsABrightSubjectsHighlightsAgainstTheBackdrop) {
+  const fs::path d = dir() / "highlights";
+  fs::create_directories(d);
+  GltfSpec bright = quadSpec();
+  bright.materialJson = R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1]},"emissiveFactor":[50,50,50]})";
+  RunResult r = runVkmc(render(writeGltf(d, "bright", bright)) + " --environment studio -o " + (d / "a.exr").string() +
+                        " --png " + (d / "a.png").string() + " --report " + (d / "a.json").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json report = nlohmann::json::parse(slurp((d / "a.json").string()));
+  EXPECT_NEAR(report["png"]["exposure_stops"].get<double>(), std::log2(vkmc::kHighlightLimit / 50.0), 0.01);
+  const double backdrop = report["png"]["backdrop_share"].get<double>();
+  EXPECT_GT(backdrop, 0.3) << "the automatic camera frames the quad with the backdrop around it";
+  EXPECT_LT(backdrop, 0.95);
+  EXPECT_EQ(r.err.find("clipped"), std::string::npos) << r.err;
 }

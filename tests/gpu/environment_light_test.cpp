@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <tuple>
 
 #include "io/exr.h"
 #include "scene/studio_environment.h"
@@ -187,4 +188,25 @@ TEST(EnvironmentLight, MisWeightsStayUnbiasedWhenTheLightTableMixesEveryKind) {
   RegionStats mega = render(MisHeuristic::Balance, Integrator::Megakernel, 23);
   EXPECT_TRUE(regionsAgree(mis, light, 5.0)) << "power heuristic against light sampling alone";
   EXPECT_TRUE(regionsAgree(mega, light, 5.0)) << "megakernel, balance heuristic, against light sampling alone";
+}
+
+TEST(EnvironmentLight, EntersASingleSidedRoomThroughTheWallsTheCameraLooksThrough) {
+  // A closed room of single-sided walls facing in, seen from outside above its +Z side: the eye passes the near
+  // wall, the ceiling and the +X wall from behind, so they are removed for every ray (bvh/seen_through_faces.h)
+  // and the white world lights the floor. Kept, they would leave the room black: every ray from inside meets a
+  // wall's front.
+  Scene s = planeScene();
+  s.positions.clear(), s.normals.clear(), s.materialIds.clear();
+  const glm::vec3 o(-1.0f), x(2, 0, 0), y(0, 2, 0), z(0, 0, 2);
+  for (auto [corner, u, v] : {std::tuple{o, z, y}, {o + x, y, z}, {o, x, z}, {o + y, z, x}, {o, y, x}, {o + z, x, y}})
+    addQuad(s, corner, v, u, 0);  // u x v faces out; v x u, in
+  RenderOptions view = planeView(64, 5);
+  view.lookFrom = glm::vec3(3.0f, 4.0f, 6.0f);
+  view.lookAt = glm::vec3(0.0f, -1.0f, 0.0f);  // the floor's centre, at the image's centre
+  view.fovDegrees = 60.0f;
+  RenderOutcome r = runRender(sharedContext(), view, s);
+  EXPECT_EQ(r.seenThroughTriangles, 6u);
+  const size_t centre = 8 * 16 + 8;
+  EXPECT_GT(r.film.mean(centre, 0), 0.1) << "the floor sees the sky through the open ceiling";
+  EXPECT_EQ(r.film.totalNonfinite(), 0u);
 }

@@ -29,6 +29,28 @@ TEST(ToneMap, AutomaticExposureBringsTheLogAverageToMiddleGrey) {
   EXPECT_EQ(autoExposureStops({1e-300}), kMaxAutoStops) << "bounded";
 }
 
+TEST(ToneMap, AutomaticExposureKeepsTheScenesHighlights) {
+  // A backdrop of grey 0.18 over 80% of the image and a board at 100 over the rest (a bright sun): the log-average
+  // key alone would put the board at 100 x 2^-2.5, white. The highlights rule lowers it until the board's 90th
+  // percentile is at kHighlightLimit.
+  std::vector<double> image(80, 0.18), scene(20, 100.0);
+  image.insert(image.end(), scene.begin(), scene.end());
+  const PreviewLook autoLook;
+  EXPECT_LT(highlightStops(scene), autoExposureStops(image));
+  EXPECT_NEAR(exposureFor(autoLook, image, scene), std::log2(kHighlightLimit / 100.0), 1e-9);
+  // A model lit as the studio lights it keeps the whole image's key: its highlights are below the limit.
+  std::vector<double> model(20, 0.6);
+  std::vector<double> studio(80, 0.18);
+  studio.insert(studio.end(), model.begin(), model.end());
+  EXPECT_EQ(exposureFor(autoLook, studio, model), autoExposureStops(studio));
+  // Only a tenth of the scene's pixels may pass it: a specular glint on 5% of them does not darken the image.
+  std::vector<double> glints(95, 0.6);
+  glints.insert(glints.end(), 5, 1e4);
+  EXPECT_NEAR(highlightStops(glints), std::log2(kHighlightLimit / 0.6), 1e-9);
+  EXPECT_EQ(highlightStops({}), kMaxAutoStops) << "nothing but backdrop: no highlight to keep";
+  EXPECT_EQ(exposureFor(PreviewLook{ToneMap::Neutral, 1.5}, image, scene), 1.5) << "fixed stops are kept as given";
+}
+
 TEST(ToneMap, PbrNeutralFollowsTheKhronosReference) {
   // Grey 1 by the reference's formula: offset 0.04, peak 0.96, new peak 1 - 0.24^2 / 0.44.
   const double expected = 1.0 - 0.24 * 0.24 / 0.44;
