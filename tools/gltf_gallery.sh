@@ -5,21 +5,23 @@
 # separately and never committed: docs/journal/gltf.md says how.
 #
 # Usage: tools/gltf_gallery.sh VKMC MODELS_DIR OUT_DIR [--width W] [--spp N] [--timeout S] [--list FILE]
-#                              [--only NAME[,NAME...]] [--no-sheet] [-- EXTRA vkmc render ARGS]
+#                              [--only NAME[,NAME...]] [--no-sheet] [--references DIR] [-- EXTRA vkmc render ARGS]
 #   VKMC        the vkmc binary to test (copy it first if someone may rebuild it meanwhile)
 #   MODELS_DIR  the fetched collection (e.g. /work/gltf-models)
 #   OUT_DIR     outputs, outside the repo (e.g. /work/gltf-out/baseline): renders/NAME.{png,exr,json},
 #               logs/NAME.log, results.tsv, gallery.md, contact_sheet.png, contact_sheet_small.png
+#   --references DIR  reference pictures DIR/NAME.png, preferred to a model's screenshot (the real-file lists
+#               have none: tools/gltf_reference.sh makes them with Blender's importer)
 # Defaults: 192 px wide, 16 spp, 300 s per model, the scene's first camera or vkmc's automatic one.
 # Needs: bash, python3 (standard library), ImageMagick's convert and montage for the contact sheet
 # (apt-get install imagemagick fonts-dejavu-core; --no-sheet skips it).
 set -euo pipefail
 
-usage() { sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-2}"; }
+usage() { sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit "${1:-2}"; }
 [[ $# -ge 3 ]] || usage
 vkmc=$(realpath "$1") models=$(realpath "$2") out=$3
 shift 3
-width=192 spp=16 timeout_s=300 only="" sheet=1 extra=()
+width=192 spp=16 timeout_s=300 only="" sheet=1 extra=() references=""
 list=$(dirname "$(realpath "$0")")/gltf_models.txt
 while [[ $# -gt 0 ]]; do
   case $1 in
@@ -29,6 +31,7 @@ while [[ $# -gt 0 ]]; do
     --list) list=$(realpath "$2"); shift 2 ;;
     --only) only=",$2,"; shift 2 ;;
     --no-sheet) sheet=0; shift ;;
+    --references) references=$(realpath "$2"); shift 2 ;;
     --) shift; extra=("$@"); break ;;
     -h|--help) usage 0 ;;
     *) echo "gltf_gallery: unknown option $1" >&2; usage ;;
@@ -96,7 +99,7 @@ while IFS= read -r line; do
     # tile: the reference screenshot (left) and the render (right), 160 px high each, labelled below.
     dir=${path%%/*}
     ref=""
-    for f in "$models/$dir/screenshot/screenshot.png" "$models/$dir/screenshot/screenshot.jpg" \
+    for f in ${references:+"$references/$name.png"} "$models/$dir/screenshot/screenshot.png" "$models/$dir/screenshot/screenshot.jpg" \
       "$models/$dir/screenshot/screenshot.gif" "$models/$dir/screenshot.png" "$models/$dir/screenshot.jpg"; do
       [[ -f $f ]] && { ref=$f; break; }
     done
