@@ -4,11 +4,13 @@
 #   blender -b --factory-startup --python render_reference.py -- SCENE OUT.png [--width W --height H --spp N]
 # The file's first camera where it has one; otherwise vkmc's automatic camera (scene/camera_rig.h autoCamera: 30
 # degrees round from +Z towards +X, 25 degrees up, a 45-degree vertical field of view fitting the bounding sphere
-# to the narrower side), on the bounds of every mesh. Light: a uniform white world of radiance 1 plus the file's own
-# lights as the importer reads them; the world is hidden behind a transparent film, so the backdrop is the sheet's.
-# Blender's default Filmic view, no denoiser. A reference in what the importer understands (its materials, skins,
-# textures, units), not vkmc's numbers: it differs where Blender's importer does (Blender 3.4 reads no meshopt,
-# KTX2 or WebP, and only the extensions its version knows).
+# to the narrower side), on the bounds of every mesh's vertices; no animation played. Light: a uniform white world
+# of radiance 1 plus the file's own lights as the importer reads them; the world is hidden behind a transparent
+# film, so the backdrop is the sheet's. Blender's default Filmic view, no denoiser. A reference in what the
+# importer understands (its materials, skins, textures, units), not vkmc's numbers: it differs where Blender's
+# importer does (Blender 3.4 reads no meshopt, KTX2 or WebP, ignores COLOR_0 on a mesh without a material, and
+# gives such a mesh a grey dielectric where glTF's default material is a white rough metal), and Cycles renders
+# overlapping opposite faces as black speckles.
 import math
 import sys
 
@@ -37,19 +39,39 @@ def parse_args(argv):
 
 
 def mesh_bounds(scene):
-    lo, hi = [math.inf] * 3, [-math.inf] * 3
+    """The world-space box of every mesh's vertices as posed (an object's rotated bounding box would be larger)."""
+    lo, hi = numpy.full(3, math.inf), numpy.full(3, -math.inf)
+    depsgraph = bpy.context.evaluated_depsgraph_get()
     for obj in scene.objects:
         if obj.type != "MESH":
             continue
-        for corner in obj.bound_box:
-            w = obj.matrix_world @ mathutils.Vector(corner)
-            lo = [min(a, b) for a, b in zip(lo, w)]
-            hi = [max(a, b) for a, b in zip(hi, w)]
+        evaluated = obj.evaluated_get(depsgraph)
+        mesh = evaluated.to_mesh()
+        co = numpy.empty(3 * len(mesh.vertices))
+        mesh.vertices.foreach_get("co", co)
+        evaluated.to_mesh_clear()
+        if co.size == 0:
+            continue
+        m = numpy.array(obj.matrix_world)
+        world = co.reshape(-1, 3) @ m[:3, :3].T + m[:3, 3]
+        lo, hi = numpy.minimum(lo, world.min(axis=0)), numpy.maximum(hi, world.max(axis=0))
     if lo[0] > hi[0]:
         return mathutils.Vector((0, 0, 0)), 1.0
-    centre = mathutils.Vector([(a + b) / 2 for a, b in zip(lo, hi)])
-    radius = 0.5 * (mathutils.Vector(hi) - mathutils.Vector(lo)).length
+    centre = mathutils.Vector((0.5 * (lo + hi)).tolist())
+    radius = 0.5 * float(numpy.linalg.norm(hi - lo))
     return centre, radius if radius > 0 else 1.0
+
+
+def rest_pose(scene):
+    """The file's pose without its animations, as vkmc renders it: the importer leaves the first animation playing
+    (its first frame posed); armatures go back to their rest pose, the importer's reading of the bind pose."""
+    for obj in scene.objects:
+        if obj.animation_data:
+            obj.animation_data.action = None
+        if obj.type == "ARMATURE":
+            for bone in obj.pose.bones:
+                bone.matrix_basis = mathutils.Matrix.Identity(4)
+    bpy.context.view_layer.update()
 
 
 def auto_camera(scene, aspect):
@@ -77,6 +99,7 @@ def main():
     bpy.ops.wm.read_factory_settings(use_empty=True)
     bpy.ops.import_scene.gltf(filepath=args.scene)
     scene = bpy.context.scene
+    rest_pose(scene)
     cameras = [o for o in scene.objects if o.type == "CAMERA"]
     scene.camera = cameras[0] if cameras else auto_camera(scene, args.width / args.height)
     world = bpy.data.worlds.new("white")
