@@ -29,23 +29,25 @@ def blob(git_dir, commit, path):
 
 
 def gltf_json(data):
-    """The JSON of a .gltf, or of a .glb's first chunk ({} for a .glb too short or malformed to hold one: vkmc
-    names what is wrong with it when it renders)."""
-    if data[:4] == b"glTF":
-        try:
+    """The JSON object of a .gltf, or of a .glb's first chunk; {} where there is none to read (a Git LFS pointer, a
+    truncated or malformed file: vkmc names what is wrong with it when it renders)."""
+    try:
+        if data[:4] == b"glTF":
             length = struct.unpack("<I", data[12:16])[0]
-            return json.loads(data[20:20 + length])
-        except (struct.error, ValueError):
-            return {}
-    return json.loads(data)
+            data = data[20:20 + length]
+        doc = json.loads(data)
+    except (struct.error, ValueError):
+        return {}
+    return doc if isinstance(doc, dict) else {}
 
 
 def external_uris(gltf_bytes):
     """A .gltf's or .glb's buffer and image files (relative URIs, decoded), not its data: URIs (a .glb may name
     images beside it, as Kenney's kits do)."""
     doc = gltf_json(gltf_bytes)
-    uris = [b.get("uri") for b in doc.get("buffers", [])] + [i.get("uri") for i in doc.get("images", [])]
-    return [urllib.parse.unquote(u) for u in uris if u and not u.startswith("data:")]
+    entries = [e for key in ("buffers", "images") if isinstance(doc.get(key), list) for e in doc[key]]
+    uris = [e.get("uri") for e in entries if isinstance(e, dict)]
+    return [urllib.parse.unquote(u) for u in uris if isinstance(u, str) and u and not u.startswith("data:")]
 
 
 def git_dir_of(clone):

@@ -51,7 +51,8 @@ while IFS= read -r line; do
   fi
   rm -f "$out/references/$name.png"
   if timeout "$timeout" blender -b --factory-startup --python "$script" -- "$models/$path" \
-      "$out/references/$name.png" "${size[@]}" --spp "$spp" > "$out/logs/$name.log" 2>&1 && [[ -s $out/references/$name.png ]]; then
+      "$out/references/$name.png" "${size[@]}" --spp "$spp" </dev/null > "$out/logs/$name.log" 2>&1 &&
+      [[ -s $out/references/$name.png ]]; then
     made=$((made + 1)); printf '%-32s made\n' "$name"
   else
     failed=$((failed + 1)); printf '%-32s no picture (%s)\n' "$name" "$(grep -m1 -iE 'error|exception' "$out/logs/$name.log" | cut -c1-100)"

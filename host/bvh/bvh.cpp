@@ -396,7 +396,10 @@ float walkHost(const Bvh& bvh, std::span<const glm::vec3> pos, glm::vec3 origin,
       for (uint32_t tri = ref; tri < ref + count; ++tri) {
         const glm::vec3* p = &pos[3 * tri];
         glm::vec3 h = gpu::intersectTriangle(shear, p[0], p[1], p[2], tMax);
-        if (h.x > 0.0f) tMax = visit(tri, h.x, glm::dot(glm::cross(p[1] - p[0], p[2] - p[0]), dir) > 0.0f, tMax);
+        if (h.x <= 0.0f) continue;
+        // From behind exactly as the kernels' cull test decides it: the culled test misses where the plain one hit.
+        const bool fromBehind = gpu::intersectTriangle(shear, p[0], p[1], p[2], tMax, true).x <= 0.0f;
+        tMax = visit(tri, h.x, fromBehind, tMax);
       }
     }
   }

@@ -21,8 +21,12 @@ struct SeenThrough {
 
 // Removes every single-sided, non-emissive triangle (Material::culledFromBehind) that some camera ray meets from
 // behind before the first surface the kernels' camera ray stops at (a front face, or a face of a two-sided or
-// transmissive material). Emitters stay: a lamp panel seen from behind still lights the room. The camera is a
-// pinhole or orthographic one, rays through the pixel centres of a width x height image (or the grid above).
+// transmissive material). Single-sided emitters are passed from behind, as the kernels pass them, but stay: a lamp
+// panel seen from behind still lights the room. The rays go through the centres of a grid over the image's field
+// of view (width x height pixels, fewer where larger). Nothing is removed where everything would be (the eye sees
+// only backs: the culled faces already show it the backdrop), nor in an alpha-tested face's cut-outs (a front face
+// stops the walk wherever its texture would let the kernels' ray through).
+// Scene::bounds is left as it was, a superset of what remains (the distant lights' disc and EARS's grid stay valid).
 SeenThrough removeSeenThroughFaces(Scene& scene, const Camera& camera, uint32_t width, uint32_t height);
 
 }  // namespace vkmc

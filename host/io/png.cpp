@@ -85,11 +85,15 @@ std::string encodeContactSheet(const std::vector<ExrImage>& images, const std::v
 }
 
 namespace {
-// A pixel every sample of which escaped to the backdrop: the backdrop's grey in every channel, with no variance.
+// A pixel every sample of which escaped to the backdrop: the backdrop's grey in every channel, with no variance but
+// the device's float sums' rounding (a batch adds up to 64 samples in float: a relative 1e-6 or so in the mean,
+// and a variance of the mean near 1e-8 b^2 from the sum of squares' cancellation). The tolerances are far above
+// that and far below a shaded pixel's noise. With a pixel filter whose weights are not all 1 the mean is the grey
+// times their mean, and no pixel is taken for backdrop.
 bool showsOnlyBackdrop(const Film& film, size_t p, float backdrop) {
-  if (!(backdrop > 0.0f)) return false;
   for (int c = 0; c < 3; ++c)
-    if (std::abs(film.mean(p, c) - backdrop) > 1e-5 * backdrop || film.varianceOfMean(p, c) > 1e-10 * backdrop * backdrop)
+    if (!(std::abs(film.mean(p, c) - backdrop) <= 1e-4 * backdrop) ||
+        film.varianceOfMean(p, c) > 1e-6 * double(backdrop) * backdrop)
       return false;
   return true;
 }
@@ -97,15 +101,16 @@ bool showsOnlyBackdrop(const Film& film, size_t p, float backdrop) {
 
 FilmPreview encodeFilmPng(const Film& film, const PreviewLook& look, float backdrop) {
   // The key is the whole image's (the backdrop's grey is a grey card for the studio's light); the highlights the
-  // automatic exposure keeps are the scene's, the pixels that show more than the backdrop.
+  // automatic exposure keeps are the scene's, the pixels that show more than the backdrop. Without a backdrop (a
+  // lights-only world, a map, --background) there are none to keep: the key alone, as a visible sky needs.
   std::vector<double> luminances, scene;
   for (size_t p = 0; p < film.pixels(); ++p) {
     luminances.push_back(luminance(film.mean(p, 0), film.mean(p, 1), film.mean(p, 2)));
-    if (!showsOnlyBackdrop(film, p, backdrop)) scene.push_back(luminances.back());
+    if (backdrop > 0.0f && !showsOnlyBackdrop(film, p, backdrop)) scene.push_back(luminances.back());
   }
   FilmPreview preview;
   preview.stops = exposureFor(look, luminances, scene);
-  preview.backdropShare = 1.0 - double(scene.size()) / double(std::max<size_t>(1, film.pixels()));
+  preview.backdropShare = backdrop > 0.0f ? 1.0 - double(scene.size()) / double(std::max<size_t>(1, film.pixels())) : 0.0;
   std::vector<uint8_t> rgb(film.pixels() * 3);
   for (size_t p = 0; p < film.pixels(); ++p) {
     const std::array<uint8_t, 3> out =

@@ -71,7 +71,9 @@ uint8_t toSrgb8(double linear) {
 double highlightStops(std::vector<double> scene) {
   std::erase_if(scene, [](double l) { return !(std::isfinite(l) && l > 0.0); });
   if (scene.empty()) return kMaxAutoStops;
-  auto high = scene.begin() + std::ptrdiff_t((1.0 - kHighlightShare) * double(scene.size() - 1));
+  // The value with at most kHighlightShare of the values above it: it lands on the limit, they pass it.
+  const size_t above = size_t(kHighlightShare * double(scene.size()));
+  auto high = scene.begin() + std::ptrdiff_t(scene.size() - 1 - above);
   std::nth_element(scene.begin(), high, scene.end());
   return std::log2(kHighlightLimit / *high);
 }

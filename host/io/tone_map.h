@@ -1,8 +1,9 @@
 // How the PNG preview shows a physical (linear, unbounded) image; the EXR is never tone-mapped.
 //   exposure: `auto` scales the image so that the log-average luminance of its lit pixels lands on middle grey
 //             (Reinhard et al. 2002, "Photographic tone reproduction", key 0.18), or a fixed number of stops;
-//             lowered where that would expose more than a tenth of the scene's pixels (those showing more than
-//             the studio's backdrop) past 2, where the neutral tone map nears white;
+//             under the studio or a white world, lowered where that would expose more than a tenth of the
+//             scene's pixels (those showing more than the grey backdrop) past 2, where the neutral tone map
+//             nears white;
 //   tone map: `neutral`, the Khronos PBR Neutral operator (colours below 0.76 kept, less a black offset of at
 //             most 0.04; highlights compressed toward white), or `clamp` (linear, values above 1 clipped);
 //   then the sRGB transfer function to 8 bits.

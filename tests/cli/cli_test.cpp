@@ -613,3 +613,20 @@ TEST(Cli, TheDefaultEstimatorChoiceSaysWhereItDoesNotChoose) {
         << confirmation;
   }
 }
+
+// A scene the camera sees only from behind: every triangle is a single-sided face it looks through, and removing
+// them all would leave no scene to build a BVH on (the render once looped there). It is kept whole, and the render
+// shows what the culled faces show, the backdrop.
+TEST(Cli, ASceneSeenOnlyFromBehindRendersTheBackdrop) {
+  const fs::path d = workDir() / "seen_from_behind";
+  fs::create_directories(d);
+  vkmc::test::GltfSpec quad = vkmc::test::quadSpec();
+  quad.materialJson = R"({"pbrMetallicRoughness":{"baseColorFactor":[0.5,0.5,0.5,1]}})";
+  const std::string scene = vkmc::test::writeGltf(d, "quad", quad);
+  RunResult r = runVkmc("render " + scene + " --width 8 --height 8 --spp 1 -q --look-from 0.5,0.5,-3 --look-at 0.5,0.5,0 -o " +
+                        (d / "a.exr").string() + " --report " + (d / "a.json").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  nlohmann::json report = nlohmann::json::parse(slurp((d / "a.json").string()));
+  EXPECT_EQ(report["scene_info"]["seen_through_triangles_removed"], 0);
+  EXPECT_EQ(report["scene_info"]["triangles"], 2);
+}

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "error.h"
+#include "io/png.h"
 #include "io/tone_map.h"
 
 using namespace vkmc;
@@ -49,6 +50,29 @@ TEST(ToneMap, AutomaticExposureKeepsTheScenesHighlights) {
   EXPECT_NEAR(highlightStops(glints), std::log2(kHighlightLimit / 0.6), 1e-9);
   EXPECT_EQ(highlightStops({}), kMaxAutoStops) << "nothing but backdrop: no highlight to keep";
   EXPECT_EQ(exposureFor(PreviewLook{ToneMap::Neutral, 1.5}, image, scene), 1.5) << "fixed stops are kept as given";
+}
+
+TEST(ToneMap, APixelOfOnlyBackdropIsToldApartDespiteTheDevicesFloatSums) {
+  // Pixel 0: 32 samples of the backdrop's grey summed in float, as a device batch sums them (its variance of the
+  // mean is not 0 but about 1.6e-8 b^2, from the sum of squares' rounding); pixel 1: a lamp at 50 +- 10.
+  const float b = 0.18f;
+  Film film(2, 1);
+  film.replicateVariance = false;
+  float sum = 0.0f, sumSq = 0.0f;
+  for (int i = 0; i < 32; ++i) sum += b, sumSq += b * b;
+  for (int c = 0; c < 3; ++c) {
+    film.sum[c] = sum, film.sumSq[c] = sumSq;
+    film.sum[3 + c] = 32 * 50.0, film.sumSq[3 + c] = 16 * (40.0 * 40.0 + 60.0 * 60.0);
+  }
+  film.count = {32, 32};
+  ASSERT_GT(film.varianceOfMean(0, 0), 1e-10 * b * b) << "the rounding the tolerance must allow for";
+  FilmPreview preview = encodeFilmPng(film, PreviewLook{}, b);
+  EXPECT_EQ(preview.backdropShare, 0.5);
+  EXPECT_NEAR(preview.stops, std::log2(kHighlightLimit / 50.0), 1e-9) << "the lamp's highlights kept";
+  // Without a backdrop there are no scene pixels to tell apart: the whole image's key, sqrt(0.18 x 50) = 3.
+  preview = encodeFilmPng(film, PreviewLook{}, 0.0f);
+  EXPECT_EQ(preview.backdropShare, 0.0);
+  EXPECT_NEAR(preview.stops, std::log2(kMiddleGrey / 3.0), 1e-6) << "to the float grey's rounding";
 }
 
 TEST(ToneMap, PbrNeutralFollowsTheKhronosReference) {
